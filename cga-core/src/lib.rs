@@ -1,0 +1,12 @@
+//! Conformal geometric algebra G(4,1) as grade-sparse, compile-time generated types.
+//!
+//! [`algebra`] holds the one `algebra!` invocation that generates every type and product;
+//! [`Real`] is the scalar they are generic over (`f32`, `f64`, [`Dual`]).
+
+pub mod algebra;
+mod dual;
+mod real;
+
+pub use algebra::*;
+pub use dual::Dual;
+pub use real::Real;

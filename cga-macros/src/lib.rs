@@ -1,0 +1,303 @@
+//! `algebra!`: declare a geometric algebra and get grade-sparse Rust types whose products
+//! are computed at expansion time, term by term.
+//!
+//! The generator has three layers: [`parse`] reads the invocation (syntax only), `resolve`
+//! (this file) checks it against the algebra and reports every mistake with the span of
+//! the offending token, [`model`] computes metric, change of basis and Cayley tables with
+//! no `syn` in sight, and [`codegen`] turns tables into code.
+//!
+//! # Input
+//!
+//! ```text
+//! algebra! {
+//!     scalar = crate::Real;                 // trait bound of the coefficient type T
+//!     signature = (4, 1);                   // e1..e4 square to +1, e5 to −1
+//!     basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];   // storage vectors
+//!     /// docs…
+//!     dense Multivector;                    // 2^n coefficients, orthonormal basis
+//!     type Vector = [grade(1)];             // every blade of grade 1
+//!     type Line = [e12i, e13i, e23i, e1oi, e2oi, e3oi];
+//!     versor Motor = [s, e12, e13, e23, e1i, e2i, e3i, e123i];   // also gets sandwiches
+//!     alias PointPair = Bivector;           // a type alias
+//! }
+//! ```
+//!
+//! `basis` is optional (default: the orthonormal `e1..en`); each storage vector is named
+//! `e` plus one label character and may be any linear combination of `e1..en`, so a
+//! non-diagonal metric (the null vectors of CGA) is handled here, not at run time. Blades
+//! are `s` (the scalar) or `e` followed by labels in basis order (`e1oi`).
+//!
+//! # Output
+//!
+//! For every type a `struct Name<T = f64>` with one named field per blade; for every
+//! ordered pair of types the products whose Cayley table is not identically zero, as
+//! traits (`GeometricProduct::gp`, `OuterProduct::wedge`, `InnerProduct::inner` (Hestenes),
+//! `LeftContraction::lc`, `RegressiveProduct::vee`, the regressive product
+//! `∁⁻¹(∁A ∧ ∁B)` with the right complement `e_S ∧ ∁e_S = I`) and operators (`*`, `^`, `|`, `&`);
+//! the result type is the smallest declared type holding every nonzero output blade (else
+//! the dense type). Per type: reverse, involute, conjugate, dual, undual, grade
+//! projections, norm, normalise/try_normalise, scale, add/sub/neg. Versors get
+//! `Sandwich::sandwich` (`V X Ṽ`) on every type. A registry (`product_table`,
+//! `unary_table`) lists every generated map with its term count, for tests that compare
+//! against the dense type.
+
+mod codegen;
+mod model;
+mod parse;
+
+use model::{Algebra, TypeModel};
+use proc_macro::TokenStream;
+use syn::spanned::Spanned;
+use syn::{Error, Expr, Ident};
+
+/// Declare an algebra and generate its types. See the crate documentation for the input.
+#[proc_macro]
+pub fn algebra(input: TokenStream) -> TokenStream {
+    let input = syn::parse_macro_input!(input as parse::Input);
+    match resolve(input) {
+        Ok(spec) => codegen::generate(&spec).into(),
+        Err(e) => e.to_compile_error().into(),
+    }
+}
+
+/// The checked declaration: a model plus what codegen needs to name things.
+pub(crate) struct Spec {
+    pub algebra: Algebra,
+    pub scalar: syn::Path,
+    pub dense: Option<parse::Named>,
+    pub types: Vec<TypeSpec>,
+    pub aliases: Vec<parse::Alias>,
+}
+
+pub(crate) struct TypeSpec {
+    pub model: TypeModel,
+    pub ident: Ident,
+    pub attrs: Vec<syn::Attribute>,
+}
+
+/// Largest supported dimension: 2^6 = 64 blades already makes 4096-entry tables.
+const MAX_DIM: usize = 6;
+
+fn resolve(input: parse::Input) -> syn::Result<Spec> {
+    let call_site = proc_macro2::Span::call_site();
+    let scalar = input
+        .scalar
+        .ok_or_else(|| Error::new(call_site, "missing `scalar = path::to::Trait;` (the bound of the coefficient type)"))?;
+    let sig = input.signature.ok_or_else(|| Error::new(call_site, "missing `signature = (p, q);`"))?;
+    let (p, q): (usize, usize) = (sig.p.base10_parse()?, sig.q.base10_parse()?);
+    let n = p + q;
+    if n == 0 || n > MAX_DIM {
+        return Err(Error::new(
+            sig.span,
+            format!("bad signature ({p}, {q}): the algebra needs 1 to {MAX_DIM} basis vectors, this has {n}"),
+        ));
+    }
+    let (labels, rows) = match input.basis {
+        Some(basis) => resolve_basis(&basis, n)?,
+        None => ((1..=n).map(|i| char::from_digit(i as u32, 10).unwrap_or('?')).collect(), identity(n)),
+    };
+    let algebra = Algebra::new(p, q, labels, rows).map_err(|_| {
+        Error::new(sig.span, "the basis vectors are linearly dependent: they do not span the algebra")
+    })?;
+
+    let mut names: Vec<Ident> = input.dense.iter().map(|d| d.name.clone()).collect();
+    let mut types = Vec::new();
+    for decl in input.types {
+        check_new_name(&names, &decl.name)?;
+        names.push(decl.name.clone());
+        let blades = resolve_blades(&algebra, &decl)?;
+        let model = TypeModel { blades, versor: decl.versor };
+        types.push(TypeSpec { model, ident: decl.name, attrs: decl.attrs });
+    }
+    for alias in &input.aliases {
+        check_new_name(&names, &alias.name)?;
+        if !types.iter().any(|t| t.ident == alias.target) {
+            return Err(Error::new(alias.target.span(), format!("unknown type `{}`", alias.target)));
+        }
+        names.push(alias.name.clone());
+    }
+    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases })
+}
+
+fn check_new_name(names: &[Ident], name: &Ident) -> syn::Result<()> {
+    if names.contains(name) {
+        return Err(Error::new(name.span(), format!("duplicate type `{name}`: it is declared twice")));
+    }
+    Ok(())
+}
+
+fn identity(n: usize) -> Vec<Vec<f64>> {
+    (0..n).map(|i| (0..n).map(|j| f64::from(u8::from(i == j))).collect()).collect()
+}
+
+/// Storage vectors: labels from the names, rows from the expressions.
+fn resolve_basis(basis: &parse::Basis, n: usize) -> syn::Result<(Vec<char>, Vec<Vec<f64>>)> {
+    if basis.vectors.len() != n {
+        return Err(Error::new(
+            basis.span,
+            format!("the signature has {n} basis vectors but `basis` lists {}", basis.vectors.len()),
+        ));
+    }
+    let mut labels = Vec::new();
+    let mut rows = Vec::new();
+    for v in &basis.vectors {
+        let name = v.name.to_string();
+        let label = match name.strip_prefix('e').map(|l| l.chars().collect::<Vec<_>>()).as_deref() {
+            Some([c]) if c.is_ascii_alphanumeric() => *c,
+            _ => {
+                return Err(Error::new(
+                    v.name.span(),
+                    format!("basis vector `{name}` must be named `e` plus one letter or digit, e.g. `eo`"),
+                ));
+            }
+        };
+        if labels.contains(&label) {
+            return Err(Error::new(v.name.span(), format!("basis vector `{name}` is listed twice")));
+        }
+        labels.push(label);
+        let row = match &v.expr {
+            Some(expr) => match eval(expr, n)? {
+                Value::Vector(row) => row,
+                Value::Number(_) => return Err(Error::new(expr.span(), "a basis vector must be a combination of e1..en")),
+            },
+            None => ortho_vector(&v.name, n)?,
+        };
+        rows.push(row);
+    }
+    Ok((labels, rows))
+}
+
+/// A basis expression's value: a number or a vector in the orthonormal basis.
+enum Value {
+    Number(f64),
+    Vector(Vec<f64>),
+}
+
+fn ortho_vector(ident: &Ident, n: usize) -> syn::Result<Vec<f64>> {
+    let name = ident.to_string();
+    let index = name.strip_prefix('e').and_then(|d| d.parse::<usize>().ok()).filter(|&i| (1..=n).contains(&i));
+    match index {
+        Some(i) => Ok((1..=n).map(|j| f64::from(u8::from(i == j))).collect()),
+        None => Err(Error::new(ident.span(), format!("unknown vector `{name}`: the orthonormal vectors are e1..e{n}"))),
+    }
+}
+
+/// Evaluate `0.5 * (e5 - e4)`-style expressions: numbers, e1..en, + − * / and parentheses.
+fn eval(expr: &Expr, n: usize) -> syn::Result<Value> {
+    use syn::{BinOp, Lit, UnOp};
+    let unsupported = || Error::new(expr.span(), "expected a linear combination such as `0.5 * (e5 - e4)`");
+    match expr {
+        Expr::Paren(e) => eval(&e.expr, n),
+        Expr::Group(e) => eval(&e.expr, n),
+        Expr::Lit(lit) => match &lit.lit {
+            Lit::Int(i) => Ok(Value::Number(i.base10_parse::<f64>()?)),
+            Lit::Float(f) => Ok(Value::Number(f.base10_parse::<f64>()?)),
+            _ => Err(unsupported()),
+        },
+        Expr::Path(path) => match path.path.get_ident() {
+            Some(ident) => ortho_vector(ident, n).map(Value::Vector),
+            None => Err(unsupported()),
+        },
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(match eval(&u.expr, n)? {
+            Value::Number(x) => Value::Number(-x),
+            Value::Vector(v) => Value::Vector(v.iter().map(|x| -x).collect()),
+        }),
+        Expr::Binary(b) => {
+            let (l, r) = (eval(&b.left, n)?, eval(&b.right, n)?);
+            let add = |sign: f64, l: Value, r: Value| match (l, r) {
+                (Value::Number(x), Value::Number(y)) => Ok(Value::Number(x + sign * y)),
+                (Value::Vector(x), Value::Vector(y)) => {
+                    Ok(Value::Vector(x.iter().zip(&y).map(|(a, b)| a + sign * b).collect()))
+                }
+                _ => Err(Error::new(expr.span(), "cannot add a number to a vector")),
+            };
+            let scale = |v: Vec<f64>, s: f64| Value::Vector(v.iter().map(|x| x * s).collect());
+            match (&b.op, l, r) {
+                (BinOp::Add(_), l, r) => add(1.0, l, r),
+                (BinOp::Sub(_), l, r) => add(-1.0, l, r),
+                (BinOp::Mul(_), Value::Number(x), Value::Number(y)) => Ok(Value::Number(x * y)),
+                (BinOp::Mul(_), Value::Number(s), Value::Vector(v))
+                | (BinOp::Mul(_), Value::Vector(v), Value::Number(s)) => Ok(scale(v, s)),
+                (BinOp::Div(_), Value::Number(x), Value::Number(y)) if y != 0.0 => Ok(Value::Number(x / y)),
+                (BinOp::Div(_), Value::Vector(v), Value::Number(s)) if s != 0.0 => Ok(scale(v, 1.0 / s)),
+                _ => Err(Error::new(expr.span(), "not a linear combination of basis vectors")),
+            }
+        }
+        _ => Err(unsupported()),
+    }
+}
+
+/// The storage blades of a type declaration, in field order.
+fn resolve_blades(algebra: &Algebra, decl: &parse::TypeDecl) -> syn::Result<Vec<usize>> {
+    let mut blades: Vec<usize> = Vec::new();
+    let push = |mask: usize, span: proc_macro2::Span, blades: &mut Vec<usize>| {
+        if blades.contains(&mask) {
+            let blade = algebra.blade_name(mask);
+            return Err(Error::new(span, format!("blade `{blade}` is listed twice in `{}`", decl.name)));
+        }
+        blades.push(mask);
+        Ok(())
+    };
+    for elem in &decl.elems {
+        match elem {
+            parse::Elem::Blade(ident) => {
+                let name = ident.to_string();
+                let mask = algebra.parse_blade(&name).ok_or_else(|| {
+                    let labels: Vec<String> = algebra.labels.iter().map(|c| c.to_string()).collect();
+                    Error::new(
+                        ident.span(),
+                        format!(
+                            "unknown blade `{name}`: a blade is `s` (the scalar) or `e` followed by basis labels in basis order ({}), e.g. `{}`",
+                            labels.join(", "),
+                            algebra.blade_name(0b11)
+                        ),
+                    )
+                })?;
+                push(mask, ident.span(), &mut blades)?;
+            }
+            parse::Elem::Grade(lit) => {
+                let k: usize = lit.base10_parse()?;
+                if k > algebra.n {
+                    return Err(Error::new(lit.span(), format!("grade {k} does not exist: grades run from 0 to {}", algebra.n)));
+                }
+                for mask in algebra.grade_blades(k) {
+                    push(mask, lit.span(), &mut blades)?;
+                }
+            }
+        }
+    }
+    if blades.is_empty() {
+        return Err(Error::new(decl.name.span(), format!("type `{}` has no blades", decl.name)));
+    }
+    Ok(blades)
+}
+
+#[cfg(test)]
+mod tests {
+    /// Expands cga-core's own invocation and writes it, formatted, to
+    /// `target/cga-core-expanded.rs`: the generated code as a user would read it, and its size.
+    #[test]
+    fn expand_cga_core() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let source = std::fs::read_to_string(root.join("cga-core/src/algebra.rs")).expect("cga-core/src/algebra.rs");
+        let file = syn::parse_file(&source).expect("parses");
+        let mac = file
+            .items
+            .iter()
+            .find_map(|item| match item {
+                syn::Item::Macro(m) if m.mac.path.is_ident("algebra") || m.mac.path.segments.last().is_some_and(|s| s.ident == "algebra") => Some(m.mac.tokens.clone()),
+                _ => None,
+            })
+            .expect("an algebra! invocation");
+        let input: super::parse::Input = syn::parse2(mac).expect("input parses");
+        let spec = super::resolve(input).expect("input resolves");
+        let tokens = super::codegen::generate(&spec);
+        let pretty = prettyplease::unparse(&syn::parse2(tokens).expect("output parses"));
+        let out = root.join("target/cga-core-expanded.rs");
+        std::fs::create_dir_all(root.join("target")).expect("target dir");
+        std::fs::write(&out, &pretty).expect("write expansion");
+        let lines = pretty.lines().count();
+        println!("generated: {lines} lines, {} bytes -> {}", pretty.len(), out.display());
+        assert!(lines > 1000);
+    }
+}

@@ -1,0 +1,452 @@
+//! The algebra at expansion time: metric, blades, change of basis and product tables.
+//!
+//! Plain data in, plain data out; nothing here knows about `syn`. Every table is computed
+//! in an orthonormal basis `e1..en` (diagonal metric, one blade per product of two blades)
+//! and carried to the storage basis through the outermorphism of the basis change, so a
+//! non-diagonal metric such as the null basis `eo, ei` of CGA costs nothing at run time.
+
+use std::collections::BTreeMap;
+
+/// Coefficients smaller than this are taken as exact zeros: every table entry is a small
+/// dyadic rational (the change of basis only involves halves), so real entries are far
+/// larger and rounding residues far smaller.
+const ZERO: f64 = 1e-9;
+
+/// A multivector during expansion: blade bitmask -> coefficient, zero entries removed.
+pub type Mv = BTreeMap<usize, f64>;
+
+/// The products the generator emits for every pair of types.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Product {
+    /// `A B`
+    Geometric,
+    /// `A ∧ B`: grade r + s of `A_r B_s`.
+    Outer,
+    /// Hestenes inner product `A · B`: grade |r − s| of `A_r B_s`, zero if r or s is 0.
+    Inner,
+    /// Left contraction `A ⌋ B`: grade s − r of `A_r B_s`, zero if r > s.
+    LeftContraction,
+    /// Regressive product `A ∨ B = ∁⁻¹(∁A ∧ ∁B)`, `∁` the metric-free right complement
+    /// (`e_S ∧ ∁e_S = I`): the meet of OPNS objects. It equals `undual(dual A ∧ dual B)`
+    /// with `dual(X) = X I⁻¹` up to a sign that depends only on the grades.
+    Regressive,
+}
+
+impl Product {
+    pub const ALL: [Product; 5] = [
+        Product::Geometric,
+        Product::Outer,
+        Product::Inner,
+        Product::LeftContraction,
+        Product::Regressive,
+    ];
+}
+
+/// Linear maps of one multivector.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unary {
+    /// `Ã`: grade k scaled by (−1)^(k(k−1)/2).
+    Reverse,
+    /// `Â`: grade k scaled by (−1)^k.
+    Involute,
+    /// `Ā = (Â)~`: grade k scaled by (−1)^(k(k+1)/2).
+    Conjugate,
+    /// `A I⁻¹`.
+    Dual,
+    /// `A I`, the inverse of [`Unary::Dual`].
+    Undual,
+}
+
+/// The algebra: an orthonormal signature and a storage basis expressed in it.
+#[derive(Clone, Debug)]
+pub struct Algebra {
+    /// Number of basis vectors.
+    pub n: usize,
+    /// Squares of the orthonormal vectors `e1..en` (+1 or −1).
+    pub metric: Vec<f64>,
+    /// One-character label of each storage vector (`e1` → "1", `eo` → "o").
+    pub labels: Vec<char>,
+    /// Storage blade (bitmask over storage vectors) → orthonormal multivector.
+    to_ortho: Vec<Mv>,
+    /// Orthonormal blade → storage multivector.
+    from_ortho: Vec<Mv>,
+}
+
+/// Why an algebra cannot be built.
+#[derive(Debug, PartialEq)]
+pub enum ModelError {
+    /// The storage vectors are linearly dependent.
+    DegenerateBasis,
+}
+
+impl Algebra {
+    /// An algebra of signature (p, q) whose storage vectors are `basis[a] = Σ_i B[a][i] e_i`.
+    pub fn new(p: usize, q: usize, labels: Vec<char>, basis: Vec<Vec<f64>>) -> Result<Self, ModelError> {
+        let n = p + q;
+        let metric: Vec<f64> = (0..n).map(|i| if i < p { 1.0 } else { -1.0 }).collect();
+        let inverse = invert(&basis).ok_or(ModelError::DegenerateBasis)?;
+        let to_ortho = (0..1 << n).map(|m| outermorphism(m, &basis)).collect();
+        let from_ortho = (0..1 << n).map(|m| outermorphism(m, &inverse)).collect();
+        Ok(Algebra { n, metric, labels, to_ortho, from_ortho })
+    }
+
+    /// Number of blades, 2^n.
+    pub fn dim(&self) -> usize {
+        1 << self.n
+    }
+
+    /// All blades in canonical order: by grade, then lexicographically by vector index
+    /// (`1, e1, …, en, e12, e13, …`), the order of the golden files.
+    pub fn canonical_order(&self) -> Vec<usize> {
+        let mut masks: Vec<usize> = (0..self.dim()).collect();
+        masks.sort_by_key(|&m| (m.count_ones(), index_tuple(m)));
+        masks
+    }
+
+    /// Name of a storage blade: `s` for the scalar, else `e` and the vector labels.
+    pub fn blade_name(&self, mask: usize) -> String {
+        if mask == 0 {
+            return "s".into();
+        }
+        let labels: String = (0..self.n).filter(|i| mask >> i & 1 == 1).map(|i| self.labels[i]).collect();
+        format!("e{labels}")
+    }
+
+    /// Name of an orthonormal blade (`1`, `e1`, `e12`, …) as the golden files write it.
+    pub fn ortho_name(&self, mask: usize) -> String {
+        if mask == 0 {
+            return "1".into();
+        }
+        let digits: String = (0..self.n).filter(|i| mask >> i & 1 == 1).map(|i| (i + 1).to_string()).collect();
+        format!("e{digits}")
+    }
+
+    /// The storage blade named `name`, if the name is canonical (labels in basis order).
+    pub fn parse_blade(&self, name: &str) -> Option<usize> {
+        if name == "s" {
+            return Some(0);
+        }
+        let rest = name.strip_prefix('e')?;
+        let mut mask = 0usize;
+        let mut last = None;
+        for c in rest.chars() {
+            let i = self.labels.iter().position(|&l| l == c)?;
+            if last.is_some_and(|l| i <= l) {
+                return None;
+            }
+            last = Some(i);
+            mask |= 1 << i;
+        }
+        (mask != 0).then_some(mask)
+    }
+
+    /// Blades of grade `k` in canonical order.
+    pub fn grade_blades(&self, k: usize) -> Vec<usize> {
+        self.canonical_order().into_iter().filter(|m| m.count_ones() as usize == k).collect()
+    }
+
+    /// Orthonormal-basis product of two orthonormal blades, `None` when it vanishes.
+    pub fn ortho_product(&self, kind: Product, a: usize, b: usize) -> Option<(usize, f64)> {
+        let (ga, gb) = (a.count_ones() as i64, b.count_ones() as i64);
+        let out = a ^ b;
+        let go = out.count_ones() as i64;
+        let keep = match kind {
+            Product::Geometric => true,
+            Product::Outer => a & b == 0,
+            Product::Inner => ga > 0 && gb > 0 && go == (ga - gb).abs(),
+            Product::LeftContraction => ga <= gb && go == gb - ga,
+            Product::Regressive => {
+                // ∁⁻¹(∁a ∧ ∁b) with the right complement e_S ∧ ∁e_S = I (metric-free).
+                let full = self.full_mask();
+                let (ca, cb) = (a ^ full, b ^ full);
+                let (w, sw) = wedge_blades(ca, cb)?;
+                let r = w ^ full;
+                let sign = complement_sign(a, full) * complement_sign(b, full) * sw * complement_sign(r, full);
+                return Some((r, sign));
+            }
+        };
+        keep.then(|| self.ortho_gp(a, b))
+    }
+
+    /// `e_a e_b = sign e_(a xor b)` for orthonormal blades: reordering sign times the
+    /// squares of the shared vectors.
+    pub fn ortho_gp(&self, a: usize, b: usize) -> (usize, f64) {
+        let mut swaps = 0;
+        let mut rest = a >> 1;
+        while rest != 0 {
+            swaps += (rest & b).count_ones();
+            rest >>= 1;
+        }
+        let mut sign = if swaps % 2 == 0 { 1.0 } else { -1.0 };
+        for i in 0..self.n {
+            if (a & b) >> i & 1 == 1 {
+                sign *= self.metric[i];
+            }
+        }
+        (a ^ b, sign)
+    }
+
+    fn full_mask(&self) -> usize {
+        self.dim() - 1
+    }
+
+    /// I⁻¹ = I / (I I), and I I = ±1: the sign of I⁻¹ relative to I.
+    fn pseudo_inverse_sign(&self) -> f64 {
+        self.ortho_gp(self.full_mask(), self.full_mask()).1
+    }
+
+    /// Storage-basis product of two storage blades.
+    pub fn product(&self, kind: Product, a: usize, b: usize) -> Mv {
+        let mut ortho = Mv::new();
+        for (&i, &ci) in &self.to_ortho[a] {
+            for (&j, &cj) in &self.to_ortho[b] {
+                if let Some((r, c)) = self.ortho_product(kind, i, j) {
+                    *ortho.entry(r).or_insert(0.0) += ci * cj * c;
+                }
+            }
+        }
+        self.ortho_to_storage(&ortho)
+    }
+
+    /// Storage-basis image of one storage blade under a unary map.
+    pub fn unary(&self, kind: Unary, a: usize) -> Mv {
+        let k = a.count_ones() as i64;
+        let grade_sign = |e: i64| if e % 2 == 0 { 1.0 } else { -1.0 };
+        let sign = match kind {
+            Unary::Reverse => grade_sign(k * (k - 1) / 2),
+            Unary::Involute => grade_sign(k),
+            Unary::Conjugate => grade_sign(k * (k + 1) / 2),
+            Unary::Dual | Unary::Undual => {
+                let inv = if kind == Unary::Dual { self.pseudo_inverse_sign() } else { 1.0 };
+                let mut ortho = Mv::new();
+                for (&i, &ci) in &self.to_ortho[a] {
+                    let (r, s) = self.ortho_gp(i, self.full_mask());
+                    *ortho.entry(r).or_insert(0.0) += ci * s * inv;
+                }
+                return self.ortho_to_storage(&ortho);
+            }
+        };
+        Mv::from([(a, sign)])
+    }
+
+    /// Storage blade → coefficients in the orthonormal basis.
+    pub fn storage_to_ortho(&self, a: usize) -> &Mv {
+        &self.to_ortho[a]
+    }
+
+    /// Orthonormal blade → coefficients in the storage basis.
+    pub fn ortho_blade_to_storage(&self, i: usize) -> &Mv {
+        &self.from_ortho[i]
+    }
+
+    fn ortho_to_storage(&self, ortho: &Mv) -> Mv {
+        let mut out = Mv::new();
+        for (&r, &c) in ortho {
+            for (&s, &cs) in &self.from_ortho[r] {
+                *out.entry(s).or_insert(0.0) += c * cs;
+            }
+        }
+        clean(out)
+    }
+}
+
+/// One term `coeff · lhs[i] · rhs[j]` of a bilinear map between two sparse types.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Term {
+    /// Index into the left operand's blades.
+    pub lhs: usize,
+    /// Index into the right operand's blades.
+    pub rhs: usize,
+    pub coeff: f64,
+}
+
+/// A bilinear map between sparse operands: each nonzero output blade with its terms, in
+/// canonical blade order. Blades whose terms all cancel are absent.
+pub type Bilinear = Vec<(usize, Vec<Term>)>;
+
+/// A declared type: a name and the storage blades it holds, in field order.
+#[derive(Clone, Debug)]
+pub struct TypeModel {
+    pub blades: Vec<usize>,
+    /// Declared with `versor`: gets a sandwich `V X Ṽ` on every type.
+    pub versor: bool,
+}
+
+impl Algebra {
+    /// The product `kind` of operands holding blades `lhs` and `rhs`, term by term.
+    pub fn bilinear(&self, kind: Product, lhs: &[usize], rhs: &[usize]) -> Bilinear {
+        let mut outputs: BTreeMap<usize, Vec<Term>> = BTreeMap::new();
+        for (i, &a) in lhs.iter().enumerate() {
+            for (j, &b) in rhs.iter().enumerate() {
+                for (r, coeff) in self.product(kind, a, b) {
+                    outputs.entry(r).or_default().push(Term { lhs: i, rhs: j, coeff });
+                }
+            }
+        }
+        let rank = self.rank();
+        let mut out: Bilinear = outputs.into_iter().collect();
+        out.sort_by_key(|(blade, _)| rank[*blade]);
+        out
+    }
+
+    /// Position of every blade in canonical order.
+    pub fn rank(&self) -> Vec<usize> {
+        let mut rank = vec![0; self.dim()];
+        for (pos, m) in self.canonical_order().into_iter().enumerate() {
+            rank[m] = pos;
+        }
+        rank
+    }
+}
+
+/// The smallest declared type holding every blade of `needed` (ties: the first declared).
+pub fn cover(types: &[TypeModel], needed: &[usize]) -> Option<usize> {
+    types
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| needed.iter().all(|b| t.blades.contains(b)))
+        .min_by_key(|(pos, t)| (t.blades.len(), *pos))
+        .map(|(pos, _)| pos)
+}
+
+/// The sign in `∁e_S = sign · e_(S^c)`: `e_S ∧ e_(S^c) = sign · I` read backwards (±1).
+fn complement_sign(s: usize, full: usize) -> f64 {
+    wedge_blades(s, s ^ full).map_or(1.0, |(_, sign)| sign)
+}
+
+/// Drop the zeros left by cancellation.
+fn clean(mv: Mv) -> Mv {
+    mv.into_iter().filter(|(_, c)| c.abs() > ZERO).collect()
+}
+
+/// Vector indices of a blade, for lexicographic ordering.
+fn index_tuple(mask: usize) -> Vec<usize> {
+    (0..usize::BITS as usize).filter(|i| mask >> i & 1 == 1).collect()
+}
+
+/// The metric-free outer product of basis blades given as bitmasks: sign of reordering.
+fn wedge_blades(a: usize, b: usize) -> Option<(usize, f64)> {
+    if a & b != 0 {
+        return None;
+    }
+    let mut swaps = 0;
+    let mut rest = a >> 1;
+    while rest != 0 {
+        swaps += (rest & b).count_ones();
+        rest >>= 1;
+    }
+    Some((a | b, if swaps % 2 == 0 { 1.0 } else { -1.0 }))
+}
+
+/// Image of a blade under the linear map sending vector `a` to `Σ_i m[a][i] e_i`: the wedge
+/// of the images of its vectors (outer products are metric-free).
+fn outermorphism(mask: usize, m: &[Vec<f64>]) -> Mv {
+    let mut acc = Mv::from([(0usize, 1.0)]);
+    for (a, row) in m.iter().enumerate() {
+        if mask >> a & 1 == 0 {
+            continue;
+        }
+        let mut next = Mv::new();
+        for (&blade, &c) in &acc {
+            for (i, &ci) in row.iter().enumerate() {
+                if ci == 0.0 {
+                    continue;
+                }
+                if let Some((r, s)) = wedge_blades(blade, 1 << i) {
+                    *next.entry(r).or_insert(0.0) += c * ci * s;
+                }
+            }
+        }
+        acc = clean(next);
+    }
+    acc
+}
+
+/// Inverse of a square matrix by Gauss–Jordan elimination with partial pivoting; `None`
+/// when it is singular. Rows are vectors: `inv[i]` expresses `e_i` in the storage basis.
+fn invert(m: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
+    let n = m.len();
+    // Solve X M = I: work on the transpose so that rows stay rows.
+    let mut a: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| m[j][i]).collect()).collect();
+    let mut inv: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| f64::from(u8::from(i == j))).collect()).collect();
+    for col in 0..n {
+        let pivot = (col..n).max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))?;
+        if a[pivot][col].abs() < ZERO {
+            return None;
+        }
+        a.swap(col, pivot);
+        inv.swap(col, pivot);
+        let p = a[col][col];
+        for j in 0..n {
+            a[col][j] /= p;
+            inv[col][j] /= p;
+        }
+        for row in 0..n {
+            if row != col {
+                let f = a[row][col];
+                for j in 0..n {
+                    a[row][j] -= f * a[col][j];
+                    inv[row][j] -= f * inv[col][j];
+                }
+            }
+        }
+    }
+    // inv solves Mᵀ X = I, so X = (Mᵀ)⁻¹ = (M⁻¹)ᵀ: transpose back.
+    Some((0..n).map(|i| (0..n).map(|j| inv[j][i]).collect()).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cga_null() -> Algebra {
+        let basis = vec![
+            vec![1.0, 0.0, 0.0, 0.0, 0.0],
+            vec![0.0, 1.0, 0.0, 0.0, 0.0],
+            vec![0.0, 0.0, 1.0, 0.0, 0.0],
+            vec![0.0, 0.0, 0.0, -0.5, 0.5],
+            vec![0.0, 0.0, 0.0, 1.0, 1.0],
+        ];
+        Algebra::new(4, 1, vec!['1', '2', '3', 'o', 'i'], basis).unwrap()
+    }
+
+    #[test]
+    fn null_vectors_have_the_cga_metric() {
+        let a = cga_null();
+        let (o, i) = (1 << 3, 1 << 4);
+        assert!(a.product(Product::Geometric, o, o).is_empty(), "eo² = 0");
+        assert!(a.product(Product::Geometric, i, i).is_empty(), "e∞² = 0");
+        let oi = a.product(Product::Geometric, o, i);
+        assert_eq!(oi, Mv::from([(0, -1.0), (o | i, 1.0)]), "eo e∞ = −1 + eo∧e∞");
+    }
+
+    #[test]
+    fn change_of_basis_round_trips() {
+        let a = cga_null();
+        for m in 0..a.dim() {
+            let mut back = Mv::new();
+            for (&i, &c) in a.storage_to_ortho(m) {
+                for (&s, &cs) in a.ortho_blade_to_storage(i) {
+                    *back.entry(s).or_insert(0.0) += c * cs;
+                }
+            }
+            assert_eq!(clean(back), Mv::from([(m, 1.0)]));
+        }
+    }
+
+    #[test]
+    fn singular_basis_is_rejected() {
+        let basis = vec![vec![1.0, 1.0], vec![2.0, 2.0]];
+        assert_eq!(Algebra::new(2, 0, vec!['a', 'b'], basis).unwrap_err(), ModelError::DegenerateBasis);
+    }
+
+    #[test]
+    fn blade_names_parse_back() {
+        let a = cga_null();
+        for m in 0..a.dim() {
+            assert_eq!(a.parse_blade(&a.blade_name(m)), Some(m));
+        }
+        assert_eq!(a.parse_blade("eo1"), None, "labels out of order");
+        assert_eq!(a.parse_blade("e4"), None, "unknown label");
+    }
+}

@@ -1,0 +1,131 @@
+//! Shared helpers for the workspace tests: the golden vectors, tolerances, counting scalar.
+#![allow(dead_code)]
+
+use cga::{Multivector, Real};
+use serde_json::Value;
+use std::path::PathBuf;
+
+/// `../shared/golden`, relative to the repository root.
+pub fn golden_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/golden")
+}
+
+/// A golden file, parsed; its blade order is checked against [`Multivector::BLADES`].
+pub fn golden(name: &str) -> Value {
+    let path = golden_dir().join(name);
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+    let value: Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("parsing {}: {e}", path.display()));
+    let blades: Vec<&str> = value["blades"].as_array().expect("blades").iter().map(|b| b.as_str().unwrap()).collect();
+    assert_eq!(blades, Multivector::<f64>::BLADES, "{name}: blade order differs from the dense type's");
+    value
+}
+
+/// The cases of a golden file.
+pub fn cases(file: &Value) -> &Vec<Value> {
+    file["cases"].as_array().expect("cases")
+}
+
+/// A 32-float golden multivector as a dense one.
+pub fn mv(v: &Value) -> Multivector {
+    let c: Vec<f64> = v.as_array().expect("multivector").iter().map(|x| x.as_f64().unwrap()).collect();
+    Multivector::new(c.try_into().expect("32 coefficients"))
+}
+
+/// A float list (a Euclidean vector) from a golden file.
+pub fn floats(v: &Value) -> Vec<f64> {
+    v.as_array().expect("list").iter().map(|x| x.as_f64().unwrap()).collect()
+}
+
+/// Largest coefficient difference, relative to the larger magnitude when that exceeds 1.
+pub fn max_rel_diff(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()).max(1.0)).fold(0.0, f64::max)
+}
+
+/// Asserts two dense multivectors agree to `tol` (relative above magnitude 1).
+#[track_caller]
+pub fn assert_mv_close(got: &Multivector, want: &Multivector, tol: f64, what: &str) {
+    let d = max_rel_diff(&got.coeffs, &want.coeffs);
+    assert!(d <= tol, "{what}: differs by {d:e} (> {tol:e})\n got  {:?}\n want {:?}", got.coeffs, want.coeffs);
+}
+
+/// Same as [`Real`] for `f64`, but counts multiplications: between two data values, and
+/// by a constant (a value made by `from_f64`, `zero` or `one`).
+#[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+pub struct Counted {
+    pub x: f64,
+    pub constant: bool,
+}
+
+thread_local! {
+    static COUNTS: std::cell::Cell<(usize, usize)> = const { std::cell::Cell::new((0, 0)) };
+}
+
+impl Counted {
+    pub fn data(x: f64) -> Self {
+        Counted { x, constant: false }
+    }
+    /// Zeroes the counters.
+    pub fn reset() {
+        COUNTS.with(|c| c.set((0, 0)));
+    }
+    /// (data × data, by-constant) multiplications since the last reset.
+    pub fn counts() -> (usize, usize) {
+        COUNTS.with(|c| c.get())
+    }
+}
+
+macro_rules! binop {
+    ($tr:ident, $m:ident, $op:tt) => {
+        impl std::ops::$tr for Counted {
+            type Output = Counted;
+            fn $m(self, o: Counted) -> Counted {
+                Counted { x: self.x $op o.x, constant: self.constant && o.constant }
+            }
+        }
+    };
+}
+binop!(Add, add, +);
+binop!(Sub, sub, -);
+binop!(Div, div, /);
+
+impl std::ops::Mul for Counted {
+    type Output = Counted;
+    fn mul(self, o: Counted) -> Counted {
+        COUNTS.with(|c| {
+            let (data, constant) = c.get();
+            c.set(if self.constant || o.constant { (data, constant + 1) } else { (data + 1, constant) });
+        });
+        Counted { x: self.x * o.x, constant: self.constant && o.constant }
+    }
+}
+
+impl std::ops::Neg for Counted {
+    type Output = Counted;
+    fn neg(self) -> Counted {
+        Counted { x: -self.x, ..self }
+    }
+}
+
+impl Real for Counted {
+    fn zero() -> Self {
+        Counted { x: 0.0, constant: true }
+    }
+    fn one() -> Self {
+        Counted { x: 1.0, constant: true }
+    }
+    fn from_f64(x: f64) -> Self {
+        Counted { x, constant: true }
+    }
+    fn to_f64(self) -> f64 {
+        self.x
+    }
+    fn sqrt(self) -> Self {
+        Counted { x: self.x.sqrt(), ..self }
+    }
+    fn abs(self) -> Self {
+        Counted { x: self.x.abs(), ..self }
+    }
+    fn is_finite(self) -> bool {
+        self.x.is_finite()
+    }
+}
