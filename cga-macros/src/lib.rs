@@ -45,7 +45,7 @@ mod codegen;
 mod model;
 mod parse;
 
-use model::{Algebra, TypeModel};
+use model::{Algebra, ModelError, TypeModel};
 use proc_macro::TokenStream;
 use syn::spanned::Spanned;
 use syn::{Error, Expr, Ident};
@@ -92,12 +92,18 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
             format!("bad signature ({p}, {q}): the algebra needs 1 to {MAX_DIM} basis vectors, this has {n}"),
         ));
     }
-    let (labels, rows) = match input.basis {
-        Some(basis) => resolve_basis(&basis, n)?,
-        None => ((1..=n).map(|i| char::from_digit(i as u32, 10).unwrap_or('?')).collect(), identity(n)),
+    let (labels, rows, basis_span) = match input.basis {
+        Some(basis) => {
+            let (labels, rows) = resolve_basis(&basis, n)?;
+            (labels, rows, basis.span)
+        }
+        None => ((1..=n).map(|i| char::from_digit(i as u32, 10).unwrap_or('?')).collect(), identity(n), sig.span),
     };
-    let algebra = Algebra::new(p, q, labels, rows).map_err(|_| {
-        Error::new(sig.span, "the basis vectors are linearly dependent: they do not span the algebra")
+    let algebra = Algebra::new(p, q, labels, rows).map_err(|e| match e {
+        ModelError::DegenerateBasis => {
+            Error::new(basis_span, "the basis vectors are linearly dependent: they do not span the algebra")
+        }
+        ModelError::NonFinite => Error::new(basis_span, "the basis coefficients overflow: keep them within ±1e100"),
     })?;
 
     let mut names: Vec<Ident> = input.dense.iter().map(|d| d.name.clone()).collect();
@@ -227,6 +233,32 @@ fn eval(expr: &Expr, n: usize) -> syn::Result<Value> {
     }
 }
 
+/// Why a blade name is not one: labels out of order (with the canonical spelling), or unknown.
+fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
+    let name = ident.to_string();
+    let positions: Option<Vec<usize>> = name
+        .strip_prefix('e')
+        .map(|rest| rest.chars().map(|c| algebra.labels.iter().position(|&l| l == c)).collect())
+        .unwrap_or(None);
+    if let Some(mut positions) = positions.filter(|p| !p.is_empty()) {
+        positions.sort_unstable();
+        let mask = positions.iter().fold(0usize, |m, &i| m | 1 << i);
+        if positions.windows(2).all(|w| w[0] < w[1]) {
+            let canonical = algebra.blade_name(mask);
+            return Error::new(ident.span(), format!("blade `{name}` has its labels out of basis order: write `{canonical}`"));
+        }
+    }
+    let labels: Vec<String> = algebra.labels.iter().map(|c| c.to_string()).collect();
+    Error::new(
+        ident.span(),
+        format!(
+            "unknown blade `{name}`: a blade is `s` (the scalar) or `e` followed by basis labels in basis order ({}), e.g. `{}`",
+            labels.join(", "),
+            algebra.blade_name(0b11)
+        ),
+    )
+}
+
 /// The storage blades of a type declaration, in field order.
 fn resolve_blades(algebra: &Algebra, decl: &parse::TypeDecl) -> syn::Result<Vec<usize>> {
     let mut blades: Vec<usize> = Vec::new();
@@ -242,17 +274,7 @@ fn resolve_blades(algebra: &Algebra, decl: &parse::TypeDecl) -> syn::Result<Vec<
         match elem {
             parse::Elem::Blade(ident) => {
                 let name = ident.to_string();
-                let mask = algebra.parse_blade(&name).ok_or_else(|| {
-                    let labels: Vec<String> = algebra.labels.iter().map(|c| c.to_string()).collect();
-                    Error::new(
-                        ident.span(),
-                        format!(
-                            "unknown blade `{name}`: a blade is `s` (the scalar) or `e` followed by basis labels in basis order ({}), e.g. `{}`",
-                            labels.join(", "),
-                            algebra.blade_name(0b11)
-                        ),
-                    )
-                })?;
+                let mask = algebra.parse_blade(&name).ok_or_else(|| unknown_blade(algebra, ident))?;
                 push(mask, ident.span(), &mut blades)?;
             }
             parse::Elem::Grade(lit) => {
@@ -274,6 +296,52 @@ fn resolve_blades(algebra: &Algebra, decl: &parse::TypeDecl) -> syn::Result<Vec<
 
 #[cfg(test)]
 mod tests {
+    /// Random, mostly malformed invocations: each must expand or give an error, never panic.
+    #[test]
+    fn random_input_never_panics() {
+        let pieces = [
+            "scalar = crate::Real;", "scalar = ;", "signature = (3, 0);", "signature = (4, 1);", "signature = (0, 0);",
+            "signature = (2, 1, 0);", "signature = (99999999999999999999, 1);", "basis = [e1, e2, e3];",
+            "basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];", "basis = [ea = e1 / 0, eb = e2];",
+            "basis = [ea = 1e300 * e1, eb = 1e300 * e2, ec = e3];", "basis = [e1, e1, e3];", "basis = [ex = e1 * e2];",
+            "dense M;", "dense;", "type V = [grade(1)];", "type V = [grade(9)];", "type R = [s, e12];",
+            "type R = [s, e12, e12];", "type Q = [];", "type E = [grade(0), grade(2)];", "versor R2 = [s, e12, e13, e23];",
+            "versor X = [s, eo1];", "alias P = V;", "alias P = Nope;", "type V = [e1];", "type W = [e1oi, e2i];",
+            "type", "= [", "]", ";", "grade(1)", "type Z = [grade(-1)];", "type Y = [s e1];",
+        ];
+        let mut state = 0x9e3779b97f4a7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let (mut expanded, mut rejected) = (0, 0);
+        for _ in 0..400 {
+            // Mostly well-formed headers, so that the checks past the parser are reached.
+            let mut text = String::new();
+            if next() % 5 != 0 {
+                text.push_str("scalar = crate::Real; ");
+            }
+            if next() % 5 != 0 {
+                text.push_str(["signature = (3, 0); ", "signature = (2, 1); ", "signature = (1, 0); "][(next() % 3) as usize]);
+            }
+            for _ in 0..next() % 6 {
+                text.push_str(pieces[(next() % pieces.len() as u64) as usize]);
+                text.push(' ');
+            }
+            let Ok(tokens) = text.parse::<proc_macro2::TokenStream>() else { continue };
+            match syn::parse2::<super::parse::Input>(tokens).and_then(super::resolve) {
+                Ok(spec) => {
+                    let _ = super::codegen::generate(&spec);
+                    expanded += 1;
+                }
+                Err(_) => rejected += 1,
+            }
+        }
+        assert!(expanded > 40 && rejected > 100, "expanded {expanded}, rejected {rejected}");
+    }
+
     /// Expands cga-core's own invocation and writes it, formatted, to
     /// `target/cga-core-expanded.rs`: the generated code as a user would read it, and its size.
     #[test]

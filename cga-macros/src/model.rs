@@ -77,6 +77,8 @@ pub struct Algebra {
 pub enum ModelError {
     /// The storage vectors are linearly dependent.
     DegenerateBasis,
+    /// A coefficient of the basis or of its inverse is not finite or too large to tabulate.
+    NonFinite,
 }
 
 impl Algebra {
@@ -84,7 +86,14 @@ impl Algebra {
     pub fn new(p: usize, q: usize, labels: Vec<char>, basis: Vec<Vec<f64>>) -> Result<Self, ModelError> {
         let n = p + q;
         let metric: Vec<f64> = (0..n).map(|i| if i < p { 1.0 } else { -1.0 }).collect();
+        let finite = |m: &[Vec<f64>]| m.iter().flatten().all(|x| x.is_finite() && x.abs() <= 1e100);
+        if !finite(&basis) {
+            return Err(ModelError::NonFinite);
+        }
         let inverse = invert(&basis).ok_or(ModelError::DegenerateBasis)?;
+        if !finite(&inverse) {
+            return Err(ModelError::NonFinite);
+        }
         let to_ortho = (0..1 << n).map(|m| outermorphism(m, &basis)).collect();
         let from_ortho = (0..1 << n).map(|m| outermorphism(m, &inverse)).collect();
         Ok(Algebra { n, metric, labels, to_ortho, from_ortho })

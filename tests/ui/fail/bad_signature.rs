@@ -1,0 +1,7 @@
+cga::algebra! {
+    scalar = cga::Real;
+    signature = (0, 0);
+    type Scalar = [s];
+}
+
+fn main() {}

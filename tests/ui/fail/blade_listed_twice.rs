@@ -1,0 +1,7 @@
+cga::algebra! {
+    scalar = cga::Real;
+    signature = (3, 0);
+    type Rotor = [s, e12, e13, e23, e12];
+}
+
+fn main() {}

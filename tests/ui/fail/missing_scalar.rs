@@ -1,0 +1,6 @@
+cga::algebra! {
+    signature = (3, 0);
+    type Vector = [grade(1)];
+}
+
+fn main() {}

@@ -1,0 +1,7 @@
+cga::algebra! {
+    scalar = cga::Real;
+    signature = (6, 3);
+    type Scalar = [s];
+}
+
+fn main() {}

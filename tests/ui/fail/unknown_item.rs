@@ -1,0 +1,7 @@
+cga::algebra! {
+    scalar = cga::Real;
+    signature = (3, 0);
+    kind Vector = [grade(1)];
+}
+
+fn main() {}
