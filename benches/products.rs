@@ -1,101 +1,118 @@
 //! Sparse generated types against the dense multivector, in f32 and f64, for the operations
 //! the renderer leans on. `cargo bench --bench products`, then `python3 benches/report.py`
 //! prints the table of medians and dense/sparse ratios (see benches/README.md).
+//!
+//! Each measurement runs one operation over a batch of `BATCH` independent inputs (as a
+//! renderer does over rays) and criterion reports time per operation. Timing a single call
+//! with its operands behind `black_box` would mostly time their trip through memory.
 
 use cga::{Circle, Line, Motor, Multivector, Real, Rotor, Sandwich, Sphere, Translator, Vector};
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main, measurement::WallTime};
 use std::hint::black_box;
 use std::time::Duration;
 
+const BATCH: usize = 256;
+
 /// `up(x) = x + ½x² ei + eo`.
-fn point<T: Real>(x: &[f64; 3]) -> Vector<T> {
+fn point<T: Real>(x: [f64; 3]) -> Vector<T> {
     let x2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
     Vector::from_array([x[0], x[1], x[2], 1.0, 0.5 * x2].map(T::from_f64))
 }
 
-fn convert<T: Real>(c: [f64; 32]) -> [T; 32] {
-    c.map(T::from_f64)
+/// A deterministic spread of points, one per batch slot and argument.
+fn points<T: Real>(seed: f64) -> Vec<Vector<T>> {
+    (0..BATCH)
+        .map(|i| {
+            let t = seed + i as f64;
+            point([3.0 * (1.3 * t).sin(), 2.0 * (0.7 * t).cos(), (2.9 * t).sin() - 0.5])
+        })
+        .collect()
 }
 
-struct Inputs<T: Real> {
-    points: [Vector<T>; 3],
-    line: Line<T>,
-    sphere: Sphere<T>,
-    motor: Motor<T>,
-    circles: [Circle<T>; 2],
-    dense: [Multivector<T>; 2],
+fn dense<T: Real, X: Into<Multivector<T>> + Copy>(xs: &[X]) -> Vec<Multivector<T>> {
+    xs.iter().map(|&x| x.into()).collect()
 }
 
-impl<T: Real> Inputs<T> {
-    fn new() -> Self {
-        let points = [point(&[1.0, 2.0, -0.5]), point(&[-1.5, 0.3, 2.0]), point(&[0.2, -2.2, 1.1])];
-        // X1 ∧ X2 ∧ ei: a grade-3 result whose non-line blades are zero.
-        let ei = Vector::from_array([0.0, 0.0, 0.0, 0.0, 1.0].map(T::from_f64));
-        let line = Line::from_storage(&((points[0] ^ points[1]) ^ ei).to_storage());
-        let sphere = (points[0] ^ points[1]) ^ points[2] ^ point(&[2.0, 1.0, 1.0]);
-        let rotor: Rotor<f64> = Rotor { s: 0.8, e12: 0.36, e13: 0.0, e23: -0.48 };
-        let motor: Motor<f64> = rotor * Translator { s: 1.0, e1i: 1.5, e2i: -0.5, e3i: 2.0 };
-        let circles = [points[0] ^ points[1] ^ points[2], (points[2] ^ points[0]) ^ point(&[0.0, 3.0, 0.0])];
-        let full = |s: f64| Multivector::new(convert(std::array::from_fn(|i| (s * (i as f64 + 1.0)).sin())));
-        Inputs {
-            points,
-            line,
-            sphere,
-            motor: Motor::from_array(motor.to_array().map(T::from_f64)),
-            circles,
-            dense: [full(0.37), full(1.13)],
-        }
-    }
+/// Time `op` over the whole batch; criterion divides by the batch size.
+fn run<A: Copy, B: Copy, R>(g: &mut BenchmarkGroup<WallTime>, name: &str, a: &[A], b: &[B], op: impl Fn(A, B) -> R) {
+    let mut out: Vec<R> = Vec::with_capacity(BATCH);
+    g.bench_function(name, |bench| {
+        bench.iter(|| {
+            out.clear();
+            out.extend(black_box(a).iter().zip(black_box(b)).map(|(&x, &y)| op(x, y)));
+            black_box(&out);
+        })
+    });
 }
 
-fn dense<T: Real, X: Into<Multivector<T>>>(x: X) -> Multivector<T> {
-    x.into()
+fn group<'a>(c: &'a mut Criterion, name: &str) -> BenchmarkGroup<'a, WallTime> {
+    let mut g = c.benchmark_group(name);
+    g.throughput(Throughput::Elements(BATCH as u64));
+    g
 }
 
-macro_rules! bench_scalar {
-    ($c:expr, $t:ty, $name:literal) => {{
-        let i = Inputs::<$t>::new();
-        let [p1, p2, p3] = i.points;
-        let [d1, d2, d3] = i.points.map(dense);
-        let mut g = $c.benchmark_group(concat!("circle_from_3_points/", $name));
-        g.bench_function("sparse", |b| b.iter(|| black_box(p1) ^ black_box(p2) ^ black_box(p3)));
-        g.bench_function("dense", |b| b.iter(|| black_box(d1) ^ black_box(d2) ^ black_box(d3)));
-        g.finish();
+fn bench_scalar<T: Real>(c: &mut Criterion, scalar: &str) {
+    let (p1, p2, p3) = (points::<T>(0.0), points::<T>(100.0), points::<T>(200.0));
+    let ei = Vector::from_array([0.0, 0.0, 0.0, 0.0, 1.0].map(T::from_f64));
 
-        let (dl, ds) = (dense(i.line), dense(i.sphere));
-        let mut g = $c.benchmark_group(concat!("line_meet_sphere/", $name));
-        g.bench_function("sparse", |b| b.iter(|| black_box(i.line) & black_box(i.sphere)));
-        g.bench_function("dense", |b| b.iter(|| black_box(dl) & black_box(ds)));
-        g.finish();
+    let pairs: Vec<(Vector<T>, Vector<T>)> = p1.iter().copied().zip(p2.iter().copied()).collect();
+    let dense_pairs: Vec<(Multivector<T>, Multivector<T>)> = pairs.iter().map(|&(x, y)| (x.into(), y.into())).collect();
+    let mut g = group(c, &format!("circle_from_3_points/{scalar}"));
+    run(&mut g, "sparse", &pairs, &p3, |(x, y), z| x ^ y ^ z);
+    run(&mut g, "dense", &dense_pairs, &dense(&p3), |(x, y), z| x ^ y ^ z);
+    g.finish();
 
-        let (dm, dx) = (dense(i.motor), dense(p1));
-        let mut g = $c.benchmark_group(concat!("motor_on_point/", $name));
-        g.bench_function("sparse", |b| b.iter(|| black_box(i.motor).sandwich(black_box(p1))));
-        g.bench_function("dense", |b| b.iter(|| black_box(dm).sandwich(&black_box(dx))));
-        g.finish();
+    // Lines X1 ∧ X2 ∧ ei (grade 3, non-line blades zero) against spheres through 4 points.
+    let lines: Vec<Line<T>> = pairs.iter().map(|&(x, y)| Line::from_storage(&(x ^ y ^ ei).to_storage())).collect();
+    let p4 = points::<T>(300.0);
+    let spheres: Vec<Sphere<T>> = (0..BATCH).map(|i| p1[i] ^ p2[i] ^ p3[i] ^ p4[i]).collect();
+    let mut g = group(c, &format!("line_meet_sphere/{scalar}"));
+    run(&mut g, "sparse", &lines, &spheres, |l, s| l & s);
+    run(&mut g, "dense", &dense(&lines), &dense(&spheres), |l, s| l & s);
+    g.finish();
 
-        let [c1, c2] = i.circles;
-        let (dc1, dc2) = (dense(c1), dense(c2));
-        let mut g = $c.benchmark_group(concat!("circle_times_circle/", $name));
-        g.bench_function("sparse", |b| b.iter(|| black_box(c1) * black_box(c2)));
-        g.bench_function("dense", |b| b.iter(|| black_box(dc1) * black_box(dc2)));
-        g.finish();
+    let motors: Vec<Motor<T>> = (0..BATCH)
+        .map(|i| {
+            let t = i as f64;
+            let r: Rotor =
+                Rotor { s: (0.3 * t).cos(), e12: (0.3 * t).sin() * 0.6, e13: 0.0, e23: (0.3 * t).sin() * -0.8 };
+            let m: Motor = r * Translator { s: 1.0, e1i: (0.5 * t).sin(), e2i: -0.5, e3i: (0.2 * t).cos() };
+            Motor::from_array(m.to_array().map(T::from_f64))
+        })
+        .collect();
+    let mut g = group(c, &format!("motor_on_point/{scalar}"));
+    run(&mut g, "sparse", &motors, &p1, |m, x| m.sandwich(x));
+    run(&mut g, "dense", &dense(&motors), &dense(&p1), |m, x| m.sandwich(&x));
+    g.finish();
 
-        let [m1, m2] = i.dense;
-        let mut g = $c.benchmark_group(concat!("dense_gp_32x32/", $name));
-        g.bench_function("dense", |b| b.iter(|| black_box(m1) * black_box(m2)));
-        g.finish();
-    }};
+    let circles: Vec<Circle<T>> = pairs.iter().zip(&p3).map(|(&(x, y), &z)| x ^ y ^ z).collect();
+    let others: Vec<Circle<T>> = (0..BATCH).map(|i| p4[i] ^ p2[i] ^ p1[i]).collect();
+    let mut g = group(c, &format!("circle_times_circle/{scalar}"));
+    run(&mut g, "sparse", &circles, &others, |a, b| a * b);
+    run(&mut g, "dense", &dense(&circles), &dense(&others), |a, b| a * b);
+    g.finish();
+
+    let full = |s: f64| -> Vec<Multivector<T>> {
+        (0..BATCH)
+            .map(|i| Multivector::new(std::array::from_fn(|k| T::from_f64((s * (k + i) as f64 + 0.1).sin()))))
+            .collect()
+    };
+    let mut g = group(c, &format!("dense_gp_32x32/{scalar}"));
+    run(&mut g, "dense", &full(0.37), &full(1.13), |a, b| a * b);
+    g.finish();
 }
 
 fn products(c: &mut Criterion) {
-    bench_scalar!(c, f64, "f64");
-    bench_scalar!(c, f32, "f32");
+    bench_scalar::<f64>(c, "f64");
+    bench_scalar::<f32>(c, "f32");
 }
 
 criterion_group! {
     name = benches;
-    config = Criterion::default().warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(2)).sample_size(60);
+    config = Criterion::default()
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
+        .sample_size(40);
     targets = products
 }
 criterion_main!(benches);

@@ -1,7 +1,7 @@
-//! `cga`: conformal geometric algebra as generated, grade-sparse Rust types.
+#![doc = include_str!("../README.md")]
 //!
-//! Re-exports the workspace crates: [`cga_core`] (types and geometry), [`cga_macros`]
-//! (the `algebra!` generator) and [`cga_trace`] (the renderer).
+//! The crate re-exports the workspace: [`cga_core`] (types and geometry, also glob-imported
+//! here), [`cga_macros`]'s `algebra!` generator, and [`cga_trace`] (the renderer).
 
 pub use cga_core;
 pub use cga_core::*;

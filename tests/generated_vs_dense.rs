@@ -111,7 +111,8 @@ fn versor_sandwiches_stay_in_type() {
     let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise();
     let translator = Translator { s: 1.0, e1i: -0.6, e2i: 1.5, e3i: 0.25 };
     let motor: Motor = rotor * translator;
-    let versors: [(&str, Multivector); 3] = [("Rotor", rotor.into()), ("Translator", translator.into()), ("Motor", motor.into())];
+    let versors: [(&str, Multivector); 3] =
+        [("Rotor", rotor.into()), ("Translator", translator.into()), ("Motor", motor.into())];
     let a: [f64; 32] = std::array::from_fn(|i| ((i * 37 % 11) as f64 - 5.0) / 3.0);
     let mut checked = 0;
     for e in product_table::<f64>().into_iter().filter(|e| e.kind == ProductKind::Sandwich) {

@@ -82,7 +82,11 @@ fn products_do_one_multiplication_per_table_term() {
         let (data, constant) = Counted::counts();
         let expected = expected_product_terms(e.kind, e.lhs_blades, e.rhs_blades);
         assert_eq!(constant, 0, "{:?} {} x {}: multiplications by constants", e.kind, e.lhs, e.rhs);
-        assert_eq!(data, expected, "{:?} {} x {}: {data} multiplications, table has {expected} terms", e.kind, e.lhs, e.rhs);
+        assert_eq!(
+            data, expected,
+            "{:?} {} x {}: {data} multiplications, table has {expected} terms",
+            e.kind, e.lhs, e.rhs
+        );
         assert_eq!(e.terms, expected, "{:?} {} x {}: registry says {}", e.kind, e.lhs, e.rhs, e.terms);
         let dense_terms = e.lhs_blades.len() * e.rhs_blades.len();
         rows.push(format!("| {:?} | {} | {} | {} | {data} | {dense_terms} |", e.kind, e.lhs, e.rhs, e.output));

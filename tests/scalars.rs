@@ -64,7 +64,8 @@ fn f32_products_track_f64() {
 /// A motor in f32 moves a point to where f64 puts it.
 #[test]
 fn f32_motor_on_point() {
-    let motor: Motor = Rotor { s: 0.8, e12: 0.36, e13: 0.0, e23: -0.48 } * Translator { s: 1.0, e1i: 1.5, e2i: -0.5, e3i: 2.0 };
+    let motor: Motor =
+        Rotor { s: 0.8, e12: 0.36, e13: 0.0, e23: -0.48 } * Translator { s: 1.0, e1i: 1.5, e2i: -0.5, e3i: 2.0 };
     let x = Vector { e1: 1.0, e2: -2.0, e3: 0.5, eo: 1.0, ei: 0.5 * (1.0 + 4.0 + 0.25) };
     let m32 = Motor::from_array(motor.to_array().map(|c| c as f32));
     let x32 = Vector::from_array(x.to_array().map(|c| c as f32));

@@ -29,6 +29,15 @@ enum Target {
     Dense,
 }
 
+/// A product to generate: its kind, operand types (indices), result and table.
+struct Planned {
+    kind: Product,
+    lhs: usize,
+    rhs: usize,
+    target: Target,
+    table: Bilinear,
+}
+
 /// Names and symbols of a product kind.
 struct ProductNames {
     trait_name: &'static str,
@@ -164,7 +173,12 @@ impl<'a> Gen<'a> {
         out
     }
 
-    fn bilinear_exprs(&self, terms: &[(usize, Vec<Term>)], lhs: &[usize], rhs: &[usize]) -> BTreeMap<usize, TokenStream> {
+    fn bilinear_exprs(
+        &self,
+        terms: &[(usize, Vec<Term>)],
+        lhs: &[usize],
+        rhs: &[usize],
+    ) -> BTreeMap<usize, TokenStream> {
         terms
             .iter()
             .map(|(blade, terms)| {
@@ -541,7 +555,7 @@ impl<'a> Gen<'a> {
     }
 
     /// One entry per nonzero product of an ordered pair of types.
-    fn product_plan(&self) -> Vec<(Product, usize, usize, Target, Vec<(usize, Vec<Term>)>)> {
+    fn product_plan(&self) -> Vec<Planned> {
         let mut plan = Vec::new();
         for (l, lt) in self.spec.types.iter().enumerate() {
             for (r, rt) in self.spec.types.iter().enumerate() {
@@ -552,7 +566,7 @@ impl<'a> Gen<'a> {
                         continue;
                     }
                     if let Some(target) = self.target_for(&outs) {
-                        plan.push((kind, l, r, target, table));
+                        plan.push(Planned { kind, lhs: l, rhs: r, target, table });
                     }
                 }
             }
@@ -563,7 +577,7 @@ impl<'a> Gen<'a> {
     fn products(&self) -> TokenStream {
         let real = self.real;
         let mut out = TokenStream::new();
-        for (kind, l, r, target, table) in self.product_plan() {
+        for Planned { kind, lhs: l, rhs: r, target, table } in self.product_plan() {
             let (lt, rt) = (&self.spec.types[l], &self.spec.types[r]);
             let n = names(kind);
             let (tr, m) = (format_ident!("{}", n.trait_name), format_ident!("{}", n.method));
@@ -612,12 +626,8 @@ impl<'a> Gen<'a> {
     fn sandwich_plan(&self, v: &TypeSpec, x: &TypeSpec) -> Option<(Bilinear, Bilinear, Target)> {
         let stage1 = self.a.bilinear(Product::Geometric, &v.model.blades, &x.model.blades);
         let mids: Vec<usize> = stage1.iter().map(|(b, _)| *b).collect();
-        let rev: Vec<f64> = v
-            .model
-            .blades
-            .iter()
-            .map(|&b| self.a.unary(Unary::Reverse, b).get(&b).copied().unwrap_or(1.0))
-            .collect();
+        let rev: Vec<f64> =
+            v.model.blades.iter().map(|&b| self.a.unary(Unary::Reverse, b).get(&b).copied().unwrap_or(1.0)).collect();
         let stage2 = self
             .a
             .bilinear(Product::Geometric, &mids, &v.model.blades)
@@ -706,20 +716,23 @@ impl<'a> Gen<'a> {
         let mut out = TokenStream::new();
         let mut product_impls = TokenStream::new();
         for kind in Product::ALL {
-            let mut entries = Vec::new();
+            // Entries split by sign, so that the loops carry no branch.
+            let (mut plus, mut minus) = (Vec::new(), Vec::new());
             for &i in &order {
                 for &j in &order {
                     if let Some((r, s)) = self.a.ortho_product(kind, i, j) {
-                        let (pi, pj, pr, neg) = (pos[i] as u8, pos[j] as u8, pos[r] as u8, s < 0.0);
-                        entries.push(quote!((#pi, #pj, #pr, #neg)));
+                        let (pi, pj, pr) = (pos[i] as u8, pos[j] as u8, pos[r] as u8);
+                        let side = if s < 0.0 { &mut minus } else { &mut plus };
+                        side.push(quote!((#pi, #pj, #pr)));
                     }
                 }
             }
             let table = format_ident!("__{}_{}", upper, names(kind).trait_name.to_uppercase());
-            let len = entries.len();
+            let (np, nm) = (plus.len(), minus.len());
+            let len = np + nm;
             out.extend(quote! {
                 #[doc(hidden)]
-                const #table: [(u8, u8, u8, bool); #len] = [#(#entries),*];
+                const #table: ([(u8, u8, u8); #np], [(u8, u8, u8); #nm]) = ([#(#plus),*], [#(#minus),*]);
             });
             let n = names(kind);
             let (tr, m) = (format_ident!("{}", n.trait_name), format_ident!("{}", n.method));
@@ -730,7 +743,7 @@ impl<'a> Gen<'a> {
                     #[doc = #doc]
                     #[inline]
                     fn #m(self, rhs: #ident<T>) -> #ident<T> {
-                        self.apply_table(&rhs, &#table)
+                        self.apply_table(&rhs, &#table.0, &#table.1)
                     }
                 }
             });
@@ -785,8 +798,7 @@ impl<'a> Gen<'a> {
         // Storage ↔ orthonormal conversions, unrolled.
         let convert = |src: &dyn Fn(usize) -> Vec<(usize, f64)>, src_pos: &[usize], dst_pos: &[usize]| {
             let mut by_dst: BTreeMap<usize, Vec<(f64, TokenStream)>> = BTreeMap::new();
-            for m in 0..dim {
-                let s = src_pos[m];
+            for (m, &s) in src_pos.iter().enumerate() {
                 for (r, c) in src(m) {
                     by_dst.entry(dst_pos[r]).or_default().push((c, quote!(c[#s])));
                 }
@@ -800,16 +812,10 @@ impl<'a> Gen<'a> {
                 .collect();
             sets
         };
-        let to_ortho = convert(
-            &|m| self.a.storage_to_ortho(m).iter().map(|(&k, &v)| (k, v)).collect(),
-            &self.rank,
-            &pos,
-        );
-        let from_ortho = convert(
-            &|m| self.a.ortho_blade_to_storage(m).iter().map(|(&k, &v)| (k, v)).collect(),
-            &pos,
-            &self.rank,
-        );
+        let to_ortho =
+            convert(&|m| self.a.storage_to_ortho(m).iter().map(|(&k, &v)| (k, v)).collect(), &self.rank, &pos);
+        let from_ortho =
+            convert(&|m| self.a.ortho_blade_to_storage(m).iter().map(|(&k, &v)| (k, v)).collect(), &pos, &self.rank);
         let tables = format_ident!("__{}_UNARY", upper);
         let summary = format!(
             " {dim} coefficients in the orthonormal basis, in canonical order: `{}`.",
@@ -870,15 +876,21 @@ impl<'a> Gen<'a> {
                     out
                 }
 
-                /// Sum of `±a[i] b[j]` into `out[k]` over a product table's entries.
+                /// `out[k] += a[i] b[j]` over the positive entries of a product table, then
+                /// `out[k] −= a[i] b[j]` over the negative ones. Indices are masked to the
+                /// array size, which lets the compiler drop the bounds checks.
                 #[inline]
-                fn apply_table(&self, rhs: &Self, table: &[(u8, u8, u8, bool)]) -> Self {
+                fn apply_table(&self, rhs: &Self, plus: &[(u8, u8, u8)], minus: &[(u8, u8, u8)]) -> Self {
+                    const MASK: usize = #dim - 1;
                     let (a, b) = (&self.coeffs, &rhs.coeffs);
                     let mut out = [<T as #real>::zero(); #dim];
-                    for &(i, j, k, negate) in table {
-                        let p = a[i as usize] * b[j as usize];
-                        let k = k as usize;
-                        out[k] = if negate { out[k] - p } else { out[k] + p };
+                    for &(i, j, k) in plus {
+                        let k = k as usize & MASK;
+                        out[k] = out[k] + a[i as usize & MASK] * b[j as usize & MASK];
+                    }
+                    for &(i, j, k) in minus {
+                        let k = k as usize & MASK;
+                        out[k] = out[k] - a[i as usize & MASK] * b[j as usize & MASK];
                     }
                     Self { coeffs: out }
                 }
@@ -1024,14 +1036,15 @@ impl<'a> Gen<'a> {
         let real = self.real;
         let dim = self.dim;
         let mut products = Vec::new();
-        for (kind, l, r, target, table) in self.product_plan() {
+        for Planned { kind, lhs: l, rhs: r, target, table } in self.product_plan() {
             let (li, ri) = (&self.spec.types[l].ident, &self.spec.types[r].ident);
             let n = names(kind);
             let (tr, m, variant) =
                 (format_ident!("{}", n.trait_name), format_ident!("{}", n.method), format_ident!("{}", n.kind_variant));
             let terms: usize = table.iter().map(|(_, t)| t.len()).sum();
             let (ls, rs, os) = (li.to_string(), ri.to_string(), self.target_name(target));
-            let (lb, rb, ob) = (self.target_index(Target::Type(l)), self.target_index(Target::Type(r)), self.target_index(target));
+            let (lb, rb, ob) =
+                (self.target_index(Target::Type(l)), self.target_index(Target::Type(r)), self.target_index(target));
             products.push(quote! {
                 ProductEntry {
                     kind: ProductKind::#variant, lhs: #ls, rhs: #rs, output: #os, terms: #terms,

@@ -80,9 +80,9 @@ const MAX_DIM: usize = 6;
 
 fn resolve(input: parse::Input) -> syn::Result<Spec> {
     let call_site = proc_macro2::Span::call_site();
-    let scalar = input
-        .scalar
-        .ok_or_else(|| Error::new(call_site, "missing `scalar = path::to::Trait;` (the bound of the coefficient type)"))?;
+    let scalar = input.scalar.ok_or_else(|| {
+        Error::new(call_site, "missing `scalar = path::to::Trait;` (the bound of the coefficient type)")
+    })?;
     let sig = input.signature.ok_or_else(|| Error::new(call_site, "missing `signature = (p, q);`"))?;
     let (p, q): (usize, usize) = (sig.p.base10_parse()?, sig.q.base10_parse()?);
     let n = p + q;
@@ -164,7 +164,9 @@ fn resolve_basis(basis: &parse::Basis, n: usize) -> syn::Result<(Vec<char>, Vec<
         let row = match &v.expr {
             Some(expr) => match eval(expr, n)? {
                 Value::Vector(row) => row,
-                Value::Number(_) => return Err(Error::new(expr.span(), "a basis vector must be a combination of e1..en")),
+                Value::Number(_) => {
+                    return Err(Error::new(expr.span(), "a basis vector must be a combination of e1..en"));
+                }
             },
             None => ortho_vector(&v.name, n)?,
         };
@@ -245,7 +247,10 @@ fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
         let mask = positions.iter().fold(0usize, |m, &i| m | 1 << i);
         if positions.windows(2).all(|w| w[0] < w[1]) {
             let canonical = algebra.blade_name(mask);
-            return Error::new(ident.span(), format!("blade `{name}` has its labels out of basis order: write `{canonical}`"));
+            return Error::new(
+                ident.span(),
+                format!("blade `{name}` has its labels out of basis order: write `{canonical}`"),
+            );
         }
     }
     let labels: Vec<String> = algebra.labels.iter().map(|c| c.to_string()).collect();
@@ -280,7 +285,10 @@ fn resolve_blades(algebra: &Algebra, decl: &parse::TypeDecl) -> syn::Result<Vec<
             parse::Elem::Grade(lit) => {
                 let k: usize = lit.base10_parse()?;
                 if k > algebra.n {
-                    return Err(Error::new(lit.span(), format!("grade {k} does not exist: grades run from 0 to {}", algebra.n)));
+                    return Err(Error::new(
+                        lit.span(),
+                        format!("grade {k} does not exist: grades run from 0 to {}", algebra.n),
+                    ));
                 }
                 for mask in algebra.grade_blades(k) {
                     push(mask, lit.span(), &mut blades)?;
@@ -300,14 +308,40 @@ mod tests {
     #[test]
     fn random_input_never_panics() {
         let pieces = [
-            "scalar = crate::Real;", "scalar = ;", "signature = (3, 0);", "signature = (4, 1);", "signature = (0, 0);",
-            "signature = (2, 1, 0);", "signature = (99999999999999999999, 1);", "basis = [e1, e2, e3];",
-            "basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];", "basis = [ea = e1 / 0, eb = e2];",
-            "basis = [ea = 1e300 * e1, eb = 1e300 * e2, ec = e3];", "basis = [e1, e1, e3];", "basis = [ex = e1 * e2];",
-            "dense M;", "dense;", "type V = [grade(1)];", "type V = [grade(9)];", "type R = [s, e12];",
-            "type R = [s, e12, e12];", "type Q = [];", "type E = [grade(0), grade(2)];", "versor R2 = [s, e12, e13, e23];",
-            "versor X = [s, eo1];", "alias P = V;", "alias P = Nope;", "type V = [e1];", "type W = [e1oi, e2i];",
-            "type", "= [", "]", ";", "grade(1)", "type Z = [grade(-1)];", "type Y = [s e1];",
+            "scalar = crate::Real;",
+            "scalar = ;",
+            "signature = (3, 0);",
+            "signature = (4, 1);",
+            "signature = (0, 0);",
+            "signature = (2, 1, 0);",
+            "signature = (99999999999999999999, 1);",
+            "basis = [e1, e2, e3];",
+            "basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];",
+            "basis = [ea = e1 / 0, eb = e2];",
+            "basis = [ea = 1e300 * e1, eb = 1e300 * e2, ec = e3];",
+            "basis = [e1, e1, e3];",
+            "basis = [ex = e1 * e2];",
+            "dense M;",
+            "dense;",
+            "type V = [grade(1)];",
+            "type V = [grade(9)];",
+            "type R = [s, e12];",
+            "type R = [s, e12, e12];",
+            "type Q = [];",
+            "type E = [grade(0), grade(2)];",
+            "versor R2 = [s, e12, e13, e23];",
+            "versor X = [s, eo1];",
+            "alias P = V;",
+            "alias P = Nope;",
+            "type V = [e1];",
+            "type W = [e1oi, e2i];",
+            "type",
+            "= [",
+            "]",
+            ";",
+            "grade(1)",
+            "type Z = [grade(-1)];",
+            "type Y = [s e1];",
         ];
         let mut state = 0x9e3779b97f4a7c15u64;
         let mut next = move || {
@@ -324,7 +358,9 @@ mod tests {
                 text.push_str("scalar = crate::Real; ");
             }
             if next() % 5 != 0 {
-                text.push_str(["signature = (3, 0); ", "signature = (2, 1); ", "signature = (1, 0); "][(next() % 3) as usize]);
+                text.push_str(
+                    ["signature = (3, 0); ", "signature = (2, 1); ", "signature = (1, 0); "][(next() % 3) as usize],
+                );
             }
             for _ in 0..next() % 6 {
                 text.push_str(pieces[(next() % pieces.len() as u64) as usize]);
@@ -353,7 +389,12 @@ mod tests {
             .items
             .iter()
             .find_map(|item| match item {
-                syn::Item::Macro(m) if m.mac.path.is_ident("algebra") || m.mac.path.segments.last().is_some_and(|s| s.ident == "algebra") => Some(m.mac.tokens.clone()),
+                syn::Item::Macro(m)
+                    if m.mac.path.is_ident("algebra")
+                        || m.mac.path.segments.last().is_some_and(|s| s.ident == "algebra") =>
+                {
+                    Some(m.mac.tokens.clone())
+                }
                 _ => None,
             })
             .expect("an algebra! invocation");

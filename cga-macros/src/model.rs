@@ -33,13 +33,8 @@ pub enum Product {
 }
 
 impl Product {
-    pub const ALL: [Product; 5] = [
-        Product::Geometric,
-        Product::Outer,
-        Product::Inner,
-        Product::LeftContraction,
-        Product::Regressive,
-    ];
+    pub const ALL: [Product; 5] =
+        [Product::Geometric, Product::Outer, Product::Inner, Product::LeftContraction, Product::Regressive];
 }
 
 /// Linear maps of one multivector.
