@@ -8,7 +8,7 @@ use cga::{
     GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind, RegressiveProduct,
     UnaryKind, product_table, unary_table,
 };
-use common::max_rel_diff;
+use common::{grade_at, max_rel_diff};
 use proptest::prelude::*;
 
 /// Keep only `blades` of a storage array.
@@ -49,11 +49,6 @@ fn dense_unary(kind: UnaryKind, a: Multivector) -> Multivector {
 
 const TOL: f64 = 1e-12;
 
-/// Grade of the storage blade at canonical index `i` (canonical order is by grade).
-fn storage_grade(i: usize) -> u32 {
-    [0, 1, 6, 16, 26, 31, 32].iter().position(|&start| start > i).expect("index < 32") as u32 - 1
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
@@ -69,8 +64,8 @@ proptest! {
             if e.kind == ProductKind::Sandwich {
                 // A sandwich computes X's grades only (all a versor can produce): compare
                 // with the dense result's parts of those grades.
-                let grades: Vec<u32> = e.rhs_blades.iter().map(|&i| storage_grade(i)).collect();
-                let keep: Vec<usize> = (0..32).filter(|&i| grades.contains(&storage_grade(i))).collect();
+                let grades: Vec<usize> = e.rhs_blades.iter().map(|&i| grade_at(i)).collect();
+                let keep: Vec<usize> = (0..32).filter(|&i| grades.contains(&grade_at(i))).collect();
                 want = restrict(&want, &keep);
             }
             let got = (e.eval)(&a, &b);

@@ -8,7 +8,7 @@
 mod common;
 
 use cga::{Multivector, ProductKind, UnaryKind, product_table, unary_table};
-use common::Counted;
+use common::{Counted, grade_at};
 
 const EPS: f64 = 1e-12;
 
@@ -52,10 +52,6 @@ fn table_terms(kind: ProductKind, lhs: &[usize], rhs: &[usize], keep: impl Fn(us
     (terms, outputs)
 }
 
-fn grade(i: usize) -> usize {
-    [0, 1, 6, 16, 26, 31, 32].iter().position(|&start| start > i).expect("index < 32") - 1
-}
-
 /// Expected multiplications: table terms; for a sandwich, `V X` in full, then `(V X) Ṽ` on
 /// the grades of X.
 fn expected_product_terms(kind: ProductKind, lhs: &[usize], rhs: &[usize]) -> usize {
@@ -63,8 +59,8 @@ fn expected_product_terms(kind: ProductKind, lhs: &[usize], rhs: &[usize]) -> us
         return table_terms(kind, lhs, rhs, |_| true).0;
     }
     let (stage1, mids) = table_terms(ProductKind::Geometric, lhs, rhs, |_| true);
-    let grades: Vec<usize> = rhs.iter().map(|&i| grade(i)).collect();
-    let (stage2, _) = table_terms(ProductKind::Geometric, &mids, lhs, |k| grades.contains(&grade(k)));
+    let grades: Vec<usize> = rhs.iter().map(|&i| grade_at(i)).collect();
+    let (stage2, _) = table_terms(ProductKind::Geometric, &mids, lhs, |k| grades.contains(&grade_at(k)));
     stage1 + stage2
 }
 

@@ -27,8 +27,8 @@ mod ortho {
 const GRADE_TYPES: [&str; 6] = ["Scalar", "Vector", "Bivector", "Trivector", "Quadvector", "Pseudoscalar"];
 
 fn single_grade(c: &[f64]) -> Option<usize> {
-    let starts = [0, 1, 6, 16, 26, 31, 32];
-    let grades: Vec<usize> = (0..6).filter(|&g| c[starts[g]..starts[g + 1]].iter().any(|x| *x != 0.0)).collect();
+    let mut grades: Vec<usize> = (0..32).filter(|&i| c[i] != 0.0).map(grade_at).collect();
+    grades.dedup();
     (grades.len() == 1).then(|| grades[0])
 }
 

@@ -36,6 +36,12 @@ pub fn floats(v: &Value) -> Vec<f64> {
     v.as_array().expect("list").iter().map(|x| x.as_f64().unwrap()).collect()
 }
 
+/// Grade of the blade at canonical index `i` of a 32-coefficient array (canonical order is
+/// by grade, in either basis).
+pub fn grade_at(i: usize) -> usize {
+    [0, 1, 6, 16, 26, 31, 32].iter().position(|&start| start > i).expect("index < 32") - 1
+}
+
 /// Largest coefficient difference, relative to the larger magnitude when that exceeds 1.
 pub fn max_rel_diff(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()).max(1.0)).fold(0.0, f64::max)
