@@ -30,6 +30,9 @@ cga_macros::algebra! {
 
     /// A scalar, as a one-blade type.
     type Scalar = [s];
+    /// The point at infinity `ei` (n∞) and its multiples: `X ∧ ei` is a flat point,
+    /// `X1 ∧ X2 ∧ ei` a line, `X1 ∧ X2 ∧ X3 ∧ ei` a plane, each typed as such.
+    type Infinity = [ei];
     /// A grade-1 vector: a conformal point `x + ½x² ei + eo`, a dual sphere or a dual plane.
     type Vector = [grade(1)];
     /// A grade-2 element: a point pair `X1 ∧ X2` (OPNS), or a bivector generator.

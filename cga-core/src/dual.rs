@@ -98,6 +98,9 @@ impl<T: Real> Real for Dual<T> {
     fn is_finite(self) -> bool {
         self.re.is_finite() && self.du.is_finite()
     }
+    fn epsilon() -> Self {
+        Self::constant(T::epsilon())
+    }
 }
 
 #[cfg(test)]

@@ -4,9 +4,12 @@
 //! [`Real`] is the scalar they are generic over (`f32`, `f64`, [`Dual`]).
 
 pub mod algebra;
+pub mod conformal;
 mod dual;
+pub mod euclid;
 mod real;
 
 pub use algebra::*;
+pub use conformal::{Disk, GeometryError, down, ei, up};
 pub use dual::Dual;
 pub use real::Real;

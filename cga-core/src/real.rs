@@ -32,6 +32,8 @@ pub trait Real:
     fn abs(self) -> Self;
     /// Neither infinite nor NaN.
     fn is_finite(self) -> bool;
+    /// The machine epsilon of the type's precision (for a dual number: of its parts).
+    fn epsilon() -> Self;
 }
 
 macro_rules! impl_real {
@@ -51,6 +53,8 @@ macro_rules! impl_real {
             fn abs(self) -> Self { <$t>::abs(self) }
             #[inline]
             fn is_finite(self) -> bool { <$t>::is_finite(self) }
+            #[inline]
+            fn epsilon() -> Self { <$t>::EPSILON }
         }
     )*};
 }

@@ -134,4 +134,7 @@ impl Real for Counted {
     fn is_finite(self) -> bool {
         self.x.is_finite()
     }
+    fn epsilon() -> Self {
+        Counted { x: f64::EPSILON, constant: true }
+    }
 }

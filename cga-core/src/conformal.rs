@@ -1,0 +1,289 @@
+//! The conformal embedding and the objects of CGA: construction from Euclidean data and
+//! the inverse (Euclidean parameters of an object). Objects are OPNS blades, normalised
+//! as clifford's `.normal()`: `X / √|⟨X X̃⟩₀|`.
+//!
+//! Orientation: an object built from points keeps the order of its points (`Line::through
+//! (a, b)` points from `a` to `b`; `Plane::through(a, b, c)` has normal `(b−a)×(c−a)`);
+//! objects built from parameters take the orientation of the same construction from points.
+
+use crate::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
+use crate::{Bivector, Circle, Infinity, LeftContraction, Line, Plane, Real, Sphere, Vector};
+
+/// Why an object cannot be built or read back.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum GeometryError {
+    /// Two of the given points are the same point.
+    #[error("two of the points coincide")]
+    CoincidentPoints,
+    /// The points lie on one line, so they span no circle or plane.
+    #[error("the points are collinear")]
+    CollinearPoints,
+    /// The points lie in one plane (or on one circle), so they span no sphere.
+    #[error("the points are coplanar")]
+    CoplanarPoints,
+    /// A radius is zero or negative.
+    #[error("the radius is not positive")]
+    ZeroRadius,
+    /// A direction or normal is the zero vector.
+    #[error("the direction or normal is zero")]
+    ZeroVector,
+    /// The object is flat (or the point at infinity): it has no finite centre or radius.
+    #[error("the object is flat or at infinity")]
+    AtInfinity,
+    /// A round (sphere, circle, point pair) of negative squared radius.
+    #[error("the round is imaginary (negative squared radius)")]
+    Imaginary,
+    /// The blade is zero or null and cannot be normalised.
+    #[error("the object is degenerate (zero or null)")]
+    Degenerate,
+    /// An input is infinite or NaN.
+    #[error("an input is not finite")]
+    NonFinite,
+}
+
+/// Shorthand for results of this module.
+pub type Result<T, E = GeometryError> = core::result::Result<T, E>;
+
+/// `up(x) = x + ½x² ei + eo`: the null vector of a Euclidean point, with `up(x) · ei = −1`.
+#[inline]
+pub fn up<T: Real>(x: E3<T>) -> Vector<T> {
+    let half = T::from_f64(0.5);
+    Vector { e1: x[0], e2: x[1], e3: x[2], eo: T::one(), ei: half * dot(x, x) }
+}
+
+/// `down(X) = x / (−X · ei)`: the Euclidean point of a (finite) point of any weight, `None`
+/// at infinity (`X · ei ≈ 0`). Only the `e1, e2, e3, eo` parts are read.
+#[inline]
+pub fn down<T: Real>(p: Vector<T>) -> Option<E3<T>> {
+    let x = [p.e1, p.e2, p.e3];
+    let weight = p.eo; // −X · ei
+    let inv = T::one() / weight;
+    (weight.abs() > tolerance(magnitude(&[x])) * T::epsilon().sqrt() && inv.is_finite()).then(|| scale(x, inv))
+}
+
+/// The point at infinity `ei`.
+#[inline]
+pub fn ei<T: Real>() -> Infinity<T> {
+    Infinity { ei: T::one() }
+}
+
+fn finite<T: Real>(points: &[E3<T>]) -> Result<()> {
+    if points.iter().flatten().all(|x| x.is_finite()) { Ok(()) } else { Err(GeometryError::NonFinite) }
+}
+
+fn distinct<T: Real>(points: &[E3<T>]) -> Result<()> {
+    finite(points)?;
+    let tol = tolerance(magnitude(points));
+    for (i, a) in points.iter().enumerate() {
+        for b in &points[i + 1..] {
+            if norm(sub(*a, *b)) <= tol {
+                return Err(GeometryError::CoincidentPoints);
+            }
+        }
+    }
+    Ok(())
+}
+
+impl<T: Real> Line<T> {
+    /// `up(a) ∧ up(b) ∧ ei`, normalised: the line through `a` and `b`, directed from `a` to `b`.
+    pub fn through(a: E3<T>, b: E3<T>) -> Result<Self> {
+        distinct(&[a, b])?;
+        ((up(a) ^ up(b)) ^ ei()).try_normalise().ok_or(GeometryError::Degenerate)
+    }
+
+    /// The line through `p` with direction `d`.
+    pub fn from_point_direction(p: E3<T>, d: E3<T>) -> Result<Self> {
+        finite(&[p, d])?;
+        let d = unit(d).ok_or(GeometryError::ZeroVector)?;
+        Self::through(p, add(p, scale(d, magnitude(&[p]))))
+    }
+
+    /// Unit direction: for `L = up(a) ∧ up(b) ∧ ei`, the `e_k o i` part is `(a − b)_k`,
+    /// so the direction is `b − a` normalised.
+    pub fn direction(&self) -> Result<E3<T>> {
+        unit([-self.e1oi, -self.e2oi, -self.e3oi]).ok_or(GeometryError::Degenerate)
+    }
+
+    /// The point of the line nearest the origin, `d × m / |d|²`, with `d` the direction
+    /// part and `m` the moment `a × b` read from the `e_ij i` part.
+    pub fn point(&self) -> Result<E3<T>> {
+        let d = [-self.e1oi, -self.e2oi, -self.e3oi];
+        let m = [self.e23i, -self.e13i, self.e12i];
+        let inv = T::one() / dot(d, d);
+        if !inv.is_finite() {
+            return Err(GeometryError::Degenerate);
+        }
+        Ok(scale(cross(d, m), inv))
+    }
+}
+
+impl<T: Real> Plane<T> {
+    /// `up(a) ∧ up(b) ∧ up(c) ∧ ei`, normalised: normal `(b − a) × (c − a)`.
+    pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
+        distinct(&[a, b, c])?;
+        let n = cross(sub(b, a), sub(c, a));
+        if norm(n) <= tolerance(magnitude(&[a, b, c])) * norm(sub(b, a)).max_of(norm(sub(c, a))) {
+            return Err(GeometryError::CollinearPoints);
+        }
+        (((up(a) ^ up(b)) ^ up(c)) ^ ei()).try_normalise().ok_or(GeometryError::Degenerate)
+    }
+
+    /// The plane through `p` with normal `n`.
+    pub fn from_point_normal(p: E3<T>, n: E3<T>) -> Result<Self> {
+        finite(&[p, n])?;
+        let n = unit(n).ok_or(GeometryError::ZeroVector)?;
+        let (u, s) = (perpendicular(n), magnitude(&[p]));
+        Self::through(p, add(p, scale(u, s)), add(p, scale(cross(n, u), s)))
+    }
+
+    /// `(n, δ)`: unit normal and signed distance from the origin, `n · x = δ` on the plane.
+    /// The dual `P I5⁻¹ = −λ (n + δ ei)` with `λ > 0`.
+    pub fn normal_offset(&self) -> Result<(E3<T>, T)> {
+        let dual = self.dual();
+        let v = [-dual.e1, -dual.e2, -dual.e3];
+        let len = norm(v);
+        let n = unit(v).ok_or(GeometryError::Degenerate)?;
+        Ok((n, -dual.ei / len))
+    }
+}
+
+impl<T: Real> Sphere<T> {
+    /// `up(a) ∧ up(b) ∧ up(c) ∧ up(d)`, normalised.
+    pub fn through(a: E3<T>, b: E3<T>, c: E3<T>, d: E3<T>) -> Result<Self> {
+        distinct(&[a, b, c, d])?;
+        let s = ((up(a) ^ up(b)) ^ up(c)) ^ up(d);
+        // Coplanar points span a plane: the dual has no eo part.
+        let dual = s.dual();
+        let scale_ = magnitude(&[[dual.e1, dual.e2, dual.e3]]).max_of(dual.ei.abs());
+        if dual.eo.abs() <= tolerance(scale_) * magnitude(&[a, b, c, d]) {
+            return Err(GeometryError::CoplanarPoints);
+        }
+        s.try_normalise().ok_or(GeometryError::Degenerate)
+    }
+
+    /// The sphere of centre `c` and radius `r`: `undual(up(c) − ½r² ei)`, normalised.
+    pub fn from_centre_radius(c: E3<T>, r: T) -> Result<Self> {
+        finite(&[c, [r, r, r]])?;
+        if r <= tolerance(magnitude(&[c])) {
+            return Err(GeometryError::ZeroRadius);
+        }
+        let mut dual = up(c);
+        dual.ei = dual.ei - T::from_f64(0.5) * r * r;
+        dual.undual().try_normalise().ok_or(GeometryError::Degenerate)
+    }
+
+    /// `(centre, radius)` from the dual `σ = S I5⁻¹ = λ(up(c) − ½r² ei)`: `c = σ₁₂₃/λ`,
+    /// `r² = σ²/λ²` with `λ = σ_eo`.
+    pub fn centre_radius(&self) -> Result<(E3<T>, T)> {
+        round_centre_radius(self.dual())
+    }
+}
+
+/// Centre and radius of a dual sphere `λ(up(c) − ½r² ei)`.
+fn round_centre_radius<T: Real>(sigma: Vector<T>) -> Result<(E3<T>, T)> {
+    let centre = down(sigma).ok_or(GeometryError::AtInfinity)?;
+    let r2 = (sigma | sigma).s / (sigma.eo * sigma.eo);
+    if r2 < T::zero() {
+        return Err(GeometryError::Imaginary);
+    }
+    Ok((centre, r2.sqrt()))
+}
+
+impl<T: Real> Circle<T> {
+    /// `up(a) ∧ up(b) ∧ up(c)`, normalised: the circle through three points, its plane's
+    /// normal `(b − a) × (c − a)`.
+    pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
+        Plane::through(a, b, c)?; // rejects coincident and collinear points
+        ((up(a) ^ up(b)) ^ up(c)).try_normalise().ok_or(GeometryError::Degenerate)
+    }
+
+    /// The circle of centre `c`, plane normal `n` and radius `r`, through three of its
+    /// points (so oriented as [`Circle::through`] with normal `n`).
+    pub fn from_centre_normal_radius(c: E3<T>, n: E3<T>, r: T) -> Result<Self> {
+        finite(&[c, n, [r, r, r]])?;
+        if r <= tolerance(magnitude(&[c])) {
+            return Err(GeometryError::ZeroRadius);
+        }
+        let n = unit(n).ok_or(GeometryError::ZeroVector)?;
+        let u = scale(perpendicular(n), r);
+        let v = cross(n, u);
+        Self::through(add(c, u), add(c, v), sub(c, u))
+    }
+
+    /// The plane of the circle, `C ∧ ei` (not normalised).
+    pub fn carrier_plane(&self) -> Plane<T> {
+        *self ^ ei()
+    }
+
+    /// `(centre, unit normal, radius)`: the centre is `down(C ei C)`, the normal that of
+    /// the carrier plane `Π = C ∧ ei`, and `r² = −C² / Π²` (a real circle has `C² > 0`).
+    /// `AtInfinity` for a line (`Π = 0`), `Imaginary` when `r² < 0`.
+    pub fn centre_normal_radius(&self) -> Result<(E3<T>, E3<T>, T)> {
+        let plane = self.carrier_plane();
+        let (normal, _) = plane.normal_offset().map_err(|_| GeometryError::AtInfinity)?;
+        let r2 = -(*self * *self).s / (plane * plane).s;
+        if !r2.is_finite() {
+            return Err(GeometryError::AtInfinity);
+        }
+        if r2 < T::zero() {
+            return Err(GeometryError::Imaginary);
+        }
+        let centre = down(((*self * ei()) * *self).grade1()).ok_or(GeometryError::AtInfinity)?;
+        Ok((centre, normal, r2.sqrt()))
+    }
+}
+
+impl<T: Real> Bivector<T> {
+    /// `up(a) ∧ up(b)`: the point pair of `a` and `b`.
+    pub fn from_points(a: E3<T>, b: E3<T>) -> Result<Self> {
+        distinct(&[a, b])?;
+        Ok(up(a) ^ up(b))
+    }
+
+    /// The two points of a real point pair `P = A ∧ B`, in that order:
+    /// `A ∝ (P − √P²)(ei ⌋ P)`, `B ∝ (P + √P²)(ei ⌋ P)`. `Imaginary` when `P² < 0`,
+    /// `Degenerate` when the two points coincide (`P² = 0`, a tangent).
+    pub fn end_points(&self) -> Result<[E3<T>; 2]> {
+        let sq = (*self * *self).s;
+        if sq < T::zero() {
+            return Err(GeometryError::Imaginary);
+        }
+        let s = sq.sqrt();
+        let d = ei::<T>().lc(*self);
+        let pd = (*self * d).grade1();
+        let a = down(pd - d.scale(s)).ok_or(GeometryError::Degenerate)?;
+        let b = down(pd + d.scale(s)).ok_or(GeometryError::Degenerate)?;
+        if s <= T::zero() {
+            return Err(GeometryError::Degenerate);
+        }
+        Ok([a, b])
+    }
+}
+
+/// A disk: a circle and the plane it bounds a piece of.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Disk<T = f64> {
+    /// The rim.
+    pub circle: Circle<T>,
+    /// `C ∧ ei`, normalised.
+    pub plane: Plane<T>,
+}
+
+impl<T: Real> Disk<T> {
+    /// The disk bounded by `circle`.
+    pub fn new(circle: Circle<T>) -> Result<Self> {
+        let plane = circle.carrier_plane().try_normalise().ok_or(GeometryError::AtInfinity)?;
+        Ok(Disk { circle, plane })
+    }
+}
+
+/// `max` for `PartialOrd` scalars.
+trait MaxOf {
+    fn max_of(self, other: Self) -> Self;
+}
+
+impl<T: Real> MaxOf for T {
+    fn max_of(self, other: Self) -> Self {
+        if other > self { other } else { self }
+    }
+}

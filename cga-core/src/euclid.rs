@@ -1,0 +1,68 @@
+//! Euclidean 3-vectors as `[T; 3]`, generic over the scalar like everything else here
+//! (glam's `DVec3` converts with `to_array`/`from_array`).
+
+use crate::Real;
+
+/// A Euclidean point or vector.
+pub type E3<T = f64> = [T; 3];
+
+/// `a + b`.
+pub fn add<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+/// `a − b`.
+pub fn sub<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// `s a`.
+pub fn scale<T: Real>(a: E3<T>, s: T) -> E3<T> {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+
+/// `a · b`.
+pub fn dot<T: Real>(a: E3<T>, b: E3<T>) -> T {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// `a × b`.
+pub fn cross<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// `|a|`.
+pub fn norm<T: Real>(a: E3<T>) -> T {
+    dot(a, a).sqrt()
+}
+
+/// `a / |a|`, or `None` for a zero or non-finite vector.
+pub fn unit<T: Real>(a: E3<T>) -> Option<E3<T>> {
+    let inv = T::one() / norm(a);
+    (inv.is_finite() && inv > T::zero()).then(|| scale(a, inv))
+}
+
+/// The largest `|a_i|` over several vectors, at least 1: the scale tolerances are relative to.
+pub fn magnitude<T: Real>(points: &[E3<T>]) -> T {
+    points.iter().flatten().fold(T::one(), |m, x| if x.abs() > m { x.abs() } else { m })
+}
+
+/// A tolerance `64 ε s` for quantities of size `s`.
+pub fn tolerance<T: Real>(s: T) -> T {
+    T::from_f64(64.0) * T::epsilon() * s
+}
+
+/// Some unit vector perpendicular to unit `n`.
+pub fn perpendicular<T: Real>(n: E3<T>) -> E3<T> {
+    // Cross with the axis least aligned with n, so the result is never tiny.
+    let a = n.map(|x| x.abs());
+    let axis = if a[0] <= a[1] && a[0] <= a[2] {
+        [T::one(), T::zero(), T::zero()]
+    } else if a[1] <= a[2] {
+        [T::zero(), T::one(), T::zero()]
+    } else {
+        [T::zero(), T::zero(), T::one()]
+    };
+    let p = cross(n, axis);
+    scale(p, T::one() / norm(p))
+}
