@@ -182,7 +182,7 @@ impl<T: Real> Sphere<T> {
 /// Centre and radius of a dual sphere `λ(up(c) − ½r² ei)`.
 fn round_centre_radius<T: Real>(sigma: Vector<T>) -> Result<(E3<T>, T)> {
     let centre = down(sigma).ok_or(GeometryError::AtInfinity)?;
-    let r2 = (sigma | sigma).s / (sigma.eo * sigma.eo);
+    let r2 = sigma.norm_squared() / (sigma.eo * sigma.eo); // σ · σ = ⟨σ σ̃⟩₀ for a vector
     if r2 < T::zero() {
         return Err(GeometryError::Imaginary);
     }
