@@ -7,9 +7,13 @@ pub mod algebra;
 pub mod conformal;
 mod dual;
 pub mod euclid;
+pub mod evolved;
+pub mod interpolate;
 mod real;
 
 pub use algebra::*;
 pub use conformal::{Disk, GeometryError, down, ei, up};
 pub use dual::Dual;
+pub use evolved::{NormalError, NormalParts};
+pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate};
 pub use real::Real;

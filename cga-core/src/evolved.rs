@@ -1,0 +1,73 @@
+//! The evolved surface swept by `C_α` between two circles, and its analytic normal
+//! (the paper's eq. 6–11), with `Ċ = dC_α/dα` exact (dual numbers, see [`Pair::with_derivative`]).
+//!
+//! At a point `X` of `C_α`:
+//! - `Ω = ⟨C Ċ⟩₂`, the "angular velocity" of the circles (`C Ċ` has no other part:
+//!   `C² = 1` makes `Ċ C + C Ċ = 0`, which leaves grade 2 only);
+//! - `Ẋ = X · Ω` (for a vector on the left the Hestenes inner product is `X ⌋ Ω`), the
+//!   velocity of the point as the circle moves;
+//! - `L_C = (X · C) ∧ ei`, the tangent line of the circle at `X`;
+//! - `L_T = Ẋ ∧ X ∧ ei`, the line through `X` along `Ẋ`;
+//! - `N = ⟨L_T L_C I5⟩₃`, the normal line at `X`, `I5 = e12345 = −e123oi`.
+//!
+//! `α` runs from `C1` (α = 0) to `C2` (α = 1). The paper's parameter runs the other way, so
+//! its `Ċ`, `Ω`, `Ẋ`, `L_T` and `N` are the negatives of these (the golden files use it).
+
+use crate::conformal::{GeometryError, ei, up};
+use crate::euclid::E3;
+use crate::interpolate::{InterpolationError, Pair};
+use crate::{Bivector, Circle, Line, Pseudoscalar, Real, Vector};
+
+/// Why a normal cannot be computed.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum NormalError {
+    /// No circle at this α.
+    #[error(transparent)]
+    Interpolation(#[from] InterpolationError),
+    /// `N` has no direction: `L_T` is parallel to `L_C` (the point does not move off its
+    /// circle, `Ẋ ∥` tangent) or `Ẋ = 0` (the circles do not move there).
+    #[error("the normal line is degenerate: {0}")]
+    Degenerate(#[from] GeometryError),
+}
+
+/// Every quantity of the normal computation, for inspection and testing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NormalParts<T = f64> {
+    /// `C_α`.
+    pub circle: Circle<T>,
+    /// `dC_α/dα`.
+    pub circle_dot: Circle<T>,
+    /// `X = up(x)`.
+    pub point: Vector<T>,
+    /// `Ω = ⟨C Ċ⟩₂`.
+    pub omega: Bivector<T>,
+    /// `Ẋ = X · Ω`.
+    pub x_dot: Vector<T>,
+    /// `L_C = (X · C) ∧ ei`.
+    pub l_c: Line<T>,
+    /// `L_T = Ẋ ∧ X ∧ ei`.
+    pub l_t: Line<T>,
+    /// `N = ⟨L_T L_C I5⟩₃`.
+    pub normal_line: Line<T>,
+}
+
+impl<T: Real> Pair<Circle<T>> {
+    /// All of eq. 6–11 at parameter `α` and the point `x` (which should lie on `C_α`).
+    pub fn normal_parts(&self, alpha: T, x: E3<T>) -> Result<NormalParts<T>, InterpolationError> {
+        let (circle, circle_dot) = self.with_derivative(alpha)?;
+        let omega = (circle * circle_dot).grade2();
+        let point = up(x);
+        let x_dot = point | omega;
+        let l_c = (point | circle) ^ ei();
+        let l_t = (x_dot ^ point) ^ ei();
+        let i5 = Pseudoscalar { e123oi: -T::one() };
+        let normal_line = Line::from_storage(&((l_t * l_c) * i5).to_storage());
+        Ok(NormalParts { circle, circle_dot, point, omega, x_dot, l_c, l_t, normal_line })
+    }
+
+    /// The unit Euclidean normal at `x` on `C_α`: the direction of `N` (its sign follows
+    /// `N`'s orientation, which follows the circles': surfaces here are two-sided).
+    pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
+        Ok(self.normal_parts(alpha, x)?.normal_line.direction()?)
+    }
+}

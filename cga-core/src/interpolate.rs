@@ -1,0 +1,213 @@
+//! Interpolation of objects through the square-root projector (the paper's eq. 3–5).
+//!
+//! For normalised blades `C1`, `C2` of one kind (circles, point pairs, lines, planes,
+//! spheres), `X = (1 − α) C1 + α C2` is not a blade in general. Its projection onto the
+//! blades is `C = K⁻¹ X` with `K = √(−X X̃)`, a scalar plus 4-vector, and
+//! `K⁻¹ = K* / (K* K)`, `K* = ⟨K⟩₀ − ⟨K⟩₄` (so `K* K = ⟨K⟩₀² − ⟨K⟩₄²` is a scalar).
+//! Then `C C̃ = K⁻¹ X X̃ K⁻¹ = −1`: the result is normalised as clifford normalises.
+//!
+//! Parameter convention: `α = 0` gives `C1`, `α = 1` gives `C2` (clifford's and the golden
+//! files'); the paper writes `α C1 + (1 − α) C2`, the same surface with `α` reversed.
+
+use crate::{Bivector, Circle, Dual, Line, Plane, Real, ScalarQuadvector, Sphere};
+use core::ops::{Add, Mul, Neg};
+
+/// Why an interpolation has no blade.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum InterpolationError {
+    /// `−X X̃ = s + Q` has no real square root: `s² − Q² < 0`, or both branches of `⟨K⟩₀²`
+    /// are negative. The sum passes through an object with no real projection.
+    #[error("−X X̃ has no real square root at α = {alpha} (s = {s}, Q² = {q2})")]
+    NoRealRoot {
+        /// Where it happened.
+        alpha: f64,
+        /// `⟨−X X̃⟩₀`.
+        s: f64,
+        /// `⟨−X X̃⟩₄²`.
+        q2: f64,
+    },
+    /// `K* K = 0`, or the projected blade is null: the interpolant is degenerate there
+    /// (for instance `X = 0` when `C2 = −C1` is not aligned, or a zero-radius round).
+    #[error("the projector is singular at α = {alpha}")]
+    Singular {
+        /// Where it happened.
+        alpha: f64,
+    },
+}
+
+impl<T: Real> ScalarQuadvector<T> {
+    /// `K* = ⟨K⟩₀ − ⟨K⟩₄`.
+    #[inline]
+    pub fn star(self) -> Self {
+        Self {
+            s: self.s,
+            e123o: -self.e123o,
+            e123i: -self.e123i,
+            e12oi: -self.e12oi,
+            e13oi: -self.e13oi,
+            e23oi: -self.e23oi,
+        }
+    }
+
+    /// Both real square roots with a positive scalar part (Dorst–Valkenburg): for
+    /// `S = s + Q`, `√S = a + Q/(2a)` with `a² = (s ± √(s² − Q²))/2`, since `Q²` is a scalar.
+    /// `[principal, other]`; the negatives are roots too. The principal (`+`) branch is the
+    /// one continuous with `√s` as `Q → 0` for `s > 0`, so `√1 = 1`: interpolating between
+    /// equal blades gives that blade. A branch is `None` where its `a²` is not positive.
+    pub fn sqrt_roots(self) -> [Option<Self>; 2] {
+        let q = self.grade4();
+        let q2 = (q * q).s;
+        let disc = self.s * self.s - q2;
+        if disc < T::zero() || !disc.is_finite() {
+            return [None, None];
+        }
+        let root = disc.sqrt();
+        // a² = (s ± √disc)/2, each written without cancellation: (s + √d)(s − √d) = Q².
+        let (plus, minus) = if self.s >= T::zero() {
+            let p = self.s + root;
+            (p, q2 / p)
+        } else {
+            let m = self.s - root;
+            (q2 / m, m)
+        };
+        let branch = |twice_a2: T| {
+            let a = (twice_a2 / T::from_f64(2.0)).sqrt();
+            let inv = T::one() / (a + a);
+            (twice_a2 > T::zero() && inv.is_finite()).then(|| Self::from(q.scale(inv)) + Self { s: a, ..Self::zero() })
+        };
+        [branch(plus), branch(minus)]
+    }
+
+    /// The principal square root (see [`ScalarQuadvector::sqrt_roots`]), if it is real.
+    #[inline]
+    pub fn try_sqrt(self) -> Option<Self> {
+        self.sqrt_roots()[0]
+    }
+}
+
+/// Blades that interpolate through the projector: [`Circle`], [`Bivector`] (point pairs),
+/// [`Line`], [`Plane`], [`Sphere`].
+pub trait Interpolable<T: Real>: Copy + Add<Output = Self> + Mul<T, Output = Self> + Neg<Output = Self> {
+    /// The same blade over dual numbers.
+    type Lifted: Interpolable<Dual<T>>;
+    /// As a constant dual blade.
+    fn lift(self) -> Self::Lifted;
+    /// (value, derivative) of a dual blade.
+    fn split(lifted: Self::Lifted) -> (Self, Self);
+    /// `−X X̃`: a scalar plus 4-vector for a sum of blades of one grade (the grade-2 part
+    /// vanishes identically and is dropped).
+    fn neg_square(self) -> ScalarQuadvector<T>;
+    /// `K⁻¹ X = K* X / (K* K)`, the parts of this type's grade kept; `None` when singular.
+    fn project(self, k: ScalarQuadvector<T>) -> Option<Self>;
+    /// `⟨A B̃⟩₀`.
+    fn scalar_product(self, other: Self) -> T;
+    /// `A / √|⟨A Ã⟩₀|`, `None` for a null or zero blade.
+    fn try_normalised(self) -> Option<Self>;
+}
+
+macro_rules! interpolable {
+    ($($ty:ident),*) => {$(
+        impl<T: Real> Interpolable<T> for $ty<T> {
+            type Lifted = $ty<Dual<T>>;
+            #[inline]
+            fn lift(self) -> Self::Lifted {
+                $ty::from_array(self.to_array().map(Dual::constant))
+            }
+            #[inline]
+            fn split(lifted: Self::Lifted) -> (Self, Self) {
+                let c = lifted.to_array();
+                ($ty::from_array(c.map(|d| d.re)), $ty::from_array(c.map(|d| d.du)))
+            }
+            #[inline]
+            fn neg_square(self) -> ScalarQuadvector<T> {
+                -ScalarQuadvector::from_storage(&(self * self.reverse()).to_storage())
+            }
+            #[inline]
+            fn project(self, k: ScalarQuadvector<T>) -> Option<Self> {
+                let star = k.star();
+                let inv = T::one() / (star * k).s;
+                inv.is_finite().then(|| $ty::from_storage(&(star * self).to_storage()).scale(inv))
+            }
+            #[inline]
+            fn scalar_product(self, other: Self) -> T {
+                ScalarQuadvector::from_storage(&(self * other.reverse()).to_storage()).s
+            }
+            #[inline]
+            fn try_normalised(self) -> Option<Self> {
+                self.try_normalise()
+            }
+        }
+    )*};
+}
+
+interpolable!(Circle, Bivector, Line, Plane, Sphere);
+
+/// `C2` or `−C2`, whichever is oriented like `C1`: the sign of `⟨C1 C̃2⟩₀` must be that of
+/// `⟨C1 C̃1⟩₀`. Without this, `C2 ≈ −C1` makes `X` pass through zero.
+#[inline]
+pub fn align<T: Real, X: Interpolable<T>>(c1: X, c2: X) -> X {
+    let (own, cross) = (c1.scalar_product(c1), c1.scalar_product(c2));
+    if (own < T::zero()) != (cross < T::zero()) { -c2 } else { c2 }
+}
+
+/// `C_α = K⁻¹ X / √|⟨…⟩₀|` for `X = (1 − α) C1 + α C2`, `K` the principal root of `−X X̃`.
+/// The inputs are used as given (normalise and [`align`] them first: [`Pair::new`] does).
+/// The final renormalisation only removes rounding: `K⁻¹ X` is normalised exactly.
+pub fn interpolate<T: Real, X: Interpolable<T>>(c1: X, c2: X, alpha: T) -> Result<X, InterpolationError> {
+    let x = c1 * (T::one() - alpha) + c2 * alpha;
+    let sq = x.neg_square();
+    let singular = || InterpolationError::Singular { alpha: alpha.to_f64() };
+    let k = match sq.try_sqrt() {
+        Some(k) => k,
+        // X = 0 (unaligned opposite blades): the root exists, it is zero.
+        None if sq == ScalarQuadvector::zero() => return Err(singular()),
+        None => {
+            let q = sq.grade4();
+            return Err(InterpolationError::NoRealRoot {
+                alpha: alpha.to_f64(),
+                s: sq.s.to_f64(),
+                q2: (q * q).s.to_f64(),
+            });
+        }
+    };
+    x.project(k).ok_or_else(singular)?.try_normalised().ok_or_else(singular)
+}
+
+/// Two normalised blades of one kind, the second aligned to the first: the endpoints of an
+/// interpolation, prepared once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pair<X> {
+    /// `α = 0`.
+    pub c1: X,
+    /// `α = 1`, oriented like `c1`.
+    pub c2: X,
+}
+
+impl<X> Pair<X> {
+    /// Normalise both and align `c2` to `c1`; `None` if either is null or zero.
+    pub fn new<T: Real>(c1: X, c2: X) -> Option<Self>
+    where
+        X: Interpolable<T>,
+    {
+        let c1 = c1.try_normalised()?;
+        let c2 = align(c1, c2.try_normalised()?);
+        Some(Pair { c1, c2 })
+    }
+
+    /// `C_α` (see [`interpolate`]).
+    pub fn at<T: Real>(&self, alpha: T) -> Result<X, InterpolationError>
+    where
+        X: Interpolable<T>,
+    {
+        interpolate(self.c1, self.c2, alpha)
+    }
+
+    /// `(C_α, dC_α/dα)`, the derivative exact: the same code run on dual numbers.
+    pub fn with_derivative<T: Real>(&self, alpha: T) -> Result<(X, X), InterpolationError>
+    where
+        X: Interpolable<T>,
+    {
+        let c = interpolate(self.c1.lift(), self.c2.lift(), Dual::variable(alpha))?;
+        Ok(X::split(c))
+    }
+}
