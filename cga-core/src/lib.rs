@@ -9,6 +9,7 @@ mod dual;
 pub mod euclid;
 pub mod evolved;
 pub mod interpolate;
+pub mod meet;
 mod real;
 
 pub use algebra::*;
@@ -16,4 +17,5 @@ pub use conformal::{Disk, GeometryError, down, ei, up};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate};
+pub use meet::{Hit, RoundMeet};
 pub use real::Real;
