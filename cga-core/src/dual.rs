@@ -101,6 +101,19 @@ impl<T: Real> Real for Dual<T> {
     fn epsilon() -> Self {
         Self::constant(T::epsilon())
     }
+    /// `sin(a + a'ε) = sin a + a' cos a ε`.
+    fn sin(self) -> Self {
+        Dual { re: self.re.sin(), du: self.du * self.re.cos() }
+    }
+    /// `cos(a + a'ε) = cos a − a' sin a ε`.
+    fn cos(self) -> Self {
+        Dual { re: self.re.cos(), du: -(self.du * self.re.sin()) }
+    }
+    /// `d atan2(y, x) = (x dy − y dx) / (x² + y²)`.
+    fn atan2(self, x: Self) -> Self {
+        let r2 = x.re * x.re + self.re * self.re;
+        Dual { re: self.re.atan2(x.re), du: (x.re * self.du - self.re * x.du) / r2 }
+    }
 }
 
 #[cfg(test)]

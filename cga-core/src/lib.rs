@@ -11,6 +11,7 @@ pub mod evolved;
 pub mod interpolate;
 pub mod meet;
 mod real;
+pub mod versor;
 
 pub use algebra::*;
 pub use conformal::{Disk, GeometryError, down, ei, up};
@@ -19,3 +20,4 @@ pub use evolved::{NormalError, NormalParts};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate};
 pub use meet::{Hit, RoundMeet};
 pub use real::Real;
+pub use versor::{VersorError, exp, rotor_between_lines};

@@ -34,6 +34,12 @@ pub trait Real:
     fn is_finite(self) -> bool;
     /// The machine epsilon of the type's precision (for a dual number: of its parts).
     fn epsilon() -> Self;
+    /// `sin x`.
+    fn sin(self) -> Self;
+    /// `cos x`.
+    fn cos(self) -> Self;
+    /// The angle of the point `(x, self)`, in `(−π, π]`.
+    fn atan2(self, x: Self) -> Self;
 }
 
 macro_rules! impl_real {
@@ -55,6 +61,12 @@ macro_rules! impl_real {
             fn is_finite(self) -> bool { <$t>::is_finite(self) }
             #[inline]
             fn epsilon() -> Self { <$t>::EPSILON }
+            #[inline]
+            fn sin(self) -> Self { <$t>::sin(self) }
+            #[inline]
+            fn cos(self) -> Self { <$t>::cos(self) }
+            #[inline]
+            fn atan2(self, x: Self) -> Self { <$t>::atan2(self, x) }
         }
     )*};
 }

@@ -137,4 +137,13 @@ impl Real for Counted {
     fn epsilon() -> Self {
         Counted { x: f64::EPSILON, constant: true }
     }
+    fn sin(self) -> Self {
+        Counted { x: self.x.sin(), ..self }
+    }
+    fn cos(self) -> Self {
+        Counted { x: self.x.cos(), ..self }
+    }
+    fn atan2(self, x: Self) -> Self {
+        Counted { x: self.x.atan2(x.x), constant: self.constant && x.constant }
+    }
 }
