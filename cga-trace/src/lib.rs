@@ -1,6 +1,18 @@
-//! cga-trace: the ray tracer built on cga-core (camera, shapes, lights, integrator, film).
+//! cga-trace: a ray tracer whose geometry is conformal geometric algebra (cga-core).
 //!
-//! Not yet built: this crate holds the workspace's place for the renderer of issue 4.
-//! Its one dependency, cga-core, already provides the types the renderer will use.
+//! Kept apart as pbrt keeps them: [`camera`] makes rays (eq. 2), [`shapes`] and [`surface`]
+//! meet them with objects (CGA meets; evolved surfaces by robust root isolation), [`render`]
+//! shades (eq. 12), [`film`] stores and encodes, [`scene`] reads TOML.
+
+pub mod camera;
+pub mod film;
+pub mod ray;
+pub mod render;
+pub mod scene;
+pub mod shapes;
+pub mod surface;
 
 pub use cga_core;
+pub use film::Film;
+pub use render::{Aov, Renderer};
+pub use scene::{Encoding, Scene, SceneError};

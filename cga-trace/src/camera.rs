@@ -1,0 +1,90 @@
+//! The pinhole camera of the paper's eq. 2: a motor places it, and pixel `(i, j)` (`(0, 0)`
+//! bottom-left) is the ray `L_ij = cam ∧ P_ij ∧ ei` with
+//! `P_ij = M up(f e2 − x_max/2 (1 − 2u/w) e1 − y_max/2 (1 − 2v/h) e3) M̃`, `(u, v)` the
+//! pixel centre `(i + ½, j + ½)`. In the camera's frame it looks along `e2` with `e3` up.
+
+use crate::ray::Ray;
+use cga_core::euclid::{E3, cross, sub, unit};
+use cga_core::{Motor, Rotor, Sandwich, Translator, Vector, down, ei, up};
+
+/// Why a camera cannot be built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum CameraError {
+    /// The camera sits on the point it looks at.
+    #[error("the camera position equals the look-at point")]
+    NoDirection,
+    /// The up vector is parallel to the viewing direction.
+    #[error("the up vector is parallel to the viewing direction")]
+    UpParallel,
+    /// A zero or negative size, focal length or image extent.
+    #[error("focal length, image extents and size must be positive")]
+    NotPositive,
+}
+
+/// A pinhole camera.
+#[derive(Clone, Copy, Debug)]
+pub struct Camera {
+    /// Camera frame → world.
+    pub pose: Motor,
+    /// Focal length `f`.
+    pub focal: f64,
+    /// Width of the image plane, `x_max`.
+    pub x_max: f64,
+    /// Height of the image plane, `y_max`.
+    pub y_max: f64,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    position: E3,
+    /// `cam = M up(0) M̃`.
+    cam: Vector,
+}
+
+impl Camera {
+    /// A camera with pose `pose`.
+    pub fn new(pose: Motor, focal: f64, x_max: f64, y_max: f64, width: u32, height: u32) -> Result<Self, CameraError> {
+        if !(focal > 0.0 && x_max > 0.0 && y_max > 0.0 && width > 0 && height > 0) {
+            return Err(CameraError::NotPositive);
+        }
+        if !(focal.is_finite() && x_max.is_finite() && y_max.is_finite()) {
+            return Err(CameraError::NotPositive);
+        }
+        let cam = pose.sandwich(up([0.0; 3]));
+        let position = down(cam).ok_or(CameraError::NotPositive)?;
+        Ok(Camera { pose, focal, x_max, y_max, width, height, position, cam })
+    }
+
+    /// The pose that puts the camera at `position`, looking at `target`, with `up` upwards:
+    /// the rotor taking `(e1, e2, e3)` to `(right, forward, up')`, then the translator.
+    pub fn pose_look_at(position: E3, target: E3, up_dir: E3) -> Result<Motor, CameraError> {
+        let forward = unit(sub(target, position)).ok_or(CameraError::NoDirection)?;
+        let right = unit(cross(forward, up_dir)).ok_or(CameraError::UpParallel)?;
+        let true_up = cross(right, forward);
+        let m = glam::DMat3::from_cols(right.into(), forward.into(), true_up.into());
+        let q = glam::DQuat::from_mat3(&m).normalize();
+        // A quaternion (w; x, y, z) turning about a by θ is cos θ/2 + sin θ/2 a; our rotor is
+        // cos θ/2 − sin θ/2 a I3 = w − z e12 + y e13 − x e23.
+        let rotor = Rotor { s: q.w, e12: -q.z, e13: q.y, e23: -q.x };
+        Ok(Motor::from_rotor_translator(rotor, Translator::from_vector(position)))
+    }
+
+    /// Where the camera is.
+    pub fn position(&self) -> E3 {
+        self.position
+    }
+
+    /// The ray `cam ∧ P ∧ ei` through the image-plane point at continuous pixel coordinates
+    /// `(u, v)` (pixel `(i, j)`'s centre is `(i + ½, j + ½)`). `None` only for a pose that
+    /// is not a rigid motion.
+    pub fn ray(&self, u: f64, v: f64) -> Option<Ray> {
+        let local = [
+            -self.x_max / 2.0 * (1.0 - 2.0 * u / f64::from(self.width)),
+            self.focal,
+            -self.y_max / 2.0 * (1.0 - 2.0 * v / f64::from(self.height)),
+        ];
+        let p = self.pose.sandwich(up(local));
+        let line = ((self.cam ^ p) ^ ei()).try_normalise()?;
+        Ray::from_line(self.position, line)
+    }
+}

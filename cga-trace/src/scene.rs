@@ -1,0 +1,410 @@
+//! Scenes as TOML: the file format, and its checked conversion into a [`Scene`].
+//!
+//! Unknown fields are errors; every error names the file, line and column, and for invalid
+//! geometry the object's name (see the README for the format).
+
+use crate::camera::{Camera, CameraError};
+use crate::shapes::Shape;
+use crate::surface::EvolvedSurface;
+use cga_core::euclid::E3;
+use cga_core::{Circle, Disk, GeometryError, Motor, Plane, Sphere};
+use serde::Deserialize;
+use std::ops::Range;
+use std::path::Path;
+use toml::Spanned;
+
+/// Surface colour and Blinn–Phong coefficients.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Material {
+    /// Linear RGB in [0, 1].
+    pub colour: [f64; 3],
+    /// Ambient coefficient `k_a`.
+    #[serde(default = "half")]
+    pub ka: f64,
+    /// Diffuse coefficient `k_d`.
+    #[serde(default = "one")]
+    pub kd: f64,
+    /// Specular coefficient `k_s`.
+    #[serde(default = "one")]
+    pub ks: f64,
+    /// Specular exponent `q`.
+    #[serde(default = "hundred")]
+    pub q: f64,
+    /// Mirror reflection `k_r`.
+    #[serde(default)]
+    pub kr: f64,
+}
+
+fn half() -> f64 {
+    0.5
+}
+fn one() -> f64 {
+    1.0
+}
+fn hundred() -> f64 {
+    100.0
+}
+
+/// A point light.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Light {
+    /// Where it is.
+    pub position: E3,
+    /// Linear RGB intensity.
+    #[serde(default = "white")]
+    pub colour: [f64; 3],
+}
+
+fn white() -> [f64; 3] {
+    [1.0; 3]
+}
+
+/// How the output PNG encodes linear values.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, Default, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Encoding {
+    /// The sRGB transfer curve (the default).
+    #[default]
+    Srgb,
+    /// Clipped linear values, as the original renderer writes them.
+    Linear,
+}
+
+/// Global render settings.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Settings {
+    /// Reflection recursion depth.
+    #[serde(default = "five")]
+    pub max_depth: u32,
+    /// Colour of rays that hit nothing.
+    #[serde(default)]
+    pub background: [f64; 3],
+    /// Ambient light intensity (times `k_a` and the colour).
+    #[serde(default = "ambient")]
+    pub ambient: f64,
+    /// Fraction of a light's diffuse and specular that passes a blocker (0: hard shadows).
+    #[serde(default)]
+    pub shadow_transmission: f64,
+    /// `f_att = min(1, 1 / (c0 + c1 d + c2 d²))`, `d` the distance to the light.
+    #[serde(default = "no_attenuation")]
+    pub attenuation: [f64; 3],
+    /// PNG encoding.
+    #[serde(default)]
+    pub encoding: Encoding,
+    /// Samples of `f(α)` per ray for evolved surfaces.
+    #[serde(default = "samples")]
+    pub surface_samples: usize,
+}
+
+fn five() -> u32 {
+    5
+}
+fn ambient() -> f64 {
+    0.3
+}
+fn no_attenuation() -> [f64; 3] {
+    [1.0, 0.0, 0.0]
+}
+fn samples() -> usize {
+    64
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            max_depth: five(),
+            background: [0.0; 3],
+            ambient: ambient(),
+            shadow_transmission: 0.0,
+            attenuation: no_attenuation(),
+            encoding: Encoding::Srgb,
+            surface_samples: samples(),
+        }
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    camera: Spanned<CameraSpec>,
+    #[serde(default)]
+    render: Settings,
+    #[serde(default)]
+    lights: Vec<Light>,
+    #[serde(default)]
+    objects: Vec<Spanned<ObjectSpec>>,
+}
+
+/// The camera: a pose (`position`, `look_at`, `up`, or a `motor`), focal length, image-plane
+/// extents and pixel size.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CameraSpec {
+    position: Option<E3>,
+    look_at: Option<E3>,
+    #[serde(default = "z_up")]
+    up: E3,
+    /// Motor coefficients `s, e12, e13, e23, e1i, e2i, e3i, e123i` (instead of position/look_at).
+    motor: Option<[f64; 8]>,
+    #[serde(default = "one")]
+    focal_length: f64,
+    /// Image-plane width; default 2 (90° horizontal field of view with `f = 1`).
+    x_max: Option<f64>,
+    /// Image-plane height; default `x_max · height / width`.
+    y_max: Option<f64>,
+    width: u32,
+    height: u32,
+}
+
+fn z_up() -> E3 {
+    [0.0, 0.0, 1.0]
+}
+
+/// A circle for an evolved surface: Euclidean, or the original renderer's grade-3
+/// coefficients in the orthonormal basis, order e123, e124, e125, e134, e135, e145, e234,
+/// e235, e245, e345.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CircleSpec {
+    centre: Option<E3>,
+    normal: Option<E3>,
+    radius: Option<f64>,
+    blade: Option<[f64; 10]>,
+}
+
+#[derive(Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+enum ObjectSpec {
+    Sphere { name: Option<String>, material: Material, centre: E3, radius: f64 },
+    Plane { name: Option<String>, material: Material, point: E3, normal: E3 },
+    Disk { name: Option<String>, material: Material, centre: E3, normal: E3, radius: f64 },
+    Triangle { name: Option<String>, material: Material, corners: [E3; 3] },
+    Evolved { name: Option<String>, material: Material, c1: CircleSpec, c2: CircleSpec, samples: Option<usize> },
+}
+
+/// One object of a scene.
+#[derive(Clone, Debug)]
+pub struct Object {
+    /// Its name in the scene file (or `object N`).
+    pub name: String,
+    /// Geometry.
+    pub shape: Shape,
+    /// Material.
+    pub material: Material,
+}
+
+/// A scene ready to render.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// The camera.
+    pub camera: Camera,
+    /// Objects.
+    pub objects: Vec<Object>,
+    /// Point lights.
+    pub lights: Vec<Light>,
+    /// Settings.
+    pub settings: Settings,
+}
+
+/// What is wrong with a scene file.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// The file cannot be read.
+    #[error("{file}: {source}")]
+    Io {
+        /// The file.
+        file: String,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed, or a field is unknown, missing or of the wrong type.
+    #[error("{file}:{line}:{column}: {message}")]
+    Syntax {
+        /// The file.
+        file: String,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// What and which field.
+        message: String,
+    },
+    /// Well-formed, but the geometry or values are invalid.
+    #[error("{file}:{line}:{column}: {what}: {reason}")]
+    Invalid {
+        /// The file.
+        file: String,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// The object (`object `disk`) or table (`camera`).
+        what: String,
+        /// Why.
+        reason: String,
+    },
+}
+
+impl Scene {
+    /// Read and check a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io { file: file.clone(), source })?;
+        Scene::parse(&text, &file)
+    }
+
+    /// Check a scene given as text; `file` names it in errors.
+    pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+        let at = |span: Option<Range<usize>>| line_column(text, span.map_or(0, |s| s.start));
+        let spec: SceneFile = toml::from_str(text).map_err(|e| {
+            let (line, column) = at(e.span());
+            SceneError::Syntax { file: file.into(), line, column, message: e.message().trim().to_string() }
+        })?;
+        let invalid = |span: Range<usize>, what: String, reason: String| {
+            let (line, column) = at(Some(span));
+            SceneError::Invalid { file: file.into(), line, column, what, reason }
+        };
+        let settings = spec.render;
+        check_settings(&settings).map_err(|reason| invalid(0..0, "render".into(), reason))?;
+        let camera_span = spec.camera.span();
+        let camera = build_camera(spec.camera.into_inner()).map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
+        for (k, light) in spec.lights.iter().enumerate() {
+            if !light.position.iter().chain(&light.colour).all(|x| x.is_finite()) || light.colour.iter().any(|&c| c < 0.0) {
+                return Err(invalid(0..0, format!("light {}", k + 1), "position and colour must be finite, colour ≥ 0".into()));
+            }
+        }
+        let mut objects = Vec::new();
+        for (k, spanned) in spec.objects.into_iter().enumerate() {
+            let span = spanned.span();
+            let (object, name) = build_object(spanned.into_inner(), k, settings.surface_samples);
+            let what = format!("object `{name}`");
+            objects.push(object.map_err(|reason| invalid(span, what, reason))?);
+        }
+        Ok(Scene { camera, objects, lights: spec.lights, settings })
+    }
+}
+
+/// 1-based line and column of a byte offset.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+fn check_settings(s: &Settings) -> Result<(), String> {
+    let finite = s.background.iter().chain(&s.attenuation).chain([&s.ambient, &s.shadow_transmission]).all(|x| x.is_finite());
+    if !finite {
+        return Err("values must be finite".into());
+    }
+    if !(0.0..=1.0).contains(&s.shadow_transmission) {
+        return Err("shadow_transmission must lie in [0, 1]".into());
+    }
+    if s.attenuation.iter().any(|&c| c < 0.0) || s.attenuation.iter().all(|&c| c == 0.0) {
+        return Err("attenuation coefficients must be ≥ 0 and not all zero".into());
+    }
+    if s.surface_samples < 2 {
+        return Err("surface_samples must be at least 2".into());
+    }
+    Ok(())
+}
+
+fn build_camera(c: CameraSpec) -> Result<Camera, String> {
+    let pose = match (c.motor, c.position, c.look_at) {
+        (Some(m), None, None) => {
+            let motor = Motor::from_array(m);
+            motor.try_normalise().ok_or("the motor is zero")?
+        }
+        (None, Some(p), Some(t)) => Camera::pose_look_at(p, t, c.up).map_err(|e| e.to_string())?,
+        _ => return Err("give either `motor`, or `position` and `look_at`".into()),
+    };
+    let x_max = c.x_max.unwrap_or(2.0);
+    let y_max = c.y_max.unwrap_or(x_max * f64::from(c.height) / f64::from(c.width.max(1)));
+    Camera::new(pose, c.focal_length, x_max, y_max, c.width, c.height).map_err(|e: CameraError| e.to_string())
+}
+
+fn check_material(m: &Material) -> Result<(), String> {
+    let all = m.colour.iter().chain([&m.ka, &m.kd, &m.ks, &m.q, &m.kr]);
+    if all.clone().any(|x| !x.is_finite() || *x < 0.0) {
+        return Err("material values must be finite and ≥ 0".into());
+    }
+    Ok(())
+}
+
+fn geometry(e: GeometryError) -> String {
+    e.to_string()
+}
+
+/// The object and its name (for errors).
+fn build_object(spec: ObjectSpec, index: usize, default_samples: usize) -> (Result<Object, String>, String) {
+    let name_of = |n: &Option<String>| n.clone().unwrap_or_else(|| format!("object {}", index + 1));
+    let (name, material) = match &spec {
+        ObjectSpec::Sphere { name, material, .. }
+        | ObjectSpec::Plane { name, material, .. }
+        | ObjectSpec::Disk { name, material, .. }
+        | ObjectSpec::Triangle { name, material, .. }
+        | ObjectSpec::Evolved { name, material, .. } => (name_of(name), *material),
+    };
+    let shape = || -> Result<Shape, String> {
+        check_material(&material)?;
+        Ok(match spec {
+            ObjectSpec::Sphere { centre, radius, .. } => {
+                let sphere = Sphere::from_centre_radius(centre, radius).map_err(geometry)?;
+                Shape::Sphere { sphere, centre, radius }
+            }
+            ObjectSpec::Plane { point, normal, .. } => Shape::Plane(Plane::from_point_normal(point, normal).map_err(geometry)?),
+            ObjectSpec::Disk { centre, normal, radius, .. } => {
+                let circle = Circle::from_centre_normal_radius(centre, normal, radius).map_err(geometry)?;
+                Shape::Disk(Disk::new(circle).map_err(geometry)?)
+            }
+            ObjectSpec::Triangle { corners, .. } => {
+                let plane = Plane::through(corners[0], corners[1], corners[2]).map_err(geometry)?;
+                Shape::Triangle { plane, corners }
+            }
+            ObjectSpec::Evolved { c1, c2, samples, .. } => {
+                let samples = samples.unwrap_or(default_samples);
+                // Circles given by centre are built in a frame centred between them.
+                let origin = match (c1.centre, c2.centre) {
+                    (Some(a), Some(b)) => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])],
+                    _ => [0.0; 3],
+                };
+                let c1 = circle(c1, origin).map_err(|e| format!("c1: {e}"))?;
+                let c2 = circle(c2, origin).map_err(|e| format!("c2: {e}"))?;
+                let surface = if origin == [0.0; 3] {
+                    EvolvedSurface::new(c1, c2, samples)
+                } else {
+                    EvolvedSurface::in_frame(origin, c1, c2, samples)
+                };
+                Shape::Evolved(Box::new(surface.map_err(|e| e.to_string())?))
+            }
+        })
+    };
+    (shape().map(|shape| Object { name: name.clone(), shape, material }), name)
+}
+
+/// The orthonormal grade-3 blades, in the order scene files give them.
+const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
+
+/// The circle of a spec; one given by its centre is built relative to `origin`.
+fn circle(spec: CircleSpec, origin: E3) -> Result<Circle, String> {
+    match spec {
+        CircleSpec { blade: Some(b), centre: None, normal: None, radius: None } => {
+            let mut dense = cga_core::Multivector::zero();
+            for (name, value) in BLADE_ORDER.iter().zip(b) {
+                let k = cga_core::Multivector::<f64>::BLADES.iter().position(|x| x == name).ok_or("blade order")?;
+                dense.coeffs[k] = value;
+            }
+            let c = Circle::from_dense(&dense).try_normalise().ok_or("the blade is zero or null")?;
+            c.centre_normal_radius().map_err(geometry)?;
+            Ok(c)
+        }
+        CircleSpec { blade: None, centre: Some(c), normal: Some(n), radius: Some(r) } => {
+            let local = [c[0] - origin[0], c[1] - origin[1], c[2] - origin[2]];
+            Circle::from_centre_normal_radius(local, n, r).map_err(geometry)
+        }
+        _ => Err("give either `blade`, or `centre`, `normal` and `radius`".into()),
+    }
+}

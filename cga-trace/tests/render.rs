@@ -1,0 +1,186 @@
+//! The renderer: analytic checks, golden images with a tolerance, thread independence, no
+//! NaN in shipped scenes, and the original renderer's reference image.
+
+use cga_core::euclid::{E3, norm, sub};
+use cga_trace::ray::Ray;
+use cga_trace::scene::Scene;
+use cga_trace::shapes::Shape;
+use cga_trace::{Aov, Encoding, Film, Renderer};
+use std::path::{Path, PathBuf};
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
+}
+
+fn load_sized(name: &str, w: u32, h: u32) -> Scene {
+    let mut scene = Scene::load(&scene_path(name)).unwrap();
+    let c = scene.camera;
+    scene.camera = cga_trace::camera::Camera::new(c.pose, c.focal, c.x_max, c.y_max, w, h).unwrap();
+    scene
+}
+
+fn render(scene: &Scene, threads: usize) -> Film {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+    pool.install(|| Renderer::new(scene).render(Aov::Shaded, &|| {}))
+}
+
+/// A scene from TOML text.
+fn scene(text: &str) -> Scene {
+    Scene::parse(text, "test.toml").unwrap()
+}
+
+const CAMERA: &str = "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 41\nheight = 41\nx_max = 1.0\n";
+
+#[test]
+fn a_ray_hits_a_sphere_where_the_quadratic_says() {
+    let s = scene(&format!("{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"));
+    let ray = Ray::new([0.0, -10.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let hit = s.objects[0].shape.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+    assert!((hit.t - 8.0).abs() < 1e-12 && norm(sub(hit.point, [0.0, -2.0, 0.0])) < 1e-12);
+    assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "normal {:?}", hit.normal);
+    // From inside, the hit in front of the origin counts, not the one behind.
+    let inside = Ray::new([0.0, 0.5, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let hit = s.objects[0].shape.intersect(&inside, 0.0, f64::INFINITY).unwrap();
+    assert!((hit.point[1] - 2.0).abs() < 1e-12 && (hit.t - 1.5).abs() < 1e-12);
+    assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "two-sided normal faces the ray");
+    // Entirely behind: no hit.
+    let away = Ray::new([0.0, -10.0, 0.0], [0.0, -1.0, 0.0]).unwrap();
+    assert!(s.objects[0].shape.intersect(&away, 0.0, f64::INFINITY).is_none());
+}
+
+fn brightness(c: [f64; 3]) -> f64 {
+    c.iter().sum()
+}
+
+#[test]
+fn shadows_fall_behind_blockers_and_stop_at_the_light() {
+    let base = "[camera]\nposition = [0.0, -10.0, 5.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+        [[lights]]\nposition = [0.0, 0.0, 10.0]\n\
+        [[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = { colour = [1.0, 1.0, 1.0], ks = 0.0 }\n";
+    let with_ball = format!("{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 5.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n");
+    let beyond = format!("{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 20.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n");
+    let down = Ray::new([0.0, -3.0, 3.0], [0.0, 3.0, -3.0]).unwrap(); // meets the floor at the origin
+    let lit = Renderer::new(&scene(base)).trace(&down, 0);
+    let shadowed = Renderer::new(&scene(&with_ball)).trace(&down, 0);
+    let far = Renderer::new(&scene(&beyond)).trace(&down, 0);
+    assert!(brightness(shadowed) < 0.5 * brightness(lit), "shadow: {shadowed:?} vs {lit:?}");
+    assert_eq!(far, lit, "a blocker beyond the light casts no shadow");
+}
+
+#[test]
+fn a_head_on_lit_sphere_is_brightest_at_its_centre() {
+    let s = scene(&format!(
+        "{CAMERA}[[lights]]\nposition = [0.0, -10.0, 0.0]\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 3.0\nmaterial = {{ colour = [1.0, 1.0, 1.0], ks = 0.0 }}\n"
+    ));
+    let film = render(&s, 1);
+    let (mut best, mut at) = (0.0, (0, 0));
+    for j in 0..41 {
+        for i in 0..41 {
+            let b = brightness(film.get(i, j));
+            if b > best {
+                (best, at) = (b, (i, j));
+            }
+        }
+    }
+    assert_eq!(at, (20, 20), "brightest pixel at {at:?}");
+}
+
+#[test]
+fn a_mirror_shows_the_object_it_faces() {
+    // Camera looks at a mirror plane; behind the camera, out of direct view, a red sphere.
+    let s = scene(
+        "[camera]\nposition = [0.0, -5.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 9\nheight = 9\nx_max = 0.2\n\
+         [[lights]]\nposition = [0.0, -8.0, 3.0]\n\
+         [[objects]]\nname = \"mirror\"\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, -1.0, 0.0]\n\
+         material = { colour = [0.1, 0.1, 0.1], ka = 0.0, kd = 0.0, ks = 0.0, kr = 1.0 }\n\
+         [[objects]]\nname = \"ball\"\ntype = \"sphere\"\ncentre = [0.0, -12.0, 0.0]\nradius = 3.0\n\
+         material = { colour = [1.0, 0.0, 0.0], ks = 0.0 }\n",
+    );
+    let film = render(&s, 1);
+    let c = film.get(4, 4);
+    assert!(c[0] > 0.1 && c[0] > 5.0 * (c[1] + c[2]), "the mirror's centre shows red: {c:?}");
+}
+
+#[test]
+fn the_same_image_with_one_and_two_threads() {
+    for name in ["primitives.toml", "combined.toml"] {
+        let s = load_sized(name, 64, 48);
+        assert_eq!(render(&s, 1), render(&s, 2), "{name}");
+    }
+}
+
+#[test]
+fn shipped_scenes_have_no_nan_or_inf() {
+    for name in ["primitives.toml", "surface.toml", "combined.toml"] {
+        let film = render(&load_sized(name, 64, 48), 2);
+        assert!(film.pixels.iter().flatten().all(|x| x.is_finite() && *x >= 0.0), "{name}");
+    }
+}
+
+/// Mean absolute difference per channel, in 8-bit levels.
+fn mean_abs_diff(a: &image::RgbImage, b: &image::RgbImage) -> f64 {
+    assert_eq!(a.dimensions(), b.dimensions());
+    let sum: u64 = a.as_raw().iter().zip(b.as_raw()).map(|(x, y)| u64::from(x.abs_diff(*y))).sum();
+    sum as f64 / a.as_raw().len() as f64
+}
+
+/// Regenerate with `CGA_TRACE_BLESS=1 cargo test -p cga-trace --test render golden`.
+#[test]
+fn golden_images_within_tolerance() {
+    for name in ["primitives", "surface"] {
+        let film = render(&load_sized(&format!("{name}.toml"), 80, 60), 2);
+        let got = film.to_rgb8(Encoding::Srgb);
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/golden/{name}_80x60.png"));
+        if std::env::var_os("CGA_TRACE_BLESS").is_some() {
+            got.save(&path).unwrap();
+        }
+        let want = image::open(&path).unwrap().to_rgb8();
+        let d = mean_abs_diff(&got, &want);
+        assert!(d < 0.5, "{name}: mean difference {d} levels");
+    }
+}
+
+/// The original renderer's own 320×240 render of the combined scene.
+#[test]
+fn combined_scene_matches_the_original_renderer() {
+    let scene = Scene::load(&scene_path("combined.toml")).unwrap();
+    let film = render(&scene, 2);
+    let got = film.to_rgb8(scene.settings.encoding);
+    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/reference/combined_320x240_reference.png");
+    let want = image::open(&reference).unwrap().to_rgb8();
+    let d = mean_abs_diff(&got, &want);
+    println!("mean absolute difference against the original: {d:.3} levels");
+    assert!(d < 0.5, "mean difference {d}");
+}
+
+#[test]
+fn the_cli_renders_and_reports() {
+    let out = std::env::temp_dir().join(format!("cga-trace-cli-{}.png", std::process::id()));
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_cga-trace"))
+        .args(["render", scene_path("primitives.toml").to_str().unwrap(), "-o", out.to_str().unwrap(), "--width", "32", "--threads", "2"])
+        .output()
+        .unwrap();
+    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
+    let summary = String::from_utf8_lossy(&status.stderr);
+    assert!(summary.contains("768 pixels") && summary.contains("rays/s"), "{summary}");
+    assert_eq!(image::open(&out).unwrap().to_rgb8().dimensions(), (32, 24));
+    let _ = std::fs::remove_file(out);
+}
+
+/// Far from the origin, a ray lying in an end circle's plane meets it at α = 0: the local
+/// frame keeps the precision, the coplanar case is solved in the plane, the end counts.
+#[test]
+fn a_ray_in_a_far_end_circles_plane_hits_it() {
+    let s = scene(&format!(
+        "{CAMERA}[[objects]]\ntype = \"evolved\"\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n\
+         c1 = {{ centre = [10000.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }}\n\
+         c2 = {{ centre = [10000.0, 0.0, 2.0], normal = [0.0, 0.3, 1.0], radius = 1.5 }}\n"
+    ));
+    let Shape::Evolved(surface) = &s.objects[0].shape else { panic!("an evolved surface") };
+    let ray = Ray::new([1e4, -10.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let hit = surface.intersect(&ray, 0.0, f64::INFINITY).expect("the ray lies in c1's plane and crosses c1");
+    assert!(norm(sub(hit.point, [1e4, -1.0, 0.0])) < 1e-6, "hit at {:?}", hit.point);
+    assert!(hit.alpha.is_some_and(|a| a.abs() < 1e-12), "hit {hit:?}");
+    let (centre, radius): (E3, f64) = surface.bounds();
+    assert!(norm(sub(centre, [1e4, 0.0, 1.0])) < 1e-9 && radius >= 1.5);
+}
