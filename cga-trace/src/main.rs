@@ -8,7 +8,11 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 #[derive(Parser)]
-#[command(name = "cga-trace", version, about = "Ray-trace spheres, planes, disks, triangles and evolved circle surfaces with conformal geometric algebra")]
+#[command(
+    name = "cga-trace",
+    version,
+    about = "Ray-trace spheres, planes, disks, triangles and evolved circle surfaces with conformal geometric algebra"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

@@ -1,8 +1,8 @@
 //! Rays: a Euclidean origin and unit direction for ordering hits, and the CGA line they lie on
 //! for meeting objects.
 
-use cga_core::euclid::{E3, add, dot, scale, sub, unit};
 use cga_core::Line;
+use cga_core::euclid::{E3, add, dot, scale, sub, unit};
 
 /// A ray `o + t d`, `t > 0`, carried by the normalised line `L` from `o` along `d`.
 #[derive(Clone, Copy, Debug)]

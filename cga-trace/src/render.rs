@@ -9,7 +9,7 @@ use crate::film::Film;
 use crate::ray::Ray;
 use crate::scene::{Object, Scene};
 use crate::shapes::Hit;
-use cga_core::euclid::{E3, dot, norm, scale, sub, unit};
+use cga_core::euclid::{dot, norm, scale, sub, unit};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
@@ -100,9 +100,8 @@ impl<'a> Renderer<'a> {
             }
             let [c0, c1, c2] = settings.attenuation;
             let f_att = (1.0 / (c0 + c1 * distance + c2 * distance * distance)).min(1.0);
-            for k in 0..3 {
-                let lit = m.colour[k] * m.kd * diffuse.max(0.0) + m.ks * specular;
-                colour[k] += s * f_att * lit * light.colour[k];
+            for ((out, c), l) in colour.iter_mut().zip(m.colour).zip(light.colour) {
+                *out += s * f_att * (c * m.kd * diffuse.max(0.0) + m.ks * specular) * l;
             }
         }
         if m.kr > 0.0 && depth < settings.max_depth {
@@ -110,8 +109,8 @@ impl<'a> Renderer<'a> {
             if let Some(reflected) = Ray::leaving(hit.point, n, r) {
                 self.counts.reflection.fetch_add(1, Relaxed);
                 let bounced = self.trace(&reflected, depth + 1);
-                for k in 0..3 {
-                    colour[k] += m.kr * bounced[k];
+                for (out, b) in colour.iter_mut().zip(bounced) {
+                    *out += m.kr * b;
                 }
             }
         }
@@ -127,7 +126,9 @@ impl<'a> Renderer<'a> {
         self.counts.primary.fetch_add(1, Relaxed);
         match aov {
             Aov::Shaded => self.trace(&ray, 0),
-            Aov::Normal => self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0))),
+            Aov::Normal => {
+                self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
+            }
             Aov::Alpha => match self.nearest(&ray, 0.0, f64::INFINITY) {
                 Some((Hit { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
                 _ => [0.0; 3],
@@ -149,9 +150,4 @@ impl<'a> Renderer<'a> {
             .collect();
         Film::from_rows(w, h, rows)
     }
-}
-
-/// `E3` helper for tests: the colour's luminance-free sum.
-pub fn brightness(c: E3) -> f64 {
-    c.iter().sum()
 }

@@ -178,11 +178,37 @@ struct CircleSpec {
 #[derive(Deserialize)]
 #[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
 enum ObjectSpec {
-    Sphere { name: Option<String>, material: Material, centre: E3, radius: f64 },
-    Plane { name: Option<String>, material: Material, point: E3, normal: E3 },
-    Disk { name: Option<String>, material: Material, centre: E3, normal: E3, radius: f64 },
-    Triangle { name: Option<String>, material: Material, corners: [E3; 3] },
-    Evolved { name: Option<String>, material: Material, c1: CircleSpec, c2: CircleSpec, samples: Option<usize> },
+    Sphere {
+        name: Option<String>,
+        material: Material,
+        centre: E3,
+        radius: f64,
+    },
+    Plane {
+        name: Option<String>,
+        material: Material,
+        point: E3,
+        normal: E3,
+    },
+    Disk {
+        name: Option<String>,
+        material: Material,
+        centre: E3,
+        normal: E3,
+        radius: f64,
+    },
+    Triangle {
+        name: Option<String>,
+        material: Material,
+        corners: [E3; 3],
+    },
+    Evolved {
+        name: Option<String>,
+        material: Material,
+        c1: Box<CircleSpec>,
+        c2: Box<CircleSpec>,
+        samples: Option<usize>,
+    },
 }
 
 /// One object of a scene.
@@ -261,7 +287,11 @@ impl Scene {
         let at = |span: Option<Range<usize>>| line_column(text, span.map_or(0, |s| s.start));
         let spec: SceneFile = toml::from_str(text).map_err(|e| {
             let (line, column) = at(e.span());
-            SceneError::Syntax { file: file.into(), line, column, message: e.message().trim().to_string() }
+            let mut message = e.message().trim().to_string();
+            if let Some(key) = key_at(text, e.span().map_or(0, |s| s.start)).filter(|k| !message.contains(k.as_str())) {
+                message = format!("field `{key}`: {message}");
+            }
+            SceneError::Syntax { file: file.into(), line, column, message }
         })?;
         let invalid = |span: Range<usize>, what: String, reason: String| {
             let (line, column) = at(Some(span));
@@ -270,10 +300,17 @@ impl Scene {
         let settings = spec.render;
         check_settings(&settings).map_err(|reason| invalid(0..0, "render".into(), reason))?;
         let camera_span = spec.camera.span();
-        let camera = build_camera(spec.camera.into_inner()).map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
+        let camera =
+            build_camera(spec.camera.into_inner()).map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
         for (k, light) in spec.lights.iter().enumerate() {
-            if !light.position.iter().chain(&light.colour).all(|x| x.is_finite()) || light.colour.iter().any(|&c| c < 0.0) {
-                return Err(invalid(0..0, format!("light {}", k + 1), "position and colour must be finite, colour ≥ 0".into()));
+            if !light.position.iter().chain(&light.colour).all(|x| x.is_finite())
+                || light.colour.iter().any(|&c| c < 0.0)
+            {
+                return Err(invalid(
+                    0..0,
+                    format!("light {}", k + 1),
+                    "position and colour must be finite, colour ≥ 0".into(),
+                ));
             }
         }
         let mut objects = Vec::new();
@@ -287,6 +324,16 @@ impl Scene {
     }
 }
 
+/// The key assigned at or just before `offset` (`max_depth` in `max_depth = "deep"`),
+/// for errors whose message does not name the field.
+fn key_at(text: &str, offset: usize) -> Option<String> {
+    let before = &text[..offset.min(text.len())];
+    let segment = before.rsplit(['\n', '{', ',']).next()?;
+    let key = segment.split('=').next()?.trim();
+    (!key.is_empty() && segment.contains('=') && key.chars().all(|c| c.is_alphanumeric() || c == '_' || c == '.'))
+        .then(|| key.to_string())
+}
+
 /// 1-based line and column of a byte offset.
 fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let before = &text[..offset.min(text.len())];
@@ -296,7 +343,8 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
 }
 
 fn check_settings(s: &Settings) -> Result<(), String> {
-    let finite = s.background.iter().chain(&s.attenuation).chain([&s.ambient, &s.shadow_transmission]).all(|x| x.is_finite());
+    let finite =
+        s.background.iter().chain(&s.attenuation).chain([&s.ambient, &s.shadow_transmission]).all(|x| x.is_finite());
     if !finite {
         return Err("values must be finite".into());
     }
@@ -355,7 +403,9 @@ fn build_object(spec: ObjectSpec, index: usize, default_samples: usize) -> (Resu
                 let sphere = Sphere::from_centre_radius(centre, radius).map_err(geometry)?;
                 Shape::Sphere { sphere, centre, radius }
             }
-            ObjectSpec::Plane { point, normal, .. } => Shape::Plane(Plane::from_point_normal(point, normal).map_err(geometry)?),
+            ObjectSpec::Plane { point, normal, .. } => {
+                Shape::Plane(Plane::from_point_normal(point, normal).map_err(geometry)?)
+            }
             ObjectSpec::Disk { centre, normal, radius, .. } => {
                 let circle = Circle::from_centre_normal_radius(centre, normal, radius).map_err(geometry)?;
                 Shape::Disk(Disk::new(circle).map_err(geometry)?)
@@ -371,8 +421,8 @@ fn build_object(spec: ObjectSpec, index: usize, default_samples: usize) -> (Resu
                     (Some(a), Some(b)) => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])],
                     _ => [0.0; 3],
                 };
-                let c1 = circle(c1, origin).map_err(|e| format!("c1: {e}"))?;
-                let c2 = circle(c2, origin).map_err(|e| format!("c2: {e}"))?;
+                let c1 = circle(*c1, origin).map_err(|e| format!("c1: {e}"))?;
+                let c2 = circle(*c2, origin).map_err(|e| format!("c2: {e}"))?;
                 let surface = if origin == [0.0; 3] {
                     EvolvedSurface::new(c1, c2, samples)
                 } else {

@@ -70,7 +70,8 @@ impl EvolvedSurface {
     /// The surface between `c1` (α = 0) and `c2` (α = 1), given in world coordinates and
     /// moved to a frame centred between them, sampled `samples` times per ray.
     pub fn new(c1: Circle, c2: Circle, samples: usize) -> Result<Self, SurfaceError> {
-        let centre = |c: &Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
+        let centre =
+            |c: &Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
         let ((p1, _, _), (p2, _, _)) = (centre(&c1, 1)?, centre(&c2, 2)?);
         let origin = scale(add(p1, p2), 0.5);
         let to_local = Translator::from_vector(origin.map(|x| -x));
@@ -182,7 +183,7 @@ impl EvolvedSurface {
                 break;
             }
             match self.f(line, mid) {
-                Some(fm) if fm == 0.0 => return mid,
+                Some(0.0) => return mid,
                 Some(fm) if fm.signum() == f_lo.signum() => {
                     lo = mid;
                     f_lo = fm;

@@ -29,11 +29,14 @@ fn scene(text: &str) -> Scene {
     Scene::parse(text, "test.toml").unwrap()
 }
 
-const CAMERA: &str = "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 41\nheight = 41\nx_max = 1.0\n";
+const CAMERA: &str =
+    "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 41\nheight = 41\nx_max = 1.0\n";
 
 #[test]
 fn a_ray_hits_a_sphere_where_the_quadratic_says() {
-    let s = scene(&format!("{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"));
+    let s = scene(&format!(
+        "{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
+    ));
     let ray = Ray::new([0.0, -10.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
     let hit = s.objects[0].shape.intersect(&ray, 0.0, f64::INFINITY).unwrap();
     assert!((hit.t - 8.0).abs() < 1e-12 && norm(sub(hit.point, [0.0, -2.0, 0.0])) < 1e-12);
@@ -57,8 +60,12 @@ fn shadows_fall_behind_blockers_and_stop_at_the_light() {
     let base = "[camera]\nposition = [0.0, -10.0, 5.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
         [[lights]]\nposition = [0.0, 0.0, 10.0]\n\
         [[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = { colour = [1.0, 1.0, 1.0], ks = 0.0 }\n";
-    let with_ball = format!("{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 5.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n");
-    let beyond = format!("{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 20.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n");
+    let with_ball = format!(
+        "{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 5.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n"
+    );
+    let beyond = format!(
+        "{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 20.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n"
+    );
     let down = Ray::new([0.0, -3.0, 3.0], [0.0, 3.0, -3.0]).unwrap(); // meets the floor at the origin
     let lit = Renderer::new(&scene(base)).trace(&down, 0);
     let shadowed = Renderer::new(&scene(&with_ball)).trace(&down, 0);
@@ -157,7 +164,16 @@ fn combined_scene_matches_the_original_renderer() {
 fn the_cli_renders_and_reports() {
     let out = std::env::temp_dir().join(format!("cga-trace-cli-{}.png", std::process::id()));
     let status = std::process::Command::new(env!("CARGO_BIN_EXE_cga-trace"))
-        .args(["render", scene_path("primitives.toml").to_str().unwrap(), "-o", out.to_str().unwrap(), "--width", "32", "--threads", "2"])
+        .args([
+            "render",
+            scene_path("primitives.toml").to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--width",
+            "32",
+            "--threads",
+            "2",
+        ])
         .output()
         .unwrap();
     assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
@@ -183,4 +199,55 @@ fn a_ray_in_a_far_end_circles_plane_hits_it() {
     assert!(hit.alpha.is_some_and(|a| a.abs() < 1e-12), "hit {hit:?}");
     let (centre, radius): (E3, f64) = surface.bounds();
     assert!(norm(sub(centre, [1e4, 0.0, 1.0])) < 1e-9 && radius >= 1.5);
+}
+
+/// Any pose: the centre pixel looks at the target, and up in the image is up in the world.
+#[test]
+fn look_at_works_for_any_pose() {
+    use cga_core::euclid::{cross, dot, unit};
+    use cga_trace::camera::Camera;
+    let mut state = 77u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64 * 20.0 - 10.0
+    };
+    for _ in 0..200 {
+        let (pos, target, up) = ([next(), next(), next()], [next(), next(), next()], [next(), next(), next()]);
+        let forward = unit(sub(target, pos)).unwrap();
+        if unit(cross(forward, up)).is_none() || norm(cross(forward, unit(up).unwrap())) < 0.05 {
+            continue;
+        }
+        let pose = Camera::pose_look_at(pos, target, up).unwrap();
+        let camera = Camera::new(pose, 1.0, 2.0, 1.5, 40, 30).unwrap();
+        assert!(norm(sub(camera.position(), pos)) < 1e-9);
+        let centre = camera.ray(20.0, 15.0).unwrap();
+        assert!(norm(sub(centre.dir, forward)) < 1e-9, "centre ray {:?} vs {forward:?}", centre.dir);
+        let above = camera.ray(20.0, 29.0).unwrap();
+        let up_across = sub(up, forward.map(|x| x * dot(up, forward)));
+        assert!(dot(sub(above.dir, centre.dir), up_across) > 0.0, "image up is world up");
+        let right = camera.ray(39.0, 15.0).unwrap();
+        assert!(dot(sub(right.dir, centre.dir), cross(forward, up)) > 0.0, "image right is forward × up");
+    }
+}
+
+/// A ray lying in the plane of an interior circle C_α: f(α) need not change sign there, and
+/// the original renderer misses it. Ours finds the circle's points.
+#[test]
+fn a_ray_in_an_interior_circles_plane_is_not_missed() {
+    let s = Scene::load(&scene_path("surface.toml")).unwrap();
+    let Shape::Evolved(surface) = &s.objects[0].shape else { panic!("an evolved surface") };
+    let (pair, origin) = surface.pair();
+    for alpha in [0.25, 0.5, 0.75] {
+        let (c, n, r) = pair.at(alpha).unwrap().centre_normal_radius().unwrap();
+        let centre = [c[0] + origin[0], c[1] + origin[1], c[2] + origin[2]];
+        // In the plane, through the centre, starting outside the bound.
+        let along = cga_core::euclid::perpendicular(n);
+        let start = [centre[0] - 20.0 * along[0], centre[1] - 20.0 * along[1], centre[2] - 20.0 * along[2]];
+        let ray = Ray::new(start, along).unwrap();
+        let hit = surface.intersect(&ray, 0.0, f64::INFINITY).expect("the in-plane ray hits");
+        // The nearest hit is no farther than the circle's own near point.
+        assert!(hit.t <= 20.0 - r + 1e-6, "α = {alpha}: hit at t = {} beyond the circle at {}", hit.t, 20.0 - r);
+    }
 }
