@@ -130,10 +130,9 @@ impl Default for Settings {
 #[serde(deny_unknown_fields)]
 struct SceneFile {
     camera: Spanned<CameraSpec>,
+    render: Option<Spanned<Settings>>,
     #[serde(default)]
-    render: Settings,
-    #[serde(default)]
-    lights: Vec<Light>,
+    lights: Vec<Spanned<Light>>,
     #[serde(default)]
     objects: Vec<Spanned<ObjectSpec>>,
 }
@@ -297,22 +296,19 @@ impl Scene {
             let (line, column) = at(Some(span));
             SceneError::Invalid { file: file.into(), line, column, what, reason }
         };
-        let settings = spec.render;
-        check_settings(&settings).map_err(|reason| invalid(0..0, "render".into(), reason))?;
+        let (settings, render_span) = spec.render.map_or((Settings::default(), 0..0), |r| (*r.get_ref(), r.span()));
+        check_settings(&settings).map_err(|reason| invalid(render_span, "render".into(), reason))?;
         let camera_span = spec.camera.span();
         let camera =
             build_camera(spec.camera.into_inner()).map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
         for (k, light) in spec.lights.iter().enumerate() {
-            if !light.position.iter().chain(&light.colour).all(|x| x.is_finite())
-                || light.colour.iter().any(|&c| c < 0.0)
-            {
-                return Err(invalid(
-                    0..0,
-                    format!("light {}", k + 1),
-                    "position and colour must be finite, colour ≥ 0".into(),
-                ));
+            let l = light.get_ref();
+            if !l.position.iter().chain(&l.colour).all(|x| x.is_finite()) || l.colour.iter().any(|&c| c < 0.0) {
+                let reason = "position and colour must be finite, colour ≥ 0".into();
+                return Err(invalid(light.span(), format!("light {}", k + 1), reason));
             }
         }
+        let lights = spec.lights.into_iter().map(Spanned::into_inner).collect();
         let mut objects = Vec::new();
         for (k, spanned) in spec.objects.into_iter().enumerate() {
             let span = spanned.span();
@@ -320,7 +316,7 @@ impl Scene {
             let what = format!("object `{name}`");
             objects.push(object.map_err(|reason| invalid(span, what, reason))?);
         }
-        Ok(Scene { camera, objects, lights: spec.lights, settings })
+        Ok(Scene { camera, objects, lights, settings })
     }
 }
 

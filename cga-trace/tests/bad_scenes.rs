@@ -95,7 +95,12 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
         (
             "negative attenuation",
             format!("{CAMERA}[render]\nattenuation = [-1.0, 0.0, 0.0]\n"),
-            vec!["render", "attenuation"],
+            vec!["bad.toml:6:", "render", "attenuation"],
+        ),
+        (
+            "negative light",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 0.0]\ncolour = [-1.0, 1.0, 1.0]\n"),
+            vec!["bad.toml:6:", "light 1"],
         ),
         ("bad encoding", format!("{CAMERA}[render]\nencoding = \"gamma\"\n"), vec!["bad.toml:7:", "gamma"]),
     ]
