@@ -5,7 +5,7 @@
 
 use crate::camera::{Camera, CameraError};
 use crate::shapes::Shape;
-use crate::surface::EvolvedSurface;
+use crate::surface::{EvolvedSurface, Method};
 use cga_core::euclid::E3;
 use cga_core::{Circle, Disk, GeometryError, Motor, Plane, Sphere};
 use serde::Deserialize;
@@ -94,9 +94,9 @@ pub struct Settings {
     /// PNG encoding.
     #[serde(default)]
     pub encoding: Encoding,
-    /// Samples of `f(α)` per ray for evolved surfaces.
-    #[serde(default = "samples")]
-    pub surface_samples: usize,
+    /// How rays meet evolved surfaces (default: the bounding-sphere hierarchy).
+    #[serde(default)]
+    pub surface_method: Method,
 }
 
 fn five() -> u32 {
@@ -108,9 +108,6 @@ fn ambient() -> f64 {
 fn no_attenuation() -> [f64; 3] {
     [1.0, 0.0, 0.0]
 }
-fn samples() -> usize {
-    64
-}
 
 impl Default for Settings {
     fn default() -> Self {
@@ -121,7 +118,7 @@ impl Default for Settings {
             shadow_transmission: 0.0,
             attenuation: no_attenuation(),
             encoding: Encoding::Srgb,
-            surface_samples: samples(),
+            surface_method: Method::default(),
         }
     }
 }
@@ -177,37 +174,11 @@ struct CircleSpec {
 #[derive(Deserialize)]
 #[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
 enum ObjectSpec {
-    Sphere {
-        name: Option<String>,
-        material: Material,
-        centre: E3,
-        radius: f64,
-    },
-    Plane {
-        name: Option<String>,
-        material: Material,
-        point: E3,
-        normal: E3,
-    },
-    Disk {
-        name: Option<String>,
-        material: Material,
-        centre: E3,
-        normal: E3,
-        radius: f64,
-    },
-    Triangle {
-        name: Option<String>,
-        material: Material,
-        corners: [E3; 3],
-    },
-    Evolved {
-        name: Option<String>,
-        material: Material,
-        c1: Box<CircleSpec>,
-        c2: Box<CircleSpec>,
-        samples: Option<usize>,
-    },
+    Sphere { name: Option<String>, material: Material, centre: E3, radius: f64 },
+    Plane { name: Option<String>, material: Material, point: E3, normal: E3 },
+    Disk { name: Option<String>, material: Material, centre: E3, normal: E3, radius: f64 },
+    Triangle { name: Option<String>, material: Material, corners: [E3; 3] },
+    Evolved { name: Option<String>, material: Material, c1: Box<CircleSpec>, c2: Box<CircleSpec> },
 }
 
 /// One object of a scene.
@@ -312,7 +283,7 @@ impl Scene {
         let mut objects = Vec::new();
         for (k, spanned) in spec.objects.into_iter().enumerate() {
             let span = spanned.span();
-            let (object, name) = build_object(spanned.into_inner(), k, settings.surface_samples);
+            let (object, name) = build_object(spanned.into_inner(), k, settings.surface_method);
             let what = format!("object `{name}`");
             objects.push(object.map_err(|reason| invalid(span, what, reason))?);
         }
@@ -350,8 +321,12 @@ fn check_settings(s: &Settings) -> Result<(), String> {
     if s.attenuation.iter().any(|&c| c < 0.0) || s.attenuation.iter().all(|&c| c == 0.0) {
         return Err("attenuation coefficients must be ≥ 0 and not all zero".into());
     }
-    if s.surface_samples < 2 {
-        return Err("surface_samples must be at least 2".into());
+    match s.surface_method {
+        Method::Sampling { samples } if samples < 2 => return Err("surface_method: samples must be at least 2".into()),
+        Method::Hierarchy { leaves, per_leaf } if leaves == 0 || leaves > 1 << 16 || per_leaf < 2 => {
+            return Err("surface_method: leaves must be 1 to 65536 and per_leaf at least 2".into());
+        }
+        _ => {}
     }
     Ok(())
 }
@@ -383,7 +358,7 @@ fn geometry(e: GeometryError) -> String {
 }
 
 /// The object and its name (for errors).
-fn build_object(spec: ObjectSpec, index: usize, default_samples: usize) -> (Result<Object, String>, String) {
+fn build_object(spec: ObjectSpec, index: usize, method: Method) -> (Result<Object, String>, String) {
     let name_of = |n: &Option<String>| n.clone().unwrap_or_else(|| format!("object {}", index + 1));
     let (name, material) = match &spec {
         ObjectSpec::Sphere { name, material, .. }
@@ -410,8 +385,7 @@ fn build_object(spec: ObjectSpec, index: usize, default_samples: usize) -> (Resu
                 let plane = Plane::through(corners[0], corners[1], corners[2]).map_err(geometry)?;
                 Shape::Triangle { plane, corners }
             }
-            ObjectSpec::Evolved { c1, c2, samples, .. } => {
-                let samples = samples.unwrap_or(default_samples);
+            ObjectSpec::Evolved { c1, c2, .. } => {
                 // Circles given by centre are built in a frame centred between them.
                 let origin = match (c1.centre, c2.centre) {
                     (Some(a), Some(b)) => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])],
@@ -420,9 +394,9 @@ fn build_object(spec: ObjectSpec, index: usize, default_samples: usize) -> (Resu
                 let c1 = circle(*c1, origin).map_err(|e| format!("c1: {e}"))?;
                 let c2 = circle(*c2, origin).map_err(|e| format!("c2: {e}"))?;
                 let surface = if origin == [0.0; 3] {
-                    EvolvedSurface::new(c1, c2, samples)
+                    EvolvedSurface::new(c1, c2, method)
                 } else {
-                    EvolvedSurface::in_frame(origin, c1, c2, samples)
+                    EvolvedSurface::in_frame(origin, c1, c2, method)
                 };
                 Shape::Evolved(Box::new(surface.map_err(|e| e.to_string())?))
             }
