@@ -251,3 +251,50 @@ fn a_ray_in_an_interior_circles_plane_is_not_missed() {
         assert!(hit.t <= 20.0 - r + 1e-6, "α = {alpha}: hit at t = {} beyond the circle at {}", hit.t, 20.0 - r);
     }
 }
+
+/// The default (hierarchy) method against dense sampling on the rays a small render of the
+/// combined scene casts: no missed hits, no false hits; where the two pick different roots
+/// the hierarchy's is the nearer (dense sampling can step over a pair of close roots).
+#[test]
+fn hierarchy_agrees_with_dense_sampling() {
+    use cga_trace::surface::{EvolvedSurface, Method};
+    let scene = load_sized("combined.toml", 40, 30);
+    let Some(Shape::Evolved(surface)) = scene.objects.iter().map(|o| &o.shape).find(|s| matches!(s, Shape::Evolved(_)))
+    else {
+        panic!("the combined scene has an evolved surface")
+    };
+    let (pair, origin) = surface.pair();
+    let reference = EvolvedSurface::in_frame(origin, pair.c1, pair.c2, Method::Sampling { samples: 1024 }).unwrap();
+    let renderer = Renderer::new(&scene);
+    let (mut rays, mut hits) = (0, 0);
+    for j in 0..30 {
+        for i in 0..40 {
+            let primary = scene.camera.ray(f64::from(i) + 0.5, f64::from(j) + 0.5).unwrap();
+            let mut todo = vec![primary];
+            if let Some((hit, _)) = renderer.nearest(&primary, 0.0, f64::INFINITY) {
+                let d = primary.dir;
+                let dn = cga_core::euclid::dot(d, hit.normal);
+                let r = [0, 1, 2].map(|k| d[k] - 2.0 * dn * hit.normal[k]);
+                todo.extend(Ray::leaving(hit.point, hit.normal, r));
+                todo.extend(Ray::leaving(hit.point, hit.normal, sub(scene.lights[0].position, hit.point)));
+            }
+            for ray in todo {
+                rays += 1;
+                match (reference.intersect(&ray, 0.0, f64::INFINITY), surface.intersect(&ray, 0.0, f64::INFINITY)) {
+                    (Some(want), Some(got)) => {
+                        hits += 1;
+                        let same = (want.t - got.t).abs() <= 1e-9 * want.t;
+                        assert!(same || got.t < want.t, "ray {ray:?}: hierarchy t {} vs reference {}", got.t, want.t);
+                        if same {
+                            assert!((want.alpha.unwrap() - got.alpha.unwrap()).abs() < 1e-9);
+                        }
+                    }
+                    (Some(want), None) => panic!("missed hit at t = {} ({ray:?})", want.t),
+                    (None, Some(got)) => panic!("false hit at t = {} ({ray:?})", got.t),
+                    (None, None) => {}
+                }
+            }
+        }
+    }
+    assert!(rays > 2000 && hits > 50, "{rays} rays, {hits} hits");
+}
