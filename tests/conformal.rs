@@ -92,16 +92,10 @@ fn line_sphere_meets_match_clifford() {
     assert!(hits > 5, "only {hits} hitting cases");
 }
 
-/// A deterministic spread of test points.
+/// A deterministic spread of test points in [−10, 10]³.
 fn random_points(seed: u64, n: usize) -> Vec<E3> {
-    let mut state = seed.wrapping_mul(0x9e3779b97f4a7c15) | 1;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64 * 20.0 - 10.0
-    };
-    (0..n).map(|_| [next(), next(), next()]).collect()
+    let mut rng = Rng::new(seed.wrapping_mul(0x9e3779b97f4a7c15) | 1);
+    (0..n).map(|_| rng.e3(-10.0, 10.0)).collect()
 }
 
 #[test]

@@ -3,18 +3,13 @@
 use cga::{Circle, Disk, Hit, Line, Plane, Sphere, Vector};
 use glam::DVec3;
 
-struct Rng(u64);
+mod common;
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn vec(&mut self, s: f64) -> DVec3 {
-        DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * 2.0 * s
-    }
+use common::Rng;
+
+/// A point in [−s, s]³.
+fn vec(rng: &mut Rng, s: f64) -> DVec3 {
+    DVec3::from(rng.e3(-s, s))
 }
 
 /// Ray `o + t d` against a sphere: the two `t`, ascending, if real.
@@ -27,12 +22,12 @@ fn ray_sphere(o: DVec3, d: DVec3, c: DVec3, r: f64) -> Option<(f64, f64)> {
 
 #[test]
 fn line_sphere_meets_agree_with_the_quadratic() {
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     let (mut two, mut miss) = (0, 0);
     for _ in 0..2000 {
-        let (o, c, r) = (rng.vec(8.0), rng.vec(3.0), 0.5 + 3.0 * rng.next());
+        let (o, c, r) = (vec(&mut rng, 8.0), vec(&mut rng, 3.0), 0.5 + 3.0 * rng.unit());
         // Aim near the sphere so that hits and misses are both common.
-        let d = (c + rng.vec(1.5 * r) - o).normalize();
+        let d = (c + vec(&mut rng, 1.5 * r) - o).normalize();
         let line = Line::from_point_direction(o.into(), d.into()).unwrap();
         let meet = line.meet_sphere(&Sphere::from_centre_radius(c.into(), r).unwrap());
         match ray_sphere(o, d, c, r) {
@@ -66,10 +61,10 @@ fn a_grazing_line_is_tangent() {
 
 #[test]
 fn line_plane_and_disk_meets() {
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     for _ in 0..500 {
-        let (o, p, n) = (rng.vec(5.0), rng.vec(5.0), rng.vec(1.0).normalize());
-        let d = rng.vec(1.0).normalize();
+        let (o, p, n) = (vec(&mut rng, 5.0), vec(&mut rng, 5.0), vec(&mut rng, 1.0).normalize());
+        let d = vec(&mut rng, 1.0).normalize();
         let line = Line::from_point_direction(o.into(), d.into()).unwrap();
         let plane = Plane::from_point_normal(p.into(), n.into()).unwrap();
         let t = (p - o).dot(n) / d.dot(n);
@@ -88,10 +83,10 @@ fn line_plane_and_disk_meets() {
 
 #[test]
 fn reflections_follow_the_mirror_law() {
-    let mut rng = Rng(9);
+    let mut rng = Rng::new(9);
     for _ in 0..500 {
-        let (o, p, n) = (rng.vec(5.0), rng.vec(5.0), rng.vec(1.0).normalize());
-        let d = rng.vec(1.0).normalize();
+        let (o, p, n) = (vec(&mut rng, 5.0), vec(&mut rng, 5.0), vec(&mut rng, 1.0).normalize());
+        let d = vec(&mut rng, 1.0).normalize();
         if d.dot(n).abs() < 1e-3 {
             continue;
         }
@@ -110,7 +105,7 @@ fn reflections_follow_the_mirror_law() {
         assert!((hit - on_line).cross(nd).length() < 1e-8 * (1.0 + hit.length()), "normal line misses the hit");
 
         // In a sphere: the mirror is the tangent plane at the hit.
-        let (c, r) = (rng.vec(3.0), 1.0 + rng.next());
+        let (c, r) = (vec(&mut rng, 3.0), 1.0 + rng.unit());
         let Some((t0, _)) = ray_sphere(o, d, c, r) else { continue };
         let at = o + t0 * d;
         let sphere = Sphere::from_centre_radius(c.into(), r).unwrap();

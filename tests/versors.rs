@@ -41,22 +41,15 @@ fn rotors_translators_and_motors_match_clifford() {
     }
 }
 
-struct Rng(u64);
+/// A point in [−s, s]³.
+fn vec(rng: &mut Rng, s: f64) -> DVec3 {
+    DVec3::from(rng.e3(-s, s))
+}
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    }
-    fn vec(&mut self, s: f64) -> DVec3 {
-        DVec3::new(self.next(), self.next(), self.next()) * 2.0 * s
-    }
-    fn generator(&mut self, rot: f64, trans: f64) -> Bivector {
-        let (r, t) = (self.vec(rot), self.vec(trans));
-        Bivector { e12: r.x, e13: r.y, e23: r.z, e1i: t.x, e2i: t.y, e3i: t.z, ..Bivector::zero() }
-    }
+/// A rigid-motion generator: rotation parts in [−rot, rot], translation in [−trans, trans].
+fn generator(rng: &mut Rng, rot: f64, trans: f64) -> Bivector {
+    let (r, t) = (vec(rng, rot), vec(rng, trans));
+    Bivector { e12: r.x, e13: r.y, e23: r.z, e1i: t.x, e2i: t.y, e3i: t.z, ..Bivector::zero() }
 }
 
 /// `Σ Bⁿ/n!` with the dense multivector.
@@ -73,11 +66,11 @@ fn dense_exp(b: Bivector) -> Multivector {
 
 #[test]
 fn exp_matches_the_series_and_log_inverts_it() {
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     for i in 0..300 {
         // Include tiny rotations, where the closed form switches to its series.
         let rot = if i % 5 == 0 { 1e-7 } else { 1.5 };
-        let b = rng.generator(rot, 4.0);
+        let b = generator(&mut rng, rot, 4.0);
         let m = exp(b).unwrap();
         assert_mv_close(&m.into(), &dense_exp(b), 1e-12, "exp against the series");
         assert!((m * m.reverse()).s - 1.0 < 1e-12, "exp(B) is normalised");
@@ -89,16 +82,16 @@ fn exp_matches_the_series_and_log_inverts_it() {
 
 #[test]
 fn motors_move_every_object_rigidly() {
-    let mut rng = Rng(8);
+    let mut rng = Rng::new(8);
     for _ in 0..200 {
-        let (axis, angle, t) = (rng.vec(1.0).normalize(), 3.0 * rng.next(), rng.vec(5.0));
+        let (axis, angle, t) = (vec(&mut rng, 1.0).normalize(), 3.0 * rng.range(-0.5, 0.5), vec(&mut rng, 5.0));
         let motor = Motor::from_rotor_translator(
             Rotor::from_axis_angle(axis.into(), angle).unwrap(),
             Translator::from_vector(t.into()),
         );
         let q = DQuat::from_axis_angle(axis, angle);
         let apply = |x: DVec3| q * x + t;
-        let (a, b, c, d) = (rng.vec(3.0), rng.vec(3.0), rng.vec(3.0), rng.vec(3.0));
+        let (a, b, c, d) = (vec(&mut rng, 3.0), vec(&mut rng, 3.0), vec(&mut rng, 3.0), vec(&mut rng, 3.0));
 
         let line = motor.sandwich(Line::through(a.into(), b.into()).unwrap());
         let want = Line::through(apply(a).into(), apply(b).into()).unwrap();
@@ -120,10 +113,10 @@ fn motors_move_every_object_rigidly() {
 
 #[test]
 fn the_rotor_between_two_lines_takes_one_to_the_other() {
-    let mut rng = Rng(21);
+    let mut rng = Rng::new(21);
     for _ in 0..300 {
-        let l1 = Line::through(rng.vec(4.0).into(), rng.vec(4.0).into()).unwrap();
-        let l2 = Line::through(rng.vec(4.0).into(), rng.vec(4.0).into()).unwrap();
+        let l1 = Line::through(vec(&mut rng, 4.0).into(), vec(&mut rng, 4.0).into()).unwrap();
+        let l2 = Line::through(vec(&mut rng, 4.0).into(), vec(&mut rng, 4.0).into()).unwrap();
         let r = rotor_between_lines(l1, l2).unwrap();
         assert!(((r * r.reverse()).s - 1.0).abs() < 1e-10, "R R̃ = 1");
         let moved = r.sandwich(l1);

@@ -54,6 +54,31 @@ pub fn assert_mv_close(got: &Multivector, want: &Multivector, tol: f64, what: &s
     assert!(d <= tol, "{what}: differs by {d:e} (> {tol:e})\n got  {:?}\n want {:?}", got.coeffs, want.coeffs);
 }
 
+/// A deterministic xorshift stream, so random tests are repeatable.
+pub struct Rng(u64);
+
+impl Rng {
+    /// A stream from a nonzero seed.
+    pub fn new(seed: u64) -> Self {
+        Rng(seed.max(1))
+    }
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+    /// A point with coordinates uniform in [lo, hi).
+    pub fn e3(&mut self, lo: f64, hi: f64) -> [f64; 3] {
+        [self.range(lo, hi), self.range(lo, hi), self.range(lo, hi)]
+    }
+}
+
 /// Same as [`Real`] for `f64`, but counts multiplications: between two data values, and
 /// by a constant (a value made by `from_f64`, `zero` or `one`).
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
