@@ -175,13 +175,7 @@ impl Algebra {
     /// `e_a e_b = sign e_(a xor b)` for orthonormal blades: reordering sign times the
     /// squares of the shared vectors.
     pub fn ortho_gp(&self, a: usize, b: usize) -> (usize, f64) {
-        let mut swaps = 0;
-        let mut rest = a >> 1;
-        while rest != 0 {
-            swaps += (rest & b).count_ones();
-            rest >>= 1;
-        }
-        let mut sign = if swaps % 2 == 0 { 1.0 } else { -1.0 };
+        let mut sign = reorder_sign(a, b);
         for i in 0..self.n {
             if (a & b) >> i & 1 == 1 {
                 sign *= self.metric[i];
@@ -330,16 +324,19 @@ fn index_tuple(mask: usize) -> Vec<usize> {
 
 /// The metric-free outer product of basis blades given as bitmasks: sign of reordering.
 fn wedge_blades(a: usize, b: usize) -> Option<(usize, f64)> {
-    if a & b != 0 {
-        return None;
-    }
+    (a & b == 0).then(|| (a | b, reorder_sign(a, b)))
+}
+
+/// The sign of reordering the vectors of `e_a e_b` into increasing order: (−1)^swaps, a
+/// swap for every pair of a vector of `a` above a vector of `b`.
+fn reorder_sign(a: usize, b: usize) -> f64 {
     let mut swaps = 0;
     let mut rest = a >> 1;
     while rest != 0 {
         swaps += (rest & b).count_ones();
         rest >>= 1;
     }
-    Some((a | b, if swaps % 2 == 0 { 1.0 } else { -1.0 }))
+    if swaps % 2 == 0 { 1.0 } else { -1.0 }
 }
 
 /// Image of a blade under the linear map sending vector `a` to `Σ_i m[a][i] e_i`: the wedge
