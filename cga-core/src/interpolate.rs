@@ -55,33 +55,42 @@ impl<T: Real> ScalarQuadvector<T> {
     /// one continuous with `√s` as `Q → 0` for `s > 0`, so `√1 = 1`: interpolating between
     /// equal blades gives that blade. A branch is `None` where its `a²` is not positive.
     pub fn sqrt_roots(self) -> [Option<Self>; 2] {
+        let Some((q, q2, plus, root)) = self.branches() else { return [None, None] };
+        // The other branch: (s + √disc)(s − √disc) = Q², so 2a₋² = Q² / 2a₊² where s ≥ 0,
+        // and 2a₊² = Q² / 2a₋² where s < 0; each computed without cancellation.
+        let minus = if self.s >= T::zero() { q2 / plus } else { self.s - root };
+        [Self::root(q, plus), Self::root(q, minus)]
+    }
+
+    /// The principal square root (see [`ScalarQuadvector::sqrt_roots`]), if it is real;
+    /// only that branch is computed.
+    #[inline]
+    pub fn try_sqrt(self) -> Option<Self> {
+        let (q, _, plus, _) = self.branches()?;
+        Self::root(q, plus)
+    }
+
+    /// `(Q, Q², 2a₊², √(s² − Q²))`, with `2a₊² = s + √(s² − Q²)` written as
+    /// `Q² / (s − √…)` when `s < 0`; `None` when `s² < Q²`.
+    #[inline]
+    fn branches(self) -> Option<(Sphere<T>, T, T, T)> {
         let q = self.grade4();
         let q2 = (q * q).s;
         let disc = self.s * self.s - q2;
         if disc < T::zero() || !disc.is_finite() {
-            return [None, None];
+            return None;
         }
         let root = disc.sqrt();
-        // a² = (s ± √disc)/2, each written without cancellation: (s + √d)(s − √d) = Q².
-        let (plus, minus) = if self.s >= T::zero() {
-            let p = self.s + root;
-            (p, q2 / p)
-        } else {
-            let m = self.s - root;
-            (q2 / m, m)
-        };
-        let branch = |twice_a2: T| {
-            let a = (twice_a2 / T::from_f64(2.0)).sqrt();
-            let inv = T::one() / (a + a);
-            (twice_a2 > T::zero() && inv.is_finite()).then(|| Self::from(q.scale(inv)) + Self { s: a, ..Self::zero() })
-        };
-        [branch(plus), branch(minus)]
+        let plus = if self.s >= T::zero() { self.s + root } else { q2 / (self.s - root) };
+        Some((q, q2, plus, root))
     }
 
-    /// The principal square root (see [`ScalarQuadvector::sqrt_roots`]), if it is real.
+    /// `a + Q/(2a)` for `2a² = twice_a2`, if that is positive.
     #[inline]
-    pub fn try_sqrt(self) -> Option<Self> {
-        self.sqrt_roots()[0]
+    fn root(q: Sphere<T>, twice_a2: T) -> Option<Self> {
+        let a = (twice_a2 / T::from_f64(2.0)).sqrt();
+        let inv = T::one() / (a + a);
+        (twice_a2 > T::zero() && inv.is_finite()).then(|| Self::from(q.scale(inv)) + Self { s: a, ..Self::zero() })
     }
 }
 
