@@ -260,20 +260,26 @@ impl<T: Real> Bivector<T> {
     }
 }
 
-/// A disk: a circle and the plane it bounds a piece of.
+/// A disk: a circle and the plane it bounds a piece of, with the rim's centre and radius
+/// read once (meets test every ray against them).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Disk<T = f64> {
     /// The rim.
     pub circle: Circle<T>,
     /// `C ∧ ei`, normalised.
     pub plane: Plane<T>,
+    /// The rim's centre.
+    pub centre: E3<T>,
+    /// The rim's radius.
+    pub radius: T,
 }
 
 impl<T: Real> Disk<T> {
     /// The disk bounded by `circle`.
     pub fn new(circle: Circle<T>) -> Result<Self> {
         let plane = circle.carrier_plane().try_normalise().ok_or(GeometryError::AtInfinity)?;
-        Ok(Disk { circle, plane })
+        let (centre, _, radius) = circle.centre_normal_radius()?;
+        Ok(Disk { circle, plane, centre, radius })
     }
 }
 

@@ -31,6 +31,11 @@ pub fn cross<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
+/// The mirror image of direction `d` in a plane of unit normal `n`: `d − 2(d·n)n`.
+pub fn reflect<T: Real>(d: E3<T>, n: E3<T>) -> E3<T> {
+    sub(d, scale(n, T::from_f64(2.0) * dot(d, n)))
+}
+
 /// `|a|`.
 pub fn norm<T: Real>(a: E3<T>) -> T {
     dot(a, a).sqrt()

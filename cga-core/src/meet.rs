@@ -84,8 +84,7 @@ impl<T: Real> Line<T> {
     /// The point where the line crosses `disk` (its plane, within the rim), if it does.
     pub fn meet_disk(&self, disk: &Disk<T>) -> Option<E3<T>> {
         let x = self.meet_plane(&disk.plane)?;
-        let (centre, _, radius) = disk.circle.centre_normal_radius().ok()?;
-        (norm(sub(x, centre)) <= radius).then_some(x)
+        (norm(sub(x, disk.centre)) <= disk.radius).then_some(x)
     }
 
     /// `C ∨ L`, a vector (dual sphere): its square is zero exactly when the line touches the

@@ -9,7 +9,7 @@ use crate::film::Film;
 use crate::ray::Ray;
 use crate::scene::{Object, Scene};
 use crate::shapes::Hit;
-use cga_core::euclid::{dot, norm, scale, sub, unit};
+use cga_core::euclid::{dot, norm, reflect, scale, sub, unit};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
@@ -56,19 +56,23 @@ impl<'a> Renderer<'a> {
         Renderer { scene, counts: RayCounts::default() }
     }
 
-    /// The nearest hit with `t_min < t < t_max`, and its object.
+    /// The nearest hit with `t_min < t < t_max`, and its object: the nearest crossing over
+    /// all objects, then its normal, once.
     pub fn nearest(&self, ray: &Ray, t_min: f64, mut t_max: f64) -> Option<(Hit, &'a Object)> {
         let mut best = None;
         for object in &self.scene.objects {
-            if let Some(hit) = object.shape.intersect(ray, t_min, t_max) {
-                t_max = hit.t;
-                best = Some((hit, object));
+            if let Some(c) = object.shape.intersect(ray, t_min, t_max) {
+                t_max = c.t;
+                best = Some((c, object));
             }
         }
-        best
+        let (c, object) = best?;
+        let hit = Hit { t: c.t, point: c.point, normal: object.shape.normal(ray, &c), alpha: c.alpha };
+        Some((hit, object))
     }
 
-    /// Whether anything lies on the ray before `t_max`: stops at the first blocker.
+    /// Whether anything lies on the ray before `t_max`: stops at the first blocker, and
+    /// computes no normals.
     fn blocked(&self, ray: &Ray, t_max: f64) -> bool {
         self.scene.objects.iter().any(|o| o.shape.intersect(ray, 0.0, t_max).is_some())
     }
@@ -105,8 +109,7 @@ impl<'a> Renderer<'a> {
             }
         }
         if m.kr > 0.0 && depth < settings.max_depth {
-            let r = sub(ray.dir, scale(n, 2.0 * dot(ray.dir, n)));
-            if let Some(reflected) = Ray::leaving(hit.point, n, r) {
+            if let Some(reflected) = Ray::leaving(hit.point, n, reflect(ray.dir, n)) {
                 self.counts.reflection.fetch_add(1, Relaxed);
                 let bounced = self.trace(&reflected, depth + 1);
                 for (out, b) in colour.iter_mut().zip(bounced) {

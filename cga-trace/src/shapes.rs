@@ -1,14 +1,27 @@
 //! The objects a scene holds and how a ray meets them. Every intersection is a CGA meet
 //! with the ray's line; of its points the nearest with `t_min < t < t_max` counts (hits
-//! behind the origin are dropped one by one, never the whole object). Primitives get their
-//! normal from the reflected line, `N = L' − L`; evolved surfaces from eq. 6–11.
+//! behind the origin are dropped one by one, never the whole object). Finding a crossing
+//! and shading it are separate: shadow rays only need the crossing, so the normal — from
+//! the reflected line `N = L' − L` for primitives, from eq. 6–11 for evolved surfaces —
+//! is computed only for the hit that is shaded.
 
 use crate::ray::Ray;
 use crate::surface::EvolvedSurface;
 use cga_core::euclid::{E3, cross, dot, norm, scale, sub, unit};
-use cga_core::{Disk, Hit as MeetHit, Line, Plane, Sphere};
+use cga_core::{Disk, Hit as MeetHit, Plane, Sphere};
 
-/// Where a ray meets an object.
+/// Where a ray crosses an object.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// Ray parameter.
+    pub t: f64,
+    /// The point.
+    pub point: E3,
+    /// For an evolved surface, the α of the circle hit.
+    pub alpha: Option<f64>,
+}
+
+/// A crossing with its normal, ready to shade.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     /// Ray parameter.
@@ -49,36 +62,52 @@ pub enum Shape {
 }
 
 impl Shape {
-    /// The nearest hit with `t_min < t < t_max`.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let within = |t: f64| t > t_min && t < t_max;
-        match self {
-            Shape::Sphere { sphere, centre, .. } => {
+    /// The nearest crossing with `t_min < t < t_max`.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let within = |x: &E3| {
+            let t = ray.t_of(*x);
+            t > t_min && t < t_max
+        };
+        let point = match self {
+            Shape::Sphere { sphere, .. } => {
                 let meet = ray.line.meet_sphere(sphere);
                 if meet.hit == MeetHit::Miss {
                     return None;
                 }
-                let point = meet.points(&ray.line)?.into_iter().find(|&x| within(ray.t_of(x)))?;
-                let fallback = sub(point, *centre);
-                let reflected = ray.line.reflect_in_sphere(sphere, point).ok();
-                Some(primitive_hit(ray, point, reflected, fallback))
+                meet.points(&ray.line)?.into_iter().find(within)?
             }
-            Shape::Plane(plane) => {
-                let point = ray.line.meet_plane(plane).filter(|&x| within(ray.t_of(x)))?;
-                Some(primitive_hit(ray, point, Some(ray.line.reflect_in_plane(plane)), plane_normal(plane)))
-            }
-            Shape::Disk(disk) => {
-                let point = ray.line.meet_disk(disk).filter(|&x| within(ray.t_of(x)))?;
-                let plane = &disk.plane;
-                Some(primitive_hit(ray, point, Some(ray.line.reflect_in_plane(plane)), plane_normal(plane)))
-            }
+            Shape::Plane(plane) => ray.line.meet_plane(plane).filter(within)?,
+            Shape::Disk(disk) => ray.line.meet_disk(disk).filter(within)?,
             Shape::Triangle { plane, corners } => {
-                let point = ray.line.meet_plane(plane).filter(|&x| within(ray.t_of(x)))?;
-                inside_triangle(point, corners).then_some(())?;
-                Some(primitive_hit(ray, point, Some(ray.line.reflect_in_plane(plane)), plane_normal(plane)))
+                ray.line.meet_plane(plane).filter(|x| within(x) && inside_triangle(*x, corners))?
             }
-            Shape::Evolved(surface) => surface.intersect(ray, t_min, t_max),
-        }
+            Shape::Evolved(surface) => return surface.intersect(ray, t_min, t_max),
+        };
+        Some(Crossing { t: ray.t_of(point), point, alpha: None })
+    }
+
+    /// The unit normal at a crossing of `ray`, facing the ray. For primitives the direction
+    /// of `L' − L`, the reflected minus the incident line (a sphere reflects in its tangent
+    /// plane there), or of the geometric normal where that vanishes (a grazing ray, `L' = L`).
+    pub fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
+        let x = crossing.point;
+        let (mirror, fallback) = match self {
+            Shape::Sphere { centre, .. } => (Plane::from_point_normal(x, sub(x, *centre)).ok(), sub(x, *centre)),
+            Shape::Plane(plane) | Shape::Disk(Disk { plane, .. }) | Shape::Triangle { plane, .. } => {
+                (Some(*plane), plane.normal_offset().map_or([0.0, 0.0, 1.0], |(n, _)| n))
+            }
+            Shape::Evolved(surface) => return facing(surface.normal(crossing), ray.dir),
+        };
+        let from_lines = mirror
+            .and_then(|m| (ray.line.reflect_in_plane(&m) - ray.line).try_normalise())
+            .and_then(|n| n.direction().ok());
+        facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
+    }
+
+    /// The nearest crossing and its normal.
+    pub fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let c = self.intersect(ray, t_min, t_max)?;
+        Some(Hit { t: c.t, point: c.point, normal: self.normal(ray, &c), alpha: c.alpha })
     }
 
     /// A sphere `(centre, radius)` holding the shape, `None` when unbounded (a plane).
@@ -86,7 +115,7 @@ impl Shape {
         match self {
             Shape::Sphere { centre, radius, .. } => Some((*centre, *radius)),
             Shape::Plane(_) => None,
-            Shape::Disk(disk) => disk.circle.centre_normal_radius().ok().map(|(c, _, r)| (c, r)),
+            Shape::Disk(disk) => Some((disk.centre, disk.radius)),
             Shape::Triangle { corners, .. } => {
                 let c = scale([0, 1, 2].map(|k| corners[0][k] + corners[1][k] + corners[2][k]), 1.0 / 3.0);
                 Some((c, corners.iter().map(|&x| norm(sub(x, c))).fold(0.0, f64::max)))
@@ -96,18 +125,9 @@ impl Shape {
     }
 }
 
-fn plane_normal(plane: &Plane) -> E3 {
-    plane.normal_offset().map(|(n, _)| n).unwrap_or([0.0, 0.0, 1.0])
-}
-
-/// The hit at `point`, its normal the direction of `L' − L` (the reflected minus the incident
-/// line), or of `fallback` where that vanishes (a grazing ray, `L' = L`); either way turned
-/// to face the incoming ray.
-fn primitive_hit(ray: &Ray, point: E3, reflected: Option<Line>, fallback: E3) -> Hit {
-    let from_lines = reflected.and_then(|r| (r - ray.line).try_normalise()).and_then(|n| n.direction().ok());
-    let n = from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]);
-    let normal = if dot(n, ray.dir) > 0.0 { n.map(|x| -x) } else { n };
-    Hit { t: ray.t_of(point), point, normal, alpha: None }
+/// `n` turned to face against `dir`.
+fn facing(n: E3, dir: E3) -> E3 {
+    if dot(n, dir) > 0.0 { n.map(|x| -x) } else { n }
 }
 
 /// Whether `x` (on the triangle's plane) lies inside it: the same side of all three edges.

@@ -18,7 +18,7 @@
 //! (docs/STABILITY.md). The fast method is issue 5's.
 
 use crate::ray::Ray;
-use crate::shapes::Hit;
+use crate::shapes::Crossing;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::{Circle, Dual, GeometryError, Interpolable, InterpolationError, Line, Pair, Sandwich, Translator, down};
 
@@ -182,19 +182,16 @@ impl EvolvedSurface {
         Some(line.meet_circle(&c).norm_squared())
     }
 
-    /// The nearest hit with `t_min < t < t_max`.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let o = sub(ray.origin, self.origin);
+    /// The nearest crossing with `t_min < t < t_max`.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         // 1. Bounding sphere.
-        let tc = -dot(o, ray.dir);
-        let miss2 = dot(add(o, scale(ray.dir, tc)), add(o, scale(ray.dir, tc)));
-        if miss2 > self.radius * self.radius || tc + self.radius < t_min || tc - self.radius > t_max {
+        if !crosses(ray, self.origin, self.radius, t_min, t_max) {
             return None;
         }
+        let o = sub(ray.origin, self.origin);
         let line = Line::from_point_direction(o, ray.dir).ok()?;
         let local = Ray { origin: o, dir: ray.dir, line };
         // 2.–3. Candidate α.
-        let mut best: Option<Hit> = None;
         let candidates = match self.method {
             Method::Sampling { samples } => self.candidates(&line, 0.0, 1.0, samples.max(2)),
             Method::Hierarchy { per_leaf, .. } => self
@@ -203,20 +200,34 @@ impl EvolvedSurface {
                 .flat_map(|(lo, hi, leaves)| self.candidates_with_slope(&line, lo, hi, per_leaf.max(2) * leaves))
                 .collect(),
         };
+        // 4. Verified points on C_α and the line; the nearest.
+        let mut best: Option<Crossing> = None;
         for alpha in candidates {
-            // 4. Verified points on C_α and the line, nearest first.
             let Ok(circle) = self.pair.at(alpha) else { continue };
             for x in hit_points(&circle, &local) {
                 let t = local.t_of(x);
-                if t <= t_min || t >= t_max || best.is_some_and(|b| b.t <= t) {
-                    continue;
+                if t > t_min && t < t_max && best.is_none_or(|b| t < b.t) {
+                    best = Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) });
                 }
-                let Ok(n) = self.pair.normal(alpha, x) else { continue };
-                let normal = if dot(n, ray.dir) > 0.0 { n.map(|v| -v) } else { n };
-                best = Some(Hit { t, point: add(x, self.origin), normal, alpha: Some(alpha) });
             }
         }
         best
+    }
+
+    /// The unit normal at a crossing (eq. 6–11, sign not yet turned to the ray). Where the
+    /// circles do not move (`Ẋ = 0`, so `N = 0`) the surface has no normal of its own; the
+    /// circle's outward radial direction is used there.
+    pub fn normal(&self, crossing: &Crossing) -> E3 {
+        let x = sub(crossing.point, self.origin);
+        let alpha = crossing.alpha.unwrap_or(0.0);
+        self.pair
+            .normal(alpha, x)
+            .ok()
+            .or_else(|| {
+                let (c, _, _) = self.pair.at(alpha).ok()?.centre_normal_radius().ok()?;
+                cga_core::euclid::unit(sub(x, c))
+            })
+            .unwrap_or([0.0, 0.0, 1.0])
     }
 
     /// Every α in `[lo, hi]` where `f` changes sign or `|f|` has a local minimum, refined,
@@ -237,10 +248,7 @@ impl EvolvedSurface {
                 && fk.signum() != fn_.signum()
                 && fn_ != 0.0
             {
-                out.push(match self.method {
-                    Method::Sampling { .. } => self.bisect(line, alphas[k], alphas[k + 1], fk),
-                    Method::Hierarchy { .. } => self.newton(line, alphas[k], alphas[k + 1], fk),
-                });
+                out.push(self.bisect(line, alphas[k], alphas[k + 1], fk));
             }
             // A local minimum of |f| (the ends included) that did not change sign.
             let left = if k > 0 { values[k - 1] } else { None };
@@ -298,7 +306,7 @@ impl EvolvedSurface {
             }
             let Some((fn_, dn)) = values.get(k + 1).copied().flatten() else { continue };
             if fn_ != 0.0 && fk.signum() != fn_.signum() {
-                out.push(self.newton(line, alphas[k], alphas[k + 1], fk));
+                out.push(self.newton(&lifted, alphas[k], alphas[k + 1], fk));
                 continue;
             }
             // f keeps its sign; does it turn back towards zero in between?
@@ -310,8 +318,8 @@ impl EvolvedSurface {
             let e = self.extremum(&lifted, a, b, dk);
             let Some((fe, _)) = self.f_and_slope(&lifted, e) else { continue };
             if fe != 0.0 && fe.signum() != fk.signum() {
-                out.push(self.newton(line, a, e, fk));
-                out.push(self.newton(line, e, b, fe));
+                out.push(self.newton(&lifted, a, e, fk));
+                out.push(self.newton(&lifted, e, b, fe));
             } else if fe.abs() <= TOUCH * scale {
                 out.push(e);
             }
@@ -344,12 +352,11 @@ impl EvolvedSurface {
     /// The root of `f` in `[lo, hi]` (`f(lo) = f_lo`, `f(hi)` of the other sign): Newton
     /// steps with the exact slope, replaced by bisection whenever one would leave the bracket
     /// or shrink it too little.
-    fn newton(&self, line: &Line, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
-        let lifted: Line<Dual> = line.lift();
+    fn newton(&self, lifted: &Line<Dual>, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
         let sign_lo = f_lo.signum();
         let mut x = 0.5 * (lo + hi);
         for _ in 0..64 {
-            let Some((f, slope)) = self.f_and_slope(&lifted, x) else { return x };
+            let Some((f, slope)) = self.f_and_slope(lifted, x) else { return x };
             if f == 0.0 {
                 return x;
             }

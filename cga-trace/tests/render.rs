@@ -38,12 +38,12 @@ fn a_ray_hits_a_sphere_where_the_quadratic_says() {
         "{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
     ));
     let ray = Ray::new([0.0, -10.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
-    let hit = s.objects[0].shape.intersect(&ray, 0.0, f64::INFINITY).unwrap();
+    let hit = s.objects[0].shape.hit(&ray, 0.0, f64::INFINITY).unwrap();
     assert!((hit.t - 8.0).abs() < 1e-12 && norm(sub(hit.point, [0.0, -2.0, 0.0])) < 1e-12);
     assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "normal {:?}", hit.normal);
     // From inside, the hit in front of the origin counts, not the one behind.
     let inside = Ray::new([0.0, 0.5, 0.0], [0.0, 1.0, 0.0]).unwrap();
-    let hit = s.objects[0].shape.intersect(&inside, 0.0, f64::INFINITY).unwrap();
+    let hit = s.objects[0].shape.hit(&inside, 0.0, f64::INFINITY).unwrap();
     assert!((hit.point[1] - 2.0).abs() < 1e-12 && (hit.t - 1.5).abs() < 1e-12);
     assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "two-sided normal faces the ray");
     // Entirely behind: no hit.
@@ -272,9 +272,7 @@ fn hierarchy_agrees_with_dense_sampling() {
             let primary = scene.camera.ray(f64::from(i) + 0.5, f64::from(j) + 0.5).unwrap();
             let mut todo = vec![primary];
             if let Some((hit, _)) = renderer.nearest(&primary, 0.0, f64::INFINITY) {
-                let d = primary.dir;
-                let dn = cga_core::euclid::dot(d, hit.normal);
-                let r = [0, 1, 2].map(|k| d[k] - 2.0 * dn * hit.normal[k]);
+                let r = cga_core::euclid::reflect(primary.dir, hit.normal);
                 todo.extend(Ray::leaving(hit.point, hit.normal, r));
                 todo.extend(Ray::leaving(hit.point, hit.normal, sub(scene.lights[0].position, hit.point)));
             }
