@@ -18,6 +18,11 @@ pub trait Real:
     + Div<Output = Self>
     + Neg<Output = Self>
 {
+    /// The larger of the two (`self` when they are equal or unordered).
+    #[inline]
+    fn max(self, other: Self) -> Self {
+        if other > self { other } else { self }
+    }
     /// Additive identity.
     fn zero() -> Self;
     /// Multiplicative identity.

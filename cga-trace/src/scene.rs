@@ -321,13 +321,7 @@ fn check_settings(s: &Settings) -> Result<(), String> {
     if s.attenuation.iter().any(|&c| c < 0.0) || s.attenuation.iter().all(|&c| c == 0.0) {
         return Err("attenuation coefficients must be ≥ 0 and not all zero".into());
     }
-    match s.surface_method {
-        Method::Sampling { samples } if samples < 2 => return Err("surface_method: samples must be at least 2".into()),
-        Method::Hierarchy { leaves, per_leaf } if leaves == 0 || leaves > 1 << 16 || per_leaf < 2 => {
-            return Err("surface_method: leaves must be 1 to 65536 and per_leaf at least 2".into());
-        }
-        _ => {}
-    }
+    s.surface_method.check().map_err(|e| format!("surface_method: {e}"))?;
     Ok(())
 }
 

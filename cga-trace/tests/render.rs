@@ -238,7 +238,8 @@ fn look_at_works_for_any_pose() {
 fn a_ray_in_an_interior_circles_plane_is_not_missed() {
     let s = Scene::load(&scene_path("surface.toml")).unwrap();
     let Shape::Evolved(surface) = &s.objects[0].shape else { panic!("an evolved surface") };
-    let (pair, origin) = surface.pair();
+    let (family, origin) = surface.family();
+    let pair = family.pair;
     for alpha in [0.25, 0.5, 0.75] {
         let (c, n, r) = pair.at(alpha).unwrap().centre_normal_radius().unwrap();
         let centre = [c[0] + origin[0], c[1] + origin[1], c[2] + origin[2]];
@@ -252,19 +253,27 @@ fn a_ray_in_an_interior_circles_plane_is_not_missed() {
     }
 }
 
-/// The default (hierarchy) method against dense sampling on the rays a small render of the
-/// combined scene casts: no missed hits, no false hits; where the two pick different roots
-/// the hierarchy's is the nearer (dense sampling can step over a pair of close roots).
+/// Every fast method against dense sampling on the rays a small render of the combined scene
+/// casts: no missed hits, no false hits; where the two pick different roots the fast one's is
+/// the nearer (dense sampling can step over a pair of close roots).
 #[test]
-fn hierarchy_agrees_with_dense_sampling() {
+fn fast_methods_agree_with_dense_sampling() {
     use cga_trace::surface::{EvolvedSurface, Method};
     let scene = load_sized("combined.toml", 40, 30);
     let Some(Shape::Evolved(surface)) = scene.objects.iter().map(|o| &o.shape).find(|s| matches!(s, Shape::Evolved(_)))
     else {
         panic!("the combined scene has an evolved surface")
     };
-    let (pair, origin) = surface.pair();
-    let reference = EvolvedSurface::in_frame(origin, pair.c1, pair.c2, Method::Sampling { samples: 1024 }).unwrap();
+    let reference = surface.with_method(Method::Sampling { samples: 1024 }).unwrap();
+    let methods: Vec<EvolvedSurface> = [
+        Method::default(),
+        Method::Polynomial { tolerance: 0.0 },
+        Method::Hierarchy { leaves: 64, per_leaf: 4 },
+        Method::Hybrid { leaves: 16, tolerance: 0.0 },
+    ]
+    .into_iter()
+    .map(|m| surface.with_method(m).unwrap())
+    .collect();
     let renderer = Renderer::new(&scene);
     let (mut rays, mut hits) = (0, 0);
     for j in 0..30 {
@@ -276,23 +285,24 @@ fn hierarchy_agrees_with_dense_sampling() {
                 todo.extend(Ray::leaving(hit.point, hit.normal, r));
                 todo.extend(Ray::leaving(hit.point, hit.normal, sub(scene.lights[0].position, hit.point)));
             }
-            for ray in todo {
+            for (ray, method) in todo.iter().flat_map(|r| methods.iter().map(move |m| (r, m))) {
+                let m = method.method();
                 rays += 1;
-                match (reference.intersect(&ray, 0.0, f64::INFINITY), surface.intersect(&ray, 0.0, f64::INFINITY)) {
+                match (reference.intersect(ray, 0.0, f64::INFINITY), method.intersect(ray, 0.0, f64::INFINITY)) {
                     (Some(want), Some(got)) => {
                         hits += 1;
                         let same = (want.t - got.t).abs() <= 1e-9 * want.t;
-                        assert!(same || got.t < want.t, "ray {ray:?}: hierarchy t {} vs reference {}", got.t, want.t);
+                        assert!(same || got.t < want.t, "{m:?}, ray {ray:?}: t {} vs reference {}", got.t, want.t);
                         if same {
-                            assert!((want.alpha.unwrap() - got.alpha.unwrap()).abs() < 1e-9);
+                            assert!((want.alpha.unwrap() - got.alpha.unwrap()).abs() < 1e-9, "{m:?}");
                         }
                     }
-                    (Some(want), None) => panic!("missed hit at t = {} ({ray:?})", want.t),
-                    (None, Some(got)) => panic!("false hit at t = {} ({ray:?})", got.t),
+                    (Some(want), None) => panic!("{m:?}: missed hit at t = {} ({ray:?})", want.t),
+                    (None, Some(got)) => panic!("{m:?}: false hit at t = {} ({ray:?})", got.t),
                     (None, None) => {}
                 }
             }
         }
     }
-    assert!(rays > 2000 && hits > 50, "{rays} rays, {hits} hits");
+    assert!(rays > 8000 && hits > 200, "{rays} rays, {hits} hits");
 }

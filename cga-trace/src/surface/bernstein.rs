@@ -1,0 +1,382 @@
+//! Polynomials of degree ≤ 8 in the Bernstein basis on [0, 1], and real-root isolation by
+//! subdivision.
+//!
+//! `p(t) = Σₖ cₖ C(n, k) (1 − t)ⁿ⁻ᵏ tᵏ`. The basis is the well-conditioned one on an
+//! interval (Farouki–Rajan): coefficients bound the polynomial (convex hull), the number of
+//! sign changes among them bounds the number of roots (Descartes' rule), and de Casteljau's
+//! algorithm splits an interval without loss. Roots are isolated by splitting until an
+//! interval's coefficients change sign at most once, then refined by Newton steps kept
+//! inside the bracket — no companion-matrix eigenvalues.
+
+use cga_core::Real;
+use smallvec::SmallVec;
+
+/// The largest degree.
+pub const MAX_DEGREE: usize = 8;
+
+/// A polynomial of degree `degree ≤ 8` in the Bernstein basis on [0, 1].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bernstein<T> {
+    /// `c₀ … c_degree`; entries above the degree are unused.
+    pub c: [T; MAX_DEGREE + 1],
+    /// The degree.
+    pub degree: usize,
+}
+
+/// `C(n, k)` for `n ≤ 8`.
+fn binomial(n: usize, k: usize) -> f64 {
+    const ROWS: [[f64; 9]; 9] = {
+        let mut t = [[0.0; 9]; 9];
+        let mut n = 0;
+        while n < 9 {
+            t[n][0] = 1.0;
+            let mut k = 1;
+            while k <= n {
+                t[n][k] = t[n - 1][k - 1] + if k < n { t[n - 1][k] } else { 0.0 };
+                k += 1;
+            }
+            n += 1;
+        }
+        t
+    };
+    ROWS[n][k]
+}
+
+/// Roots found in one call: rarely more than a few.
+pub type Roots<T> = SmallVec<[T; 8]>;
+
+/// A polynomial in the scaled Bernstein (homogeneous) basis `(1 − t)ⁿ⁻ᵏ tᵏ`, coefficients
+/// `C(n, k) cₖ`: products are plain convolutions, so polynomials are built in this form and
+/// converted once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scaled<T> {
+    c: [T; MAX_DEGREE + 1],
+    degree: usize,
+}
+
+impl<T: Real> Scaled<T> {
+    /// `(1 − t) a + t b`.
+    pub fn linear(a: T, b: T) -> Self {
+        let mut c = [T::zero(); MAX_DEGREE + 1];
+        (c[0], c[1]) = (a, b);
+        Scaled { c, degree: 1 }
+    }
+
+    /// `a (1 − t)² + b (1 − t) t + c t²`.
+    pub fn quadratic(a: T, b: T, c: T) -> Self {
+        let mut all = [T::zero(); MAX_DEGREE + 1];
+        (all[0], all[1], all[2]) = (a, b, c);
+        Scaled { c: all, degree: 2 }
+    }
+
+    /// `p q`.
+    pub fn mul(&self, q: &Self) -> Self {
+        let degree = self.degree + q.degree;
+        assert!(degree <= MAX_DEGREE, "product degree above 8");
+        let mut c = [T::zero(); MAX_DEGREE + 1];
+        for i in 0..=self.degree {
+            for j in 0..=q.degree {
+                c[i + j] = c[i + j] + self.c[i] * q.c[j];
+            }
+        }
+        Scaled { c, degree }
+    }
+
+    /// `p + s q`, of equal degrees.
+    pub fn add_scaled(&self, s: T, q: &Self) -> Self {
+        assert_eq!(self.degree, q.degree, "equal degrees");
+        let mut c = self.c;
+        for (a, b) in c.iter_mut().zip(q.c) {
+            *a = *a + s * b;
+        }
+        Scaled { c, degree: self.degree }
+    }
+
+    /// `s p`.
+    pub fn scale(&self, s: T) -> Self {
+        Scaled { c: self.c.map(|x| x * s), degree: self.degree }
+    }
+
+    /// In the Bernstein basis: `cₖ / C(n, k)`.
+    pub fn bernstein(&self) -> Bernstein<T> {
+        let mut c = self.c;
+        for (k, x) in c.iter_mut().enumerate().take(self.degree + 1) {
+            *x = *x * T::from_f64(1.0 / binomial(self.degree, k));
+        }
+        Bernstein { c, degree: self.degree }
+    }
+}
+
+impl<T: Real> Bernstein<T> {
+    /// The polynomial with Bernstein coefficients `c`.
+    pub fn new(c: &[T]) -> Self {
+        assert!(!c.is_empty() && c.len() <= MAX_DEGREE + 1, "degree 0 to 8");
+        let mut all = [T::zero(); MAX_DEGREE + 1];
+        all[..c.len()].copy_from_slice(c);
+        Bernstein { c: all, degree: c.len() - 1 }
+    }
+
+    /// The coefficients in use.
+    pub fn coefficients(&self) -> &[T] {
+        &self.c[..=self.degree]
+    }
+
+    /// `p(t)` by de Casteljau's algorithm (stable for `t ∈ [0, 1]`).
+    pub fn eval(&self, t: T) -> T {
+        let mut b = self.c;
+        let u = T::one() - t;
+        for r in 1..=self.degree {
+            for k in 0..=self.degree - r {
+                b[k] = u * b[k] + t * b[k + 1];
+            }
+        }
+        b[0]
+    }
+
+    /// `(p(t), p'(t))`: the last de Casteljau step's two values differ by `p'/n`.
+    pub fn eval_with_slope(&self, t: T) -> (T, T) {
+        let n = self.degree;
+        if n == 0 {
+            return (self.c[0], T::zero());
+        }
+        let mut b = self.c;
+        let u = T::one() - t;
+        for r in 1..n {
+            for k in 0..=n - r {
+                b[k] = u * b[k] + t * b[k + 1];
+            }
+        }
+        (u * b[0] + t * b[1], T::from_f64(n as f64) * (b[1] - b[0]))
+    }
+
+    /// The same polynomial on `[0, s]` and `[s, 1]`, each reparametrised to [0, 1].
+    pub fn split(&self, s: T) -> (Self, Self) {
+        let n = self.degree;
+        let (mut left, mut right) = (self.c, self.c);
+        let mut b = self.c;
+        let u = T::one() - s;
+        left[0] = b[0];
+        right[n] = b[n];
+        for r in 1..=n {
+            for k in 0..=n - r {
+                b[k] = u * b[k] + s * b[k + 1];
+            }
+            left[r] = b[0];
+            right[n - r] = b[n - r];
+        }
+        (Bernstein { c: left, degree: n }, Bernstein { c: right, degree: n })
+    }
+
+    /// The same polynomial on `[lo, hi] ⊆ [0, 1]`, reparametrised to [0, 1].
+    pub fn restrict(&self, lo: T, hi: T) -> Self {
+        let right = if lo > T::zero() { self.split(lo).1 } else { *self };
+        if hi >= T::one() { right } else { right.split((hi - lo) / (T::one() - lo)).0 }
+    }
+
+    /// Sign changes among the nonzero coefficients: an upper bound on the number of roots in
+    /// (0, 1), exact when it is 0 or 1.
+    pub fn sign_changes(&self) -> usize {
+        let mut last = T::zero();
+        let mut changes = 0;
+        for &c in self.coefficients() {
+            if c != T::zero() {
+                if (c > T::zero()) != (last > T::zero()) && last != T::zero() {
+                    changes += 1;
+                }
+                last = c;
+            }
+        }
+        changes
+    }
+
+    /// Every real root in `[lo, hi]` (parameters of the original polynomial, `self` being
+    /// its restriction to that interval), in increasing order, each refined to `tolerance`
+    /// in α (to rounding level when it is 0).
+    ///
+    /// An interval whose coefficients change sign once holds one root. Where they change
+    /// more often, or come within `touch` (relative to the largest) of zero, the slope `p'`
+    /// decides: monotone, at most one root; one extremum `e`, found by refining `p'`, then
+    /// a root on each side where `p(e)` has crossed zero — a pair of close roots — and a
+    /// touch at `e` where `|p(e)| ≤ touch` (a double root: rounding may hide its sign change
+    /// or split it in two);
+    /// otherwise the interval is split.
+    pub fn roots_in(&self, lo: T, hi: T, tolerance: T, touch: T, out: &mut Roots<T>) {
+        let floor = touch * self.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
+        if self.c[0].abs() <= floor {
+            out.push(lo);
+        }
+        self.isolate(lo, hi, tolerance, floor, 0, out);
+        let last = self.c[self.degree];
+        if last != T::zero() && last.abs() <= floor {
+            out.push(hi);
+        }
+    }
+
+    fn isolate(&self, lo: T, hi: T, tolerance: T, floor: T, depth: usize, out: &mut Roots<T>) {
+        let n = self.degree;
+        let changes = self.sign_changes();
+        let near_zero = self.coefficients().iter().any(|c| c.abs() <= floor);
+        let (first, last) = (self.c[0], self.c[n]);
+        let opposite = first != T::zero() && last != T::zero() && (first > T::zero()) != (last > T::zero());
+        let to_alpha = |t: T| lo + (hi - lo) * t;
+        let tol = tolerance / (hi - lo);
+        if changes == 0 && !near_zero {
+            // No root in (lo, hi].
+        } else if changes == 1 && opposite {
+            out.push(to_alpha(self.refine(T::zero(), T::one(), tol)));
+        } else {
+            let slope = self.derivative();
+            match slope.sign_changes() {
+                0 if opposite => out.push(to_alpha(self.refine(T::zero(), T::one(), tol))),
+                0 => {}
+                1 if n >= 2 => {
+                    let e = slope.refine(T::zero(), T::one(), T::zero());
+                    let pe = self.eval(e);
+                    let crossed = |end: T| pe != T::zero() && end != T::zero() && (pe > T::zero()) != (end > T::zero());
+                    if crossed(first) {
+                        out.push(to_alpha(self.refine(T::zero(), e, tol)));
+                    }
+                    if crossed(last) {
+                        out.push(to_alpha(self.refine(e, T::one(), tol)));
+                    }
+                    // A double root that rounding split into two, or lifted off zero.
+                    if pe.abs() <= floor {
+                        out.push(to_alpha(e));
+                    }
+                }
+                _ if hi - lo <= tolerance.max(T::epsilon() * T::from_f64(4.0)) || depth >= 60 => {
+                    if changes > 0 {
+                        out.push(T::from_f64(0.5) * (lo + hi));
+                    }
+                    return;
+                }
+                _ => {
+                    let mid = T::from_f64(0.5) * (lo + hi);
+                    let (left, right) = self.split(T::from_f64(0.5));
+                    left.isolate(lo, mid, tolerance, floor, depth + 1, out);
+                    right.isolate(mid, hi, tolerance, floor, depth + 1, out);
+                    return;
+                }
+            }
+        }
+        if last == T::zero() {
+            out.push(hi);
+        }
+    }
+
+    /// `p'`, degree `n − 1`: coefficients `n (cₖ₊₁ − cₖ)`.
+    pub fn derivative(&self) -> Self {
+        let n = self.degree;
+        let mut d = [T::zero(); MAX_DEGREE + 1];
+        for (k, slot) in d.iter_mut().enumerate().take(n) {
+            *slot = T::from_f64(n as f64) * (self.c[k + 1] - self.c[k]);
+        }
+        Bernstein { c: d, degree: n.saturating_sub(1) }
+    }
+
+    /// The single root in `(a, b) ⊆ [0, 1]`, where `p(a)`, `p(b)` differ in sign: Newton
+    /// steps with the exact slope, replaced by bisection whenever one leaves the bracket,
+    /// until the bracket or the step is below `tolerance` (rounding level at least).
+    fn refine(&self, a: T, b: T, tolerance: T) -> T {
+        let positive_at_a = self.eval(a) > T::zero();
+        let (mut lo, mut hi) = (a, b);
+        let half = T::from_f64(0.5);
+        let tolerance = tolerance.max(T::epsilon() * T::from_f64(4.0));
+        let mut t = half * (a + b);
+        for _ in 0..100 {
+            let (p, slope) = self.eval_with_slope(t);
+            if p == T::zero() {
+                return t;
+            }
+            if (p > T::zero()) == positive_at_a {
+                lo = t;
+            } else {
+                hi = t;
+            }
+            let step = t - p / slope;
+            let next = if step > lo && step < hi { step } else { half * (lo + hi) };
+            if (next - t).abs() <= tolerance || hi - lo <= tolerance {
+                return next;
+            }
+            t = next;
+        }
+        t
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Bernstein coefficients of `Π (t − rᵢ)` built factor by factor.
+    fn from_roots(roots: &[f64]) -> Bernstein<f64> {
+        let one = Scaled { c: [1.0; MAX_DEGREE + 1], degree: 0 };
+        roots.iter().fold(one, |p, &r| p.mul(&Scaled::linear(-r, 1.0 - r))).bernstein()
+    }
+
+    /// `p + e` (a constant adds to every Bernstein coefficient).
+    fn plus(mut p: Bernstein<f64>, e: f64) -> Bernstein<f64> {
+        p.c.iter_mut().take(p.degree + 1).for_each(|c| *c += e);
+        p
+    }
+
+    #[test]
+    fn eval_matches_the_product_form() {
+        let roots = [0.1, 0.35, 0.5, 0.9, 1.7, -0.4];
+        let p = from_roots(&roots);
+        for k in 0..=20 {
+            let t = k as f64 / 20.0;
+            let want: f64 = roots.iter().map(|r| t - r).product();
+            assert!((p.eval(t) - want).abs() < 1e-14, "t = {t}");
+            let h = 1e-6;
+            let fd = (p.eval(t + h) - p.eval(t - h)) / (2.0 * h);
+            assert!((p.eval_with_slope(t).1 - fd).abs() < 1e-7);
+        }
+    }
+
+    #[test]
+    fn split_and_restrict_reparametrise() {
+        let p = from_roots(&[0.2, 0.6, 0.65, 1.3]);
+        let (l, r) = p.split(0.3);
+        let q = p.restrict(0.25, 0.75);
+        for k in 0..=10 {
+            let t = k as f64 / 10.0;
+            assert!((l.eval(t) - p.eval(0.3 * t)).abs() < 1e-15);
+            assert!((r.eval(t) - p.eval(0.3 + 0.7 * t)).abs() < 1e-15);
+            assert!((q.eval(t) - p.eval(0.25 + 0.5 * t)).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn finds_every_root_in_the_interval_and_no_other() {
+        let roots = [0.0, 0.2, 0.2 + 1e-7, 0.5, 0.77, 1.0, 1.2, -0.1];
+        let p = from_roots(&roots);
+        let mut out = Roots::new();
+        p.roots_in(0.0, 1.0, 0.0, 1e-12, &mut out);
+        // Roots 1e-7 apart are conditioned ~1e7 times worse than the others; the extremum
+        // between them comes within the touch level, so it is a candidate too.
+        let want = [(0.0, 1e-12), (0.2, 1e-9), (0.2 + 1e-7, 1e-9), (0.5, 1e-12), (0.77, 1e-12), (1.0, 1e-12)];
+        for (root, tol) in want {
+            assert!(out.iter().any(|r| (r - root).abs() < tol), "{root} missing from {out:?}");
+        }
+        assert!(out.iter().all(|r| want.iter().any(|w| (r - w.0).abs() < 1e-7)), "{out:?}");
+        assert!(out.len() <= 7, "{out:?}");
+    }
+
+    #[test]
+    fn a_double_root_is_found_once_within_tolerance() {
+        let p = from_roots(&[0.4, 0.4, 0.9]);
+        let mut out = Roots::new();
+        p.roots_in(0.0, 1.0, 1e-9, 1e-12, &mut out);
+        assert!(!out.is_empty() && out.iter().all(|r| (r - 0.4).abs() < 1e-6 || (r - 0.9).abs() < 1e-12), "{out:?}");
+        let positive = plus(from_roots(&[0.4, 0.4]), 1e-3);
+        let mut none = Roots::new();
+        positive.roots_in(0.0, 1.0, 1e-9, 1e-12, &mut none);
+        assert!(none.is_empty(), "{none:?}");
+        // A double root that rounding has lifted just above zero is still found, accurately.
+        let lifted = plus(from_roots(&[0.3, 0.3, 1.5]), 1e-17);
+        let mut touch = Roots::new();
+        lifted.roots_in(0.0, 1.0, 0.0, 1e-12, &mut touch);
+        assert!(touch.len() == 1 && (touch[0] - 0.3).abs() < 1e-12, "{touch:?}");
+    }
+}

@@ -1,0 +1,352 @@
+//! The family of circles `C_α` and the roots of `f(α) = (C_α ∨ L)²` for one line, generic
+//! over the scalar (the renderer uses `f64`; the error report also runs `f32`).
+//!
+//! Three ways to find the roots, all returning candidate α that the caller verifies:
+//! uniform sampling of `f` (the paper's baseline), sampling of `(f, f')` with the exact
+//! slope (dual numbers) and safeguarded Newton, and the degree-8 polynomial (see
+//! [`Family::polynomial`]) whose roots are isolated in the Bernstein basis.
+
+use super::bernstein::{Bernstein, Roots, Scaled};
+use cga_core::euclid::{E3, dot, norm, scale, sub};
+use cga_core::{Circle, Dual, Interpolable, Line, Pair, Real, ScalarQuadvector, Vector, down};
+use smallvec::SmallVec;
+
+/// `|f|` below this fraction of its sampled scale counts as zero: a tangential touch.
+const TOUCH: f64 = 1e-12;
+
+/// The circles `C_α = K⁻¹ X_α / ‖…‖`, `X_α = (1 − α) C1 + α C2`, with what the polynomial
+/// formulation precomputes once per surface.
+#[derive(Clone, Debug)]
+pub struct Family<T: Real> {
+    /// Normalised, aligned end circles.
+    pub pair: Pair<Circle<T>>,
+    /// The same over dual numbers, for the exact `f'`.
+    lifted: Pair<Circle<Dual<T>>>,
+    /// `S(α) = ⟨−X X̃⟩₀`, degree 2.
+    s: Scaled<T>,
+    /// `w = W²` for the constant 4-vector `W = ⟨−(C1 C̃2 + C2 C̃1)⟩₄`; `⟨−X X̃⟩₄ = α(1−α) W`.
+    w: T,
+    /// `⟨W C1⟩₃`, `⟨W C2⟩₃`.
+    wc: [Circle<T>; 2],
+    /// `W = 0`: the circles are co-spherical, `K` is a scalar and `C_α ∝ X_α`.
+    cospherical: bool,
+}
+
+/// Which root finder [`Family::roots`] runs over an α-interval.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Finder {
+    /// `n` uniform samples of `f` per unit of α; sign changes bisected, local minima of `|f|`
+    /// searched by golden section.
+    Samples(usize),
+    /// `n` uniform samples of `(f, f')` per interval; Newton; close root pairs split at the
+    /// extremum of `f`.
+    Slope(usize),
+    /// Bernstein roots of the degree-8 polynomial, refined to this α tolerance.
+    Polynomial(f64),
+}
+
+impl<T: Real> Family<T> {
+    /// The family between normalised, aligned circles.
+    pub fn new(pair: Pair<Circle<T>>) -> Self {
+        let lifted = Pair { c1: pair.c1.lift(), c2: pair.c2.lift() };
+        let (c1, c2) = (pair.c1, pair.c2);
+        let cross = -ScalarQuadvector::from_storage(&(c1 * c2.reverse() + c2 * c1.reverse()).to_storage());
+        let ends = [c1.neg_square().s, c2.neg_square().s];
+        let s = Scaled::quadratic(ends[0], cross.s, ends[1]);
+        let w4 = cross.grade4();
+        let w = (w4 * w4).s;
+        let wc = [Circle::from_storage(&(w4 * c1).to_storage()), Circle::from_storage(&(w4 * c2).to_storage())];
+        let largest = w4.to_array().iter().fold(T::zero(), |m, x| m.max(x.abs()));
+        Family { pair, lifted, s, w, wc, cospherical: largest <= T::epsilon() }
+    }
+
+    /// The same family in another scalar type (through `f64`).
+    pub fn cast<U: Real>(&self) -> Family<U> {
+        let convert = |c: &Circle<T>| Circle::from_array(c.to_array().map(|x| U::from_f64(x.to_f64())));
+        Family::new(Pair { c1: convert(&self.pair.c1), c2: convert(&self.pair.c2) })
+    }
+
+    /// `f(α) = (C_α ∨ L)²`; `None` where the interpolation fails.
+    pub fn f(&self, line: &Line<T>, alpha: T) -> Option<T> {
+        let c = self.pair.at(alpha).ok()?;
+        Some(line.meet_circle(&c).norm_squared())
+    }
+
+    /// `(f, f')` at α, exact: the interpolation and meet run on dual numbers.
+    pub fn f_and_slope(&self, line: &Line<Dual<T>>, alpha: T) -> Option<(T, T)> {
+        let c = self.lifted.at(Dual::variable(alpha)).ok()?;
+        let f = line.meet_circle(&c).norm_squared();
+        Some((f.re, f.du))
+    }
+
+    /// A polynomial in α whose roots in [0, 1] include every root of `f`.
+    ///
+    /// With `K = s + μW` (`s² + μ²W² = S`, `2sμ = α(1−α) =: g`), `C_α ∝ K* X = (s − μW) X`,
+    /// so `C_α ∨ L ∝ sA − μB` for `A = X ∨ L`, `B = ⟨W X⟩₃ ∨ L`, both linear in α. Its
+    /// square times `σ = s²` is `σ²a − gσp + g²b/4` (`a = A²`, `p = A·B`, `b = B²`); using
+    /// `σ² = Sσ − wg²/4` it vanishes when `σ P₁ + g²h/4 = 0`, `P₁ = Sa − gp`, `h = b − wa`.
+    /// The principal root has `σ = (S + √(S² − wg²))/2`; isolating the radical and squaring
+    /// leaves a factor `g²` (the ends, handled by `a` there), and dividing it out gives
+    ///
+    /// `R(α) = w P₁² + S P₁ h + g² h² / 4`, degree 8
+    ///
+    /// (the paper's polynomial has degree 12). Its extra roots — the other branch of the
+    /// root, and `b = 0` at the ends — are rejected by the caller's verification. For
+    /// co-spherical circles (`W = 0`) `R` vanishes identically and `a` (degree 2) is used.
+    pub fn polynomial(&self, line: &Line<T>) -> Bernstein<T> {
+        let a_end = [line.meet_circle(&self.pair.c1), line.meet_circle(&self.pair.c2)];
+        let product = |u: &[Vector<T>; 2], v: &[Vector<T>; 2]| {
+            let dot = |x: &Vector<T>, y: &Vector<T>| (*x | *y).s;
+            Scaled::quadratic(dot(&u[0], &v[0]), dot(&u[0], &v[1]) + dot(&u[1], &v[0]), dot(&u[1], &v[1]))
+        };
+        let a = product(&a_end, &a_end);
+        if self.cospherical {
+            return a.bernstein();
+        }
+        let b_end = [line.meet_circle(&self.wc[0]), line.meet_circle(&self.wc[1])];
+        let (p, b) = (product(&a_end, &b_end), product(&b_end, &b_end));
+        let g = Scaled::quadratic(T::zero(), T::one(), T::zero());
+        let p1 = self.s.mul(&a).add_scaled(-T::one(), &g.mul(&p));
+        let h = b.add_scaled(-self.w, &a);
+        let gh = g.mul(&h);
+        let r = p1.mul(&p1).scale(self.w).add_scaled(T::one(), &self.s.mul(&p1).mul(&h));
+        r.add_scaled(T::from_f64(0.25), &gh.mul(&gh)).bernstein()
+    }
+
+    /// Candidate α in `[lo, hi]` by `finder`, appended to `out` in increasing order.
+    pub fn roots(&self, line: &Line<T>, finder: Finder, lo: f64, hi: f64, out: &mut Roots<T>) {
+        let (lo, hi) = (T::from_f64(lo), T::from_f64(hi));
+        match finder {
+            Finder::Samples(n) => self.sampled(line, lo, hi, n.max(2), out),
+            Finder::Slope(n) => self.sampled_with_slope(&line.lift(), lo, hi, n.max(2), out),
+            Finder::Polynomial(tolerance) => {
+                let poly = self.polynomial(line);
+                let poly = if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly };
+                poly.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
+            }
+        }
+    }
+
+    /// Every α in `[lo, hi]` where `f` changes sign or `|f|` has a local minimum reaching
+    /// rounding level, from `n + 1` samples; sign changes bisected, minima golden-sectioned.
+    fn sampled(&self, line: &Line<T>, lo: T, hi: T, n: usize, out: &mut Roots<T>) {
+        let at = |k: usize| lo + (hi - lo) * T::from_f64(k as f64 / n as f64);
+        let mut scale = T::zero();
+        let mut touches: SmallVec<[(T, T); 4]> = SmallVec::new();
+        let (mut prev, mut cur) = (None, self.f(line, lo));
+        for k in 0..=n {
+            let next = if k < n { self.f(line, at(k + 1)) } else { None };
+            if let Some(fk) = cur {
+                scale = scale.max(fk.abs());
+                if fk == T::zero() {
+                    out.push(at(k));
+                } else {
+                    if let Some(fn_) = next
+                        && fn_ != T::zero()
+                        && (fk > T::zero()) != (fn_ > T::zero())
+                    {
+                        out.push(self.bisect(line, at(k), at(k + 1), fk));
+                    }
+                    // A local minimum of |f| (the ends included) without a sign change.
+                    let no_lower =
+                        |v: Option<T>| v.is_none_or(|v| v.abs() >= fk.abs() && (v > T::zero()) == (fk > T::zero()));
+                    if no_lower(prev) && no_lower(next) {
+                        let alpha = self.minimise_abs(line, at(k.saturating_sub(1)), at((k + 1).min(n)));
+                        if let Some(f) = self.f(line, alpha) {
+                            touches.push((alpha, f.abs()));
+                        }
+                    }
+                }
+            }
+            (prev, cur) = (cur, next);
+        }
+        // A touch is real only where |f| reaches rounding level: a near miss has a small but
+        // clearly nonzero minimum.
+        out.extend(touches.into_iter().filter(|t| t.1 <= T::from_f64(TOUCH) * scale).map(|t| t.0));
+    }
+
+    /// The root of `f` in `[lo, hi]`, where `f(lo) = f_lo` and `f(hi)` differ in sign.
+    fn bisect(&self, line: &Line<T>, mut lo: T, mut hi: T, mut f_lo: T) -> T {
+        let half = T::from_f64(0.5);
+        for _ in 0..64 {
+            let mid = half * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            match self.f(line, mid) {
+                Some(fm) if fm == T::zero() => return mid,
+                Some(fm) if (fm > T::zero()) == (f_lo > T::zero()) => {
+                    lo = mid;
+                    f_lo = fm;
+                }
+                _ => hi = mid,
+            }
+        }
+        half * (lo + hi)
+    }
+
+    /// Every root of `f` in `[lo, hi]` from `n + 1` samples of `(f, f')`: sign changes of `f`
+    /// are refined by Newton; where `f` keeps its sign but `f'` turns towards zero between
+    /// two samples, the extremum is found by bisection on `f'`, and if `f` crosses zero
+    /// there both roots are bracketed (a pair of roots closer than the sample spacing), or
+    /// if it only reaches zero, the touch is kept.
+    fn sampled_with_slope(&self, line: &Line<Dual<T>>, lo: T, hi: T, n: usize, out: &mut Roots<T>) {
+        let at = |k: usize| lo + (hi - lo) * T::from_f64(k as f64 / n as f64);
+        let mut scale = T::zero();
+        let mut touches: SmallVec<[(T, T); 4]> = SmallVec::new();
+        let mut cur = self.f_and_slope(line, lo);
+        for k in 0..=n {
+            let next = if k < n { self.f_and_slope(line, at(k + 1)) } else { None };
+            let (Some((fk, dk)), pair) = (cur, next) else {
+                cur = next;
+                continue;
+            };
+            scale = scale.max(fk.abs());
+            cur = next;
+            if fk == T::zero() {
+                out.push(at(k));
+                continue;
+            }
+            let Some((fn_, dn)) = pair else { continue };
+            let positive = fk > T::zero();
+            if fn_ != T::zero() && positive != (fn_ > T::zero()) {
+                out.push(self.newton(line, at(k), at(k + 1), fk));
+                continue;
+            }
+            // f keeps its sign; does it turn back towards zero in between?
+            let zero = T::zero();
+            let towards_zero = if positive { dk < zero && dn > zero } else { dk > zero && dn < zero };
+            if !towards_zero {
+                continue;
+            }
+            let (a, b) = (at(k), at(k + 1));
+            let e = self.extremum(line, a, b, dk);
+            let Some((fe, _)) = self.f_and_slope(line, e) else { continue };
+            if fe != zero && (fe > zero) != positive {
+                out.push(self.newton(line, a, e, fk));
+                out.push(self.newton(line, e, b, fe));
+            }
+            // A double root that rounding split into two, or lifted off zero.
+            touches.push((e, fe.abs()));
+        }
+        out.extend(touches.into_iter().filter(|t| t.1 <= T::from_f64(TOUCH) * scale).map(|t| t.0));
+    }
+
+    /// Where `f'` changes sign in `[lo, hi]` (`f'(lo) = d_lo`), by bisection.
+    fn extremum(&self, line: &Line<Dual<T>>, mut lo: T, mut hi: T, d_lo: T) -> T {
+        let half = T::from_f64(0.5);
+        for _ in 0..60 {
+            let mid = half * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            match self.f_and_slope(line, mid) {
+                Some((_, d)) if (d > T::zero()) == (d_lo > T::zero()) => lo = mid,
+                _ => hi = mid,
+            }
+        }
+        half * (lo + hi)
+    }
+
+    /// The root of `f` in `[lo, hi]` (`f(lo) = f_lo`, `f(hi)` of the other sign): Newton
+    /// steps with the exact slope, replaced by bisection whenever one would leave the bracket.
+    fn newton(&self, line: &Line<Dual<T>>, mut lo: T, mut hi: T, f_lo: T) -> T {
+        let positive_lo = f_lo > T::zero();
+        let half = T::from_f64(0.5);
+        let eps = T::epsilon();
+        let mut x = half * (lo + hi);
+        for _ in 0..64 {
+            let Some((f, slope)) = self.f_and_slope(line, x) else { return x };
+            if f == T::zero() {
+                return x;
+            }
+            if (f > T::zero()) == positive_lo {
+                lo = x
+            } else {
+                hi = x
+            }
+            let step = x - f / slope;
+            let next = if step > lo && step < hi { step } else { half * (lo + hi) };
+            let small = T::from_f64(4.0) * eps * next.abs().max(T::from_f64(1e-30));
+            if (next - x).abs() <= small || hi - lo <= eps + eps {
+                return next;
+            }
+            x = next;
+        }
+        x
+    }
+
+    /// The α minimising `|f|` on `[lo, hi]` (golden-section search).
+    fn minimise_abs(&self, line: &Line<T>, mut lo: T, mut hi: T) -> T {
+        let g = T::from_f64(0.5 * (5f64.sqrt() - 1.0));
+        let h = |a: T| self.f(line, a).map(T::abs);
+        let h = |a: T| h(a).unwrap_or(T::from_f64(f64::MAX));
+        let (mut a, mut b) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        let (mut ha, mut hb) = (h(a), h(b));
+        for _ in 0..80 {
+            if ha < hb {
+                hi = b;
+                (b, hb) = (a, ha);
+                a = hi - g * (hi - lo);
+                ha = h(a);
+            } else {
+                lo = a;
+                (a, ha) = (b, hb);
+                b = lo + g * (hi - lo);
+                hb = h(b);
+            }
+        }
+        let mid = T::from_f64(0.5) * (lo + hi);
+        let ends = [(lo, h(lo)), (hi, h(hi)), (mid, h(mid))];
+        ends.into_iter().fold((lo, T::from_f64(f64::MAX)), |best, e| if e.1 < best.1 { e } else { best }).0
+    }
+
+    /// The nearest verified crossing `(t, point, α)` with `t_min < t < t_max` of the ray
+    /// `origin + t dir` (unit `dir`, carried by `line`) among the candidate α.
+    pub fn nearest(&self, ray: (E3<T>, E3<T>, &Line<T>), alphas: &[T], t_min: T, t_max: T) -> Option<(T, E3<T>, T)> {
+        let mut best: Option<(T, E3<T>, T)> = None;
+        for &alpha in alphas {
+            let Ok(circle) = self.pair.at(alpha) else { continue };
+            for x in hit_points(&circle, ray) {
+                let t = dot(sub(x, ray.0), ray.1);
+                if t > t_min && t < t_max && best.is_none_or(|b| t < b.0) {
+                    best = Some((t, x, alpha));
+                }
+            }
+        }
+        best
+    }
+}
+
+/// Points where the ray's line meets `circle`, each checked to lie on both. The meet
+/// `C ∨ L` is the touching point; when it vanishes (the line in the circle's plane), the
+/// in-plane intersection is solved instead.
+fn hit_points<T: Real>(circle: &Circle<T>, (origin, dir, line): (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
+    let mut points = SmallVec::new();
+    let Ok((c, n, r)) = circle.centre_normal_radius() else { return points };
+    let eps = T::epsilon();
+    let tol = T::from_f64(1e-6).max(T::from_f64(1e3) * eps) * (r + norm(sub(origin, c)));
+    let on_both = |x: &E3<T>| {
+        let d = sub(*x, c);
+        let rel = sub(*x, origin);
+        let to_line = norm(sub(rel, scale(dir, dot(rel, dir))));
+        (norm(d) - r).abs() < tol && dot(d, n).abs() < tol && to_line < tol
+    };
+    points.extend(down(line.meet_circle(circle)).filter(on_both));
+    if points.is_empty() {
+        // The line in the circle's plane: |o + t d − c|² = r².
+        let oc = sub(origin, c);
+        let flat = T::from_f64(1e-9).max(T::from_f64(10.0) * eps);
+        if dot(dir, n).abs() < flat && dot(oc, n).abs() < tol {
+            let (b, cc) = (dot(oc, dir), dot(oc, oc) - r * r);
+            let disc = b * b - cc;
+            if disc >= T::zero() {
+                let s = disc.sqrt();
+                for t in [-b - s, -b + s] {
+                    points.push(cga_core::euclid::add(origin, scale(dir, t)));
+                }
+            }
+        }
+    }
+    points
+}
