@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
-"""Print the products benchmark as a markdown table, from criterion's saved estimates.
+"""Print the benchmarks as markdown tables, from criterion's saved estimates.
 
-Run after `cargo bench --bench products`:  python3 benches/report.py
-Times are criterion medians per batch, divided by the batch size (256) to give ns per op.
+Run after `cargo bench --bench products` and/or `cargo bench --bench render`:
+python3 benches/report.py
+Products: criterion medians per batch divided by the batch size (256), ns per op.
+Render: median ms per frame (one thread), rays/s, and the back ends' ratios.
 """
 import json
 import os
@@ -43,9 +45,49 @@ def fmt(x):
     return "–" if x is None else (f"{x:.1f}" if x < 100 else f"{x:.0f}")
 
 
+def estimate(group, variant):
+    """Median and throughput-free path lookup: criterion writes `group/variant`."""
+    for g in (group, group.replace("/", "_")):
+        path = os.path.join(ROOT, g, variant, "new", "estimates.json")
+        if os.path.exists(path):
+            with open(path) as f:
+                median = json.load(f)["median"]["point_estimate"]
+            bench = os.path.join(ROOT, g, variant, "new", "benchmark.json")
+            elements = None
+            if os.path.exists(bench):
+                with open(bench) as f:
+                    throughput = json.load(f).get("throughput") or {}
+                    elements = throughput.get("Elements")
+            return median, elements
+    return None, None
+
+
+def render_table():
+    rows = []
+    for scene in ("primitives", "combined"):
+        times = {b: estimate(f"render/{scene}", b) for b in ("sparse", "plain", "dense")}
+        if all(t[0] is None for t in times.values()):
+            continue
+        ms = {b: (t[0] / 1e6 if t[0] else None) for b, t in times.items()}
+        rays = next((t[1] for t in times.values() if t[1]), None)
+        for b in ("sparse", "plain", "dense"):
+            if ms[b] is None:
+                continue
+            rate = f"{rays / (ms[b] / 1e3):.3g}" if rays else "–"
+            rows.append(f"| {scene} | {b} | {ms[b]:.1f} | {rate} |")
+        ratio = lambda a, b: f"{ms[a] / ms[b]:.2f}×" if ms[a] and ms[b] else "–"
+        rows.append(f"| {scene} | sparse / plain | {ratio('sparse', 'plain')} | |")
+        rows.append(f"| {scene} | dense / sparse | {ratio('dense', 'sparse')} | |")
+    if rows:
+        print("\nRender, 160×120, one thread: median ms per frame and rays/s.\n")
+        print("| scene | back end | ms / frame | rays/s |")
+        print("|---|---|---|---|")
+        print("\n".join(rows))
+
+
 def main():
     if not os.path.isdir(ROOT):
-        sys.exit("no criterion results: run `cargo bench --bench products` first")
+        sys.exit("no criterion results: run `cargo bench --bench products` (or render) first")
     print(f"Machine: {cpu()}, {os.cpu_count()} cores. Medians, ns per operation "
           f"(batches of {BATCH}).\n")
     print("| operation | scalar | sparse ns | dense ns | dense / sparse | target (f64) |")
@@ -57,6 +99,8 @@ def main():
             ratio = f"{dense / sparse:.0f}×" if sparse and dense else "–"
             goal = f"≈{target:.0f} ns" if target and scalar == "f64" else ""
             print(f"| {label} | {scalar} | {fmt(sparse)} | {fmt(dense)} | {ratio} | {goal} |")
+
+    render_table()
 
 
 if __name__ == "__main__":

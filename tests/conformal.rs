@@ -183,3 +183,39 @@ fn degenerate_input_is_rejected_with_a_reason() {
     assert_eq!((far_line & unit_sphere).end_points(), Err(GeometryError::Imaginary));
     let _: Multivector = unit_sphere.into();
 }
+
+/// `Line::from_point_direction` writes the normalised line down directly; it is the same
+/// blade as the wedge `up(p) ∧ up(p + d) ∧ ei`, normalised.
+#[test]
+fn line_from_point_direction_is_the_normalised_wedge() {
+    let points = random_points(11, 400);
+    for pair in points.chunks(2) {
+        let (p, d) = (pair[0], pair[1]);
+        let direct = Line::from_point_direction(p, d).unwrap();
+        let q = [p[0] + d[0], p[1] + d[1], p[2] + d[2]];
+        let wedge = ((up(p) ^ up(q)) ^ cga::ei()).try_normalise().unwrap();
+        let scale = 1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max);
+        for (a, b) in direct.to_array().iter().zip(wedge.to_array()) {
+            assert!((a - b).abs() < 1e-12 * scale, "{direct:?} vs {wedge:?}");
+        }
+    }
+}
+
+/// `Plane::from_point_normal` writes the plane down from its dual; it is the blade
+/// `Plane::through` gives for three points spanning it counter-clockwise about the normal.
+#[test]
+fn plane_from_point_normal_is_the_plane_through_three_points() {
+    let points = random_points(12, 400);
+    for pair in points.chunks(2) {
+        let (p, n) = (pair[0], pair[1]);
+        let direct = Plane::from_point_normal(p, n).unwrap();
+        let u = cga::euclid::perpendicular(cga::euclid::unit(n).unwrap());
+        let v = cga::euclid::cross(cga::euclid::unit(n).unwrap(), u);
+        let add = |a: E3, b: E3| [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+        let through = Plane::through(p, add(p, u), add(p, v)).unwrap();
+        let scale = 1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max);
+        for (a, b) in direct.to_array().iter().zip(through.to_array()) {
+            assert!((a - b).abs() < 1e-12 * scale, "{direct:?} vs {through:?}");
+        }
+    }
+}

@@ -91,11 +91,23 @@ impl<T: Real> Line<T> {
         ((up(a) ^ up(b)) ^ ei()).try_normalise().ok_or(GeometryError::Degenerate)
     }
 
-    /// The line through `p` with direction `d`.
+    /// The line through `p` with direction `d`, normalised: the same blade as
+    /// `Line::through(p, p + d)` normalised, written down directly. For `L = up(a) ∧ up(b) ∧ ei`
+    /// the `e_k o i` part is `(a − b)_k` and the `e_ij i` part the moment `a × b`; normalised,
+    /// these are `−d̂` and `p × d̂` (six multiplications, one square root; no products of
+    /// multivectors, as `up(x)` needs none).
     pub fn from_point_direction(p: E3<T>, d: E3<T>) -> Result<Self> {
         finite(&[p, d])?;
         let d = unit(d).ok_or(GeometryError::ZeroVector)?;
-        Self::through(p, add(p, scale(d, magnitude(&[p]))))
+        Ok(Self::from_point_unit_direction(p, d))
+    }
+
+    /// [`Line::from_point_direction`] for a direction already of unit length and finite
+    /// input, unchecked: `−d` and `p × d` (for the rays of a renderer, made by the million).
+    #[inline]
+    pub fn from_point_unit_direction(p: E3<T>, d: E3<T>) -> Self {
+        let m = cross(p, d);
+        Line { e12i: m[2], e13i: -m[1], e23i: m[0], e1oi: -d[0], e2oi: -d[1], e3oi: -d[2] }
     }
 
     /// Unit direction: for `L = up(a) ∧ up(b) ∧ ei`, the `e_k o i` part is `(a − b)_k`,
@@ -128,12 +140,14 @@ impl<T: Real> Plane<T> {
         (((up(a) ^ up(b)) ^ up(c)) ^ ei()).try_normalise().ok_or(GeometryError::Degenerate)
     }
 
-    /// The plane through `p` with normal `n`.
+    /// The plane through `p` with normal `n`, normalised: the blade `Plane::through` gives for
+    /// three points spanning it counter-clockwise about `n`, written down from its dual
+    /// `P I5⁻¹ = −(n̂ + δ ei)`, `δ = n̂ · p` (no products).
     pub fn from_point_normal(p: E3<T>, n: E3<T>) -> Result<Self> {
         finite(&[p, n])?;
         let n = unit(n).ok_or(GeometryError::ZeroVector)?;
-        let (u, s) = (perpendicular(n), magnitude(&[p]));
-        Self::through(p, add(p, scale(u, s)), add(p, scale(cross(n, u), s)))
+        let dual = Vector { e1: -n[0], e2: -n[1], e3: -n[2], eo: T::zero(), ei: -dot(n, p) };
+        Ok(Plane::from_storage(&dual.undual().to_storage()))
     }
 
     /// `(n, δ)`: unit normal and signed distance from the origin, `n · x = δ` on the plane.

@@ -34,7 +34,7 @@ pub struct RoundMeet<T = f64> {
 impl<T: Real> RoundMeet<T> {
     /// Classify `P` by the sign of `P²`, counting `|P²|` below rounding of its terms as zero.
     pub fn new(pair: Bivector<T>) -> Self {
-        let square = (pair * pair).s;
+        let square = (pair | pair).s;
         let size: T = pair.to_array().iter().fold(T::zero(), |m, &x| m + x * x);
         let hit = if square.abs() <= tolerance(size) {
             Hit::Tangent
@@ -49,17 +49,27 @@ impl<T: Real> RoundMeet<T> {
     /// The points of the meet ordered along `line`'s direction (a tangent gives the touching
     /// point twice), `None` for a miss.
     pub fn points(&self, line: &Line<T>) -> Option<[E3<T>; 2]> {
+        self.points_along(line.direction().ok()?)
+    }
+
+    /// The points of the meet ordered along the direction `d` (the carrier's; it need not be
+    /// unit), `None` for a miss: `A, B ∝ (P ∓ √P²)(ei ⌋ P)`, whose grade-1 parts are
+    /// `P·(ei ⌋ P) ∓ √P² (ei ⌋ P)` (the inner product computes only that part).
+    pub fn points_along(&self, d: E3<T>) -> Option<[E3<T>; 2]> {
+        let e = crate::ei::<T>().lc(self.pair);
+        let pe = self.pair | e;
         let [a, b] = match self.hit {
             Hit::Miss => return None,
-            Hit::Two => self.pair.end_points().ok()?,
+            Hit::Two => {
+                let s = self.square.sqrt();
+                [down(pe - e.scale(s))?, down(pe + e.scale(s))?]
+            }
+            // The double point: √P² = 0 in the same formula.
             Hit::Tangent => {
-                // The double point: P (ei ⌋ P) vanishes to first order; its grade-1 part is
-                // the point (√P² = 0 in the end-point formula).
-                let p = down((self.pair * crate::ei::<T>().lc(self.pair)).grade1())?;
+                let p = down(pe)?;
                 [p, p]
             }
         };
-        let d = line.direction().ok()?;
         Some(if dot(sub(b, a), d) < T::zero() { [b, a] } else { [a, b] })
     }
 }

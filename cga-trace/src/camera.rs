@@ -5,7 +5,7 @@
 
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, sub, unit};
-use cga_core::{Motor, Rotor, Sandwich, Translator, Vector, down, ei, up};
+use cga_core::{Line, Motor, Rotor, Sandwich, Translator, Vector, down, ei, up};
 
 /// Why a camera cannot be built.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
@@ -39,6 +39,11 @@ pub struct Camera {
     position: E3,
     /// `cam = M up(0) M̃`.
     cam: Vector,
+    /// The camera frame's axes in world coordinates (for the plain back end).
+    axes: [E3; 3],
+    /// `cam ∧ (M b M̃) ∧ ei` for the basis vectors `b = e1, e2, e3, eo, ei`: the ray of eq. 2
+    /// is linear in `up(x)`, so it is these combined with `up(x)`'s coefficients.
+    lines: [Line; 5],
 }
 
 impl Camera {
@@ -52,7 +57,19 @@ impl Camera {
         }
         let cam = pose.sandwich(up([0.0; 3]));
         let position = down(cam).ok_or(CameraError::NotPositive)?;
-        Ok(Camera { pose, focal, x_max, y_max, width, height, position, cam })
+        let axis = |k: usize| {
+            let mut e = [0.0; 3];
+            e[k] = 1.0;
+            down(pose.sandwich(up(e))).map(|x| sub(x, position)).ok_or(CameraError::NotPositive)
+        };
+        let axes = [axis(0)?, axis(1)?, axis(2)?];
+        let basis = |k: usize| {
+            let mut c = [0.0; 5];
+            c[k] = 1.0;
+            (cam ^ pose.sandwich(Vector::from_array(c))) ^ ei()
+        };
+        let lines = [basis(0), basis(1), basis(2), basis(3), basis(4)];
+        Ok(Camera { pose, focal, x_max, y_max, width, height, position, cam, axes, lines })
     }
 
     /// The pose that puts the camera at `position`, looking at `target`, with `up` upwards:
@@ -78,13 +95,38 @@ impl Camera {
     /// `(u, v)` (pixel `(i, j)`'s centre is `(i + ½, j + ½)`). `None` only for a pose that
     /// is not a rigid motion.
     pub fn ray(&self, u: f64, v: f64) -> Option<Ray> {
-        let local = [
+        // cam ∧ M up(x) M̃ ∧ ei, expanded over up(x)'s coefficients (the sandwich and both
+        // wedges are linear), then normalised.
+        let x = up(self.image_point(u, v)).to_array();
+        let line = (0..5).fold(Line::zero(), |l, k| l + self.lines[k].scale(x[k]));
+        Ray::from_line(self.position, line.try_normalise()?)
+    }
+
+    /// The same ray computed term by term as eq. 2 writes it (`cam ∧ M up(x) M̃ ∧ ei`), to
+    /// check [`Camera::ray`] against.
+    pub fn ray_by_sandwich(&self, u: f64, v: f64) -> Option<Ray> {
+        let p = self.pose.sandwich(up(self.image_point(u, v)));
+        let line = ((self.cam ^ p) ^ ei()).try_normalise()?;
+        Ray::from_line(self.position, line)
+    }
+
+    /// The image-plane point at pixel coordinates `(u, v)` in the camera's frame:
+    /// `f e2 − x_max/2 (1 − 2u/w) e1 − y_max/2 (1 − 2v/h) e3`.
+    pub fn image_point(&self, u: f64, v: f64) -> E3 {
+        [
             -self.x_max / 2.0 * (1.0 - 2.0 * u / f64::from(self.width)),
             self.focal,
             -self.y_max / 2.0 * (1.0 - 2.0 * v / f64::from(self.height)),
-        ];
-        let p = self.pose.sandwich(up(local));
-        let line = ((self.cam ^ p) ^ ei()).try_normalise()?;
-        Ray::from_line(self.position, line)
+        ]
+    }
+
+    /// `cam = M up(0) M̃`, the camera's conformal point.
+    pub fn cam(&self) -> Vector {
+        self.cam
+    }
+
+    /// The camera frame's axes `M e_k M̃` as world directions.
+    pub fn axes(&self) -> [E3; 3] {
+        self.axes
     }
 }

@@ -2,8 +2,11 @@
 //!
 //! Kept apart as pbrt keeps them: [`camera`] makes rays (eq. 2), [`shapes`] and [`surface`]
 //! meet them with objects (CGA meets; evolved surfaces by robust root isolation), [`render`]
-//! shades (eq. 12), [`film`] stores and encodes, [`scene`] reads TOML.
+//! shades (eq. 12), [`film`] stores and encodes, [`scene`] reads TOML. [`backend`] runs the
+//! same renderer on the sparse types, a dense multivector or plain vectors, to compare them.
 
+pub mod backend;
+pub mod bvh;
 pub mod camera;
 pub mod film;
 pub mod ray;
@@ -13,6 +16,7 @@ pub mod shapes;
 pub mod surface;
 
 pub use cga_core;
+pub use backend::{Backend, BackendKind};
 pub use film::Film;
 pub use render::{Aov, Renderer};
 pub use scene::{Encoding, Scene, SceneError};

@@ -1,7 +1,8 @@
 //! `cga-trace render SCENE.toml -o out.png`: render a scene file to a PNG.
 
 use anyhow::Context;
-use cga_trace::{Aov, Encoding, Renderer, Scene};
+use cga_trace::backend::{Backend, Dense, Plain, Sparse};
+use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -45,11 +46,15 @@ enum Command {
         /// Write a debug image instead of the shaded one.
         #[arg(long, value_enum, default_value_t = Aov::Shaded)]
         aov: Aov,
+        /// Geometry code: generated sparse types, the dense multivector, or plain vectors.
+        #[arg(long, value_enum, default_value_t = BackendKind::Sparse)]
+        backend: BackendKind,
     },
 }
 
 fn main() -> anyhow::Result<()> {
-    let Command::Render { scene, output, width, height, threads, max_depth, encoding, aov } = Cli::parse().command;
+    let Command::Render { scene, output, width, height, threads, max_depth, encoding, aov, backend } =
+        Cli::parse().command;
     let mut scene = Scene::load(&scene)?;
     resize(&mut scene, width, height)?;
     if let Some(d) = max_depth {
@@ -62,14 +67,17 @@ fn main() -> anyhow::Result<()> {
     if !std::io::stderr().is_terminal() {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let renderer = Renderer::new(&scene);
+    let render = match backend {
+        BackendKind::Sparse => render::<Sparse>,
+        BackendKind::Dense => render::<Dense>,
+        BackendKind::Plain => render::<Plain>,
+    };
     let start = Instant::now();
-    let film = pool.install(|| renderer.render(aov, &|| bar.inc(1)));
+    let (film, (primary, shadow, reflection)) = pool.install(|| render(&scene, aov, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     film.save_png(&output, encoding).with_context(|| format!("writing {}", output.display()))?;
 
-    let (primary, shadow, reflection) = renderer.counts.get();
     let total = primary + shadow + reflection;
     eprintln!(
         "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s -> {}",
@@ -78,6 +86,13 @@ fn main() -> anyhow::Result<()> {
         output.display()
     );
     Ok(())
+}
+
+/// The image and the rays cast `(primary, shadow, reflection)`, on back end `B`.
+fn render<B: Backend>(scene: &Scene, aov: Aov, on_row: &(dyn Fn() + Sync)) -> (Film, (u64, u64, u64)) {
+    let renderer = Renderer::<B>::with_backend(scene);
+    let film = renderer.render(aov, on_row);
+    (film, renderer.counts.get())
 }
 
 /// Apply `--width`/`--height`, keeping the image plane's aspect when only one is given.

@@ -1,28 +1,41 @@
-//! Rays: a Euclidean origin and unit direction for ordering hits, and the CGA line they lie on
-//! for meeting objects.
+//! Rays: a Euclidean origin and unit direction for ordering hits, and what a back end meets
+//! objects with — the CGA line they lie on for the CGA back ends.
 
 use cga_core::Line;
 use cga_core::euclid::{E3, add, dot, scale, sub, unit};
 
-/// A ray `o + t d`, `t > 0`, carried by the normalised line `L` from `o` along `d`.
+/// A ray `o + t d`, `t > 0`, carried by `line`: by default the normalised CGA line from `o`
+/// along `d` (the dense back end carries a dense multivector, the plain one nothing).
 #[derive(Clone, Copy, Debug)]
-pub struct Ray {
+pub struct Ray<C = Line> {
     /// Where the ray starts.
     pub origin: E3,
     /// Unit direction.
     pub dir: E3,
-    /// The carrier `up(o) ∧ up(o + d) ∧ ei`, normalised.
-    pub line: Line,
+    /// The carrier: `up(o) ∧ up(o + d) ∧ ei`, normalised, for the CGA back ends.
+    pub line: C,
 }
 
 impl Ray {
     /// The ray from `origin` along `dir`; `None` for a zero or non-finite direction.
     pub fn new(origin: E3, dir: E3) -> Option<Self> {
         let dir = unit(dir)?;
-        let line = Line::from_point_direction(origin, dir).ok()?;
-        Some(Ray { origin, dir, line })
+        origin.iter().all(|x| x.is_finite()).then(|| Ray { origin, dir, line: Line::from_point_unit_direction(origin, dir) })
     }
 
+    /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir` (see
+    /// [`leaving_origin`]).
+    pub fn leaving(x: E3, n: E3, dir: E3) -> Option<Self> {
+        Ray::new(leaving_origin(x, n, dir), dir)
+    }
+
+    /// The ray from `origin` along the normalised line `line` (which must pass through it).
+    pub fn from_line(origin: E3, line: Line) -> Option<Self> {
+        Some(Ray { origin, dir: line.direction().ok()?, line })
+    }
+}
+
+impl<C> Ray<C> {
     /// `o + t d`.
     pub fn at(&self, t: f64) -> E3 {
         add(self.origin, scale(self.dir, t))
@@ -32,18 +45,21 @@ impl Ray {
     pub fn t_of(&self, x: E3) -> f64 {
         dot(sub(x, self.origin), self.dir)
     }
+}
 
-    /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir`: it starts
-    /// `1e-6 (1 + |x|∞)` off the surface on the side it leaves to, so that rounding in the
-    /// hit point cannot make it meet the surface it starts on.
-    pub fn leaving(x: E3, n: E3, dir: E3) -> Option<Self> {
-        let side = if dot(n, dir) >= 0.0 { 1.0 } else { -1.0 };
-        let offset = 1e-6 * x.iter().fold(1.0f64, |m, v| m.max(v.abs()));
-        Ray::new(add(x, scale(n, side * offset)), dir)
-    }
+/// Where a secondary ray leaving a surface point `x` (unit normal `n`) along `dir` starts:
+/// `1e-6 (1 + |x|∞)` off the surface on the side it leaves to, so that rounding in the hit
+/// point cannot make it meet the surface it starts on.
+pub fn leaving_origin(x: E3, n: E3, dir: E3) -> E3 {
+    let side = if dot(n, dir) >= 0.0 { 1.0 } else { -1.0 };
+    let offset = 1e-6 * x.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+    add(x, scale(n, side * offset))
+}
 
-    /// The ray from `origin` along the normalised line `line` (which must pass through it).
-    pub fn from_line(origin: E3, line: Line) -> Option<Self> {
-        Some(Ray { origin, dir: line.direction().ok()?, line })
-    }
+/// Whether the ray passes through the sphere `(centre, radius)` within `(t_min, t_max)`.
+pub fn crosses<C>(ray: &Ray<C>, centre: E3, radius: f64, t_min: f64, t_max: f64) -> bool {
+    let oc = sub(ray.origin, centre);
+    let tc = -dot(oc, ray.dir);
+    let miss = add(oc, scale(ray.dir, tc));
+    dot(miss, miss) <= radius * radius && tc + radius > t_min && tc - radius < t_max
 }

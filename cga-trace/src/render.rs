@@ -5,11 +5,13 @@
 //! `A` the ambient intensity, `L_i` the light colours, `S_i` 1 or the scene's shadow
 //! transmission when something lies between the point and light `i`, `h_i = unit(l_i + v)`.
 
+use crate::backend::{Backend, Sparse};
+use crate::bvh::Bvh;
 use crate::film::Film;
-use crate::ray::Ray;
+use crate::ray::{Ray, crosses, leaving_origin};
 use crate::scene::{Object, Scene};
-use crate::shapes::Hit;
-use cga_core::euclid::{dot, norm, reflect, scale, sub, unit};
+use crate::shapes::{Crossing, Hit, Shape};
+use cga_core::euclid::{E3, dot, norm, reflect, scale, sub, unit};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
@@ -25,6 +27,10 @@ pub enum Aov {
     Alpha,
 }
 
+/// Scenes with at least this many bounded objects are traversed through a [`Bvh`]; fewer
+/// are tested one by one (cheaper than any traversal).
+const BVH_FROM: usize = 8;
+
 /// Rays cast, by kind.
 #[derive(Debug, Default)]
 pub struct RayCounts {
@@ -36,49 +42,133 @@ pub struct RayCounts {
     pub reflection: AtomicU64,
 }
 
+/// Rays cast by one thread, added to the shared [`RayCounts`] once per row.
+#[derive(Clone, Copy, Debug, Default)]
+struct Cast {
+    primary: u64,
+    shadow: u64,
+    reflection: u64,
+}
+
 impl RayCounts {
+    fn add(&self, cast: &Cast) {
+        self.primary.fetch_add(cast.primary, Relaxed);
+        self.shadow.fetch_add(cast.shadow, Relaxed);
+        self.reflection.fetch_add(cast.reflection, Relaxed);
+    }
+
     /// `(primary, shadow, reflection)`.
     pub fn get(&self) -> (u64, u64, u64) {
         (self.primary.load(Relaxed), self.shadow.load(Relaxed), self.reflection.load(Relaxed))
     }
 }
 
-/// Renders a scene.
-pub struct Renderer<'a> {
+/// Renders a scene with the geometry of back end `B` (by default the generated sparse types).
+pub struct Renderer<'a, B: Backend = Sparse> {
     scene: &'a Scene,
+    /// The objects in `B`'s form, in scene order.
+    shapes: Vec<B::Shape>,
+    /// Bounding spheres of the objects worth culling: disks and triangles (a sphere's own
+    /// test is no dearer than its bound's; planes are unbounded; evolved surfaces cull
+    /// themselves).
+    bounds: Vec<Option<(E3, f64)>>,
+    /// For scenes of many objects, a hierarchy over all bounded ones.
+    bvh: Option<Bvh>,
     /// Rays cast so far.
     pub counts: RayCounts,
 }
 
 impl<'a> Renderer<'a> {
-    /// A renderer for `scene`.
+    /// A renderer for `scene` on the sparse back end.
     pub fn new(scene: &'a Scene) -> Self {
-        Renderer { scene, counts: RayCounts::default() }
+        Renderer::with_backend(scene)
+    }
+}
+
+impl<'a, B: Backend> Renderer<'a, B> {
+    /// A renderer for `scene` on back end `B`: every object prepared once.
+    pub fn with_backend(scene: &'a Scene) -> Self {
+        let shapes = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
+        let bounds = scene
+            .objects
+            .iter()
+            .map(|o| match o.shape {
+                Shape::Disk(_) | Shape::Triangle { .. } => o.shape.bounds(),
+                _ => None,
+            })
+            .collect();
+        let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
+        let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
+        Renderer { scene, shapes, bounds, bvh, counts: RayCounts::default() }
+    }
+
+    /// The same renderer testing every object for every ray, without the hierarchy (to
+    /// measure what the hierarchy saves).
+    pub fn without_bvh(mut self) -> Self {
+        self.bvh = None;
+        self
+    }
+
+    /// The nearest crossing with `t_min < t < t_max` over all objects, and the object's index.
+    fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, mut t_max: f64) -> Option<(Crossing, usize)> {
+        let mut best = None;
+        if let Some(bvh) = &self.bvh {
+            bvh.traverse(ray.origin, ray.dir, t_min, t_max, |k, t_max| {
+                let c = B::intersect(&self.shapes[k], ray, t_min, t_max);
+                Some(c.map_or(t_max, |c| {
+                    best = Some((c, k));
+                    c.t
+                }))
+            });
+            return best;
+        }
+        for (k, shape) in self.shapes.iter().enumerate() {
+            if self.bounds[k].is_some_and(|(c, r)| !crosses(ray, c, r, t_min, t_max)) {
+                continue;
+            }
+            if let Some(c) = B::intersect(shape, ray, t_min, t_max) {
+                t_max = c.t;
+                best = Some((c, k));
+            }
+        }
+        best
     }
 
     /// The nearest hit with `t_min < t < t_max`, and its object: the nearest crossing over
     /// all objects, then its normal, once.
-    pub fn nearest(&self, ray: &Ray, t_min: f64, mut t_max: f64) -> Option<(Hit, &'a Object)> {
-        let mut best = None;
-        for object in &self.scene.objects {
-            if let Some(c) = object.shape.intersect(ray, t_min, t_max) {
-                t_max = c.t;
-                best = Some((c, object));
-            }
-        }
-        let (c, object) = best?;
-        let hit = Hit { t: c.t, point: c.point, normal: object.shape.normal(ray, &c), alpha: c.alpha };
-        Some((hit, object))
+    pub fn nearest(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Hit, &'a Object)> {
+        let (c, k) = self.crossing(ray, t_min, t_max)?;
+        let hit = Hit { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
+        Some((hit, &self.scene.objects[k]))
     }
 
     /// Whether anything lies on the ray before `t_max`: stops at the first blocker, and
     /// computes no normals.
-    fn blocked(&self, ray: &Ray, t_max: f64) -> bool {
-        self.scene.objects.iter().any(|o| o.shape.intersect(ray, 0.0, t_max).is_some())
+    fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64) -> bool {
+        if let Some(bvh) = &self.bvh {
+            let mut blocked = false;
+            bvh.traverse(ray.origin, ray.dir, 0.0, t_max, |k, t| {
+                blocked = B::intersect(&self.shapes[k], ray, 0.0, t).is_some();
+                (!blocked).then_some(t)
+            });
+            return blocked;
+        }
+        self.shapes.iter().zip(&self.bounds).any(|(shape, bound)| {
+            bound.is_none_or(|(c, r)| crosses(ray, c, r, 0.0, t_max)) && B::intersect(shape, ray, 0.0, t_max).is_some()
+        })
     }
 
     /// The colour seen along `ray`, `depth` bounces deep.
-    pub fn trace(&self, ray: &Ray, depth: u32) -> [f64; 3] {
+    pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
+        let mut cast = Cast::default();
+        let colour = self.trace_counted(ray, depth, &mut cast);
+        self.counts.add(&cast);
+        colour
+    }
+
+    /// [`Renderer::trace`], counting the rays cast into `cast` (shared counters would be
+    /// contended by every thread on every ray).
+    fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
         let settings = &self.scene.settings;
         let Some((hit, object)) = self.nearest(ray, 0.0, f64::INFINITY) else {
             return settings.background;
@@ -96,8 +186,10 @@ impl<'a> Renderer<'a> {
                 continue;
             }
             let mut s = 1.0;
-            if let Some(shadow) = Ray::leaving(hit.point, n, l) {
-                self.counts.shadow.fetch_add(1, Relaxed);
+            if settings.shadows
+                && let Some(shadow) = B::ray(leaving_origin(hit.point, n, l), l)
+            {
+                cast.shadow += 1;
                 if self.blocked(&shadow, distance) {
                     s = settings.shadow_transmission;
                 }
@@ -109,9 +201,10 @@ impl<'a> Renderer<'a> {
             }
         }
         if m.kr > 0.0 && depth < settings.max_depth {
-            if let Some(reflected) = Ray::leaving(hit.point, n, reflect(ray.dir, n)) {
-                self.counts.reflection.fetch_add(1, Relaxed);
-                let bounced = self.trace(&reflected, depth + 1);
+            let r = reflect(ray.dir, n);
+            if let Some(reflected) = B::ray(leaving_origin(hit.point, n, r), r) {
+                cast.reflection += 1;
+                let bounced = self.trace_counted(&reflected, depth + 1, cast);
                 for (out, b) in colour.iter_mut().zip(bounced) {
                     *out += m.kr * b;
                 }
@@ -122,13 +215,20 @@ impl<'a> Renderer<'a> {
 
     /// One pixel: the shaded colour or an AOV.
     pub fn pixel(&self, i: u32, j: u32, aov: Aov) -> [f64; 3] {
+        let mut cast = Cast::default();
+        let colour = self.pixel_counted(i, j, aov, &mut cast);
+        self.counts.add(&cast);
+        colour
+    }
+
+    fn pixel_counted(&self, i: u32, j: u32, aov: Aov, cast: &mut Cast) -> [f64; 3] {
         let camera = &self.scene.camera;
-        let Some(ray) = camera.ray(f64::from(i) + 0.5, f64::from(j) + 0.5) else {
+        let Some(ray) = B::camera_ray(camera, f64::from(i) + 0.5, f64::from(j) + 0.5) else {
             return self.scene.settings.background;
         };
-        self.counts.primary.fetch_add(1, Relaxed);
+        cast.primary += 1;
         match aov {
-            Aov::Shaded => self.trace(&ray, 0),
+            Aov::Shaded => self.trace_counted(&ray, 0, cast),
             Aov::Normal => {
                 self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
             }
@@ -146,7 +246,9 @@ impl<'a> Renderer<'a> {
         let rows: Vec<Vec<[f64; 3]>> = (0..h)
             .into_par_iter()
             .map(|j| {
-                let row = (0..w).map(|i| self.pixel(i, j, aov)).collect();
+                let mut cast = Cast::default();
+                let row = (0..w).map(|i| self.pixel_counted(i, j, aov, &mut cast)).collect();
+                self.counts.add(&cast);
                 on_row();
                 row
             })

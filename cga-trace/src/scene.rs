@@ -5,7 +5,9 @@
 
 use crate::camera::{Camera, CameraError};
 use crate::shapes::Shape;
-use crate::surface::{EvolvedSurface, Method};
+#[cfg(feature = "evolved")]
+use crate::surface::EvolvedSurface;
+use crate::surface::Method;
 use cga_core::euclid::E3;
 use cga_core::{Circle, Disk, GeometryError, Motor, Plane, Sphere};
 use serde::Deserialize;
@@ -88,6 +90,9 @@ pub struct Settings {
     /// Fraction of a light's diffuse and specular that passes a blocker (0: hard shadows).
     #[serde(default)]
     pub shadow_transmission: f64,
+    /// Whether shadow rays are cast at all (`false`: every light reaches every point).
+    #[serde(default = "yes")]
+    pub shadows: bool,
     /// `f_att = min(1, 1 / (c0 + c1 d + c2 d²))`, `d` the distance to the light.
     #[serde(default = "no_attenuation")]
     pub attenuation: [f64; 3],
@@ -99,6 +104,9 @@ pub struct Settings {
     pub surface_method: Method,
 }
 
+fn yes() -> bool {
+    true
+}
 fn five() -> u32 {
     5
 }
@@ -116,6 +124,7 @@ impl Default for Settings {
             background: [0.0; 3],
             ambient: ambient(),
             shadow_transmission: 0.0,
+            shadows: true,
             attenuation: no_attenuation(),
             encoding: Encoding::Srgb,
             surface_method: Method::default(),
@@ -162,8 +171,10 @@ fn z_up() -> E3 {
 /// A circle for an evolved surface: Euclidean, or the original renderer's grade-3
 /// coefficients in the orthonormal basis, order e123, e124, e125, e134, e135, e145, e234,
 /// e235, e245, e345.
+// Still parsed without the `evolved` feature, so that such objects get a clear error.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
+#[cfg_attr(not(feature = "evolved"), allow(dead_code))]
 struct CircleSpec {
     centre: Option<E3>,
     normal: Option<E3>,
@@ -173,6 +184,7 @@ struct CircleSpec {
 
 #[derive(Deserialize)]
 #[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+#[cfg_attr(not(feature = "evolved"), allow(dead_code))]
 enum ObjectSpec {
     Sphere { name: Option<String>, material: Material, centre: E3, radius: f64 },
     Plane { name: Option<String>, material: Material, point: E3, normal: E3 },
@@ -379,30 +391,41 @@ fn build_object(spec: ObjectSpec, index: usize, method: Method) -> (Result<Objec
                 let plane = Plane::through(corners[0], corners[1], corners[2]).map_err(geometry)?;
                 Shape::Triangle { plane, corners }
             }
-            ObjectSpec::Evolved { c1, c2, .. } => {
-                // Circles given by centre are built in a frame centred between them.
-                let origin = match (c1.centre, c2.centre) {
-                    (Some(a), Some(b)) => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])],
-                    _ => [0.0; 3],
-                };
-                let c1 = circle(*c1, origin).map_err(|e| format!("c1: {e}"))?;
-                let c2 = circle(*c2, origin).map_err(|e| format!("c2: {e}"))?;
-                let surface = if origin == [0.0; 3] {
-                    EvolvedSurface::new(c1, c2, method)
-                } else {
-                    EvolvedSurface::in_frame(origin, c1, c2, method)
-                };
-                Shape::Evolved(Box::new(surface.map_err(|e| e.to_string())?))
+            #[cfg(feature = "evolved")]
+            ObjectSpec::Evolved { c1, c2, .. } => Shape::Evolved(Box::new(evolved(*c1, *c2, method)?)),
+            #[cfg(not(feature = "evolved"))]
+            ObjectSpec::Evolved { .. } => {
+                let _ = method;
+                return Err("this build leaves out evolved surfaces (cargo feature `evolved`)".into());
             }
         })
     };
     (shape().map(|shape| Object { name: name.clone(), shape, material }), name)
 }
 
+/// An evolved surface; circles given by centre are built in a frame centred between them.
+#[cfg(feature = "evolved")]
+fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method) -> Result<EvolvedSurface, String> {
+    let origin = match (c1.centre, c2.centre) {
+        (Some(a), Some(b)) => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])],
+        _ => [0.0; 3],
+    };
+    let c1 = circle(c1, origin).map_err(|e| format!("c1: {e}"))?;
+    let c2 = circle(c2, origin).map_err(|e| format!("c2: {e}"))?;
+    let surface = if origin == [0.0; 3] {
+        EvolvedSurface::new(c1, c2, method)
+    } else {
+        EvolvedSurface::in_frame(origin, c1, c2, method)
+    };
+    surface.map_err(|e| e.to_string())
+}
+
 /// The orthonormal grade-3 blades, in the order scene files give them.
+#[cfg(feature = "evolved")]
 const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
 
 /// The circle of a spec; one given by its centre is built relative to `origin`.
+#[cfg(feature = "evolved")]
 fn circle(spec: CircleSpec, origin: E3) -> Result<Circle, String> {
     match spec {
         CircleSpec { blade: Some(b), centre: None, normal: None, radius: None } => {

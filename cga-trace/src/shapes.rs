@@ -6,6 +6,7 @@
 //! is computed only for the hit that is shaded.
 
 use crate::ray::Ray;
+#[cfg(feature = "evolved")]
 use crate::surface::EvolvedSurface;
 use cga_core::euclid::{E3, cross, dot, norm, scale, sub, unit};
 use cga_core::{Disk, Hit as MeetHit, Plane, Sphere};
@@ -58,6 +59,7 @@ pub enum Shape {
         corners: [E3; 3],
     },
     /// A surface swept between two circles.
+    #[cfg(feature = "evolved")]
     Evolved(Box<EvolvedSurface>),
 }
 
@@ -74,13 +76,14 @@ impl Shape {
                 if meet.hit == MeetHit::Miss {
                     return None;
                 }
-                meet.points(&ray.line)?.into_iter().find(within)?
+                meet.points_along(ray.dir)?.into_iter().find(within)?
             }
             Shape::Plane(plane) => ray.line.meet_plane(plane).filter(within)?,
             Shape::Disk(disk) => ray.line.meet_disk(disk).filter(within)?,
             Shape::Triangle { plane, corners } => {
                 ray.line.meet_plane(plane).filter(|x| within(x) && inside_triangle(*x, corners))?
             }
+            #[cfg(feature = "evolved")]
             Shape::Evolved(surface) => return surface.intersect(ray, t_min, t_max),
         };
         Some(Crossing { t: ray.t_of(point), point, alpha: None })
@@ -96,11 +99,11 @@ impl Shape {
             Shape::Plane(plane) | Shape::Disk(Disk { plane, .. }) | Shape::Triangle { plane, .. } => {
                 (Some(*plane), plane.normal_offset().map_or([0.0, 0.0, 1.0], |(n, _)| n))
             }
+            #[cfg(feature = "evolved")]
             Shape::Evolved(surface) => return facing(surface.normal(crossing), ray.dir),
         };
-        let from_lines = mirror
-            .and_then(|m| (ray.line.reflect_in_plane(&m) - ray.line).try_normalise())
-            .and_then(|n| n.direction().ok());
+        // Only the direction of L' − L is needed: no normalisation.
+        let from_lines = mirror.and_then(|m| (ray.line.reflect_in_plane(&m) - ray.line).direction().ok());
         facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
     }
 
@@ -120,18 +123,19 @@ impl Shape {
                 let c = scale([0, 1, 2].map(|k| corners[0][k] + corners[1][k] + corners[2][k]), 1.0 / 3.0);
                 Some((c, corners.iter().map(|&x| norm(sub(x, c))).fold(0.0, f64::max)))
             }
+            #[cfg(feature = "evolved")]
             Shape::Evolved(surface) => Some(surface.bounds()),
         }
     }
 }
 
 /// `n` turned to face against `dir`.
-fn facing(n: E3, dir: E3) -> E3 {
+pub(crate) fn facing(n: E3, dir: E3) -> E3 {
     if dot(n, dir) > 0.0 { n.map(|x| -x) } else { n }
 }
 
 /// Whether `x` (on the triangle's plane) lies inside it: the same side of all three edges.
-fn inside_triangle(x: E3, [a, b, c]: &[E3; 3]) -> bool {
+pub(crate) fn inside_triangle(x: E3, [a, b, c]: &[E3; 3]) -> bool {
     let n = cross(sub(*b, *a), sub(*c, *a));
     let side = |p: E3, q: E3| dot(cross(sub(q, p), sub(x, p)), n);
     let (s1, s2, s3) = (side(*a, *b), side(*b, *c), side(*c, *a));

@@ -97,6 +97,14 @@ impl<T: Real> Scaled<T> {
         Scaled { c: self.c.map(|x| x * s), degree: self.degree }
     }
 
+    /// `(1 − t) t p`: in this basis a shift of the coefficients, no arithmetic.
+    pub fn times_g(&self) -> Self {
+        assert!(self.degree + 2 <= MAX_DEGREE, "product degree above 8");
+        let mut c = [T::zero(); MAX_DEGREE + 1];
+        c[1..self.degree + 2].copy_from_slice(&self.c[..=self.degree]);
+        Scaled { c, degree: self.degree + 2 }
+    }
+
     /// In the Bernstein basis: `cₖ / C(n, k)`.
     pub fn bernstein(&self) -> Bernstein<T> {
         let mut c = self.c;
@@ -123,6 +131,12 @@ impl<T: Real> Bernstein<T> {
 
     /// `p(t)` by de Casteljau's algorithm (stable for `t ∈ [0, 1]`).
     pub fn eval(&self, t: T) -> T {
+        if t == T::zero() {
+            return self.c[0];
+        }
+        if t == T::one() {
+            return self.c[self.degree];
+        }
         let mut b = self.c;
         let u = T::one() - t;
         for r in 1..=self.degree {
@@ -278,14 +292,25 @@ impl<T: Real> Bernstein<T> {
     /// steps with the exact slope, replaced by bisection whenever one leaves the bracket,
     /// until the bracket or the step is below `tolerance` (rounding level at least).
     fn refine(&self, a: T, b: T, tolerance: T) -> T {
-        let positive_at_a = self.eval(a) > T::zero();
+        let (pa, pb) = (self.eval(a), self.eval(b));
+        let positive_at_a = pa > T::zero();
+        // Below this, |p| is rounding noise (de Casteljau is backward stable: the error is a
+        // few ulps of the largest coefficient): further steps only wander.
+        let largest = self.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
+        let noise = T::from_f64(16.0) * T::epsilon() * largest;
         let (mut lo, mut hi) = (a, b);
         let half = T::from_f64(0.5);
         let tolerance = tolerance.max(T::epsilon() * T::from_f64(4.0));
-        let mut t = half * (a + b);
+        // Start where the control polygon crosses zero (over the whole interval: it lies
+        // within O(1/n²) of the curve), or where the chord does.
+        let start = if a == T::zero() && b == T::one() { self.polygon_crossing() } else { None };
+        let mut t = start.unwrap_or_else(|| a + (b - a) * pa / (pa - pb));
+        if !(t > a && t < b) {
+            t = half * (a + b);
+        }
         for _ in 0..100 {
             let (p, slope) = self.eval_with_slope(t);
-            if p == T::zero() {
+            if p.abs() <= noise {
                 return t;
             }
             if (p > T::zero()) == positive_at_a {
@@ -301,6 +326,16 @@ impl<T: Real> Bernstein<T> {
             t = next;
         }
         t
+    }
+
+    /// Where the control polygon `(k/n, cₖ)` first crosses zero.
+    fn polygon_crossing(&self) -> Option<T> {
+        let n = self.degree;
+        (0..n).find_map(|k| {
+            let (c0, c1) = (self.c[k], self.c[k + 1]);
+            ((c0 > T::zero()) != (c1 > T::zero()) && c0 != c1)
+                .then(|| (T::from_f64(k as f64) + c0 / (c0 - c1)) / T::from_f64(n as f64))
+        })
     }
 }
 
@@ -332,6 +367,13 @@ mod tests {
             let fd = (p.eval(t + h) - p.eval(t - h)) / (2.0 * h);
             assert!((p.eval_with_slope(t).1 - fd).abs() < 1e-7);
         }
+    }
+
+    #[test]
+    fn times_g_is_the_product_with_t_one_minus_t() {
+        let p = Scaled::quadratic(0.3, -1.2, 2.5).mul(&Scaled::linear(0.7, -0.4));
+        let g = Scaled::quadratic(0.0, 1.0, 0.0);
+        assert_eq!(p.times_g(), p.mul(&g));
     }
 
     #[test]

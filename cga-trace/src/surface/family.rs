@@ -13,6 +13,9 @@ use smallvec::SmallVec;
 
 /// `|f|` below this fraction of its sampled scale counts as zero: a tangential touch.
 const TOUCH: f64 = 1e-12;
+/// A root within this Newton step (in α) of α = 0 or 1 is looked for with `f` itself: rounding
+/// decides which side of the end it falls, and verification whether the ray meets the edge.
+const END_STEP: f64 = 1e-6;
 
 /// The circles `C_α = K⁻¹ X_α / ‖…‖`, `X_α = (1 − α) C1 + α C2`, with what the polynomial
 /// formulation precomputes once per surface.
@@ -105,12 +108,11 @@ impl<T: Real> Family<T> {
         }
         let b_end = [line.meet_circle(&self.wc[0]), line.meet_circle(&self.wc[1])];
         let (p, b) = (product(&a_end, &b_end), product(&b_end, &b_end));
-        let g = Scaled::quadratic(T::zero(), T::one(), T::zero());
-        let p1 = self.s.mul(&a).add_scaled(-T::one(), &g.mul(&p));
+        // g = α(1 − α) multiplies by shifting coefficients in the scaled basis.
+        let p1 = self.s.mul(&a).add_scaled(-T::one(), &p.times_g());
         let h = b.add_scaled(-self.w, &a);
-        let gh = g.mul(&h);
         let r = p1.mul(&p1).scale(self.w).add_scaled(T::one(), &self.s.mul(&p1).mul(&h));
-        r.add_scaled(T::from_f64(0.25), &gh.mul(&gh)).bernstein()
+        r.add_scaled(T::from_f64(0.25), &h.mul(&h).times_g().times_g()).bernstein()
     }
 
     /// Candidate α in `[lo, hi]` by `finder`, appended to `out` in increasing order.
@@ -121,8 +123,23 @@ impl<T: Real> Family<T> {
             Finder::Slope(n) => self.sampled_with_slope(&line.lift(), lo, hi, n.max(2), out),
             Finder::Polynomial(tolerance) => {
                 let poly = self.polynomial(line);
-                let poly = if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly };
-                poly.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
+                // A root within rounding of α = 0 or 1 (a ray through an end circle) can fall
+                // just outside [0, 1] in R; a short Newton step from the end tells, and f
+                // itself then places the root.
+                let c = poly.coefficients();
+                let n = T::from_f64((c.len() - 1) as f64);
+                let near = |value: T, slope: T| value.abs() <= T::from_f64(END_STEP) * (n * slope).abs();
+                let (first, last) = (c[0], c[c.len() - 1]);
+                let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
+                let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
+                let restricted = if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly };
+                restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
+                let lifted = line.lift();
+                for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
+                    if near_end {
+                        out.push(self.polish(&lifted, end));
+                    }
+                }
             }
         }
     }
@@ -207,6 +224,15 @@ impl<T: Real> Family<T> {
                 out.push(at(k));
                 continue;
             }
+            if k == 0 || k == n {
+                // A ray through an end circle: a touch there, or a root within a short
+                // Newton step of the end, which f then places (it may lie just outside).
+                if fk.abs() <= T::from_f64(END_STEP) * dk.abs() {
+                    out.push(self.polish(line, at(k)));
+                } else {
+                    touches.push((at(k), fk.abs()));
+                }
+            }
             let Some((fn_, dn)) = pair else { continue };
             let positive = fk > T::zero();
             if fn_ != T::zero() && positive != (fn_ > T::zero()) {
@@ -230,6 +256,44 @@ impl<T: Real> Family<T> {
             touches.push((e, fe.abs()));
         }
         out.extend(touches.into_iter().filter(|t| t.1 <= T::from_f64(TOUCH) * scale).map(|t| t.0));
+    }
+
+    /// Up to two Newton steps on `f` from α, each taken only if shorter than `END_STEP`, and
+    /// kept only if `|f|` falls (at a double root rounding can make a step worse).
+    fn polish_near(&self, line: &Line<Dual<T>>, alpha: T) -> T {
+        let Some((mut f, mut slope)) = self.f_and_slope(line, alpha) else { return alpha };
+        let mut best = alpha;
+        for _ in 0..2 {
+            let step = f / slope;
+            if !(step.abs() <= T::from_f64(END_STEP)) || f == T::zero() {
+                break;
+            }
+            let next = best - step;
+            let next = if next < T::zero() { T::zero() } else if next > T::one() { T::one() } else { next };
+            let Some((f_next, slope_next)) = self.f_and_slope(line, next) else { break };
+            if f_next.abs() >= f.abs() {
+                break;
+            }
+            (best, f, slope) = (next, f_next, slope_next);
+        }
+        best
+    }
+
+    /// A few Newton steps on `f` from α, kept in [0, 1].
+    fn polish(&self, line: &Line<Dual<T>>, mut alpha: T) -> T {
+        for _ in 0..4 {
+            let Some((f, slope)) = self.f_and_slope(line, alpha) else { break };
+            let next = alpha - f / slope;
+            if !next.is_finite() {
+                break;
+            }
+            let next = if next < T::zero() { T::zero() } else if next > T::one() { T::one() } else { next };
+            if next == alpha {
+                break;
+            }
+            alpha = next;
+        }
+        alpha
     }
 
     /// Where `f'` changes sign in `[lo, hi]` (`f'(lo) = d_lo`), by bisection.
@@ -303,11 +367,35 @@ impl<T: Real> Family<T> {
 
     /// The nearest verified crossing `(t, point, α)` with `t_min < t < t_max` of the ray
     /// `origin + t dir` (unit `dir`, carried by `line`) among the candidate α.
-    pub fn nearest(&self, ray: (E3<T>, E3<T>, &Line<T>), alphas: &[T], t_min: T, t_max: T) -> Option<(T, E3<T>, T)> {
+    ///
+    /// With `polish`, a candidate that fails verification is moved by up to two Newton steps
+    /// on `f` itself and tried again: a root of the polynomial `R` carries `R`'s conditioning,
+    /// not `f`'s, and near-degenerate circles can put it just outside the verification's
+    /// tolerance. Steps longer than 1e-6 mean `R`'s root is not one of `f`'s (the other
+    /// branch of the square root), and it stays rejected.
+    pub fn nearest(
+        &self,
+        ray: (E3<T>, E3<T>, &Line<T>),
+        alphas: &[T],
+        t_min: T,
+        t_max: T,
+        polish: bool,
+    ) -> Option<(T, E3<T>, T)> {
         let mut best: Option<(T, E3<T>, T)> = None;
+        let lifted = polish.then(|| ray.2.lift());
         for &alpha in alphas {
-            let Ok(circle) = self.pair.at(alpha) else { continue };
-            for x in hit_points(&circle, ray) {
+            let mut points = self.verified(alpha, ray);
+            let mut alpha = alpha;
+            if points.is_empty()
+                && let Some(line) = &lifted
+            {
+                let polished = self.polish_near(line, alpha);
+                if polished != alpha {
+                    alpha = polished;
+                    points = self.verified(alpha, ray);
+                }
+            }
+            for x in points {
                 let t = dot(sub(x, ray.0), ray.1);
                 if t > t_min && t < t_max && best.is_none_or(|b| t < b.0) {
                     best = Some((t, x, alpha));
@@ -315,6 +403,11 @@ impl<T: Real> Family<T> {
             }
         }
         best
+    }
+
+    /// The verified points where the ray meets `C_α`.
+    fn verified(&self, alpha: T, ray: (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
+        self.pair.at(alpha).map_or_else(|_| SmallVec::new(), |circle| hit_points(&circle, ray))
     }
 }
 
@@ -324,8 +417,10 @@ impl<T: Real> Family<T> {
 fn hit_points<T: Real>(circle: &Circle<T>, (origin, dir, line): (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
     let mut points = SmallVec::new();
     let Ok((c, n, r)) = circle.centre_normal_radius() else { return points };
+    // Relative to the circle, and to the distance the ray's line carries (its rounding).
     let eps = T::epsilon();
-    let tol = T::from_f64(1e-6).max(T::from_f64(1e3) * eps) * (r + norm(sub(origin, c)));
+    let tol = T::from_f64(1e-6).max(T::from_f64(1e3) * eps) * r
+        + T::from_f64(1e-9).max(T::from_f64(10.0) * eps) * norm(sub(origin, c));
     let on_both = |x: &E3<T>| {
         let d = sub(*x, c);
         let rel = sub(*x, origin);

@@ -15,17 +15,20 @@
 //! coordinates carry `½x²`, and far from the origin precision falls as (|c|/r)³
 //! (docs/STABILITY.md). Methods, errors and timings: docs/SURFACE.md.
 
+#[cfg(feature = "evolved")]
 pub mod bernstein;
+#[cfg(feature = "evolved")]
+mod evolved;
+#[cfg(feature = "evolved")]
 pub mod family;
+#[cfg(feature = "evolved")]
 mod tree;
 
-use crate::ray::Ray;
-use crate::shapes::Crossing;
-use bernstein::Roots;
-use cga_core::euclid::{E3, add, norm, scale, sub};
-use cga_core::{Circle, GeometryError, InterpolationError, Line, Pair, Sandwich, Translator};
+use cga_core::{GeometryError, InterpolationError};
+#[cfg(feature = "evolved")]
+pub use evolved::EvolvedSurface;
+#[cfg(feature = "evolved")]
 pub use family::{Family, Finder};
-use tree::{PAD, Tree, crosses};
 
 /// Why two circles make no surface this renderer can draw.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
@@ -112,139 +115,3 @@ impl Method {
     }
 }
 
-/// A surface swept by the circles interpolated between two circles.
-#[derive(Clone, Debug)]
-pub struct EvolvedSurface {
-    /// The circles in the local frame, with per-surface constants.
-    family: Family<f64>,
-    /// The local frame's origin, in world coordinates.
-    origin: E3,
-    /// Bounding-sphere radius about `origin`.
-    radius: f64,
-    /// How rays are intersected.
-    method: Method,
-    /// Bounding spheres over α-intervals, for the methods that cull with them.
-    tree: Option<Tree>,
-}
-
-/// The bounding sphere is sampled this finely, then padded.
-const BOUND_SAMPLES: usize = 512;
-
-impl EvolvedSurface {
-    /// The surface between `c1` (α = 0) and `c2` (α = 1), given in world coordinates and
-    /// moved to a frame centred between them.
-    pub fn new(c1: Circle, c2: Circle, method: Method) -> Result<Self, SurfaceError> {
-        let centre =
-            |c: &Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
-        let ((p1, _, _), (p2, _, _)) = (centre(&c1, 1)?, centre(&c2, 2)?);
-        let origin = scale(add(p1, p2), 0.5);
-        let to_local = Translator::from_vector(origin.map(|x| -x));
-        Self::in_frame(origin, to_local.sandwich(c1), to_local.sandwich(c2), method)
-    }
-
-    /// The surface between circles given in a frame whose origin is `origin` (world
-    /// coordinates). Building them there, rather than far out in world coordinates, keeps
-    /// their precision. All per-surface work (bounds, tree, polynomial constants) is done here.
-    ///
-    /// The circles are rebuilt from their centre, normal and radius: a trivector typed with
-    /// rounded coefficients is not exactly a blade (`C C̃` then has a 4-vector part), and the
-    /// polynomial method relies on `⟨−X X̃⟩₄ = α(1 − α) W` exactly.
-    pub fn in_frame(origin: E3, c1: Circle, c2: Circle, method: Method) -> Result<Self, SurfaceError> {
-        let blade = |c: Circle, which| {
-            let not_a_circle = |reason| SurfaceError::NotACircle { which, reason };
-            let (centre, normal, radius) = c.centre_normal_radius().map_err(not_a_circle)?;
-            Circle::from_centre_normal_radius(centre, normal, radius).map_err(not_a_circle)
-        };
-        let pair = Pair::new(blade(c1, 1)?, blade(c2, 2)?).ok_or(SurfaceError::Degenerate)?;
-        let mut radius = 0.0f64;
-        for k in 0..=BOUND_SAMPLES {
-            let alpha = k as f64 / BOUND_SAMPLES as f64;
-            let (c, _, r) = pair.at(alpha)?.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })?;
-            radius = radius.max(norm(c) + r);
-        }
-        let tree = match method {
-            Method::Hierarchy { leaves, .. } | Method::Hybrid { leaves, .. } => {
-                Some(Tree::new(&pair, leaves.next_power_of_two().max(1))?)
-            }
-            Method::Sampling { .. } | Method::Polynomial { .. } => None,
-        };
-        Ok(EvolvedSurface { family: Family::new(pair), origin, radius: radius * PAD, method, tree })
-    }
-
-    /// The same surface intersected by another method.
-    pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
-        Self::in_frame(self.origin, self.family.pair.c1, self.family.pair.c2, method)
-    }
-
-    /// The bounding sphere `(centre, radius)` in world coordinates.
-    pub fn bounds(&self) -> (E3, f64) {
-        (self.origin, self.radius)
-    }
-
-    /// The circles in the local frame (with per-surface constants), and the frame's origin.
-    pub fn family(&self) -> (&Family<f64>, E3) {
-        (&self.family, self.origin)
-    }
-
-    /// The method in use.
-    pub fn method(&self) -> Method {
-        self.method
-    }
-
-    /// The ray moved to the local frame, if it can reach the bounding sphere in
-    /// `(t_min, t_max)`.
-    pub fn local_ray(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Ray> {
-        if !crosses(ray, self.origin, self.radius, t_min, t_max) {
-            return None;
-        }
-        let o = sub(ray.origin, self.origin);
-        let line = Line::from_point_direction(o, ray.dir).ok()?;
-        Some(Ray { origin: o, dir: ray.dir, line })
-    }
-
-    /// Candidate α for a ray in the local frame: what the method's root finder returns over
-    /// the α-intervals it reaches, in increasing α per interval.
-    pub fn candidates(&self, local: &Ray, t_min: f64, t_max: f64) -> Roots<f64> {
-        let mut out = Roots::new();
-        let line = &local.line;
-        let culled = |finder: &dyn Fn(usize) -> Finder, out: &mut Roots<f64>| {
-            let tree = self.tree.as_ref().expect("a tree for this method");
-            for (lo, hi, leaves) in tree.intervals(local, t_min, t_max) {
-                self.family.roots(line, finder(leaves), lo, hi, out);
-            }
-        };
-        match self.method {
-            Method::Sampling { samples } => self.family.roots(line, Finder::Samples(samples), 0.0, 1.0, &mut out),
-            Method::Polynomial { tolerance } => {
-                self.family.roots(line, Finder::Polynomial(tolerance), 0.0, 1.0, &mut out)
-            }
-            Method::Hierarchy { per_leaf, .. } => culled(&|leaves| Finder::Slope(per_leaf.max(2) * leaves), &mut out),
-            Method::Hybrid { tolerance, .. } => culled(&|_| Finder::Polynomial(tolerance), &mut out),
-        }
-        out
-    }
-
-    /// The nearest crossing with `t_min < t < t_max`.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let local = self.local_ray(ray, t_min, t_max)?;
-        let alphas = self.candidates(&local, t_min, t_max);
-        let (t, x, alpha) = self.family.nearest((local.origin, local.dir, &local.line), &alphas, t_min, t_max)?;
-        Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })
-    }
-
-    /// The unit normal at a crossing (eq. 6–11, sign not yet turned to the ray). Where the
-    /// circles do not move (`Ẋ = 0`, so `N = 0`) the surface has no normal of its own; the
-    /// circle's outward radial direction is used there.
-    pub fn normal(&self, crossing: &Crossing) -> E3 {
-        let x = sub(crossing.point, self.origin);
-        let alpha = crossing.alpha.unwrap_or(0.0);
-        let pair = &self.family.pair;
-        pair.normal(alpha, x)
-            .ok()
-            .or_else(|| {
-                let (c, _, _) = pair.at(alpha).ok()?.centre_normal_radius().ok()?;
-                cga_core::euclid::unit(sub(x, c))
-            })
-            .unwrap_or([0.0, 0.0, 1.0])
-    }
-}

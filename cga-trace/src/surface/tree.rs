@@ -3,7 +3,7 @@
 //! tubes around the middle circle) it passes through.
 
 use super::SurfaceError;
-use crate::ray::Ray;
+use crate::ray::{Ray, crosses};
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::{Circle, Pair};
 use smallvec::SmallVec;
@@ -142,12 +142,4 @@ fn enclose(a: (E3, f64), b: (E3, f64)) -> (E3, f64) {
         let radius = 0.5 * (d + a.1 + b.1);
         (add(a.0, scale(sub(b.0, a.0), (radius - a.1) / d)), radius)
     }
-}
-
-/// Whether the ray passes through the sphere within `(t_min, t_max)`.
-pub fn crosses(ray: &Ray, centre: E3, radius: f64, t_min: f64, t_max: f64) -> bool {
-    let oc = sub(ray.origin, centre);
-    let tc = -dot(oc, ray.dir);
-    let miss = add(oc, scale(ray.dir, tc));
-    dot(miss, miss) <= radius * radius && tc + radius > t_min && tc - radius < t_max
 }

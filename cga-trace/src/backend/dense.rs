@@ -1,0 +1,178 @@
+//! The dense back end: the sparse back end's algorithm with every product computed on the
+//! dense 32-coefficient multivector (table-driven, all 1024 blade pairs per product). Objects
+//! are made from Euclidean data the same way (`up(x)` has no products); coefficients are read
+//! back through the typed views, which only copy.
+
+use super::Backend;
+use crate::camera::Camera;
+use crate::ray::Ray;
+use crate::shapes::{Crossing, Shape, facing, inside_triangle};
+#[cfg(feature = "evolved")]
+use crate::surface::EvolvedSurface;
+use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
+use cga_core::{
+    Bivector, FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up,
+};
+
+/// The dense back end.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Dense;
+
+/// A scene object as dense multivectors.
+#[derive(Clone, Debug)]
+pub enum DenseShape {
+    /// An OPNS sphere, with its centre for the tangent plane.
+    Sphere {
+        /// The sphere.
+        sphere: Multivector,
+        /// Its centre.
+        centre: E3,
+    },
+    /// An OPNS plane.
+    Plane(Multivector),
+    /// A disk: its plane, centre and radius.
+    Disk {
+        /// The plane.
+        plane: Multivector,
+        /// The rim's centre.
+        centre: E3,
+        /// The rim's radius.
+        radius: f64,
+    },
+    /// A triangle: its plane and corners.
+    Triangle {
+        /// The plane.
+        plane: Multivector,
+        /// The corners.
+        corners: [E3; 3],
+    },
+    /// An evolved surface (cga-core).
+    #[cfg(feature = "evolved")]
+    Evolved(Box<EvolvedSurface>),
+}
+
+fn dense_up(x: E3) -> Multivector {
+    Multivector::from(up(x))
+}
+
+fn dense_ei() -> Multivector {
+    Multivector::from(ei::<f64>())
+}
+
+/// `X / √|X X̃|`.
+fn normalise(x: Multivector) -> Option<Multivector> {
+    let s = Scalar::from_dense(&(x * x.reverse())).s;
+    let inv = 1.0 / s.abs().sqrt();
+    inv.is_finite().then(|| x.scale(inv))
+}
+
+/// `up(a) ∧ up(b) ∧ ei`, normalised.
+fn line_through(a: E3, b: E3) -> Option<Multivector> {
+    normalise((dense_up(a) ^ dense_up(b)) ^ dense_ei())
+}
+
+/// The plane through `p` with normal `n`, built as `Plane::from_point_normal` builds it.
+fn plane_at(p: E3, n: E3) -> Option<Multivector> {
+    let n = unit(n)?;
+    let (u, s) = (perpendicular(n), magnitude(&[p]));
+    let (b, c) = (add(p, scale(u, s)), add(p, scale(cross(n, u), s)));
+    normalise(((dense_up(p) ^ dense_up(b)) ^ dense_up(c)) ^ dense_ei())
+}
+
+/// Where the line meets a plane: the flat point `L ∨ P`, read as `Line::meet_plane` reads it.
+fn meet_plane(line: &Multivector, plane: &Multivector) -> Option<E3> {
+    let f = FlatPoint::from_dense(&(*line & *plane));
+    let x = [f.e1i, f.e2i, f.e3i];
+    let inv = 1.0 / f.eoi;
+    let largest = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    (f.eoi.abs() > tolerance(largest) && inv.is_finite()).then(|| x.map(|v| v * inv))
+}
+
+/// The points where the line meets a sphere, in order along `dir`: `P = L ∨ S`, classified by
+/// `P²`, read back as `(P ∓ √P²)(ei ⌋ P)` (as `RoundMeet` does, densely).
+fn meet_sphere(line: &Multivector, sphere: &Multivector, dir: E3) -> Option<[E3; 2]> {
+    let pair = *line & *sphere;
+    let square = Scalar::from_dense(&(pair * pair)).s;
+    let size: f64 = Bivector::from_dense(&pair).to_array().iter().map(|x| x * x).sum();
+    let d = dense_ei().lc(pair);
+    let [a, b] = if square.abs() <= tolerance(size) {
+        let p = down(Vector::from_dense(&(pair * d).grade(1)))?;
+        [p, p]
+    } else if square > 0.0 {
+        let (s, pd) = (square.sqrt(), (pair * d).grade(1));
+        [down(Vector::from_dense(&(pd - d.scale(s))))?, down(Vector::from_dense(&(pd + d.scale(s))))?]
+    } else {
+        return None;
+    };
+    Some(if dot(sub(b, a), dir) < 0.0 { [b, a] } else { [a, b] })
+}
+
+impl Backend for Dense {
+    type Carrier = Multivector;
+    type Shape = DenseShape;
+    const NAME: &'static str = "dense";
+
+    fn ray(origin: E3, dir: E3) -> Option<Ray<Multivector>> {
+        let dir = unit(dir)?;
+        let line = line_through(origin, add(origin, scale(dir, magnitude(&[origin]))))?;
+        Some(Ray { origin, dir, line })
+    }
+
+    fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<Multivector>> {
+        let pose = Multivector::from(camera.pose);
+        let p = pose.sandwich(&dense_up(camera.image_point(u, v)));
+        let line = normalise((Multivector::from(camera.cam()) ^ p) ^ dense_ei())?;
+        let dir = Line::from_dense(&line).direction().ok()?;
+        Some(Ray { origin: camera.position(), dir, line })
+    }
+
+    fn prepare(shape: &Shape) -> DenseShape {
+        match shape {
+            Shape::Sphere { sphere, centre, .. } => DenseShape::Sphere { sphere: (*sphere).into(), centre: *centre },
+            Shape::Plane(plane) => DenseShape::Plane((*plane).into()),
+            Shape::Disk(disk) => DenseShape::Disk { plane: disk.plane.into(), centre: disk.centre, radius: disk.radius },
+            Shape::Triangle { plane, corners } => DenseShape::Triangle { plane: (*plane).into(), corners: *corners },
+            #[cfg(feature = "evolved")]
+            Shape::Evolved(surface) => DenseShape::Evolved(surface.clone()),
+        }
+    }
+
+    fn intersect(shape: &DenseShape, ray: &Ray<Multivector>, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let within = |x: &E3| {
+            let t = ray.t_of(*x);
+            t > t_min && t < t_max
+        };
+        let point = match shape {
+            DenseShape::Sphere { sphere, .. } => meet_sphere(&ray.line, sphere, ray.dir)?.into_iter().find(within)?,
+            DenseShape::Plane(plane) => meet_plane(&ray.line, plane).filter(within)?,
+            DenseShape::Disk { plane, centre, radius } => {
+                meet_plane(&ray.line, plane).filter(|x| within(x) && norm(sub(*x, *centre)) <= *radius)?
+            }
+            DenseShape::Triangle { plane, corners } => {
+                meet_plane(&ray.line, plane).filter(|x| within(x) && inside_triangle(*x, corners))?
+            }
+            #[cfg(feature = "evolved")]
+            DenseShape::Evolved(surface) => return surface.intersect(ray, t_min, t_max),
+        };
+        Some(Crossing { t: ray.t_of(point), point, alpha: None })
+    }
+
+    fn normal(shape: &DenseShape, ray: &Ray<Multivector>, crossing: &Crossing) -> E3 {
+        let x = crossing.point;
+        let (mirror, fallback) = match shape {
+            DenseShape::Sphere { centre, .. } => (plane_at(x, sub(x, *centre)), sub(x, *centre)),
+            DenseShape::Plane(plane) | DenseShape::Disk { plane, .. } | DenseShape::Triangle { plane, .. } => {
+                // The plane's normal from its dual, −λ(n + δ ei), as `Plane::normal_offset`.
+                let dual = Vector::from_dense(&plane.dual());
+                (Some(*plane), [-dual.e1, -dual.e2, -dual.e3])
+            }
+            #[cfg(feature = "evolved")]
+            DenseShape::Evolved(surface) => return facing(surface.normal(crossing), ray.dir),
+        };
+        // L' − L, the reflected minus the incident line, is the normal line.
+        let from_lines = mirror
+            .and_then(|m| normalise((m * ray.line) * m - ray.line))
+            .and_then(|n| Line::from_dense(&n).direction().ok());
+        facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
+    }
+}

@@ -1,0 +1,85 @@
+//! Back ends: the same renderer over three kinds of geometry code, to compare them.
+//!
+//! - [`Sparse`] (the default): the generated grade-sparse types; meets as in
+//!   [`crate::shapes`].
+//! - [`Dense`]: the same algorithm with every product on the dense 32-coefficient
+//!   [`Multivector`](cga_core::Multivector) — what a user of a dense CGA library writes.
+//! - [`Plain`]: textbook Euclidean formulas with glam for spheres, planes, disks and
+//!   triangles; evolved surfaces reuse cga-core.
+//!
+//! A back end turns rays into what it meets objects with (its carrier), prepares each
+//! scene object once, and intersects and shades them; the integrator
+//! ([`Renderer`](crate::Renderer)) is shared.
+
+mod dense;
+mod plain;
+
+use crate::camera::Camera;
+use crate::ray::Ray;
+use crate::shapes::{Crossing, Shape};
+use cga_core::Line;
+use cga_core::euclid::E3;
+pub use dense::{Dense, DenseShape};
+pub use plain::{Plain, PlainShape};
+
+/// Geometry code the renderer runs on.
+pub trait Backend: Send + Sync + 'static {
+    /// What a ray carries to meet objects with.
+    type Carrier: Copy + Send + Sync;
+    /// A scene object, prepared once.
+    type Shape: Send + Sync;
+    /// Name, for reports.
+    const NAME: &'static str;
+    /// The ray from `origin` along `dir` (normalised here); `None` for a zero direction.
+    fn ray(origin: E3, dir: E3) -> Option<Ray<Self::Carrier>>;
+    /// The camera ray through pixel coordinates `(u, v)`.
+    fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<Self::Carrier>>;
+    /// A scene object in this back end's form.
+    fn prepare(shape: &Shape) -> Self::Shape;
+    /// The nearest crossing with `t_min < t < t_max`.
+    fn intersect(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> Option<Crossing>;
+    /// The unit normal at a crossing, facing the ray.
+    fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
+}
+
+/// The generated grade-sparse types (the default back end).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Sparse;
+
+impl Backend for Sparse {
+    type Carrier = Line;
+    type Shape = Shape;
+    const NAME: &'static str = "sparse";
+
+    fn ray(origin: E3, dir: E3) -> Option<Ray> {
+        Ray::new(origin, dir)
+    }
+
+    fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray> {
+        camera.ray(u, v)
+    }
+
+    fn prepare(shape: &Shape) -> Shape {
+        shape.clone()
+    }
+
+    fn intersect(shape: &Shape, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        shape.intersect(ray, t_min, t_max)
+    }
+
+    fn normal(shape: &Shape, ray: &Ray, crossing: &Crossing) -> E3 {
+        shape.normal(ray, crossing)
+    }
+}
+
+/// Which back end renders (for the CLI and benches).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum BackendKind {
+    /// Generated grade-sparse types.
+    #[default]
+    Sparse,
+    /// The dense multivector.
+    Dense,
+    /// Plain vectors (glam).
+    Plain,
+}
