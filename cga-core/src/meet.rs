@@ -7,7 +7,7 @@
 
 use crate::conformal::{Disk, GeometryError, Result, down};
 use crate::euclid::{E3, dot, norm, sub, tolerance};
-use crate::{Bivector, Circle, LeftContraction, Line, Plane, Real, Sphere, Vector};
+use crate::{Bivector, Circle, InnerProduct, LeftContraction, Line, Plane, Real, Sphere, Vector};
 
 /// How a line meets a round, from the sign of the meet's square.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,7 +34,7 @@ pub struct RoundMeet<T = f64> {
 impl<T: Real> RoundMeet<T> {
     /// Classify `P` by the sign of `P²`, counting `|P²|` below rounding of its terms as zero.
     pub fn new(pair: Bivector<T>) -> Self {
-        let square = (pair | pair).s;
+        let square = pair.inner(pair).s;
         let size: T = pair.to_array().iter().fold(T::zero(), |m, &x| m + x * x);
         let hit = if square.abs() <= tolerance(size) {
             Hit::Tangent

@@ -113,7 +113,10 @@ fn main() {
     }
 
     let _ = writeln!(md, "\n## Object count (spheres on a grid over a mirror floor, 320×240, {cores} threads)\n");
-    let _ = writeln!(md, "| spheres | ms/frame, hierarchy | ms/frame, every object | speed-up | rays |\n|---:|---:|---:|---:|---:|");
+    let _ = writeln!(
+        md,
+        "| spheres | ms/frame, hierarchy | ms/frame, every object | speed-up | rays |\n|---:|---:|---:|---:|---:|"
+    );
     for n in [1, 10, 100, 1000] {
         let scene = parse(&spheres(n));
         let (with, rays) = time(&scene, cores, 5, true);

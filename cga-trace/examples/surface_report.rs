@@ -91,9 +91,7 @@ impl Prepared {
     fn intersect(&self, surface: &EvolvedSurface, r: &TestRay) -> Option<Crossing> {
         match self {
             Prepared::Surface(s) => s.intersect(&r.ray, 0.0, r.t_max),
-            Prepared::Reference(family, origin) => {
-                plain_intersect(family, *origin, Finder::Slope(4096), surface, r)
-            }
+            Prepared::Reference(family, origin) => plain_intersect(family, *origin, Finder::Slope(4096), surface, r),
             Prepared::F32(family, origin, finder) => plain_intersect(family, *origin, *finder, surface, r),
         }
     }
@@ -203,7 +201,8 @@ fn compare(surface: &EvolvedSurface, ray: &Ray, want: Option<Crossing>, got: Opt
 fn double_root(surface: &EvolvedSurface, ray: &Ray, alpha: f64) -> bool {
     let (family, origin) = surface.family();
     let Ok(line) = Line::from_point_direction(sub(ray.origin, origin), ray.dir) else { return false };
-    let scale = [0.0, 0.25, 0.5, 0.75, 1.0].iter().filter_map(|&a| family.f(&line, a)).fold(0.0f64, |m, f| m.max(f.abs()));
+    let scale =
+        [0.0, 0.25, 0.5, 0.75, 1.0].iter().filter_map(|&a| family.f(&line, a)).fold(0.0f64, |m, f| m.max(f.abs()));
     family.f_and_slope(&line.lift(), alpha).is_some_and(|(_, d)| d.abs() < 1e-6 * scale)
 }
 
@@ -316,7 +315,12 @@ fn adversarial(surface: &EvolvedSurface, per_kind: usize, seed: u64) -> Vec<Test
             let v = cross(n, u);
             let dir = add(scale(u, angle.cos()), scale(v, angle.sin()));
             let offset = scale(cross(n, dir), rng.range(-1.2, 1.2) * r);
-            push(&mut out, Ray::new(world(sub(add(c, offset), scale(dir, 2.0 * size))), dir), f64::INFINITY, "in a circle's plane");
+            push(
+                &mut out,
+                Ray::new(world(sub(add(c, offset), scale(dir, 2.0 * size))), dir),
+                f64::INFINITY,
+                "in a circle's plane",
+            );
         }
         // Near the ends: α within 1e-6 of 0 or 1, or exactly there.
         let end = match rng.next() {
@@ -360,17 +364,33 @@ fn stiff_surfaces() -> Vec<(String, EvolvedSurface)> {
     let far = [1.0e4, -2.0e3, 5.0e3];
     let local = |origin: E3, c1: Circle, c2: Circle| EvolvedSurface::in_frame(origin, c1, c2, m);
     let cases: Vec<(&str, Result<EvolvedSurface, _>)> = vec![
-        ("far from the origin (‖c‖ ≈ 1.1e4), built in a local frame", local(far, circle([0.0; 3], z, 1.0), circle([0.5, 0.0, 1.0], tilted, 1.5))),
+        (
+            "far from the origin (‖c‖ ≈ 1.1e4), built in a local frame",
+            local(far, circle([0.0; 3], z, 1.0), circle([0.5, 0.0, 1.0], tilted, 1.5)),
+        ),
         (
             "far from the origin (‖c‖ ≈ 1.1e4), built in world coordinates",
             EvolvedSurface::new(circle(far, z, 1.0), circle(add(far, [0.5, 0.0, 1.0]), tilted, 1.5), m),
         ),
-        ("tiny radii (1e-4 and 1.5e-4)", EvolvedSurface::new(circle([0.0; 3], z, 1e-4), circle([0.5e-4, 0.0, 1e-4], tilted, 1.5e-4), m)),
-        ("huge radii (1e4 and 1.5e4)", EvolvedSurface::new(circle([0.0; 3], z, 1e4), circle([0.5e4, 0.0, 1e4], tilted, 1.5e4), m)),
-        ("radii eight decades apart (1e-4 and 1e4)", EvolvedSurface::new(circle([0.0; 3], z, 1e-4), circle([0.0, 0.0, 1.0], z, 1e4), m)),
+        (
+            "tiny radii (1e-4 and 1.5e-4)",
+            EvolvedSurface::new(circle([0.0; 3], z, 1e-4), circle([0.5e-4, 0.0, 1e-4], tilted, 1.5e-4), m),
+        ),
+        (
+            "huge radii (1e4 and 1.5e4)",
+            EvolvedSurface::new(circle([0.0; 3], z, 1e4), circle([0.5e4, 0.0, 1e4], tilted, 1.5e4), m),
+        ),
+        (
+            "radii eight decades apart (1e-4 and 1e4)",
+            EvolvedSurface::new(circle([0.0; 3], z, 1e-4), circle([0.0, 0.0, 1.0], z, 1e4), m),
+        ),
         (
             "nearly identical (moved 1e-7, tilted 1e-7)",
-            EvolvedSurface::new(circle([0.0; 3], z, 1.0), circle([1e-7, 0.0, 0.0], unit([1e-7, 0.0, 1.0]).unwrap(), 1.0), m),
+            EvolvedSurface::new(
+                circle([0.0; 3], z, 1.0),
+                circle([1e-7, 0.0, 0.0], unit([1e-7, 0.0, 1.0]).unwrap(), 1.0),
+                m,
+            ),
         ),
         (
             "anti-aligned (opposite normals, one above the other)",
@@ -382,7 +402,11 @@ fn stiff_surfaces() -> Vec<(String, EvolvedSurface)> {
         ),
         (
             "twisted, passing near a point-like circle",
-            EvolvedSurface::new(circle([0.0; 3], z, 1.0), circle([0.0, 0.0, 0.3], unit([1.0, 0.0, 0.05]).unwrap(), 0.05), m),
+            EvolvedSurface::new(
+                circle([0.0; 3], z, 1.0),
+                circle([0.0, 0.0, 0.3], unit([1.0, 0.0, 0.05]).unwrap(), 0.05),
+                m,
+            ),
         ),
         (
             "co-spherical (both on the sphere ‖x‖ = 2: W = 0)",
@@ -408,10 +432,9 @@ fn stiff_surfaces() -> Vec<(String, EvolvedSurface)> {
 /// The smallest and largest radius along the family (1025 samples).
 fn radius_range(surface: &EvolvedSurface) -> (f64, f64) {
     let (family, _) = surface.family();
-    (0..=1024).filter_map(|k| family.pair.at(k as f64 / 1024.0).ok()?.centre_normal_radius().ok()).fold(
-        (f64::INFINITY, 0.0f64),
-        |(lo, hi), (_, _, r)| (lo.min(r), hi.max(r)),
-    )
+    (0..=1024)
+        .filter_map(|k| family.pair.at(k as f64 / 1024.0).ok()?.centre_normal_radius().ok())
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), (_, _, r)| (lo.min(r), hi.max(r)))
 }
 
 /// Median over `repeats` runs of the time per ray (ns) of one setting on one case.
@@ -524,7 +547,26 @@ fn main() {
                 let odd = one.missed + one.false_hits > 0 || one.alpha > 1e-9;
                 if odd && std::env::var("SURFACE_REPORT_DUMP").is_ok_and(|v| setting.label().contains(&v)) {
                     let inc = |c: &Option<Crossing>| c.map(|c| dot(case.surface.normal(&c), r.ray.dir).abs());
-                    eprintln!("  {} / {}: {} incidence want {:?} got {:?} | {:?} t_max {}: want {:?} got {:?}", case.name, r.kind, if one.missed > 0 { "MISSED" } else if one.false_hits > 0 { "FALSE" } else if one.other_alpha > 0 { "OTHER" } else { "ALPHA" }, inc(want), inc(&got), r.ray, r.t_max, want, got);
+                    eprintln!(
+                        "  {} / {}: {} incidence want {:?} got {:?} | {:?} t_max {}: want {:?} got {:?}",
+                        case.name,
+                        r.kind,
+                        if one.missed > 0 {
+                            "MISSED"
+                        } else if one.false_hits > 0 {
+                            "FALSE"
+                        } else if one.other_alpha > 0 {
+                            "OTHER"
+                        } else {
+                            "ALPHA"
+                        },
+                        inc(want),
+                        inc(&got),
+                        r.ray,
+                        r.t_max,
+                        want,
+                        got
+                    );
                 }
                 tallies[s][c].add(&one);
                 let k = kinds.iter().position(|k| k.0 == r.kind).expect("a known kind");
@@ -613,7 +655,11 @@ fn write_report(
             all.tangent,
             all.other_alpha,
             fmt_err(
-                by_kind[s].iter().zip(kinds).filter(|(_, k)| k.0.starts_with("scene")).fold(0.0f64, |m, (t, _)| m.max(t.alpha))
+                by_kind[s]
+                    .iter()
+                    .zip(kinds)
+                    .filter(|(_, k)| k.0.starts_with("scene"))
+                    .fold(0.0f64, |m, (t, _)| m.max(t.alpha))
             ),
             fmt_err(all.alpha),
             fmt_err(all.alpha_double),
@@ -686,7 +732,9 @@ fn plot(
         .collect();
     let (t_lo, t_hi) = points.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
     let wrong_hi = points.iter().fold(1.0f64, |m, p| m.max(p.3)) * 3.0;
-    let panels: [(&DrawingArea<SVGBackend, plotters::coord::Shift>, &str, f64, f64, usize); 2] = [
+    // (area, title, y range, which value: 2 the α error, 3 the wrong-hit count)
+    type Panel<'a, 'b> = (&'a DrawingArea<SVGBackend<'b>, plotters::coord::Shift>, &'static str, f64, f64, usize);
+    let panels: [Panel; 2] = [
         (&left, "max α error, scene rays (simple roots)", 1e-16, 1.0, 2),
         (&right, "missed + false hits + 1, all rays", 0.7, wrong_hi, 3),
     ];

@@ -4,7 +4,7 @@
 //! pixel centre `(i + ½, j + ½)`. In the camera's frame it looks along `e2` with `e3` up.
 
 use crate::ray::Ray;
-use cga_core::euclid::{E3, cross, sub, unit};
+use cga_core::euclid::{E3, cross, scale, sub, unit};
 use cga_core::{Line, Motor, Rotor, Sandwich, Translator, Vector, down, ei, up};
 
 /// Why a camera cannot be built.
@@ -99,7 +99,10 @@ impl Camera {
         // wedges are linear), then normalised.
         let x = up(self.image_point(u, v)).to_array();
         let line = (0..5).fold(Line::zero(), |l, k| l + self.lines[k].scale(x[k]));
-        Ray::from_line(self.position, line.try_normalise()?)
+        // A Euclidean line's norm is that of its direction part: one division normalises both.
+        let d = [-line.e1oi, -line.e2oi, -line.e3oi];
+        let inv = 1.0 / cga_core::euclid::norm(d);
+        inv.is_finite().then(|| Ray { origin: self.position, dir: scale(d, inv), line: line.scale(inv) })
     }
 
     /// The same ray computed term by term as eq. 2 writes it (`cam ∧ M up(x) M̃ ∧ ei`), to

@@ -15,8 +15,8 @@ pub mod scene;
 pub mod shapes;
 pub mod surface;
 
-pub use cga_core;
 pub use backend::{Backend, BackendKind};
+pub use cga_core;
 pub use film::Film;
 pub use render::{Aov, Renderer};
 pub use scene::{Encoding, Scene, SceneError};

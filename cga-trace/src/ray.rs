@@ -20,7 +20,11 @@ impl Ray {
     /// The ray from `origin` along `dir`; `None` for a zero or non-finite direction.
     pub fn new(origin: E3, dir: E3) -> Option<Self> {
         let dir = unit(dir)?;
-        origin.iter().all(|x| x.is_finite()).then(|| Ray { origin, dir, line: Line::from_point_unit_direction(origin, dir) })
+        origin.iter().all(|x| x.is_finite()).then(|| Ray {
+            origin,
+            dir,
+            line: Line::from_point_unit_direction(origin, dir),
+        })
     }
 
     /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir` (see

@@ -324,3 +324,21 @@ fn back_ends_render_the_same_image() {
         }
     }
 }
+
+/// `Camera::ray` expands eq. 2 over `up(x)`'s coefficients; it is the same ray as the
+/// sandwich-and-wedge form, for any pose and pixel.
+#[test]
+fn camera_rays_match_eq_2_term_by_term() {
+    use cga_trace::camera::Camera;
+    for (k, position) in [[1.0, -30.0, 0.0], [5.0, 3.0, -2.0], [-40.0, 12.0, 9.0]].into_iter().enumerate() {
+        let pose = Camera::pose_look_at(position, [0.3 * k as f64, 0.0, 1.0], [0.0, 0.0, 1.0]).unwrap();
+        let camera = Camera::new(pose, 1.3, 2.0, 1.5, 64, 48).unwrap();
+        for (u, v) in [(0.5, 0.5), (31.7, 20.2), (63.5, 47.5), (10.0, 40.0)] {
+            let (fast, literal) = (camera.ray(u, v).unwrap(), camera.ray_by_sandwich(u, v).unwrap());
+            for (a, b) in fast.line.to_array().iter().zip(literal.line.to_array()) {
+                assert!((a - b).abs() < 1e-12 * (1.0 + norm(position)), "{fast:?} vs {literal:?}");
+            }
+            assert!(norm(sub(fast.dir, literal.dir)) < 1e-12 && fast.origin == literal.origin);
+        }
+    }
+}

@@ -10,9 +10,7 @@ use crate::shapes::{Crossing, Shape, facing, inside_triangle};
 #[cfg(feature = "evolved")]
 use crate::surface::EvolvedSurface;
 use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
-use cga_core::{
-    Bivector, FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up,
-};
+use cga_core::{Bivector, FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
 
 /// The dense back end.
 #[derive(Clone, Copy, Debug, Default)]
@@ -130,7 +128,9 @@ impl Backend for Dense {
         match shape {
             Shape::Sphere { sphere, centre, .. } => DenseShape::Sphere { sphere: (*sphere).into(), centre: *centre },
             Shape::Plane(plane) => DenseShape::Plane((*plane).into()),
-            Shape::Disk(disk) => DenseShape::Disk { plane: disk.plane.into(), centre: disk.centre, radius: disk.radius },
+            Shape::Disk(disk) => {
+                DenseShape::Disk { plane: disk.plane.into(), centre: disk.centre, radius: disk.radius }
+            }
             Shape::Triangle { plane, corners } => DenseShape::Triangle { plane: (*plane).into(), corners: *corners },
             #[cfg(feature = "evolved")]
             Shape::Evolved(surface) => DenseShape::Evolved(surface.clone()),

@@ -1,9 +1,9 @@
 //! The evolved surface as a scene object: its local frame, bounds, culling tree and the
 //! method that finds its crossings with a ray.
 
+use super::bernstein::Roots;
 use super::tree::{PAD, Tree};
 use super::{Family, Finder, Method, SurfaceError};
-use super::bernstein::Roots;
 use crate::ray::{Ray, crosses};
 use crate::shapes::Crossing;
 use cga_core::euclid::{E3, add, norm, scale, sub};
@@ -133,7 +133,8 @@ impl EvolvedSurface {
     pub fn intersect<C>(&self, ray: &Ray<C>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let local = self.local_ray(ray, t_min, t_max)?;
         let alphas = self.candidates(&local, t_min, t_max);
-        let polish = matches!(self.method, Method::Polynomial { tolerance: 0.0 } | Method::Hybrid { tolerance: 0.0, .. });
+        let polish =
+            matches!(self.method, Method::Polynomial { tolerance: 0.0 } | Method::Hybrid { tolerance: 0.0, .. });
         let ray = (local.origin, local.dir, &local.line);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;
         Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })

@@ -265,11 +265,12 @@ impl<T: Real> Family<T> {
         let mut best = alpha;
         for _ in 0..2 {
             let step = f / slope;
-            if !(step.abs() <= T::from_f64(END_STEP)) || f == T::zero() {
+            // (A NaN step is not short either.)
+            let short = step.abs() <= T::from_f64(END_STEP);
+            if !short || f == T::zero() {
                 break;
             }
-            let next = best - step;
-            let next = if next < T::zero() { T::zero() } else if next > T::one() { T::one() } else { next };
+            let next = clamp_unit(best - step);
             let Some((f_next, slope_next)) = self.f_and_slope(line, next) else { break };
             if f_next.abs() >= f.abs() {
                 break;
@@ -287,7 +288,7 @@ impl<T: Real> Family<T> {
             if !next.is_finite() {
                 break;
             }
-            let next = if next < T::zero() { T::zero() } else if next > T::one() { T::one() } else { next };
+            let next = clamp_unit(next);
             if next == alpha {
                 break;
             }
@@ -408,6 +409,17 @@ impl<T: Real> Family<T> {
     /// The verified points where the ray meets `C_α`.
     fn verified(&self, alpha: T, ray: (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
         self.pair.at(alpha).map_or_else(|_| SmallVec::new(), |circle| hit_points(&circle, ray))
+    }
+}
+
+/// `x` kept in [0, 1].
+fn clamp_unit<T: Real>(x: T) -> T {
+    if x < T::zero() {
+        T::zero()
+    } else if x > T::one() {
+        T::one()
+    } else {
+        x
     }
 }
 
