@@ -99,7 +99,8 @@ pub struct Settings {
     /// PNG encoding.
     #[serde(default)]
     pub encoding: Encoding,
-    /// How rays meet evolved surfaces (default: the bounding-sphere hierarchy).
+    /// How rays meet evolved surfaces (default: hybrid — the α-tree culls, the degree-8
+    /// polynomial finds the roots; docs/SURFACE.md).
     #[serde(default)]
     pub surface_method: Method,
 }
