@@ -7,7 +7,7 @@
 
 use crate::conformal::{Disk, GeometryError, Result, down};
 use crate::euclid::{E3, dot, norm, sub, tolerance};
-use crate::{Bivector, Circle, InnerProduct, LeftContraction, Line, Plane, Real, Sphere, Vector};
+use crate::{Bivector, Circle, FlatPoint, InnerProduct, LeftContraction, Line, Plane, Real, Sphere, Vector};
 
 /// How a line meets a round, from the sign of the meet's square.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -74,6 +74,17 @@ impl<T: Real> RoundMeet<T> {
     }
 }
 
+impl<T: Real> FlatPoint<T> {
+    /// The Euclidean point of a flat point `λ(x ∧ ei + eo ∧ ei)`, `None` at infinity (a line
+    /// parallel to the plane it met).
+    pub fn point(&self) -> Option<E3<T>> {
+        let x = [self.e1i, self.e2i, self.e3i];
+        let inv = T::one() / self.eoi;
+        let scale_ = x.iter().fold(T::zero(), |m, v| if v.abs() > m { v.abs() } else { m });
+        (self.eoi.abs() > tolerance(scale_) && inv.is_finite()).then(|| x.map(|v| v * inv))
+    }
+}
+
 impl<T: Real> Line<T> {
     /// `L ∨ S`, classified.
     #[inline]
@@ -84,11 +95,7 @@ impl<T: Real> Line<T> {
     /// The point where the line crosses `plane` (`L ∨ P`, a flat point `λ(x ∧ ei + eo ∧ ei)`),
     /// `None` when they are parallel.
     pub fn meet_plane(&self, plane: &Plane<T>) -> Option<E3<T>> {
-        let f = *self & *plane;
-        let x = [f.e1i, f.e2i, f.e3i];
-        let inv = T::one() / f.eoi;
-        let scale_ = x.iter().fold(T::zero(), |m, v| if v.abs() > m { v.abs() } else { m });
-        (f.eoi.abs() > tolerance(scale_) && inv.is_finite()).then(|| x.map(|v| v * inv))
+        (*self & *plane).point()
     }
 
     /// The point where the line crosses `disk` (its plane, within the rim), if it does.

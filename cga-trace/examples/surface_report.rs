@@ -113,7 +113,7 @@ fn plain_intersect<T: Real>(
     let mut alphas = Roots::new();
     family.roots(&line, finder, 0.0, 1.0, &mut alphas);
     let t_max = if r.t_max.is_finite() { T::from_f64(r.t_max) } else { T::from_f64(f64::from(f32::MAX)) };
-    let polish = finder == Finder::Polynomial(0.0);
+    let polish = finder.polishes();
     let (t, x, alpha) = family.nearest((o, d, &line), &alphas, T::zero(), t_max, polish)?;
     Some(Crossing { t: t.to_f64(), point: add(x.map(T::to_f64), origin), alpha: Some(alpha.to_f64()) })
 }

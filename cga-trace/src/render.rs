@@ -89,16 +89,13 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// A renderer for `scene` on back end `B`: every object prepared once.
     pub fn with_backend(scene: &'a Scene) -> Self {
         let shapes = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
-        let bounds = scene
-            .objects
-            .iter()
-            .map(|o| match o.shape {
-                Shape::Disk(_) | Shape::Triangle { .. } => o.shape.bounds(),
-                _ => None,
-            })
-            .collect();
         let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
         let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
+        let cull = |(o, b): (&Object, &Option<(E3, f64)>)| match o.shape {
+            Shape::Disk(_) | Shape::Triangle { .. } => *b,
+            _ => None,
+        };
+        let bounds = scene.objects.iter().zip(&all).map(cull).collect();
         Renderer { scene, shapes, bounds, bvh, counts: RayCounts::default() }
     }
 

@@ -79,11 +79,7 @@ fn plane_at(p: E3, n: E3) -> Option<Multivector> {
 
 /// Where the line meets a plane: the flat point `L ∨ P`, read as `Line::meet_plane` reads it.
 fn meet_plane(line: &Multivector, plane: &Multivector) -> Option<E3> {
-    let f = FlatPoint::from_dense(&(*line & *plane));
-    let x = [f.e1i, f.e2i, f.e3i];
-    let inv = 1.0 / f.eoi;
-    let largest = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    (f.eoi.abs() > tolerance(largest) && inv.is_finite()).then(|| x.map(|v| v * inv))
+    FlatPoint::from_dense(&(*line & *plane)).point()
 }
 
 /// The points where the line meets a sphere, in order along `dir`: `P = L ∨ S`, classified by

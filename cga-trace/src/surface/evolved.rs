@@ -102,8 +102,7 @@ impl EvolvedSurface {
             return None;
         }
         let o = sub(ray.origin, self.origin);
-        let line = Line::from_point_direction(o, ray.dir).ok()?;
-        Some(Ray { origin: o, dir: ray.dir, line })
+        Some(Ray { origin: o, dir: ray.dir, line: Line::from_point_unit_direction(o, ray.dir) })
     }
 
     /// Candidate α for a ray in the local frame: what the method's root finder returns over
@@ -133,8 +132,12 @@ impl EvolvedSurface {
     pub fn intersect<C>(&self, ray: &Ray<C>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let local = self.local_ray(ray, t_min, t_max)?;
         let alphas = self.candidates(&local, t_min, t_max);
-        let polish =
-            matches!(self.method, Method::Polynomial { tolerance: 0.0 } | Method::Hybrid { tolerance: 0.0, .. });
+        let polish = match self.method {
+            Method::Polynomial { tolerance } | Method::Hybrid { tolerance, .. } => {
+                Finder::Polynomial(tolerance).polishes()
+            }
+            Method::Sampling { .. } | Method::Hierarchy { .. } => false,
+        };
         let ray = (local.origin, local.dir, &local.line);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;
         Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })

@@ -48,6 +48,14 @@ pub enum Finder {
     Polynomial(f64),
 }
 
+impl Finder {
+    /// Whether candidates that fail verification are polished on `f` and tried again (see
+    /// [`Family::nearest`]): for the polynomial refined to rounding level.
+    pub fn polishes(self) -> bool {
+        self == Finder::Polynomial(0.0)
+    }
+}
+
 impl<T: Real> Family<T> {
     /// The family between normalised, aligned circles.
     pub fn new(pair: Pair<Circle<T>>) -> Self {
@@ -134,10 +142,9 @@ impl<T: Real> Family<T> {
                 let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
                 let restricted = if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly };
                 restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
-                let lifted = line.lift();
                 for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
                     if near_end {
-                        out.push(self.polish(&lifted, end));
+                        out.push(self.polish(&line.lift(), end));
                     }
                 }
             }
