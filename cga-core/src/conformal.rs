@@ -6,7 +6,7 @@
 //! (a, b)` points from `a` to `b`; `Plane::through(a, b, c)` has normal `(b−a)×(c−a)`);
 //! objects built from parameters take the orientation of the same construction from points.
 
-use crate::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
+use crate::euclid::{E3, cross, dot, magnitude, norm, scale, sub, tolerance, unit};
 use crate::{Bivector, Circle, Infinity, LeftContraction, Line, Plane, Real, Sphere, Vector};
 
 /// Why an object cannot be built or read back.
@@ -39,6 +39,10 @@ pub enum GeometryError {
     /// An input is infinite or NaN.
     #[error("an input is not finite")]
     NonFinite,
+    /// The inputs are finite but the object's coefficients are not: they grow like `|x|²`
+    /// (or `|x|²/r`), so coordinates beyond about 1e154 (f64) overflow.
+    #[error("the coordinates are too large for the conformal representation (its coefficients overflow)")]
+    Overflow,
 }
 
 /// Shorthand for results of this module.
@@ -175,15 +179,25 @@ impl<T: Real> Sphere<T> {
         s.try_normalise().ok_or(GeometryError::Degenerate)
     }
 
-    /// The sphere of centre `c` and radius `r`: `undual(up(c) − ½r² ei)`, normalised.
+    /// The sphere of centre `c` and radius `r`: `undual(σ)` with the dual sphere
+    /// `σ = (up(c) − ½r² ei) / r`, normalised by construction (`σ² = 1`): dividing by the
+    /// known `r` rather than by the computed `√|σ²|` avoids the cancellation `c² − (c² − r²)`
+    /// in `σ²`, which would cost `ε (|c|/r)²` a second time.
     pub fn from_centre_radius(c: E3<T>, r: T) -> Result<Self> {
+        Ok(Self::dual_of_centre_radius(c, r)?.undual())
+    }
+
+    /// The dual sphere `σ = (up(c) − ½r² ei) / r` of [`Sphere::from_centre_radius`].
+    fn dual_of_centre_radius(c: E3<T>, r: T) -> Result<Vector<T>> {
         finite(&[c, [r, r, r]])?;
-        if r <= tolerance(magnitude(&[c])) {
+        if r <= T::zero() {
             return Err(GeometryError::ZeroRadius);
         }
         let mut dual = up(c);
         dual.ei = dual.ei - T::from_f64(0.5) * r * r;
-        dual.undual().try_normalise().ok_or(GeometryError::Degenerate)
+        let dual = dual.scale(T::one() / r);
+        // ½|c|²/r overflows long before the input does (|c| ≈ 1e154, or r tiny).
+        dual.to_array().iter().all(|x| x.is_finite()).then_some(dual).ok_or(GeometryError::Overflow)
     }
 
     /// `(centre, radius)` from the dual `σ = S I5⁻¹ = λ(up(c) − ½r² ei)`: `c = σ₁₂₃/λ`,
@@ -211,17 +225,21 @@ impl<T: Real> Circle<T> {
         ((up(a) ^ up(b)) ^ up(c)).try_normalise().ok_or(GeometryError::Degenerate)
     }
 
-    /// The circle of centre `c`, plane normal `n` and radius `r`, through three of its
-    /// points (so oriented as [`Circle::through`] with normal `n`).
+    /// The circle of centre `c`, plane normal `n` and radius `r`: the meet `S ∨ Π` of the
+    /// sphere of centre `c` and radius `r` ([`Sphere::from_centre_radius`]) with the plane
+    /// through `c` of normal `n` ([`Plane::from_point_normal`]), oriented as
+    /// [`Circle::through`] orients three of its points counter-clockwise about `n`.
+    ///
+    /// Normalised by construction: the dual sphere and dual plane are unit (`σ² = π² = 1`)
+    /// and orthogonal (`σ · π = 0`, the plane passes through the centre), so
+    /// `(σ ∧ π)² = σ² π² − (σ · π)² = 1` with no division. The coefficients carry the
+    /// circle to `ε (|c|/r)²` relative, the accuracy of the null-basis representation
+    /// (built through three points it was `ε (|c|/r)³`).
     pub fn from_centre_normal_radius(c: E3<T>, n: E3<T>, r: T) -> Result<Self> {
-        finite(&[c, n, [r, r, r]])?;
-        if r <= tolerance(magnitude(&[c])) {
-            return Err(GeometryError::ZeroRadius);
-        }
-        let n = unit(n).ok_or(GeometryError::ZeroVector)?;
-        let u = scale(perpendicular(n), r);
-        let v = cross(n, u);
-        Self::through(add(c, u), add(c, v), sub(c, u))
+        let sphere = Sphere::from_centre_radius(c, r)?;
+        let plane = Plane::from_point_normal(c, n)?;
+        let meet = sphere & plane;
+        meet.to_array().iter().all(|x| x.is_finite()).then_some(-meet).ok_or(GeometryError::Overflow)
     }
 
     /// The plane of the circle, `C ∧ ei` (not normalised).
@@ -289,11 +307,21 @@ pub struct Disk<T = f64> {
 }
 
 impl<T: Real> Disk<T> {
-    /// The disk bounded by `circle`.
+    /// The disk bounded by `circle` (centre and radius read back from the blade, so to its
+    /// accuracy; prefer [`Disk::from_centre_normal_radius`] when they are known).
     pub fn new(circle: Circle<T>) -> Result<Self> {
         let plane = circle.carrier_plane().try_normalise().ok_or(GeometryError::AtInfinity)?;
         let (centre, _, radius) = circle.centre_normal_radius()?;
         Ok(Disk { circle, plane, centre, radius })
+    }
+
+    /// The disk of centre `c`, normal `n` and radius `r`: the rim
+    /// [`Circle::from_centre_normal_radius`], its carrier plane, and `c` and `r` kept
+    /// exactly as given (the meets test every ray against them).
+    pub fn from_centre_normal_radius(c: E3<T>, n: E3<T>, r: T) -> Result<Self> {
+        let circle = Circle::from_centre_normal_radius(c, n, r)?;
+        let plane = circle.carrier_plane().try_normalise().ok_or(GeometryError::AtInfinity)?;
+        Ok(Disk { circle, plane, centre: c, radius: r })
     }
 }
 

@@ -27,6 +27,11 @@ pub enum Aov {
     Alpha,
 }
 
+/// Crossings nearer than this (in the frame's units, about the scene's size) are the ray's
+/// own origin: a camera standing on a plane or sphere, whose crossing at `t ≈ 0` rounds to
+/// either side. Secondary rays start off their surface by more than this.
+pub const T_MIN: f64 = 1e-9;
+
 /// Scenes with at least this many bounded objects are traversed through a [`Bvh`]; fewer
 /// are tested one by one (cheaper than any traversal).
 const BVH_FROM: usize = 8;
@@ -167,7 +172,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// contended by every thread on every ray).
     fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
         let settings = &self.scene.settings;
-        let Some((hit, object)) = self.nearest(ray, 0.0, f64::INFINITY) else {
+        let Some((hit, object)) = self.nearest(ray, T_MIN, f64::INFINITY) else {
             return settings.background;
         };
         let m = &object.material;
@@ -191,6 +196,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
                     s = settings.shadow_transmission;
                 }
             }
+            // Attenuation is in world units; the frame's are `frame.scale` of them.
+            let distance = self.scene.frame.world_length(distance);
             let [c0, c1, c2] = settings.attenuation;
             let f_att = (1.0 / (c0 + c1 * distance + c2 * distance * distance)).min(1.0);
             for ((out, c), l) in colour.iter_mut().zip(m.colour).zip(light.colour) {
@@ -227,9 +234,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
         match aov {
             Aov::Shaded => self.trace_counted(&ray, 0, cast),
             Aov::Normal => {
-                self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
+                self.nearest(&ray, T_MIN, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
             }
-            Aov::Alpha => match self.nearest(&ray, 0.0, f64::INFINITY) {
+            Aov::Alpha => match self.nearest(&ray, T_MIN, f64::INFINITY) {
                 Some((Hit { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
                 _ => [0.0; 3],
             },

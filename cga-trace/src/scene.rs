@@ -4,12 +4,13 @@
 //! geometry the object's name (see the README for the format).
 
 use crate::camera::{Camera, CameraError};
+use crate::frame::Frame;
 use crate::shapes::Shape;
 #[cfg(feature = "evolved")]
 use crate::surface::EvolvedSurface;
 use crate::surface::Method;
-use cga_core::euclid::E3;
-use cga_core::{Circle, Disk, GeometryError, Motor, Plane, Sphere};
+use cga_core::euclid::{E3, sub};
+use cga_core::{Disk, GeometryError, Motor, Plane, Rotor, Sphere};
 use serde::Deserialize;
 use std::ops::Range;
 use std::path::Path;
@@ -205,10 +206,13 @@ pub struct Object {
     pub material: Material,
 }
 
-/// A scene ready to render.
+/// A scene ready to render, in its [`Frame`]: camera, objects and lights are given
+/// relative to the camera's position, in units of `frame.scale` (see [`crate::frame`]).
 #[derive(Clone, Debug)]
 pub struct Scene {
-    /// The camera.
+    /// World coordinates → the coordinates everything below is given in.
+    pub frame: Frame,
+    /// The camera, at the frame's origin.
     pub camera: Camera,
     /// Objects.
     pub objects: Vec<Object>,
@@ -283,8 +287,11 @@ impl Scene {
         let (settings, render_span) = spec.render.map_or((Settings::default(), 0..0), |r| (*r.get_ref(), r.span()));
         check_settings(&settings).map_err(|reason| invalid(render_span, "render".into(), reason))?;
         let camera_span = spec.camera.span();
-        let camera =
-            build_camera(spec.camera.into_inner()).map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
+        let anchors: Vec<E3> = (spec.objects.iter().filter_map(|o| o.get_ref().anchor()))
+            .chain(spec.lights.iter().map(|l| l.get_ref().position))
+            .collect();
+        let (camera, frame) = build_camera(spec.camera.into_inner(), anchors)
+            .map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
         for (k, light) in spec.lights.iter().enumerate() {
             let l = light.get_ref();
             if !l.position.iter().chain(&l.colour).all(|x| x.is_finite()) || l.colour.iter().any(|&c| c < 0.0) {
@@ -292,15 +299,17 @@ impl Scene {
                 return Err(invalid(light.span(), format!("light {}", k + 1), reason));
             }
         }
-        let lights = spec.lights.into_iter().map(Spanned::into_inner).collect();
+        let lights = (spec.lights.into_iter().map(Spanned::into_inner))
+            .map(|l| Light { position: frame.point(l.position), ..l })
+            .collect();
         let mut objects = Vec::new();
         for (k, spanned) in spec.objects.into_iter().enumerate() {
             let span = spanned.span();
-            let (object, name) = build_object(spanned.into_inner(), k, settings.surface_method);
+            let (object, name) = build_object(spanned.into_inner(), k, settings.surface_method, &frame);
             let what = format!("object `{name}`");
             objects.push(object.map_err(|reason| invalid(span, what, reason))?);
         }
-        Ok(Scene { camera, objects, lights, settings })
+        Ok(Scene { frame, camera, objects, lights, settings })
     }
 }
 
@@ -338,7 +347,8 @@ fn check_settings(s: &Settings) -> Result<(), String> {
     Ok(())
 }
 
-fn build_camera(c: CameraSpec) -> Result<Camera, String> {
+/// The camera in the frame centred on it (sized by `anchors`), and that frame.
+fn build_camera(c: CameraSpec, anchors: Vec<E3>) -> Result<(Camera, Frame), String> {
     let pose = match (c.motor, c.position, c.look_at) {
         (Some(m), None, None) => {
             let motor = Motor::from_array(m);
@@ -349,7 +359,13 @@ fn build_camera(c: CameraSpec) -> Result<Camera, String> {
     };
     let x_max = c.x_max.unwrap_or(2.0);
     let y_max = c.y_max.unwrap_or(x_max * f64::from(c.height) / f64::from(c.width.max(1)));
-    Camera::new(pose, c.focal_length, x_max, y_max, c.width, c.height).map_err(|e: CameraError| e.to_string())
+    let world = Camera::new(pose, c.focal_length, x_max, y_max, c.width, c.height).map_err(|e| e.to_string())?;
+    let frame = Frame::around(world.position(), anchors);
+    // In its own frame the camera only turns: M = T R, and R is M's scalar and e_jk parts.
+    let turn = Rotor { s: pose.s, e12: pose.e12, e13: pose.e13, e23: pose.e23 };
+    let turn = Motor::from(turn.try_normalise().ok_or("the motor has no rotation part")?);
+    let camera = Camera::new(turn, c.focal_length, x_max, y_max, c.width, c.height).map_err(|e: CameraError| e.to_string())?;
+    Ok((camera, frame))
 }
 
 fn check_material(m: &Material) -> Result<(), String> {
@@ -364,8 +380,20 @@ fn geometry(e: GeometryError) -> String {
     e.to_string()
 }
 
-/// The object and its name (for errors).
-fn build_object(spec: ObjectSpec, index: usize, method: Method) -> (Result<Object, String>, String) {
+impl ObjectSpec {
+    /// A point that places the object (for sizing the scene's frame), if it has one.
+    fn anchor(&self) -> Option<E3> {
+        match self {
+            ObjectSpec::Sphere { centre, .. } | ObjectSpec::Disk { centre, .. } => Some(*centre),
+            ObjectSpec::Plane { point, .. } => Some(*point),
+            ObjectSpec::Triangle { corners, .. } => Some(corners[0]),
+            ObjectSpec::Evolved { c1, .. } => c1.centre,
+        }
+    }
+}
+
+/// The object, built in `frame`, and its name (for errors).
+fn build_object(spec: ObjectSpec, index: usize, method: Method, frame: &Frame) -> (Result<Object, String>, String) {
     let name_of = |n: &Option<String>| n.clone().unwrap_or_else(|| format!("object {}", index + 1));
     let (name, material) = match &spec {
         ObjectSpec::Sphere { name, material, .. }
@@ -376,24 +404,26 @@ fn build_object(spec: ObjectSpec, index: usize, method: Method) -> (Result<Objec
     };
     let shape = || -> Result<Shape, String> {
         check_material(&material)?;
+        let (at, length) = (|x| frame.point(x), |l| frame.length(l));
         Ok(match spec {
             ObjectSpec::Sphere { centre, radius, .. } => {
+                let (centre, radius) = (at(centre), length(radius));
                 let sphere = Sphere::from_centre_radius(centre, radius).map_err(geometry)?;
                 Shape::Sphere { sphere, centre, radius }
             }
             ObjectSpec::Plane { point, normal, .. } => {
-                Shape::Plane(Plane::from_point_normal(point, normal).map_err(geometry)?)
+                Shape::Plane(Plane::from_point_normal(at(point), normal).map_err(geometry)?)
             }
             ObjectSpec::Disk { centre, normal, radius, .. } => {
-                let circle = Circle::from_centre_normal_radius(centre, normal, radius).map_err(geometry)?;
-                Shape::Disk(Disk::new(circle).map_err(geometry)?)
+                Shape::Disk(Disk::from_centre_normal_radius(at(centre), normal, length(radius)).map_err(geometry)?)
             }
             ObjectSpec::Triangle { corners, .. } => {
+                let corners = corners.map(at);
                 let plane = Plane::through(corners[0], corners[1], corners[2]).map_err(geometry)?;
                 Shape::Triangle { plane, corners }
             }
             #[cfg(feature = "evolved")]
-            ObjectSpec::Evolved { c1, c2, .. } => Shape::Evolved(Box::new(evolved(*c1, *c2, method)?)),
+            ObjectSpec::Evolved { c1, c2, .. } => Shape::Evolved(Box::new(evolved(*c1, *c2, method, frame)?)),
             #[cfg(not(feature = "evolved"))]
             ObjectSpec::Evolved { .. } => {
                 let _ = method;
@@ -404,45 +434,38 @@ fn build_object(spec: ObjectSpec, index: usize, method: Method) -> (Result<Objec
     (shape().map(|shape| Object { name: name.clone(), shape, material }), name)
 }
 
-/// An evolved surface; circles given by centre are built in a frame centred between them.
+/// An evolved surface, its circles built in a frame centred between them (inside `frame`).
 #[cfg(feature = "evolved")]
-fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method) -> Result<EvolvedSurface, String> {
-    let origin = match (c1.centre, c2.centre) {
-        (Some(a), Some(b)) => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])],
-        _ => [0.0; 3],
-    };
-    let c1 = circle(c1, origin).map_err(|e| format!("c1: {e}"))?;
-    let c2 = circle(c2, origin).map_err(|e| format!("c2: {e}"))?;
-    let surface = if origin == [0.0; 3] {
-        EvolvedSurface::new(c1, c2, method)
-    } else {
-        EvolvedSurface::in_frame(origin, c1, c2, method)
-    };
-    surface.map_err(|e| e.to_string())
+fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method, frame: &Frame) -> Result<EvolvedSurface, String> {
+    let (c1, n1, r1) = circle(c1, frame).map_err(|e| format!("c1: {e}"))?;
+    let (c2, n2, r2) = circle(c2, frame).map_err(|e| format!("c2: {e}"))?;
+    let origin = [0, 1, 2].map(|k| 0.5 * (c1[k] + c2[k]));
+    let local = |c: E3, n, r| cga_core::Circle::from_centre_normal_radius(sub(c, origin), n, r).map_err(geometry);
+    let (c1, c2) = (local(c1, n1, r1).map_err(|e| format!("c1: {e}"))?, local(c2, n2, r2).map_err(|e| format!("c2: {e}"))?);
+    EvolvedSurface::in_frame(origin, c1, c2, method).map_err(|e| e.to_string())
 }
 
 /// The orthonormal grade-3 blades, in the order scene files give them.
 #[cfg(feature = "evolved")]
 const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
 
-/// The circle of a spec; one given by its centre is built relative to `origin`.
+/// The centre, normal and radius of a circle spec, the centre and radius in `frame`. A blade
+/// is read in world coordinates (where the file gives it) and then moved: its coefficients
+/// carry the circle no better than `ε (|c|/r)²` there, which is what the file holds.
 #[cfg(feature = "evolved")]
-fn circle(spec: CircleSpec, origin: E3) -> Result<Circle, String> {
-    match spec {
+fn circle(spec: CircleSpec, frame: &Frame) -> Result<(E3, E3, f64), String> {
+    let (centre, normal, radius) = match spec {
         CircleSpec { blade: Some(b), centre: None, normal: None, radius: None } => {
             let mut dense = cga_core::Multivector::zero();
             for (name, value) in BLADE_ORDER.iter().zip(b) {
                 let k = cga_core::Multivector::<f64>::BLADES.iter().position(|x| x == name).ok_or("blade order")?;
                 dense.coeffs[k] = value;
             }
-            let c = Circle::from_dense(&dense).try_normalise().ok_or("the blade is zero or null")?;
-            c.centre_normal_radius().map_err(geometry)?;
-            Ok(c)
+            let c = cga_core::Circle::from_dense(&dense).try_normalise().ok_or("the blade is zero or null")?;
+            c.centre_normal_radius().map_err(geometry)?
         }
-        CircleSpec { blade: None, centre: Some(c), normal: Some(n), radius: Some(r) } => {
-            let local = [c[0] - origin[0], c[1] - origin[1], c[2] - origin[2]];
-            Circle::from_centre_normal_radius(local, n, r).map_err(geometry)
-        }
-        _ => Err("give either `blade`, or `centre`, `normal` and `radius`".into()),
-    }
+        CircleSpec { blade: None, centre: Some(c), normal: Some(n), radius: Some(r) } => (c, n, r),
+        _ => return Err("give either `blade`, or `centre`, `normal` and `radius`".into()),
+    };
+    Ok((frame.point(centre), normal, frame.length(radius)))
 }

@@ -37,17 +37,21 @@ fn a_ray_hits_a_sphere_where_the_quadratic_says() {
     let s = scene(&format!(
         "{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
     ));
-    let ray = Ray::new([0.0, -10.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    // The scene lives in its frame (camera-relative, unit scale): rays and hits are moved.
+    let f = s.frame;
+    let ray = Ray::new(f.point([0.0, -10.0, 0.0]), [0.0, 1.0, 0.0]).unwrap();
     let hit = s.objects[0].shape.hit(&ray, 0.0, f64::INFINITY).unwrap();
-    assert!((hit.t - 8.0).abs() < 1e-12 && norm(sub(hit.point, [0.0, -2.0, 0.0])) < 1e-12);
+    let (t, point) = (f.world_length(hit.t), f.world_point(hit.point));
+    assert!((t - 8.0).abs() < 1e-12 && norm(sub(point, [0.0, -2.0, 0.0])) < 1e-12);
     assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "normal {:?}", hit.normal);
     // From inside, the hit in front of the origin counts, not the one behind.
-    let inside = Ray::new([0.0, 0.5, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let inside = Ray::new(f.point([0.0, 0.5, 0.0]), [0.0, 1.0, 0.0]).unwrap();
     let hit = s.objects[0].shape.hit(&inside, 0.0, f64::INFINITY).unwrap();
-    assert!((hit.point[1] - 2.0).abs() < 1e-12 && (hit.t - 1.5).abs() < 1e-12);
+    let (t, point) = (f.world_length(hit.t), f.world_point(hit.point));
+    assert!((point[1] - 2.0).abs() < 1e-12 && (t - 1.5).abs() < 1e-12);
     assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "two-sided normal faces the ray");
     // Entirely behind: no hit.
-    let away = Ray::new([0.0, -10.0, 0.0], [0.0, -1.0, 0.0]).unwrap();
+    let away = Ray::new(f.point([0.0, -10.0, 0.0]), [0.0, -1.0, 0.0]).unwrap();
     assert!(s.objects[0].shape.intersect(&away, 0.0, f64::INFINITY).is_none());
 }
 
@@ -66,10 +70,11 @@ fn shadows_fall_behind_blockers_and_stop_at_the_light() {
     let beyond = format!(
         "{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 20.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n"
     );
-    let down = Ray::new([0.0, -3.0, 3.0], [0.0, 3.0, -3.0]).unwrap(); // meets the floor at the origin
-    let lit = Renderer::new(&scene(base)).trace(&down, 0);
-    let shadowed = Renderer::new(&scene(&with_ball)).trace(&down, 0);
-    let far = Renderer::new(&scene(&beyond)).trace(&down, 0);
+    // Meets the floor at the origin (all three scenes share the camera, so the frame).
+    let trace = |s: &Scene| Renderer::new(s).trace(&Ray::new(s.frame.point([0.0, -3.0, 3.0]), [0.0, 3.0, -3.0]).unwrap(), 0);
+    let lit = trace(&scene(base));
+    let shadowed = trace(&scene(&with_ball));
+    let far = trace(&scene(&beyond));
     assert!(brightness(shadowed) < 0.5 * brightness(lit), "shadow: {shadowed:?} vs {lit:?}");
     assert_eq!(far, lit, "a blocker beyond the light casts no shadow");
 }
@@ -193,12 +198,13 @@ fn a_ray_in_a_far_end_circles_plane_hits_it() {
          c2 = {{ centre = [10000.0, 0.0, 2.0], normal = [0.0, 0.3, 1.0], radius = 1.5 }}\n"
     ));
     let Shape::Evolved(surface) = &s.objects[0].shape else { panic!("an evolved surface") };
-    let ray = Ray::new([1e4, -10.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let f = s.frame;
+    let ray = Ray::new(f.point([1e4, -10.0, 0.0]), [0.0, 1.0, 0.0]).unwrap();
     let hit = surface.intersect(&ray, 0.0, f64::INFINITY).expect("the ray lies in c1's plane and crosses c1");
-    assert!(norm(sub(hit.point, [1e4, -1.0, 0.0])) < 1e-6, "hit at {:?}", hit.point);
+    assert!(norm(sub(f.world_point(hit.point), [1e4, -1.0, 0.0])) < 1e-6, "hit at {:?}", hit.point);
     assert!(hit.alpha.is_some_and(|a| a.abs() < 1e-12), "hit {hit:?}");
     let (centre, radius): (E3, f64) = surface.bounds();
-    assert!(norm(sub(centre, [1e4, 0.0, 1.0])) < 1e-9 && radius >= 1.5);
+    assert!(norm(sub(f.world_point(centre), [1e4, 0.0, 1.0])) < 1e-9 && f.world_length(radius) >= 1.5);
 }
 
 /// Any pose: the centre pixel looks at the target, and up in the image is up in the world.
@@ -341,4 +347,29 @@ fn camera_rays_match_eq_2_term_by_term() {
             assert!(norm(sub(fast.dir, literal.dir)) < 1e-12 && fast.origin == literal.origin);
         }
     }
+}
+
+/// A camera standing exactly on a surface: the crossing at `t ≈ 0` is the ray's own origin,
+/// whichever side rounding puts it, so it never shows (it used to render as speckle).
+#[test]
+fn a_camera_on_a_surface_renders_cleanly() {
+    let camera = "[camera]\nposition = [3.0, -7.0, 0.0]\nlook_at = [0.0, 0.0, 1.0]\nwidth = 24\nheight = 18\n";
+    let rest = "[[lights]]\nposition = [0.0, -5.0, 9.0]\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 2.0]\n\
+                radius = 1.5\nmaterial = { colour = [1.0, 0.2, 0.2] }\n";
+    let floor = "[[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.3, 0.1, 1.0]\n\
+                 material = { colour = [0.2, 1.0, 0.2] }\n";
+    let floor = floor.replace("[0.0, 0.0, 0.0]", "[3.0, -7.0, 0.0]"); // through the camera
+    let with_floor = render(&scene(&format!("{camera}{rest}{floor}")), 1);
+    let without = render(&scene(&format!("{camera}{rest}")), 1);
+    assert_eq!(with_floor, without, "a plane through the camera is seen edge-on: not at all");
+    // On a sphere, looking along its tangent plane: rays leaving outwards see no sphere.
+    let on_sphere = "[camera]\nposition = [0.0, 0.0, 3.5]\nlook_at = [0.0, 10.0, 3.5]\nwidth = 24\nheight = 18\n";
+    let s = scene(&format!("{on_sphere}{rest}"));
+    let film = render(&s, 1);
+    for j in 9..18 {
+        for i in 0..24 {
+            assert_eq!(film.get(i, j), s.settings.background, "pixel ({i}, {j}) looks outwards");
+        }
+    }
+    assert!((0..9).any(|j| film.get(12, j) != s.settings.background), "inwards it sees the sphere's inside");
 }
