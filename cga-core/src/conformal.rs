@@ -90,9 +90,18 @@ fn distinct<T: Real>(points: &[E3<T>]) -> Result<()> {
 
 impl<T: Real> Line<T> {
     /// `up(a) ∧ up(b) ∧ ei`, normalised: the line through `a` and `b`, directed from `a` to `b`.
+    ///
+    /// Written down as [`Line::from_point_direction`]`(a, b − a)`, the same blade: the wedge
+    /// of conformal points would square the coordinates (`½|a|²`), overflowing near 1e154 and
+    /// cancelling to `ε |a|²` where the line's own coefficients are only of size `|a|`.
     pub fn through(a: E3<T>, b: E3<T>) -> Result<Self> {
         distinct(&[a, b])?;
-        ((up(a) ^ up(b)) ^ ei()).try_normalise().ok_or(GeometryError::Degenerate)
+        let d = sub(b, a);
+        if !d.iter().all(|x| x.is_finite()) {
+            return Err(GeometryError::Overflow);
+        }
+        let line = Self::from_point_direction(a, d)?;
+        line.to_array().iter().all(|x| x.is_finite()).then_some(line).ok_or(GeometryError::Overflow)
     }
 
     /// The line through `p` with direction `d`, normalised: the same blade as
@@ -137,11 +146,17 @@ impl<T: Real> Plane<T> {
     /// `up(a) ∧ up(b) ∧ up(c) ∧ ei`, normalised: normal `(b − a) × (c − a)`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
         distinct(&[a, b, c])?;
-        let n = cross(sub(b, a), sub(c, a));
-        if norm(n) <= tolerance(magnitude(&[a, b, c])) * norm(sub(b, a)).max_of(norm(sub(c, a))) {
+        let (u, v) = (sub(b, a), sub(c, a));
+        let n = cross(u, v);
+        if !n.iter().all(|x| x.is_finite()) {
+            return Err(GeometryError::Overflow);
+        }
+        // Collinear: the sine of the angle at `a` is below rounding (a scale-free test).
+        if norm(n) <= tolerance(norm(u) * norm(v)) {
             return Err(GeometryError::CollinearPoints);
         }
-        (((up(a) ^ up(b)) ^ up(c)) ^ ei()).try_normalise().ok_or(GeometryError::Degenerate)
+        // The same blade as the wedge of conformal points, written down without squaring them.
+        Self::from_point_normal(a, n)
     }
 
     /// The plane through `p` with normal `n`, normalised: the blade `Plane::through` gives for
@@ -170,6 +185,9 @@ impl<T: Real> Sphere<T> {
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>, d: E3<T>) -> Result<Self> {
         distinct(&[a, b, c, d])?;
         let s = ((up(a) ^ up(b)) ^ up(c)) ^ up(d);
+        if !s.to_array().iter().all(|x| x.is_finite()) {
+            return Err(GeometryError::Overflow);
+        }
         // Coplanar points span a plane: the dual has no eo part.
         let dual = s.dual();
         let scale_ = magnitude(&[[dual.e1, dual.e2, dual.e3]]).max_of(dual.ei.abs());
@@ -222,7 +240,11 @@ impl<T: Real> Circle<T> {
     /// normal `(b − a) × (c − a)`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
         Plane::through(a, b, c)?; // rejects coincident and collinear points
-        ((up(a) ^ up(b)) ^ up(c)).try_normalise().ok_or(GeometryError::Degenerate)
+        let circle = (up(a) ^ up(b)) ^ up(c);
+        if !circle.to_array().iter().all(|x| x.is_finite()) {
+            return Err(GeometryError::Overflow);
+        }
+        circle.try_normalise().ok_or(GeometryError::Degenerate)
     }
 
     /// The circle of centre `c`, plane normal `n` and radius `r`: the meet `S ∨ Π` of the

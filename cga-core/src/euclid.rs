@@ -41,10 +41,18 @@ pub fn norm<T: Real>(a: E3<T>) -> T {
     dot(a, a).sqrt()
 }
 
-/// `a / |a|`, or `None` for a zero or non-finite vector.
+/// `a / |a|`, or `None` for a zero or non-finite vector. Vectors whose squared length
+/// overflows or underflows (components beyond about 1e154 or below 1e-154 in f64) are
+/// rescaled by their largest component first.
 pub fn unit<T: Real>(a: E3<T>) -> Option<E3<T>> {
     let inv = T::one() / norm(a);
-    (inv.is_finite() && inv > T::zero()).then(|| scale(a, inv))
+    if inv.is_finite() && inv > T::zero() {
+        return Some(scale(a, inv));
+    }
+    let largest = a.iter().fold(T::zero(), |m, x| m.max(x.abs()));
+    let b = scale(a, T::one() / largest);
+    let inv = T::one() / norm(b);
+    (largest.is_finite() && largest > T::zero() && inv.is_finite() && inv > T::zero()).then(|| scale(b, inv))
 }
 
 /// The largest `|a_i|` over several vectors, at least 1: the scale tolerances are relative to.

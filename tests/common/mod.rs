@@ -1,6 +1,8 @@
 //! Shared helpers for the workspace tests: the golden vectors, tolerances, counting scalar.
 #![allow(dead_code)]
 
+pub mod dd;
+
 use cga::{Multivector, Real};
 use serde_json::Value;
 use std::path::PathBuf;
@@ -76,6 +78,20 @@ impl Rng {
     /// A point with coordinates uniform in [lo, hi).
     pub fn e3(&mut self, lo: f64, hi: f64) -> [f64; 3] {
         [self.range(lo, hi), self.range(lo, hi), self.range(lo, hi)]
+    }
+    /// A unit vector, uniform over directions.
+    pub fn direction(&mut self) -> [f64; 3] {
+        loop {
+            let v = self.e3(-1.0, 1.0);
+            let n2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+            if n2 > 1e-4 && n2 <= 1.0 {
+                return v.map(|x| x / n2.sqrt());
+            }
+        }
+    }
+    /// `10^u`, `u` uniform in `[lo, hi)`: log-uniform between `10^lo` and `10^hi`.
+    pub fn decades(&mut self, lo: f64, hi: f64) -> f64 {
+        10f64.powf(self.range(lo, hi))
     }
 }
 

@@ -10,7 +10,7 @@ use crate::shapes::{Crossing, Shape, facing, inside_triangle};
 #[cfg(feature = "evolved")]
 use crate::surface::EvolvedSurface;
 use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
-use cga_core::{Bivector, FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
+use cga_core::{FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
 
 /// The dense back end.
 #[derive(Clone, Copy, Debug, Default)]
@@ -77,9 +77,14 @@ fn plane_at(p: E3, n: E3) -> Option<Multivector> {
     normalise(((dense_up(p) ^ dense_up(b)) ^ dense_up(c)) ^ dense_ei())
 }
 
+/// `|⟨X X̃⟩₀|`.
+fn weight(x: &Multivector) -> f64 {
+    Scalar::from_dense(&(*x * x.reverse())).s.abs()
+}
+
 /// Where the line meets a plane: the flat point `L ∨ P`, read as `Line::meet_plane` reads it.
 fn meet_plane(line: &Multivector, plane: &Multivector) -> Option<E3> {
-    FlatPoint::from_dense(&(*line & *plane)).point()
+    FlatPoint::from_dense(&(*line & *plane)).point_with_weight((weight(line) * weight(plane)).sqrt())
 }
 
 /// The points where the line meets a sphere, in order along `dir`: `P = L ∨ S`, classified by
@@ -87,9 +92,9 @@ fn meet_plane(line: &Multivector, plane: &Multivector) -> Option<E3> {
 fn meet_sphere(line: &Multivector, sphere: &Multivector, dir: E3) -> Option<[E3; 2]> {
     let pair = *line & *sphere;
     let square = Scalar::from_dense(&(pair * pair)).s;
-    let size: f64 = Bivector::from_dense(&pair).to_array().iter().map(|x| x * x).sum();
     let d = dense_ei().lc(pair);
-    let [a, b] = if square.abs() <= tolerance(size) {
+    // Classified as `RoundMeet::new` classifies: |P²| against the operands' norms.
+    let [a, b] = if square.abs() <= tolerance(weight(line) * weight(sphere)) {
         let p = down(Vector::from_dense(&(pair * d).grade(1)))?;
         [p, p]
     } else if square > 0.0 {
