@@ -14,7 +14,7 @@
 //! its `Ċ`, `Ω`, `Ẋ`, `L_T` and `N` are the negatives of these (the golden files use it).
 
 use crate::conformal::{GeometryError, ei, up};
-use crate::euclid::E3;
+use crate::euclid::{E3, cross, dot, norm, scale, sub};
 use crate::interpolate::{InterpolationError, Pair};
 use crate::{Bivector, Circle, Line, Pseudoscalar, Real, Vector};
 
@@ -28,6 +28,21 @@ pub enum NormalError {
     /// circle, `Ẋ ∥` tangent) or `Ẋ = 0` (the circles do not move there).
     #[error("the normal line is degenerate: {0}")]
     Degenerate(#[from] GeometryError),
+    /// The point is not on `C_α`: `distance` from it, relative to the radius, exceeds
+    /// [`accuracy`](crate::interpolate::accuracy) (the normal of eq. 6–11 holds on the circle only).
+    #[error("the point is {distance:.1e} radii off the circle C_α")]
+    OffCircle {
+        /// Distance from `C_α`, in radii.
+        distance: f64,
+    },
+    /// The normal's direction cannot be delivered to [`accuracy`](crate::interpolate::accuracy):
+    /// `estimate` (radians) is the error to expect. The circles are nearly identical, so
+    /// `Ċ`, of size `Δ` (their relative difference), is rounding noise of size `ε/Δ`.
+    #[error("ill-conditioned normal: expected angle error {estimate:.1e} rad (the circles are nearly identical)")]
+    IllConditioned {
+        /// The expected angle error in radians.
+        estimate: f64,
+    },
 }
 
 /// Every quantity of the normal computation, for inspection and testing.
@@ -67,7 +82,38 @@ impl<T: Real> Pair<Circle<T>> {
 
     /// The unit Euclidean normal at `x` on `C_α`: the direction of `N` (its sign follows
     /// `N`'s orientation, which follows the circles': surfaces here are two-sided).
+    ///
+    /// Checked: `x` must lie on `C_α` (within [`accuracy`](crate::interpolate::accuracy)
+    /// radii, else `OffCircle`), and the expected angle error
+    /// `ε (1 + ρ)² / Δ + condition()` must stay below it (else `IllConditioned`), `Δ` the
+    /// circles' relative difference `(|c₁ − c₂| + |r₁ − r₂| + r ∠(n₁, n₂)) / r`, `r` the
+    /// smaller radius and `ρ` as in [`Pair::condition`].
     pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
-        Ok(self.normal_parts(alpha, x)?.normal_line.direction()?)
+        let limit = crate::interpolate::accuracy::<T>();
+        let estimate = self.normal_condition();
+        if !(estimate <= limit) {
+            return Err(NormalError::IllConditioned { estimate });
+        }
+        let parts = self.normal_parts(alpha, x)?;
+        let (c, n, r) = parts.circle.centre_normal_radius()?;
+        let d = sub(x, c);
+        let along = dot(d, n);
+        let across = norm(sub(d, scale(n, along)));
+        let distance = ((along * along + (across - r) * (across - r)).sqrt() / r).to_f64();
+        if !(distance <= limit) {
+            return Err(NormalError::OffCircle { distance });
+        }
+        Ok(parts.normal_line.direction()?)
+    }
+
+    /// The expected angle error of [`Pair::normal`] (radians): see there.
+    pub fn normal_condition(&self) -> f64 {
+        let cnr = |c: &Circle<T>| c.centre_normal_radius().map(|(c, n, r)| (c.map(|x| x.to_f64()), n.map(|x| x.to_f64()), r.to_f64()));
+        let (Ok((a, n1, r1)), Ok((b, n2, r2))) = (cnr(&self.c1), cnr(&self.c2)) else { return f64::INFINITY };
+        let r = r1.min(r2);
+        let turn = norm(cross(n1, n2)).atan2(dot(n1, n2).abs());
+        let delta = (norm(sub(a, b)) + (r1 - r2).abs() + r * turn) / r;
+        let rho = (norm(a) + r1).max(norm(b) + r2).max(norm(sub(a, b))) / r;
+        T::epsilon().to_f64() * (1.0 + rho).powi(2) / delta + self.condition()
     }
 }

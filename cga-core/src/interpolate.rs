@@ -9,6 +9,7 @@
 //! Parameter convention: `α = 0` gives `C1`, `α = 1` gives `C2` (clifford's and the golden
 //! files'); the paper writes `α C1 + (1 − α) C2`, the same surface with `α` reversed.
 
+use crate::euclid::{E3, norm, sub};
 use crate::{Bivector, Circle, Dual, Line, Plane, Real, ScalarQuadvector, Sphere};
 use core::ops::{Add, Mul, Neg};
 
@@ -33,6 +34,28 @@ pub enum InterpolationError {
         /// Where it happened.
         alpha: f64,
     },
+    /// An endpoint is zero or null: it cannot be normalised.
+    #[error("an endpoint is zero or null")]
+    Degenerate,
+    /// f64 (or the scalar in use) cannot deliver the interpolation to the accuracy [`Pair`]
+    /// promises ([`accuracy`]): `estimate` is the relative error to expect (see
+    /// [`Pair::condition`]). Move the objects to a frame near them (translate by minus their
+    /// mean centre) and interpolate there.
+    #[error(
+        "ill-conditioned: expected relative error {estimate:.1e} (the objects lie far from the \
+         origin, or differ greatly in size, for this precision: interpolate them in a local frame)"
+    )]
+    IllConditioned {
+        /// The expected relative error.
+        estimate: f64,
+    },
+}
+
+/// The accuracy checked interpolations promise: `10⁻⁶` relative in f64, `√ε` for coarser
+/// scalars (`3.5·10⁻⁴` in f32). [`Pair::new`] and [`Pair::normal`](crate::NormalParts)
+/// refuse configurations whose estimated error exceeds it.
+pub fn accuracy<T: Real>() -> f64 {
+    T::epsilon().to_f64().sqrt().max(1e-6)
 }
 
 impl<T: Real> ScalarQuadvector<T> {
@@ -112,10 +135,14 @@ pub trait Interpolable<T: Real>: Copy + Add<Output = Self> + Mul<T, Output = Sel
     fn scalar_product(self, other: Self) -> T;
     /// `A / √|⟨A Ã⟩₀|`, `None` for a null or zero blade.
     fn try_normalised(self) -> Option<Self>;
+    /// For a round (circle, point pair, sphere): its centre and size (radius, or half the
+    /// pair's distance), to estimate conditioning; `None` for flats, whose coefficients grow
+    /// only linearly with distance.
+    fn reach(self) -> Option<(E3<T>, T)>;
 }
 
 macro_rules! interpolable {
-    ($($ty:ident),*) => {$(
+    ($($ty:ident => $reach:expr),*) => {$(
         impl<T: Real> Interpolable<T> for $ty<T> {
             type Lifted = $ty<Dual<T>>;
             #[inline]
@@ -145,11 +172,25 @@ macro_rules! interpolable {
             fn try_normalised(self) -> Option<Self> {
                 self.try_normalise()
             }
+            fn reach(self) -> Option<(E3<T>, T)> {
+                let reach: fn($ty<T>) -> Option<(E3<T>, T)> = $reach;
+                reach(self)
+            }
         }
     )*};
 }
 
-interpolable!(Circle, Bivector, Line, Plane, Sphere);
+interpolable!(
+    Circle => |c| c.centre_normal_radius().ok().map(|(c, _, r)| (c, r)),
+    Bivector => |p| {
+        let [a, b] = p.end_points().ok()?;
+        let half = T::from_f64(0.5);
+        Some(([0, 1, 2].map(|k| half * (a[k] + b[k])), half * norm(sub(b, a))))
+    },
+    Line => |_| None,
+    Plane => |_| None,
+    Sphere => |s| s.centre_radius().ok()
+);
 
 /// `C2` or `−C2`, whichever is oriented like `C1`: the sign of `⟨C1 C̃2⟩₀` must be that of
 /// `⟨C1 C̃1⟩₀`. Without this, `C2 ≈ −C1` makes `X` pass through zero.
@@ -193,14 +234,50 @@ pub struct Pair<X> {
 }
 
 impl<X> Pair<X> {
-    /// Normalise both and align `c2` to `c1`; `None` if either is null or zero.
-    pub fn new<T: Real>(c1: X, c2: X) -> Option<Self>
+    /// Normalise both and align `c2` to `c1`, checking that the interpolation can be
+    /// delivered to [`accuracy`]: `Degenerate` if either is null or zero, `IllConditioned`
+    /// when [`Pair::condition`] exceeds it (rounds far from the origin for their size, or of
+    /// very different sizes). [`Pair::new_unchecked`] skips the check.
+    pub fn new<T: Real>(c1: X, c2: X) -> Result<Self, InterpolationError>
     where
         X: Interpolable<T>,
     {
-        let c1 = c1.try_normalised()?;
-        let c2 = align(c1, c2.try_normalised()?);
-        Some(Pair { c1, c2 })
+        let pair = Self::new_unchecked(c1, c2)?;
+        let estimate = pair.condition();
+        if !(estimate <= accuracy::<T>()) {
+            return Err(InterpolationError::IllConditioned { estimate });
+        }
+        Ok(pair)
+    }
+
+    /// Normalise both and align `c2` to `c1`, without the conditioning check.
+    pub fn new_unchecked<T: Real>(c1: X, c2: X) -> Result<Self, InterpolationError>
+    where
+        X: Interpolable<T>,
+    {
+        let c1 = c1.try_normalised().ok_or(InterpolationError::Degenerate)?;
+        let c2 = align(c1, c2.try_normalised().ok_or(InterpolationError::Degenerate)?);
+        Ok(Pair { c1, c2 })
+    }
+
+    /// The relative error to expect of `C_α` (its centre, radius, normal) from rounding:
+    /// `ε (1 + ρ)³ / 64`, `ρ = max(|c₁| + r₁, |c₂| + r₂, |c₁ − c₂|) / min(r₁, r₂)` for rounds
+    /// of centres `cᵢ` and sizes `rᵢ` (0 for flats, whose coefficients grow only linearly).
+    ///
+    /// Why `ρ³`: the coefficients of a round grow like `ρ²`, and the projector's square
+    /// `−X X̃` cancels them back to size 1. The constant is measured: over the tables of
+    /// docs/STABILITY.md (`cargo test --test precision -- --ignored --nocapture`) the normal's
+    /// error is at most about this estimate and the centre's and radius' 10–100 times below it.
+    pub fn condition<T: Real>(&self) -> f64
+    where
+        X: Interpolable<T>,
+    {
+        let (Some((a, r1)), Some((b, r2))) = (self.c1.reach(), self.c2.reach()) else { return 0.0 };
+        let (r1, r2) = (r1.to_f64(), r2.to_f64());
+        let (a, b) = (a.map(|x| x.to_f64()), b.map(|x| x.to_f64()));
+        let reach = (norm(a) + r1).max(norm(b) + r2).max(norm(sub(a, b)));
+        let rho = reach / r1.min(r2);
+        T::epsilon().to_f64() * (1.0 + rho).powi(3) / 64.0
     }
 
     /// `C_α` (see [`interpolate`]).

@@ -52,7 +52,7 @@ impl EvolvedSurface {
             let (centre, normal, radius) = c.centre_normal_radius().map_err(not_a_circle)?;
             Circle::from_centre_normal_radius(centre, normal, radius).map_err(not_a_circle)
         };
-        let pair = Pair::new(blade(c1, 1)?, blade(c2, 2)?).ok_or(SurfaceError::Degenerate)?;
+        let pair = Pair::new(blade(c1, 1)?, blade(c2, 2)?)?;
         let mut radius = 0.0f64;
         for k in 0..=BOUND_SAMPLES {
             let alpha = k as f64 / BOUND_SAMPLES as f64;
