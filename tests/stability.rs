@@ -387,5 +387,7 @@ fn identical_circles_have_no_normal() {
     // Unchecked, the parts show why: Ċ = 0, so Ẋ = 0 and N = 0.
     let parts = pair.normal_parts(0.5, [2.0, 0.0, 0.0]).unwrap();
     assert!(parts.normal_line.direction().is_err());
-    println!("| identical circles (Ẋ = 0, L_T = 0) | – | – | – | normal: NormalError::IllConditioned (Δ = 0) in f64 and f32 |");
+    println!(
+        "| identical circles (Ẋ = 0, L_T = 0) | – | – | – | normal: NormalError::IllConditioned (Δ = 0) in f64 and f32 |"
+    );
 }

@@ -108,7 +108,9 @@ impl<T: Real> Pair<Circle<T>> {
 
     /// The expected angle error of [`Pair::normal`] (radians): see there.
     pub fn normal_condition(&self) -> f64 {
-        let cnr = |c: &Circle<T>| c.centre_normal_radius().map(|(c, n, r)| (c.map(|x| x.to_f64()), n.map(|x| x.to_f64()), r.to_f64()));
+        let cnr = |c: &Circle<T>| {
+            c.centre_normal_radius().map(|(c, n, r)| (c.map(|x| x.to_f64()), n.map(|x| x.to_f64()), r.to_f64()))
+        };
         let (Ok((a, n1, r1)), Ok((b, n2, r2))) = (cnr(&self.c1), cnr(&self.c2)) else { return f64::INFINITY };
         let r = r1.min(r2);
         let turn = norm(cross(n1, n2)).atan2(dot(n1, n2).abs());

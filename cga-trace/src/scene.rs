@@ -364,7 +364,8 @@ fn build_camera(c: CameraSpec, anchors: Vec<E3>) -> Result<(Camera, Frame), Stri
     // In its own frame the camera only turns: M = T R, and R is M's scalar and e_jk parts.
     let turn = Rotor { s: pose.s, e12: pose.e12, e13: pose.e13, e23: pose.e23 };
     let turn = Motor::from(turn.try_normalise().ok_or("the motor has no rotation part")?);
-    let camera = Camera::new(turn, c.focal_length, x_max, y_max, c.width, c.height).map_err(|e: CameraError| e.to_string())?;
+    let camera =
+        Camera::new(turn, c.focal_length, x_max, y_max, c.width, c.height).map_err(|e: CameraError| e.to_string())?;
     Ok((camera, frame))
 }
 
@@ -441,7 +442,8 @@ fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method, frame: &Frame) -> Res
     let (c2, n2, r2) = circle(c2, frame).map_err(|e| format!("c2: {e}"))?;
     let origin = [0, 1, 2].map(|k| 0.5 * (c1[k] + c2[k]));
     let local = |c: E3, n, r| cga_core::Circle::from_centre_normal_radius(sub(c, origin), n, r).map_err(geometry);
-    let (c1, c2) = (local(c1, n1, r1).map_err(|e| format!("c1: {e}"))?, local(c2, n2, r2).map_err(|e| format!("c2: {e}"))?);
+    let (c1, c2) =
+        (local(c1, n1, r1).map_err(|e| format!("c1: {e}"))?, local(c2, n2, r2).map_err(|e| format!("c2: {e}"))?);
     EvolvedSurface::in_frame(origin, c1, c2, method).map_err(|e| e.to_string())
 }
 

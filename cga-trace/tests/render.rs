@@ -71,7 +71,8 @@ fn shadows_fall_behind_blockers_and_stop_at_the_light() {
         "{base}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 20.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n"
     );
     // Meets the floor at the origin (all three scenes share the camera, so the frame).
-    let trace = |s: &Scene| Renderer::new(s).trace(&Ray::new(s.frame.point([0.0, -3.0, 3.0]), [0.0, 3.0, -3.0]).unwrap(), 0);
+    let trace =
+        |s: &Scene| Renderer::new(s).trace(&Ray::new(s.frame.point([0.0, -3.0, 3.0]), [0.0, 3.0, -3.0]).unwrap(), 0);
     let lit = trace(&scene(base));
     let shadowed = trace(&scene(&with_ball));
     let far = trace(&scene(&beyond));

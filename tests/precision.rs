@@ -1,0 +1,334 @@
+//! Precision anywhere: classification that no translation or scaling changes, constructors
+//! at the accuracy the null basis allows, and named refusals where f64 cannot deliver.
+//!
+//! References we did not write: exact Euclidean formulas (glam-style, on the inputs), and
+//! for interpolation and normals the same generic code run in double-double arithmetic
+//! (`twofloat`, about 32 digits), which measures f64's rounding.
+//!
+//! `cargo test --test precision -- --ignored --nocapture` prints the tables of
+//! docs/STABILITY.md.
+
+mod common;
+
+use cga::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga::{Circle, Disk, GeometryError, Hit, InterpolationError, Line, NormalError, Pair, Plane, Real, Sphere, up};
+use common::Rng;
+use common::dd::{Dd, dd3, f3};
+
+const EPS: f64 = f64::EPSILON;
+
+/// A line at distance `h` from `c`, along a random direction, through a random point of it.
+fn line_at(rng: &mut Rng, c: E3, h: f64, r: f64) -> (Line, E3) {
+    let d = rng.direction();
+    let off = unit(cross(d, rng.direction())).unwrap();
+    let p = add(add(c, scale(off, h)), scale(d, r * rng.range(-5.0, 5.0)));
+    (Line::from_point_direction(p, d).unwrap(), d)
+}
+
+/// The documented band of `RoundMeet::new`: `(32 + 4 (1 + ρ)²) ε r`.
+fn band(rho: f64) -> f64 {
+    (32.0 + 4.0 * (1.0 + rho).powi(2)) * EPS
+}
+
+#[test]
+fn sphere_meets_are_classified_alike_anywhere_and_at_any_scale() {
+    let mut rng = Rng::new(11);
+    let (mut checked, mut sharp, mut outside_band_wrong) = (0, 0, Vec::new());
+    for _ in 0..20_000 {
+        let (distance, r) = (rng.decades(0.0, 6.0), rng.decades(-4.0, 4.0));
+        let c = scale(rng.direction(), distance);
+        // Half the lines near tangency (within 1e-3 r), half anywhere within 2 r.
+        let h = if rng.unit() < 0.5 { r * (1.0 + rng.range(-1e-3, 1e-3)) } else { r * rng.range(0.0, 2.0) };
+        let (line, _) = line_at(&mut rng, c, h, r);
+        let sphere = Sphere::from_centre_radius(c, r).unwrap();
+        let hit = line.meet_sphere(&sphere).hit;
+        let euclid = if h < r { Hit::Two } else { Hit::Miss };
+        let rho = distance / r;
+        let w = band(rho);
+        checked += 1;
+        sharp += usize::from(w < 1e-3);
+        if hit != euclid && (h - r).abs() > w * r {
+            outside_band_wrong.push(format!("|c| {distance:e}, r {r:e}, h/r − 1 = {:e}: {hit:?}", h / r - 1.0));
+        }
+    }
+    assert!(
+        outside_band_wrong.is_empty(),
+        "{} misclassified outside the band: {:#?}",
+        outside_band_wrong.len(),
+        &outside_band_wrong[..outside_band_wrong.len().min(10)]
+    );
+    assert!(sharp > checked / 2, "the band was narrow (< 1e-3 r) in only {sharp} of {checked} cases");
+}
+
+#[test]
+fn the_same_configuration_moved_and_scaled_is_classified_the_same() {
+    // Lines 1e-9 r off tangency, inside and out: beyond the band near the origin, so the
+    // classification must be the Euclidean one there and wherever the band stays narrower.
+    let mut rng = Rng::new(12);
+    for _ in 0..2000 {
+        let inside = rng.unit() < 0.5;
+        let h = if inside { 1.0 - 1e-9 } else { 1.0 + 1e-9 };
+        let want = if inside { Hit::Two } else { Hit::Miss };
+        let (d, off) = (rng.direction(), rng.direction());
+        let off = unit(cross(d, off)).unwrap();
+        for (shift, size) in [(0.0, 1.0), (1e-4, 1e-4), (1.0, 1e4), (10.0, 1.0), (100.0, 1e2), (3e3, 1e4), (1e6, 1e5)] {
+            let c = scale([1.0, 1.0, 1.0], shift);
+            let p = add(c, scale(off, h * size));
+            let line = Line::from_point_direction(p, d).unwrap();
+            let meet = line.meet_sphere(&Sphere::from_centre_radius(c, size).unwrap());
+            assert!(band(norm(c) / size) < 1e-9);
+            assert_eq!(meet.hit, want, "shift {shift}, size {size}, inside {inside}");
+        }
+    }
+}
+
+#[test]
+fn plane_meets_are_classified_by_angle_alone() {
+    let mut rng = Rng::new(13);
+    for _ in 0..5000 {
+        let (distance, size) = (rng.decades(0.0, 6.0), rng.decades(-4.0, 4.0));
+        let c = scale(rng.direction(), distance);
+        let n = rng.direction();
+        let plane = Plane::from_point_normal(c, n).unwrap();
+        // Exactly parallel (in the plane's own axes): no crossing, at any place and scale.
+        let u = perpendicular(n);
+        let p = add(c, scale(n, size));
+        assert_eq!(Line::from_point_direction(p, u).unwrap().meet_plane(&plane), None);
+        // At an angle well above the band (|d·n| ≥ 1e-10): a crossing, where Euclid puts it.
+        let sine = rng.decades(-10.0, 0.0);
+        let d = add(scale(u, (1.0 - sine * sine).sqrt()), scale(n, -sine));
+        let x = Line::from_point_direction(p, d).unwrap().meet_plane(&plane).expect("crosses");
+        let want = add(p, scale(d, size / sine));
+        let err = norm(sub(x, want)) / (norm(want) + size / sine);
+        assert!(err < 1e-6, "crossing off by {err:e} (sine {sine:e})");
+    }
+}
+
+#[test]
+fn disks_keep_their_rim_anywhere() {
+    let mut rng = Rng::new(14);
+    for _ in 0..5000 {
+        let (distance, r) = (rng.decades(0.0, 6.0), rng.decades(-4.0, 4.0));
+        let (c, n) = (scale(rng.direction(), distance), rng.direction());
+        let disk = Disk::from_centre_normal_radius(c, n, r).unwrap();
+        assert_eq!((disk.centre, disk.radius), (c, r), "kept exactly");
+        // A line through the plane at 1 ± 1e-6 radii from the centre: the rim test may err
+        // only within the crossing's own rounding, ε (|x| + r).
+        let u = perpendicular(n);
+        for (k, want) in [(1.0 - 1e-6, true), (1.0 + 1e-6, false)] {
+            let x = add(c, scale(u, k * r));
+            let line = Line::from_point_direction(add(x, scale(n, r)), scale(n, -1.0)).unwrap();
+            let got = line.meet_disk(&disk).is_some();
+            if (distance + r) * 64.0 * EPS < 1e-6 * r {
+                assert_eq!(got, want, "|c| {distance:e}, r {r:e}, at {k} radii");
+            }
+        }
+    }
+}
+
+/// Relative error of a circle's read-back centre, radius and normal against its parameters.
+fn circle_error(c: &Circle, (centre, n, r): (E3, E3, f64)) -> f64 {
+    match c.centre_normal_radius() {
+        Ok((c2, n2, r2)) => {
+            let angle = norm(cross(n, n2)).atan2(dot(n, n2).abs());
+            (norm(sub(c2, centre)) / r).max((r2 - r).abs() / r).max(angle)
+        }
+        Err(_) => f64::INFINITY,
+    }
+}
+
+/// The circle of `(c, n, r)` through three of its points, as constructors built it before.
+fn circle_through_points((c, n, r): (E3, E3, f64)) -> Circle {
+    let u = scale(perpendicular(unit(n).unwrap()), r);
+    let v = cross(unit(n).unwrap(), u);
+    Circle::through(add(c, u), add(c, v), sub(c, u)).unwrap()
+}
+
+/// Worst read-back error of circles at `ρ = |c|/r` over random placements and sizes.
+fn circle_errors(rng: &mut Rng, rho: f64, samples: usize) -> (f64, f64) {
+    let (mut closed, mut points) = (0.0f64, 0.0f64);
+    for _ in 0..samples {
+        let r = rng.decades(-3.0, 3.0);
+        let p = (scale(rng.direction(), rho * r), rng.direction(), r);
+        closed = closed.max(circle_error(&Circle::from_centre_normal_radius(p.0, p.1, p.2).unwrap(), p));
+        points = points.max(circle_error(&circle_through_points(p), p));
+    }
+    (closed, points)
+}
+
+#[test]
+fn circles_from_parameters_lose_only_eps_rho_squared() {
+    let mut rng = Rng::new(15);
+    for rho in [1.0, 1e2, 1e4, 1e6] {
+        let (closed, _) = circle_errors(&mut rng, rho, 300);
+        assert!(closed <= 16.0 * EPS * (1.0 + rho).powi(2), "ρ = {rho:e}: {closed:e}");
+    }
+    // Spheres and their read-back likewise.
+    for rho in [1.0, 1e2, 1e4, 1e6] {
+        let (c, r) = (scale(rng.direction(), rho * 3.0), 3.0);
+        let (c2, r2) = Sphere::from_centre_radius(c, r).unwrap().centre_radius().unwrap();
+        let err = (norm(sub(c2, c)) / r).max((r2 - r).abs() / r);
+        assert!(err <= 16.0 * EPS * (1.0 + rho).powi(2), "sphere ρ = {rho:e}: {err:e}");
+    }
+}
+
+/// Unit-ish circles at distance `d` from the origin, as a pair.
+fn far_pair(d: f64) -> ((E3, E3, f64), (E3, E3, f64)) {
+    let c1 = [d, 0.3 * d, -0.2 * d];
+    ((c1, [0.0, 0.2, 1.0], 1.0), (add(c1, [0.5, 0.2, 2.0]), [0.3, -0.1, 1.0], 1.5))
+}
+
+fn pair_f64(a: (E3, E3, f64), b: (E3, E3, f64)) -> Result<Pair<Circle>, InterpolationError> {
+    Pair::new(
+        Circle::from_centre_normal_radius(a.0, a.1, a.2).unwrap(),
+        Circle::from_centre_normal_radius(b.0, b.1, b.2).unwrap(),
+    )
+}
+
+fn pair_dd(a: (E3, E3, f64), b: (E3, E3, f64)) -> Pair<Circle<Dd>> {
+    let c = |p: (E3, E3, f64)| Circle::<Dd>::from_centre_normal_radius(dd3(p.0), dd3(p.1), Dd::from_f64(p.2)).unwrap();
+    Pair::new_unchecked(c(a), c(b)).unwrap()
+}
+
+/// `(centre/radius error of C_½, normal angle error)` of an f64 pair against double-double.
+fn interpolation_errors(p: &Pair<Circle>, q: &Pair<Circle<Dd>>) -> (f64, f64) {
+    let (bc, bn, br) = q.at(Dd::from_f64(0.5)).unwrap().centre_normal_radius().unwrap();
+    let (bc, bn, br) = (f3(bc), f3(bn), br.hi());
+    let Ok(Ok((ac, _, ar))) = p.at(0.5).map(|c| c.centre_normal_radius()) else {
+        return (f64::INFINITY, f64::INFINITY);
+    };
+    let x = add(bc, scale(perpendicular(bn), br));
+    let normal = match (p.normal_parts(0.5, x), q.normal(Dd::from_f64(0.5), dd3(x))) {
+        (Ok(parts), Ok(want)) => parts.normal_line.direction().map_or(f64::INFINITY, |n| norm(cross(n, f3(want)))),
+        _ => f64::INFINITY,
+    };
+    ((norm(sub(ac, bc)) / br).max((ar - br).abs() / br), normal)
+}
+
+#[test]
+fn interpolation_far_away_is_refused_by_name_and_the_estimate_bounds_the_error() {
+    // The issue's case: unit circles at |c| = 1.5e5 came back Ok with a radius 10× off.
+    let (a, b) = far_pair(1.5e5);
+    assert!(matches!(pair_f64(a, b), Err(InterpolationError::IllConditioned { .. })));
+    // A tiny circle paired with a unit one (the issue: off by 3.5, silently).
+    let tiny = pair_f64(([0.0; 3], [0.0, 0.0, 1.0], 1e-6), ([0.3, 0.1, 1.0], [0.2, 0.0, 1.0], 1.0));
+    assert!(matches!(tiny, Err(InterpolationError::IllConditioned { .. })), "{tiny:?}");
+    // Wherever the pair is accepted, the estimate bounds the error of C_½ and of the normal.
+    for d in [1.0, 10.0, 100.0, 300.0, 1e3, 3e3, 6e3] {
+        let (a, b) = far_pair(d);
+        let Ok(p) = pair_f64(a, b) else { continue };
+        let (circle, normal) = interpolation_errors(&p, &pair_dd(a, b));
+        let estimate = p.condition() + 4.0 * EPS;
+        assert!(circle <= estimate && normal <= estimate, "d {d:e}: errors {circle:e}, {normal:e} > {estimate:e}");
+    }
+}
+
+#[test]
+fn normals_say_when_they_cannot_be_trusted() {
+    let a = ([1.0, 2.0, 3.0], [0.2, 0.3, 1.0], 1.5);
+    // Nearly identical circles: Ċ is rounding noise.
+    let b = ([1.0 + 1e-15, 2.0, 3.0], [0.2, 0.3, 1.0], 1.5 + 1e-15);
+    let p = pair_f64(a, b).unwrap();
+    let (c, n, r) = p.at(0.5).unwrap().centre_normal_radius().unwrap();
+    let x = add(c, scale(perpendicular(n), r));
+    assert!(matches!(p.normal(0.5, x), Err(NormalError::IllConditioned { .. })));
+    // 1e-3 apart: fine, and a point off the circle is refused.
+    let b = ([1.0 + 1e-3, 2.0, 3.0], [0.2, 0.3, 1.0], 1.5 + 1e-3);
+    let p = pair_f64(a, b).unwrap();
+    let (c, n, r) = p.at(0.5).unwrap().centre_normal_radius().unwrap();
+    let x = add(c, scale(perpendicular(n), r));
+    assert!(p.normal(0.5, x).is_ok());
+    let off = add(x, scale(n, 1e-3 * r));
+    assert!(matches!(p.normal(0.5, off), Err(NormalError::OffCircle { distance }) if (distance - 1e-3).abs() < 1e-6));
+}
+
+#[test]
+fn huge_coordinates_give_named_errors_never_nan() {
+    let big = 1e154;
+    let line = Line::through([big, 0.0, 0.0], [big, big, 0.0]).unwrap();
+    assert!(line.to_array().iter().all(|x| x.is_finite()), "{line:?}");
+    assert_eq!(line.direction().unwrap(), [0.0, 1.0, 0.0]);
+    assert_eq!(Line::through([1e308, 0.0, 0.0], [-1e308, 0.0, 0.0]), Err(GeometryError::Overflow));
+    let plane = Plane::through([big, 0.0, 0.0], [big, big, 0.0], [big, 0.0, big]).unwrap();
+    assert!(plane.to_array().iter().all(|x| x.is_finite()));
+    let sphere = Sphere::from_centre_radius([big, 0.0, 0.0], 1.0).unwrap();
+    assert!(sphere.to_array().iter().all(|x| x.is_finite()));
+    assert_eq!(Sphere::from_centre_radius([2.0 * big, 0.0, 0.0], 1.0), Err(GeometryError::Overflow));
+    let huge = 2.0 * big;
+    assert_eq!(Circle::through([huge, 0.0, 0.0], [0.0, huge, 0.0], [0.0, 0.0, huge]), Err(GeometryError::Overflow));
+    assert_eq!(Circle::from_centre_normal_radius([huge, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0), Err(GeometryError::Overflow));
+    assert!(up::<f64>([huge, 0.0, 0.0]).ei.is_infinite(), "up itself overflows: constructors must catch it");
+}
+
+/// The tables of docs/STABILITY.md.
+#[test]
+#[ignore = "prints the tables of docs/STABILITY.md"]
+fn stability_tables() {
+    let mut rng = Rng::new(16);
+    println!("### Circles from centre, normal, radius: read-back error against ρ = |c|/r\n");
+    println!("| ρ | before: through three points | after: S ∨ Π (closed form) | ε ρ² | f32, after |");
+    println!("|---|---|---|---|---|");
+    for rho in [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6] {
+        let (closed, points) = circle_errors(&mut rng, rho, 200);
+        let f32_err = {
+            let (c, n, r) = (scale(rng.direction(), rho), rng.direction(), 1.0);
+            let t = |v: E3| v.map(|x| x as f32);
+            match Circle::<f32>::from_centre_normal_radius(t(c), t(n), r as f32).and_then(|k| k.centre_normal_radius())
+            {
+                Ok((c2, n2, r2)) => {
+                    let f = |v: [f32; 3]| v.map(f64::from);
+                    (norm(sub(f(c2), c)) / r).max((f64::from(r2) - r).abs() / r).max(norm(cross(f(n2), n)))
+                }
+                Err(_) => f64::INFINITY,
+            }
+        };
+        println!("| {rho:.0e} | {points:.1e} | {closed:.1e} | {:.1e} | {f32_err:.1e} |", EPS * rho * rho);
+    }
+    println!("\n### Line ∨ sphere: error of P² = (r² − d²)/r² against ρ (distances 1…1e6, radii 1e-4…1e4)\n");
+    println!("| ρ | max \\|P² − (r² − d²)/r²\\| | / ε(1 + ρ)² | band \\|d − r\\|/r |");
+    println!("|---|---|---|---|");
+    for rho in [1.0, 1e2, 1e4, 1e6, 1e8] {
+        let mut worst = 0.0f64;
+        for _ in 0..500 {
+            let r = rng.decades(-4.0, 4.0);
+            let c = scale(rng.direction(), rho * r);
+            let h = r * rng.range(0.5, 1.5);
+            let (line, _) = line_at(&mut rng, c, h, r);
+            let m = line.meet_sphere(&Sphere::from_centre_radius(c, r).unwrap());
+            worst = worst.max((m.square - (r * r - h * h) / (r * r)).abs());
+        }
+        println!("| {rho:.0e} | {worst:.1e} | {:.2} | {:.1e} |", worst / (EPS * (1.0 + rho).powi(2)), band(rho));
+    }
+    println!("\n### Interpolation C_½ and its normal against ρ (unit circles at distance d), f64 vs double-double\n");
+    println!("| d | C_½ centre/radius | normal (rad) | `Pair::condition` | `Pair::new` |");
+    println!("|---|---|---|---|---|");
+    for d in [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1.5e5] {
+        let (a, b) = far_pair(d);
+        let unchecked = Pair::new_unchecked(
+            Circle::from_centre_normal_radius(a.0, a.1, a.2).unwrap(),
+            Circle::from_centre_normal_radius(b.0, b.1, b.2).unwrap(),
+        )
+        .unwrap();
+        let (circle, normal) = interpolation_errors(&unchecked, &pair_dd(a, b));
+        let checked = match pair_f64(a, b) {
+            Ok(_) => "Ok".to_string(),
+            Err(e) => format!("{e:?}").split(' ').next().unwrap_or("").to_string(),
+        };
+        println!("| {d:.1e} | {circle:.1e} | {normal:.1e} | {:.1e} | {checked} |", unchecked.condition());
+    }
+    println!("\n### Normal of nearly identical circles against their difference Δ\n");
+    println!("| Δ | normal error (rad), unchecked | `normal_condition` | `Pair::normal` |");
+    println!("|---|---|---|---|");
+    for delta in [1e-3, 1e-6, 1e-8, 1e-10, 1e-12, 1e-15] {
+        let a = ([1.0, 2.0, 3.0], [0.2, 0.3, 1.0], 1.5);
+        let b = ([1.0 + delta, 2.0, 3.0 - delta], [0.2, 0.3 + delta, 1.0], 1.5 + delta);
+        let p = pair_f64(a, b).unwrap();
+        let (_, normal) = interpolation_errors(&p, &pair_dd(a, b));
+        let (c, n, r) = p.at(0.5).unwrap().centre_normal_radius().unwrap();
+        let checked = match p.normal(0.5, add(c, scale(perpendicular(n), r))) {
+            Ok(_) => "Ok".to_string(),
+            Err(e) => format!("{e:?}").split(' ').next().unwrap_or("").to_string(),
+        };
+        println!("| {delta:.0e} | {normal:.1e} | {:.1e} | {checked} |", p.normal_condition());
+    }
+}
