@@ -285,23 +285,40 @@ fn stability_tables() {
         println!("| {rho:.0e} | {points:.1e} | {closed:.1e} | {:.1e} | {f32_err:.1e} |", EPS * rho * rho);
     }
     println!("\n### Line ∨ sphere: error of P² = (r² − d²)/r² against ρ (distances 1…1e6, radii 1e-4…1e4)\n");
-    println!("| ρ | max \\|P² − (r² − d²)/r²\\| | / ε(1 + ρ)² | band \\|d − r\\|/r |");
-    println!("|---|---|---|---|");
+    println!(
+        "| ρ | max \\|P² − (r² − d²)/r²\\| | / ε(1 + ρ)² | band \\|d − r\\|/r | misclassified, before (64 ε Σ P_k²) | misclassified, after |"
+    );
+    println!("|---|---|---|---|---|---|");
     for rho in [1.0, 1e2, 1e4, 1e6, 1e8] {
-        let mut worst = 0.0f64;
-        for _ in 0..500 {
+        let (mut worst, mut before, mut after) = (0.0f64, 0, 0);
+        for _ in 0..1000 {
             let r = rng.decades(-4.0, 4.0);
             let c = scale(rng.direction(), rho * r);
             let h = r * rng.range(0.5, 1.5);
             let (line, _) = line_at(&mut rng, c, h, r);
             let m = line.meet_sphere(&Sphere::from_centre_radius(c, r).unwrap());
             worst = worst.max((m.square - (r * r - h * h) / (r * r)).abs());
+            let euclid = if h < r { Hit::Two } else { Hit::Miss };
+            // The rule before: tangent when |P²| ≤ 64 ε Σ (coefficients of P)².
+            let size: f64 = m.pair.to_array().iter().map(|x| x * x).sum();
+            let old = if m.square.abs() <= 64.0 * EPS * size {
+                Hit::Tangent
+            } else if m.square > 0.0 {
+                Hit::Two
+            } else {
+                Hit::Miss
+            };
+            before += usize::from(old != euclid);
+            after += usize::from(m.hit != euclid);
         }
-        println!("| {rho:.0e} | {worst:.1e} | {:.2} | {:.1e} |", worst / (EPS * (1.0 + rho).powi(2)), band(rho));
+        let w = worst / (EPS * (1.0 + rho).powi(2));
+        println!("| {rho:.0e} | {worst:.1e} | {w:.2} | {:.1e} | {before} / 1000 | {after} / 1000 |", band(rho));
     }
     println!("\n### Interpolation C_½ and its normal against ρ (unit circles at distance d), f64 vs double-double\n");
-    println!("| d | C_½ centre/radius | normal (rad) | `Pair::condition` | `Pair::new` |");
-    println!("|---|---|---|---|---|");
+    println!(
+        "| d | before: three-point circles | C_½ centre/radius | normal (rad) | f32 C_½ | `Pair::condition` | `Pair::new` |"
+    );
+    println!("|---|---|---|---|---|---|---|");
     for d in [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1.5e5] {
         let (a, b) = far_pair(d);
         let unchecked = Pair::new_unchecked(
@@ -309,12 +326,32 @@ fn stability_tables() {
             Circle::from_centre_normal_radius(b.0, b.1, b.2).unwrap(),
         )
         .unwrap();
-        let (circle, normal) = interpolation_errors(&unchecked, &pair_dd(a, b));
+        let reference = pair_dd(a, b);
+        let (circle, normal) = interpolation_errors(&unchecked, &reference);
+        let old = Pair::new_unchecked(circle_through_points(a), circle_through_points(b)).unwrap();
+        let (before, _) = interpolation_errors(&old, &reference);
+        let f32_err = {
+            let t = |p: (E3, E3, f64)| {
+                Circle::<f32>::from_centre_normal_radius(p.0.map(|x| x as f32), p.1.map(|x| x as f32), p.2 as f32)
+            };
+            let (bc, _, br) = reference.at(Dd::from_f64(0.5)).unwrap().centre_normal_radius().unwrap();
+            let got = t(a).and_then(|x| Ok((x, t(b)?))).ok().and_then(|(x, y)| Pair::new_unchecked(x, y).ok());
+            match got.map(|p| p.at(0.5f32).map(|c| c.centre_normal_radius())) {
+                Some(Ok(Ok((c, _, r)))) => {
+                    let c = c.map(f64::from);
+                    (norm(sub(c, f3(bc))) / br.hi()).max((f64::from(r) - br.hi()).abs() / br.hi())
+                }
+                _ => f64::INFINITY,
+            }
+        };
         let checked = match pair_f64(a, b) {
             Ok(_) => "Ok".to_string(),
             Err(e) => format!("{e:?}").split(' ').next().unwrap_or("").to_string(),
         };
-        println!("| {d:.1e} | {circle:.1e} | {normal:.1e} | {:.1e} | {checked} |", unchecked.condition());
+        println!(
+            "| {d:.1e} | {before:.1e} | {circle:.1e} | {normal:.1e} | {f32_err:.1e} | {:.1e} | {checked} |",
+            unchecked.condition()
+        );
     }
     println!("\n### Normal of nearly identical circles against their difference Δ\n");
     println!("| Δ | normal error (rad), unchecked | `normal_condition` | `Pair::normal` |");

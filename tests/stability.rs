@@ -60,11 +60,10 @@ fn sweep_unchecked(a: Params, b: Params) -> Report {
     sweep_with(a, b, Pair::new_unchecked)
 }
 
-fn sweep_with(
-    a: Params,
-    b: Params,
-    make: fn(Circle<f64>, Circle<f64>) -> Result<Pair<Circle<f64>>, InterpolationError>,
-) -> Report {
+/// How a sweep makes its pair: checked or not.
+type MakePair = fn(Circle<f64>, Circle<f64>) -> Result<Pair<Circle<f64>>, InterpolationError>;
+
+fn sweep_with(a: Params, b: Params, make: MakePair) -> Report {
     let mut r = Report { f64_error: 0.0, f32_error: 0.0, normal_error: 0.0, named: Vec::new() };
     let pair64 = match make(circle::<f64>(a), circle::<f64>(b)) {
         Ok(p) => p,

@@ -91,7 +91,7 @@ impl<T: Real> Pair<Circle<T>> {
     pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
         let limit = crate::interpolate::accuracy::<T>();
         let estimate = self.normal_condition();
-        if !(estimate <= limit) {
+        if estimate.is_nan() || estimate > limit {
             return Err(NormalError::IllConditioned { estimate });
         }
         let parts = self.normal_parts(alpha, x)?;
@@ -100,7 +100,7 @@ impl<T: Real> Pair<Circle<T>> {
         let along = dot(d, n);
         let across = norm(sub(d, scale(n, along)));
         let distance = ((along * along + (across - r) * (across - r)).sqrt() / r).to_f64();
-        if !(distance <= limit) {
+        if distance.is_nan() || distance > limit {
             return Err(NormalError::OffCircle { distance });
         }
         Ok(parts.normal_line.direction()?)

@@ -244,7 +244,7 @@ impl<X> Pair<X> {
     {
         let pair = Self::new_unchecked(c1, c2)?;
         let estimate = pair.condition();
-        if !(estimate <= accuracy::<T>()) {
+        if estimate.is_nan() || estimate > accuracy::<T>() {
             return Err(InterpolationError::IllConditioned { estimate });
         }
         Ok(pair)

@@ -46,7 +46,9 @@ impl Similarity {
     fn apply(&self, scene: &mut Table) {
         let camera = scene["camera"].as_table_mut().expect("[camera]");
         for key in ["position", "look_at"] {
-            camera.get_mut(key).map(|v| self.point(v));
+            if let Some(v) = camera.get_mut(key) {
+                self.point(v);
+            }
         }
         assert!(!camera.contains_key("motor"), "shipped scenes place the camera by position and look_at");
         if let Some(Value::Table(render)) = scene.get_mut("render")
@@ -61,14 +63,20 @@ impl Similarity {
         for object in scene.get_mut("objects").and_then(Value::as_array_mut).into_iter().flatten() {
             let object = object.as_table_mut().expect("an object table");
             for key in ["centre", "point"] {
-                object.get_mut(key).map(|v| self.point(v));
+                if let Some(v) = object.get_mut(key) {
+                    self.point(v);
+                }
             }
-            object.get_mut("radius").map(|v| self.length(v));
+            if let Some(v) = object.get_mut("radius") {
+                self.length(v);
+            }
             if let Some(Value::Array(corners)) = object.get_mut("corners") {
                 corners.iter_mut().for_each(|c| self.point(c));
             }
             for key in ["c1", "c2"] {
-                object.get_mut(key).and_then(Value::as_table_mut).map(|c| self.circle(c));
+                if let Some(c) = object.get_mut(key).and_then(Value::as_table_mut) {
+                    self.circle(c);
+                }
             }
         }
     }
