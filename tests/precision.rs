@@ -369,3 +369,49 @@ fn stability_tables() {
         println!("| {delta:.0e} | {normal:.1e} | {:.1e} | {checked} |", p.normal_condition());
     }
 }
+
+#[test]
+fn circle_meets_are_classified_alike_anywhere_and_at_any_scale() {
+    let mut rng = Rng::new(17);
+    let (mut wrong, mut sharp, mut total) = (Vec::new(), 0, 0);
+    for k in 0..10_000 {
+        let (distance, r) = (rng.decades(0.0, 6.0), rng.decades(-4.0, 4.0));
+        let (c, n) = (scale(rng.direction(), distance), rng.direction());
+        let circle = Circle::from_centre_normal_radius(c, n, r).unwrap();
+        let u = perpendicular(n);
+        let rho = distance / r;
+        if k % 10 == 0 {
+            // In the circle's plane, at distance h from the centre: two points, or none.
+            let h = r * rng.range(0.0, 2.0);
+            let p = add(c, scale(u, h));
+            let line = Line::from_point_direction(p, cross(n, u)).unwrap();
+            let want = if h < r { Hit::Two } else { Hit::Miss };
+            let got = line.meet_circle_classified(&circle).hit;
+            if got != want && (h - r).abs() > band(rho) * r {
+                wrong.push(format!("in plane: |c| {distance:e} r {r:e} h/r {}: {got:?}", h / r));
+            }
+            // Parallel to the plane, 0.1 r off it: no meet (where that is beyond rounding).
+            let above = Line::from_point_direction(add(p, scale(n, 0.1 * r)), cross(n, u)).unwrap();
+            if 64.0 * EPS * (1.0 + rho).powi(2) < 0.1 {
+                assert_eq!(above.meet_circle_classified(&circle).hit, Hit::Miss, "|c| {distance:e}, r {r:e}");
+            }
+            continue;
+        }
+        // Crossing the plane at distance x from the centre, at angle θ to it.
+        let x = if rng.unit() < 0.5 { r * (1.0 + rng.range(-1e-3, 1e-3)) } else { r * rng.range(0.0, 2.0) };
+        let sine = rng.range(0.1, 1.0);
+        let d = add(scale(n, sine), scale(cross(n, u), (1.0 - sine * sine).sqrt()));
+        let at = add(c, scale(u, x));
+        let line = Line::from_point_direction(add(at, scale(d, r * rng.range(-3.0, 3.0))), d).unwrap();
+        let want = if x < r { Hit::Two } else { Hit::Miss };
+        let got = line.meet_circle_classified(&circle).hit;
+        let w = band(rho) / (sine * sine);
+        total += 1;
+        sharp += usize::from(w < 1e-3);
+        if got != want && (x - r).abs() > w * r {
+            wrong.push(format!("|c| {distance:e} r {r:e} x/r − 1 = {:e}, sin θ {sine}: {got:?}", x / r - 1.0));
+        }
+    }
+    assert!(wrong.is_empty(), "{} misclassified outside the band: {:#?}", wrong.len(), &wrong[..wrong.len().min(10)]);
+    assert!(sharp > total / 2, "the band was narrow in only {sharp} of {total} cases");
+}

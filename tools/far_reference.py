@@ -18,6 +18,7 @@ import json
 import os
 import random
 
+import mpmath
 from mpmath import mp, mpf, sqrt
 
 mp.dps = 50
@@ -133,6 +134,16 @@ def centre_radius(c):
     return centre, sqrt(r2)
 
 
+def carrier_normal(c):
+    """Unit normal of the plane C ^ einf, from its dual -lambda (n + delta einf)."""
+    plane = outer(c, EINF)
+    i5 = {31: mpf(1)}
+    dual = grade(gp(plane, scale(i5, -1)), 1)
+    v = [-dual.get(1 << i, mpf(0)) for i in range(3)]
+    length = sqrt(sum(x * x for x in v))
+    return [x / length for x in v]
+
+
 def dense(x):
     return [float(x.get(b, 0)) for b in BLADES]
 
@@ -150,7 +161,7 @@ def main():
         c2 = [c1[i] + gap * rng.uniform(-1, 1) for i in range(3)]
         n1 = [rng.uniform(-1, 1) for _ in range(3)]
         n2 = [rng.uniform(-1, 1) for _ in range(3)]
-        # Round the inputs to f64 first: the reference is exact for the numbers f64 holds.
+        # Round the inputs to f64 first.
         c1, c2, n1, n2 = [[float(v) for v in x] for x in (c1, c2, n1, n2)]
         r1, r2 = float(r1), float(r2)
         alpha = round(rng.uniform(0.05, 0.95), 6)
@@ -158,25 +169,39 @@ def main():
         C1, C2 = circle(m(c1), m(n1), mpf(r1)), circle(m(c2), m(n2), mpf(r2))
         if (scalar(gp(C1, reverse(C1))) < 0) != (scalar(gp(C1, reverse(C2))) < 0):
             C2 = scale(C2, -1)
+        # From the exact parameters: what a pipeline from centres, normals and radii should give.
+        exact_centre, exact_radius = centre_radius(interpolate(C1, C2, mpf(alpha)))
+        # The blades as f64 holds them are the inputs from here on: the reference is exact
+        # for those numbers, as clifford's files are for theirs. (Rounded coefficients are not
+        # exactly a blade, and interpolation amplifies that: these differ from the above.)
+        C1, C2 = [{b: mpf(v) for b, v in zip(BLADES, dense(x)) if v != 0} for x in (C1, C2)]
         s_full = scale(gp(*(lambda x: (x, reverse(x)))(add(C1, C2, weights=[1 - alpha, alpha]))), -1)
         s, q2 = scalar(s_full), scalar(gp(grade(s_full, 4), grade(s_full, 4)))
         if s * s - q2 < 0 or s + sqrt(s * s - q2) <= 0:
             continue  # no real root: not a reference case
         Ca = interpolate(C1, C2, mpf(alpha))
         centre, radius = centre_radius(Ca)
+        normal = carrier_normal(Ca)
         cases.append({
-            "c1": {"centre": c1, "normal": n1, "radius": r1},
-            "c2": {"centre": c2, "normal": n2, "radius": r2},
-            "alpha": alpha,
-            "C1": dense(C1), "C2_aligned": dense(C2), "C_alpha": dense(Ca),
-            "centre_alpha": [float(v) for v in centre], "radius_alpha": float(radius),
+            # The fields of shared/golden/interpolation.json, so the same test reads both:
+            # the blades rounded to f64 are the inputs; what follows is exact for them.
+            "c1": dense(C1), "c2": dense(C2), "alpha": alpha,
+            "x_alpha": dense(add(C1, C2, weights=[1 - mpf(alpha), mpf(alpha)])),
+            "c_alpha": dense(Ca),
+            "c_alpha_euc": {"centre": [float(v) for v in centre], "normal": [float(v) for v in normal],
+                            "radius": float(radius)},
+            # And the Euclidean parameters the blades were made from (C2 before alignment).
+            "params": {"c1": {"centre": c1, "normal": n1, "radius": r1},
+                       "c2": {"centre": c2, "normal": n2, "radius": r2},
+                       "c_alpha": {"centre": [float(v) for v in exact_centre], "radius": float(exact_radius)}},
         })
     out = {
-        "generator": "tools/far_reference.py (mpmath %s, %d digits; independent minimal G(4,1))" % (mp.__class__.__module__.split('.')[0], mp.dps),
+        "generator": "tools/far_reference.py (mpmath %s, %d digits; an independent minimal G(4,1))" % (mpmath.__version__, mp.dps),
         "blades": NAMES,
         "convention": "as shared/golden: up(x) = x + x^2/2 einf + eo, einf = e4 + e5, eo = (e5 - e4)/2; "
                       "blades normalised (X X~ = -1); C2 aligned to C1; X = (1 - alpha) C1 + alpha C2; C = K^-1 X",
         "ranges": "centres 1 ... 1e3 from the origin, radii 1e-2 ... 1e2",
+        "reference_digits": mp.dps,
         "cases": cases,
     }
     path = os.path.join(os.path.dirname(__file__), "..", "tests", "data", "far_interpolation.json")
