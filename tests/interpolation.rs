@@ -51,7 +51,7 @@ fn check_interpolation_file(file: &serde_json::Value, name: &str) -> (usize, f64
         let kappa = Pair::new_unchecked(c1, c2).unwrap().condition() + 64.0 * f64::EPSILON;
         // Typed from rounded coefficients, c1 and c2 are blades only to η, the 4-vector part
         // of C C̃ (a blade has none): no computation can place C_α better than that.
-        let eta = [c1, c2].iter().map(|c| residue(c)).fold(0.0, f64::max);
+        let eta = [c1, c2].iter().map(residue).fold(0.0, f64::max);
         let tol = if reference_in_f64 { 2.0 * kappa } else { kappa } + ETA_GAIN * eta;
         let at = |what: &str| format!("{name} case {n}: {what}");
         let x = c1 * (1.0 - alpha) + c2 * alpha;
