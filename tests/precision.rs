@@ -172,6 +172,33 @@ fn circles_from_parameters_lose_only_eps_rho_squared() {
     }
 }
 
+/// Worst end-point read-back error (relative to the half-distance `h`) of point pairs at
+/// `ρ = |midpoint|/h`: `(closed form, the wedge up(a) ∧ up(b))`.
+fn pair_errors(rng: &mut Rng, rho: f64, samples: usize) -> (f64, f64) {
+    let (mut closed, mut wedge) = (0.0f64, 0.0f64);
+    for _ in 0..samples {
+        let h = rng.decades(-3.0, 3.0);
+        let (m, d) = (scale(rng.direction(), rho * h), rng.direction());
+        let (a, b) = (add(m, scale(d, -h)), add(m, scale(d, h)));
+        let err = |p: cga::Bivector| match p.end_points() {
+            Ok([x, y]) => norm(sub(x, a)).max(norm(sub(y, b))) / h,
+            Err(_) => f64::INFINITY,
+        };
+        closed = closed.max(err(cga::Bivector::from_points(a, b).unwrap()));
+        wedge = wedge.max(err(up(a) ^ up(b)));
+    }
+    (closed, wedge)
+}
+
+#[test]
+fn point_pairs_from_points_lose_only_eps_rho_squared() {
+    let mut rng = Rng::new(18);
+    for rho in [1.0, 1e2, 1e4, 1e6] {
+        let (closed, _) = pair_errors(&mut rng, rho, 300);
+        assert!(closed <= 16.0 * EPS * (1.0 + rho).powi(2), "ρ = {rho:e}: {closed:e}");
+    }
+}
+
 /// Unit-ish circles at distance `d` from the origin, as a pair.
 fn far_pair(d: f64) -> ((E3, E3, f64), (E3, E3, f64)) {
     let c1 = [d, 0.3 * d, -0.2 * d];
@@ -283,6 +310,13 @@ fn stability_tables() {
             }
         };
         println!("| {rho:.0e} | {points:.1e} | {closed:.1e} | {:.1e} | {f32_err:.1e} |", EPS * rho * rho);
+    }
+    println!("\n### Point pairs from two points: end-point read-back error against ρ = |midpoint|/half-distance\n");
+    println!("| ρ | before: up(a) ∧ up(b) | after: L ∨ S (closed form) | ε ρ² |");
+    println!("|---|---|---|---|");
+    for rho in [1.0, 1e2, 1e4, 1e6] {
+        let (closed, wedge) = pair_errors(&mut rng, rho, 200);
+        println!("| {rho:.0e} | {wedge:.1e} | {closed:.1e} | {:.1e} |", EPS * rho * rho);
     }
     println!("\n### Line ∨ sphere: error of P² = (r² − d²)/r² against ρ (distances 1…1e6, radii 1e-4…1e4)\n");
     println!(

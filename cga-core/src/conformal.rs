@@ -289,9 +289,25 @@ impl<T: Real> Circle<T> {
 
 impl<T: Real> Bivector<T> {
     /// `up(a) ∧ up(b)`: the point pair of `a` and `b`.
+    ///
+    /// Built as the meet `L ∨ S` of the line from `a` to `b` and the sphere on their midpoint
+    /// through both — unit by construction (`L` and `S` are) and then given the weight of
+    /// the wedge, `|up(a) ∧ up(b)| = ½|a − b|²`, and its orientation (`ei ⌋ (A ∧ B) = A − B`).
+    /// The wedge itself multiplies `½|a|²` by `½|b|²`-sized terms and cancels them back to
+    /// `|a − b|²`, losing `ε ρ³` (`ρ = |a|/|a − b|`); this loses `ε ρ²`.
     pub fn from_points(a: E3<T>, b: E3<T>) -> Result<Self> {
         distinct(&[a, b])?;
-        Ok(up(a) ^ up(b))
+        let half = T::from_f64(0.5);
+        let d = sub(b, a);
+        let mid = [0, 1, 2].map(|k| half * (a[k] + b[k]));
+        let line = Line::from_point_direction(mid, d)?;
+        let sphere = Sphere::from_centre_radius(mid, half * norm(d))?;
+        let unit_pair = line & sphere;
+        // Orientation: ei ⌋ P has Euclidean part a − b for P = up(a) ∧ up(b).
+        let toward = crate::ei::<T>().lc(unit_pair);
+        let sign = if dot([toward.e1, toward.e2, toward.e3], d) < T::zero() { T::one() } else { -T::one() };
+        let pair = unit_pair.scale(sign * half * dot(d, d));
+        pair.to_array().iter().all(|x| x.is_finite()).then_some(pair).ok_or(GeometryError::Overflow)
     }
 
     /// The two points of a real point pair `P = A ∧ B`, in that order:
