@@ -9,7 +9,7 @@ use crate::ray::Ray;
 #[cfg(feature = "evolved")]
 use crate::surface::EvolvedSurface;
 use cga_core::euclid::{E3, cross, dot, norm, scale, sub, unit};
-use cga_core::{Disk, Hit as MeetHit, Plane, Sphere};
+use cga_core::{Disk, Hit as MeetHit, Plane, RoundMeet, Sphere};
 
 /// Where a ray crosses an object.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,19 +70,23 @@ impl Shape {
             let t = ray.t_of(*x);
             t > t_min && t < t_max
         };
+        // Rays and objects are normalised (unit direction; spheres and planes built so), so the
+        // meets are classified with weight 1, as `Line::meet_sphere` and `meet_plane` would
+        // after computing the two norms.
+        let flat = |plane: &Plane| (ray.line & *plane).point();
         let point = match self {
             Shape::Sphere { sphere, .. } => {
-                let meet = ray.line.meet_sphere(sphere);
+                let meet = RoundMeet::new(ray.line & *sphere, 1.0);
                 if meet.hit == MeetHit::Miss {
                     return None;
                 }
                 meet.points_along(ray.dir)?.into_iter().find(within)?
             }
-            Shape::Plane(plane) => ray.line.meet_plane(plane).filter(within)?,
-            Shape::Disk(disk) => ray.line.meet_disk(disk).filter(within)?,
-            Shape::Triangle { plane, corners } => {
-                ray.line.meet_plane(plane).filter(|x| within(x) && inside_triangle(*x, corners))?
+            Shape::Plane(plane) => flat(plane).filter(within)?,
+            Shape::Disk(disk) => {
+                flat(&disk.plane).filter(|x| within(x) && norm(sub(*x, disk.centre)) <= disk.radius)?
             }
+            Shape::Triangle { plane, corners } => flat(plane).filter(|x| within(x) && inside_triangle(*x, corners))?,
             #[cfg(feature = "evolved")]
             Shape::Evolved(surface) => return surface.intersect(ray, t_min, t_max),
         };
