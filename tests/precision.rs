@@ -137,31 +137,63 @@ fn circle_error(c: &Circle, (centre, n, r): (E3, E3, f64)) -> f64 {
     }
 }
 
-/// The circle of `(c, n, r)` through three of its points, as constructors built it before.
-fn circle_through_points((c, n, r): (E3, E3, f64)) -> Circle {
+/// Three points of the circle `(c, n, r)`, counter-clockwise about `n`.
+fn three_points((c, n, r): (E3, E3, f64)) -> [E3; 3] {
     let u = scale(perpendicular(unit(n).unwrap()), r);
     let v = cross(unit(n).unwrap(), u);
-    Circle::through(add(c, u), add(c, v), sub(c, u)).unwrap()
+    [add(c, u), add(c, v), sub(c, u)]
 }
 
-/// Worst read-back error of circles at `ρ = |c|/r` over random placements and sizes.
-fn circle_errors(rng: &mut Rng, rho: f64, samples: usize) -> (f64, f64) {
-    let (mut closed, mut points) = (0.0f64, 0.0f64);
+/// The circle of `(c, n, r)` as the wedge of three of its conformal points, as
+/// constructors built it before.
+fn circle_through_points(p: (E3, E3, f64)) -> Circle {
+    let [a, b, c] = three_points(p);
+    ((up(a) ^ up(b)) ^ up(c)).try_normalise().unwrap()
+}
+
+/// Worst read-back error of circles at `ρ = |c|/r` over random placements and sizes:
+/// `(from_centre_normal_radius, Circle::through, the wedge of three points)`.
+fn circle_errors(rng: &mut Rng, rho: f64, samples: usize) -> (f64, f64, f64) {
+    let (mut closed, mut through, mut wedge) = (0.0f64, 0.0f64, 0.0f64);
     for _ in 0..samples {
         let r = rng.decades(-3.0, 3.0);
         let p = (scale(rng.direction(), rho * r), rng.direction(), r);
         closed = closed.max(circle_error(&Circle::from_centre_normal_radius(p.0, p.1, p.2).unwrap(), p));
-        points = points.max(circle_error(&circle_through_points(p), p));
+        let [a, b, c] = three_points(p);
+        through = through.max(Circle::through(a, b, c).map_or(f64::INFINITY, |k| circle_error(&k, p)));
+        wedge = wedge.max(circle_error(&circle_through_points(p), p));
     }
-    (closed, points)
+    (closed, through, wedge)
+}
+
+/// Worst read-back error of spheres through four of their points at `ρ = |c|/r`:
+/// `(Sphere::through, the wedge of four points)`.
+fn sphere_errors(rng: &mut Rng, rho: f64, samples: usize) -> (f64, f64) {
+    let (mut through, mut wedge) = (0.0f64, 0.0f64);
+    for _ in 0..samples {
+        let r = rng.decades(-3.0, 3.0);
+        let c = scale(rng.direction(), rho * r);
+        let p: Vec<E3> = (0..4).map(|_| add(c, scale(rng.direction(), r))).collect();
+        let err = |s: Option<Sphere>| match s.map(|s| s.centre_radius()) {
+            Some(Ok((c2, r2))) => (norm(sub(c2, c)) / r).max((r2 - r).abs() / r),
+            _ => f64::INFINITY,
+        };
+        through = through.max(err(Sphere::through(p[0], p[1], p[2], p[3]).ok()));
+        wedge = wedge.max(err((((up(p[0]) ^ up(p[1])) ^ up(p[2])) ^ up(p[3])).try_normalise()));
+    }
+    (through, wedge)
 }
 
 #[test]
 fn circles_from_parameters_lose_only_eps_rho_squared() {
     let mut rng = Rng::new(15);
     for rho in [1.0, 1e2, 1e4, 1e6] {
-        let (closed, _) = circle_errors(&mut rng, rho, 300);
+        let (closed, through, _) = circle_errors(&mut rng, rho, 300);
         assert!(closed <= 16.0 * EPS * (1.0 + rho).powi(2), "ρ = {rho:e}: {closed:e}");
+        assert!(through <= 16.0 * EPS * (1.0 + rho).powi(2), "through points, ρ = {rho:e}: {through:e}");
+        // Random points on a sphere are not well spread: allow for their conditioning.
+        let (sphere, _) = sphere_errors(&mut rng, rho, 100);
+        assert!(sphere <= 1e3 * EPS * (1.0 + rho).powi(2), "sphere through points, ρ = {rho:e}: {sphere:e}");
     }
     // Spheres and their read-back likewise.
     for rho in [1.0, 1e2, 1e4, 1e6] {
@@ -293,10 +325,12 @@ fn huge_coordinates_give_named_errors_never_nan() {
 fn stability_tables() {
     let mut rng = Rng::new(16);
     println!("### Circles from centre, normal, radius: read-back error against ρ = |c|/r\n");
-    println!("| ρ | before: through three points | after: S ∨ Π (closed form) | ε ρ² | f32, after |");
-    println!("|---|---|---|---|---|");
+    println!(
+        "| ρ | before: wedge of three points | after: S ∨ Π (from centre) | after: `Circle::through` | ε ρ² | f32, after (from centre) |"
+    );
+    println!("|---|---|---|---|---|---|");
     for rho in [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6] {
-        let (closed, points) = circle_errors(&mut rng, rho, 200);
+        let (closed, through, points) = circle_errors(&mut rng, rho, 200);
         let f32_err = {
             let (c, n, r) = (scale(rng.direction(), rho), rng.direction(), 1.0);
             let t = |v: E3| v.map(|x| x as f32);
@@ -309,7 +343,17 @@ fn stability_tables() {
                 Err(_) => f64::INFINITY,
             }
         };
-        println!("| {rho:.0e} | {points:.1e} | {closed:.1e} | {:.1e} | {f32_err:.1e} |", EPS * rho * rho);
+        println!(
+            "| {rho:.0e} | {points:.1e} | {closed:.1e} | {through:.1e} | {:.1e} | {f32_err:.1e} |",
+            EPS * rho * rho
+        );
+    }
+    println!("\n### Spheres through four points: centre and radius read-back error against ρ = |c|/r\n");
+    println!("| ρ | before: wedge of four points | after: `Sphere::through` (circumsphere) | ε ρ² |");
+    println!("|---|---|---|---|");
+    for rho in [1.0, 1e2, 1e4, 1e6] {
+        let (through, wedge) = sphere_errors(&mut rng, rho, 200);
+        println!("| {rho:.0e} | {wedge:.1e} | {through:.1e} | {:.1e} |", EPS * rho * rho);
     }
     println!("\n### Point pairs from two points: end-point read-back error against ρ = |midpoint|/half-distance\n");
     println!("| ρ | before: up(a) ∧ up(b) | after: L ∨ S (closed form) | ε ρ² |");

@@ -6,7 +6,7 @@
 //! (a, b)` points from `a` to `b`; `Plane::through(a, b, c)` has normal `(b−a)×(c−a)`);
 //! objects built from parameters take the orientation of the same construction from points.
 
-use crate::euclid::{E3, cross, dot, magnitude, norm, scale, sub, tolerance, unit};
+use crate::euclid::{E3, add, cross, dot, magnitude, norm, scale, sub, tolerance, unit};
 use crate::{Bivector, Circle, Infinity, LeftContraction, Line, Plane, Real, Sphere, Vector};
 
 /// Why an object cannot be built or read back.
@@ -182,19 +182,27 @@ impl<T: Real> Plane<T> {
 
 impl<T: Real> Sphere<T> {
     /// `up(a) ∧ up(b) ∧ up(c) ∧ up(d)`, normalised.
+    ///
+    /// Written as [`Sphere::from_centre_radius`] of the circumsphere, from the differences
+    /// `u = b − a`, `v = c − a`, `w = d − a`: centre
+    /// `a + (|u|² v × w + |v|² w × u + |w|² u × v) / (2 u · (v × w))`, radius its distance
+    /// from `a`, and the wedge's orientation, the sign of `−u · (v × w)`. Coplanar points
+    /// (`|u · (v × w)|` below rounding of `|u| |v| |w|`) span no sphere. Accurate to `ε ρ²`
+    /// where the wedge loses `ε ρ³`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>, d: E3<T>) -> Result<Self> {
         distinct(&[a, b, c, d])?;
-        let s = ((up(a) ^ up(b)) ^ up(c)) ^ up(d);
-        if !s.to_array().iter().all(|x| x.is_finite()) {
-            return Err(GeometryError::Overflow);
-        }
-        // Coplanar points span a plane: the dual has no eo part.
-        let dual = s.dual();
-        let scale_ = magnitude(&[[dual.e1, dual.e2, dual.e3]]).max_of(dual.ei.abs());
-        if dual.eo.abs() <= tolerance(scale_) * magnitude(&[a, b, c, d]) {
+        let (u, v, w) = (sub(b, a), sub(c, a), sub(d, a));
+        let volume = dot(u, cross(v, w));
+        if volume.abs() <= tolerance(norm(u) * norm(v) * norm(w)) {
             return Err(GeometryError::CoplanarPoints);
         }
-        s.try_normalise().ok_or(GeometryError::Degenerate)
+        let sum = add(add(scale(cross(v, w), dot(u, u)), scale(cross(w, u), dot(v, v))), scale(cross(u, v), dot(w, w)));
+        let offset = scale(sum, T::one() / (T::from_f64(2.0) * volume));
+        if !offset.iter().all(|x| x.is_finite()) {
+            return Err(GeometryError::Overflow);
+        }
+        let sphere = Self::from_centre_radius(add(a, offset), norm(offset))?;
+        Ok(if volume > T::zero() { -sphere } else { sphere })
     }
 
     /// The sphere of centre `c` and radius `r`: `undual(σ)` with the dual sphere
@@ -238,13 +246,22 @@ fn round_centre_radius<T: Real>(sigma: Vector<T>) -> Result<(E3<T>, T)> {
 impl<T: Real> Circle<T> {
     /// `up(a) ∧ up(b) ∧ up(c)`, normalised: the circle through three points, its plane's
     /// normal `(b − a) × (c − a)`.
+    ///
+    /// Written as [`Circle::from_centre_normal_radius`] of the circumcircle, computed from the
+    /// differences `u = b − a`, `v = c − a` (`w = u × v`): centre
+    /// `a + (|u|² v × w + |v|² w × u) / (2|w|²)`, radius its distance from `a`, normal `w`.
+    /// The same blade as the wedge, without the wedge's `ε ρ³` (it multiplies `½|a|²`-sized
+    /// terms that cancel back to the circle's size): `ε ρ²`, `ρ = |centre|/radius`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
         Plane::through(a, b, c)?; // rejects coincident and collinear points
-        let circle = (up(a) ^ up(b)) ^ up(c);
-        if !circle.to_array().iter().all(|x| x.is_finite()) {
+        let (u, v) = (sub(b, a), sub(c, a));
+        let w = cross(u, v);
+        let two_w2 = T::from_f64(2.0) * dot(w, w);
+        let offset = scale(add(scale(cross(v, w), dot(u, u)), scale(cross(w, u), dot(v, v))), T::one() / two_w2);
+        if !offset.iter().all(|x| x.is_finite()) {
             return Err(GeometryError::Overflow);
         }
-        circle.try_normalise().ok_or(GeometryError::Degenerate)
+        Self::from_centre_normal_radius(add(a, offset), w, norm(offset))
     }
 
     /// The circle of centre `c`, plane normal `n` and radius `r`: the meet `S ∨ Π` of the
@@ -360,16 +377,5 @@ impl<T: Real> Disk<T> {
         let circle = Circle::from_centre_normal_radius(c, n, r)?;
         let plane = circle.carrier_plane().try_normalise().ok_or(GeometryError::AtInfinity)?;
         Ok(Disk { circle, plane, centre: c, radius: r })
-    }
-}
-
-/// `max` for `PartialOrd` scalars.
-trait MaxOf {
-    fn max_of(self, other: Self) -> Self;
-}
-
-impl<T: Real> MaxOf for T {
-    fn max_of(self, other: Self) -> Self {
-        if other > self { other } else { self }
     }
 }

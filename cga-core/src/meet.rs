@@ -157,23 +157,11 @@ impl<T: Real> Line<T> {
         let line_weight = self.norm_squared().abs();
         let weight = line_weight * circle.norm_squared().abs();
         let square = dual.norm_squared();
-        let parallel = circle.carrier_plane().try_normalise().is_none_or(|plane| {
-            let carrier = (*self & plane).eoi; // ±|L| sin θ
-            carrier.abs() <= tolerance(line_weight.sqrt())
-        });
+        let plane = circle.carrier_plane().try_normalise();
+        // `L ∨ Π` for the unit plane is a flat point of weight `±|L| sin θ`.
+        let parallel = plane.is_none_or(|p| (*self & p).eoi.abs() <= tolerance(line_weight.sqrt()));
         let hit = if parallel {
-            // In the plane, the circle is where the line meets its sphere; off it, nothing.
-            let in_plane = circle.centre_normal_radius().ok().and_then(|(c, _, r)| {
-                let sphere = Sphere::from_centre_radius(c, r).ok()?;
-                let meet = self.meet_sphere(&sphere);
-                let plane = circle.carrier_plane().try_normalise()?;
-                let x = meet.points(self)?[0];
-                let (n, delta) = plane.normal_offset().ok()?;
-                // On the plane to within the meet's rounding, 64 ε (1 + ρ)² r.
-                let rho = T::one() + norm(c) / r;
-                ((dot(n, x) - delta).abs() <= tolerance(r * rho * rho)).then_some(meet.hit)
-            });
-            in_plane.unwrap_or(Hit::Miss)
+            plane.and_then(|p| self.meet_circle_in_its_plane(circle, &p)).unwrap_or(Hit::Miss)
         } else if square.abs() <= tolerance(weight) {
             Hit::Tangent
         } else if square < T::zero() {
@@ -182,6 +170,23 @@ impl<T: Real> Line<T> {
             Hit::Miss
         };
         RoundMeet { pair: dual, square, hit }
+    }
+
+    /// For a line parallel to the circle's (unit) plane: how it meets the circle's sphere if
+    /// it lies in the plane to within the meet's rounding `64 ε (1 + ρ)² r`, `None` if it
+    /// lies off the plane (or the circle has no centre).
+    fn meet_circle_in_its_plane(&self, circle: &Circle<T>, plane: &Plane<T>) -> Option<Hit> {
+        let (c, _, r) = circle.centre_normal_radius().ok()?;
+        let meet = self.meet_sphere(&Sphere::from_centre_radius(c, r).ok()?);
+        let (n, delta) = plane.normal_offset().ok()?;
+        let on_plane = |x: E3<T>| {
+            let rho = T::one() + norm(c) / r;
+            (dot(n, x) - delta).abs() <= tolerance(r * rho * rho)
+        };
+        match meet.points(self) {
+            Some([x, _]) => on_plane(x).then_some(meet.hit),
+            None => Some(Hit::Miss),
+        }
     }
 
     /// The line reflected in `plane`: `P L P`, directed away from the mirror (for a ray
