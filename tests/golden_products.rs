@@ -1,4 +1,4 @@
-//! The dense multivector against clifford's products (`shared/golden/products.json`), and
+//! The dense multivector against clifford's products (`tests/golden/products.json`), and
 //! the basis change and the sparse types against the other golden files' raw multivectors.
 
 mod common;

@@ -6,7 +6,7 @@
 //! point 4, a translator 4, a motor 8. The dense [`Multivector`] keeps the orthonormal
 //! basis `e1..e5` of the golden test vectors; `From` converts.
 //!
-//! Conventions (those of `shared/golden/README.md`, checked against its vectors):
+//! Conventions (those of `tests/golden/README.md`, checked against its vectors):
 //! - `I5 = e12345`, `I5² = −1`; in the null basis `e123oi = −I5`.
 //! - `dual(A) = A I5⁻¹ = −A I5`, `undual(A) = A I5`.
 //! - `A ∨ B` (`vee`, `&`) is the regressive product `∁⁻¹(∁A ∧ ∁B)` with the metric-free

@@ -2,7 +2,7 @@
 //! their generators, and the rotor taking one line to another. Objects move by the sandwich
 //! `X' = V X Ṽ` ([`crate::Sandwich`], generated for every type).
 //!
-//! Conventions (checked against `shared/golden/rotors.json`): `R = cos(θ/2) − sin(θ/2) a I3`
+//! Conventions (checked against `tests/golden/rotors.json`): `R = cos(θ/2) − sin(θ/2) a I3`
 //! (`I3 = e123`, so the axis `e3` gives the plane `e12`) turns by `θ` right-handedly about
 //! the unit axis `a`; `T = 1 − ½ t ei` shifts by `t`; `M = T R` turns, then shifts.
 

@@ -159,7 +159,7 @@ fn combined_scene_matches_the_original_renderer() {
     let scene = Scene::load(&scene_path("combined.toml")).unwrap();
     let film = render(&scene, 2);
     let got = film.to_rgb8(scene.settings.encoding);
-    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/reference/combined_320x240_reference.png");
+    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/combined_320x240_reference.png");
     let want = image::open(&reference).unwrap().to_rgb8();
     let d = mean_abs_diff(&got, &want);
     println!("mean absolute difference against the original: {d:.3} levels");

@@ -7,9 +7,9 @@ use cga::{Multivector, Real};
 use serde_json::Value;
 use std::path::PathBuf;
 
-/// `../shared/golden`, relative to the repository root.
+/// `tests/golden`: clifford's vectors, carried by the repository (see PROVENANCE.md there).
 pub fn golden_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/golden")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/golden")
 }
 
 /// A golden file, parsed; its blade order is checked against [`Multivector::BLADES`].
