@@ -6,7 +6,7 @@
 //! renderer does over rays) and criterion reports time per operation. Timing a single call
 //! with its operands behind `black_box` would mostly time their trip through memory.
 
-use cga::{Circle, Line, Motor, Multivector, Real, Rotor, Sandwich, Sphere, Translator, Vector};
+use cga_core::{Circle, Line, Motor, Multivector, Real, Rotor, Sandwich, Sphere, Translator, Vector};
 use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main, measurement::WallTime};
 use std::hint::black_box;
 use std::time::Duration;

@@ -9,17 +9,16 @@
 //! without evolved surfaces (reported as `sparse-no-evolved`, …), to show that supporting
 //! them costs a primitives-only scene nothing.
 
-use cga::cga_trace::backend::{Backend, Dense, Plain, Sparse};
-use cga::cga_trace::camera::Camera;
-use cga::cga_trace::{Aov, Renderer, Scene};
+use cga_trace::backend::{Backend, Dense, Plain, Sparse};
+use cga_trace::camera::Camera;
+use cga_trace::{Aov, Renderer, Scene};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
 
 /// A shipped scene at `w × h`.
 fn scene(name: &str, w: u32, h: u32) -> Scene {
-    let path = format!("{}/cga-trace/scenes/{name}.toml", env!("CARGO_MANIFEST_DIR"));
-    let mut scene = Scene::load(std::path::Path::new(&path)).expect("a shipped scene");
+    let mut scene = Scene::load(&cga_benches::scene_path(name)).expect("a shipped scene");
     let c = scene.camera;
     scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, w, h).expect("a camera");
     scene

@@ -3,8 +3,8 @@
 
 mod common;
 
-use cga::euclid::E3;
-use cga::{Bivector, Circle, GeometryError, Line, Multivector, Plane, Sphere, down, up};
+use cga_core::euclid::E3;
+use cga_core::{Bivector, Circle, GeometryError, Line, Multivector, Plane, Sphere, down, up};
 use common::*;
 use glam::DVec3;
 
@@ -193,7 +193,7 @@ fn line_from_point_direction_is_the_normalised_wedge() {
         let (p, d) = (pair[0], pair[1]);
         let direct = Line::from_point_direction(p, d).unwrap();
         let q = [p[0] + d[0], p[1] + d[1], p[2] + d[2]];
-        let wedge = ((up(p) ^ up(q)) ^ cga::ei()).try_normalise().unwrap();
+        let wedge = ((up(p) ^ up(q)) ^ cga_core::ei()).try_normalise().unwrap();
         let scale = 1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max);
         for (a, b) in direct.to_array().iter().zip(wedge.to_array()) {
             assert!((a - b).abs() < 1e-12 * scale, "{direct:?} vs {wedge:?}");
@@ -209,8 +209,8 @@ fn plane_from_point_normal_is_the_plane_through_three_points() {
     for pair in points.chunks(2) {
         let (p, n) = (pair[0], pair[1]);
         let direct = Plane::from_point_normal(p, n).unwrap();
-        let u = cga::euclid::perpendicular(cga::euclid::unit(n).unwrap());
-        let v = cga::euclid::cross(cga::euclid::unit(n).unwrap(), u);
+        let u = cga_core::euclid::perpendicular(cga_core::euclid::unit(n).unwrap());
+        let v = cga_core::euclid::cross(cga_core::euclid::unit(n).unwrap(), u);
         let add = |a: E3, b: E3| [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
         let through = Plane::through(p, add(p, u), add(p, v)).unwrap();
         let scale = 1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max);

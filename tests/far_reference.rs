@@ -5,8 +5,8 @@
 //! `ρ = |c|/r`, as documented on the functions: constructors `16 ε (1 + ρ)²`, interpolation
 //! [`Pair::condition`] — the same formulas under which the near-origin golden files pass.
 
-use cga::euclid::{E3, norm, sub};
-use cga::{Circle, InterpolationError, Multivector, Pair, interpolate::accuracy};
+use cga_core::euclid::{E3, norm, sub};
+use cga_core::{Circle, InterpolationError, Multivector, Pair, interpolate::accuracy};
 use serde_json::Value;
 
 fn e3(v: &Value) -> E3 {
@@ -33,8 +33,7 @@ fn circle(v: &Value) -> (Circle, f64) {
 
 #[test]
 fn far_circles_and_their_interpolation_agree_with_high_precision() {
-    let text =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/far_interpolation.json")).unwrap();
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/far_interpolation.json")).unwrap();
     let file: Value = serde_json::from_str(&text).unwrap();
     let blades: Vec<&str> = file["blades"].as_array().unwrap().iter().map(|b| b.as_str().unwrap()).collect();
     assert_eq!(blades, Multivector::<f64>::BLADES);

@@ -4,7 +4,7 @@
 
 mod common;
 
-use cga::{
+use cga_core::{
     GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind, RegressiveProduct,
     UnaryKind, product_table, unary_table,
 };
@@ -102,7 +102,7 @@ proptest! {
 /// nothing: the dense `V X Ṽ` has no blade outside the sandwich's output type.
 #[test]
 fn versor_sandwiches_stay_in_type() {
-    use cga::{Motor, Rotor, Translator};
+    use cga_core::{Motor, Rotor, Translator};
     let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise();
     let translator = Translator { s: 1.0, e1i: -0.6, e2i: 1.5, e3i: 0.25 };
     let motor: Motor = rotor * translator;

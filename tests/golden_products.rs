@@ -3,7 +3,7 @@
 
 mod common;
 
-use cga::{GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, RegressiveProduct};
+use cga_core::{GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, RegressiveProduct};
 use common::*;
 
 const TOL: f64 = 1e-12;
@@ -63,21 +63,21 @@ fn golden_objects_fit_their_sparse_types_exactly() {
     let objects = golden("objects.json");
     for (n, case) in cases(&objects).iter().enumerate() {
         let line = mv(&case["line"]);
-        let back: Multivector = cga::Line::from_dense(&line).into();
+        let back: Multivector = cga_core::Line::from_dense(&line).into();
         assert_mv_close(&back, &line, TOL, &format!("objects {n}: line"));
         let circle = mv(&case["circle"]);
-        assert_mv_close(&cga::Circle::from_dense(&circle).into(), &circle, TOL, &format!("objects {n}: circle"));
+        assert_mv_close(&cga_core::Circle::from_dense(&circle).into(), &circle, TOL, &format!("objects {n}: circle"));
         let sphere = mv(&case["sphere"]);
-        assert_mv_close(&cga::Sphere::from_dense(&sphere).into(), &sphere, TOL, &format!("objects {n}: sphere"));
+        assert_mv_close(&cga_core::Sphere::from_dense(&sphere).into(), &sphere, TOL, &format!("objects {n}: sphere"));
         let plane = mv(&case["plane"]);
-        assert_mv_close(&cga::Plane::from_dense(&plane).into(), &plane, TOL, &format!("objects {n}: plane"));
+        assert_mv_close(&cga_core::Plane::from_dense(&plane).into(), &plane, TOL, &format!("objects {n}: plane"));
     }
     let rotors = golden("rotors.json");
     for (n, case) in cases(&rotors).iter().enumerate() {
         for (key, check) in [
-            ("rotor", (|m: &Multivector| cga::Rotor::from_dense(m).into()) as fn(&Multivector) -> Multivector),
-            ("translator", |m| cga::Translator::from_dense(m).into()),
-            ("motor", |m| cga::Motor::from_dense(m).into()),
+            ("rotor", (|m: &Multivector| cga_core::Rotor::from_dense(m).into()) as fn(&Multivector) -> Multivector),
+            ("translator", |m| cga_core::Translator::from_dense(m).into()),
+            ("motor", |m| cga_core::Motor::from_dense(m).into()),
         ] {
             let m = mv(&case[key]);
             assert_mv_close(&check(&m), &m, TOL, &format!("rotors {n}: {key}"));
@@ -89,10 +89,10 @@ fn golden_objects_fit_their_sparse_types_exactly() {
 /// the line–sphere meet, the circle and sphere through points, and the motor on a point.
 #[test]
 fn sparse_products_reproduce_golden_meets_and_sandwiches() {
-    use cga::Sandwich;
+    use cga_core::Sandwich;
     for (n, case) in cases(&golden("line_sphere.json")).iter().enumerate() {
-        let line = cga::Line::from_dense(&mv(&case["line"]));
-        let sphere = cga::Sphere::from_dense(&mv(&case["sphere"]));
+        let line = cga_core::Line::from_dense(&mv(&case["line"]));
+        let sphere = cga_core::Sphere::from_dense(&mv(&case["sphere"]));
         let meet: Multivector = (line & sphere).into();
         assert_mv_close(&meet, &mv(&case["meet"]), TOL, &format!("line_sphere {n}: meet"));
         let square = (line & sphere) * (line & sphere);
@@ -100,10 +100,10 @@ fn sparse_products_reproduce_golden_meets_and_sandwiches() {
         assert!((square.s - want).abs() <= TOL * want.abs().max(1.0), "line_sphere {n}: square {} vs {want}", square.s);
     }
     for (n, case) in cases(&golden("rotors.json")).iter().enumerate() {
-        let motor = cga::Motor::from_dense(&mv(&case["motor"]));
+        let motor = cga_core::Motor::from_dense(&mv(&case["motor"]));
         let x = floats(&case["x"]);
         let x2 = x.iter().map(|v| v * v).sum::<f64>();
-        let point = cga::Vector { e1: x[0], e2: x[1], e3: x[2], eo: 1.0, ei: 0.5 * x2 };
+        let point = cga_core::Vector { e1: x[0], e2: x[1], e3: x[2], eo: 1.0, ei: 0.5 * x2 };
         let moved: Multivector = motor.sandwich(point).into();
         // clifford's result carries rounding-level grade-3 residue; compare the vector part.
         assert_mv_close(&moved, &mv(&case["moved"]).grade(1), 1e-11, &format!("rotors {n}: moved point"));

@@ -4,8 +4,8 @@
 
 mod common;
 
-use cga::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
-use cga::{Bivector, Circle, InterpolationError, Line, Pair, Plane, ScalarQuadvector, Sphere, interpolate};
+use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga_core::{Bivector, Circle, InterpolationError, Line, Pair, Plane, ScalarQuadvector, Sphere, interpolate};
 use common::*;
 
 fn e3(v: &serde_json::Value) -> E3 {
@@ -23,7 +23,7 @@ fn angle(a: E3, b: E3) -> f64 {
 
 /// `max |a − b| / max |b|`: an error relative to the blade's size, which is what rounding of
 /// its largest coefficients leaves (coefficients of a round grow like `|c|²/r`).
-fn relative(a: &cga::Multivector, b: &cga::Multivector) -> f64 {
+fn relative(a: &cga_core::Multivector, b: &cga_core::Multivector) -> f64 {
     let size = b.coeffs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     a.coeffs.iter().zip(&b.coeffs).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / size
 }
@@ -92,8 +92,7 @@ fn interpolated_circles_match_clifford() {
 /// `tools/far_reference.py`): tolerances that mean something pass at any scale.
 #[test]
 fn interpolated_circles_far_from_the_origin_match_high_precision() {
-    let text =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/far_interpolation.json")).unwrap();
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/data/far_interpolation.json")).unwrap();
     let file: serde_json::Value = serde_json::from_str(&text).unwrap();
     let (n, worst) = check_interpolation_file(&file, "far_interpolation.json");
     println!("far_interpolation.json: {n} cases, worst error {worst:.2} of the tolerance");
@@ -233,7 +232,7 @@ fn endpoints_are_reproduced_for_every_kind() {
     let mut rng = Rng::new(7);
     let (a, b) = (rng.e3(-3.0, 3.0), rng.e3(-3.0, 3.0));
     let (c, d) = (rng.e3(-3.0, 3.0), rng.e3(-3.0, 3.0));
-    fn check<X: cga::Interpolable<f64> + Copy>(x1: X, x2: X, arr: fn(X) -> Vec<f64>) {
+    fn check<X: cga_core::Interpolable<f64> + Copy>(x1: X, x2: X, arr: fn(X) -> Vec<f64>) {
         let pair = Pair::new(x1, x2).unwrap();
         let close = |p: X, q: X| max_rel_diff(&arr(p), &arr(q)) < 1e-10;
         assert!(close(pair.at(0.0).unwrap(), pair.c1) && close(pair.at(1.0).unwrap(), pair.c2));

@@ -1,6 +1,6 @@
 //! Line meets and reflections against the textbook ray formulas (glam).
 
-use cga::{Circle, Disk, Hit, Line, Plane, Sphere, Vector};
+use cga_core::{Circle, Disk, Hit, Line, Plane, Sphere, Vector};
 use glam::DVec3;
 
 mod common;

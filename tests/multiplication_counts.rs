@@ -7,7 +7,7 @@
 
 mod common;
 
-use cga::{Multivector, ProductKind, UnaryKind, product_table, unary_table};
+use cga_core::{Multivector, ProductKind, UnaryKind, product_table, unary_table};
 use common::{Counted, grade_at};
 
 const EPS: f64 = 1e-12;
@@ -25,7 +25,7 @@ fn support(m: &Multivector) -> Vec<usize> {
 }
 
 fn dense(kind: ProductKind, a: Multivector, b: Multivector) -> Multivector {
-    use cga::{GeometricProduct, InnerProduct, LeftContraction, OuterProduct, RegressiveProduct};
+    use cga_core::{GeometricProduct, InnerProduct, LeftContraction, OuterProduct, RegressiveProduct};
     match kind {
         ProductKind::Geometric | ProductKind::Sandwich => a.gp(b),
         ProductKind::Outer => a.wedge(b),
@@ -115,7 +115,7 @@ fn unary_maps_multiply_only_for_the_norm() {
 
 /// Unordered blade pairs {i, j} with a nonzero merged coefficient in `⟨A Ã⟩₀`.
 fn norm_terms(blades: &[usize]) -> usize {
-    use cga::GeometricProduct;
+    use cga_core::GeometricProduct;
     let scalar = |i: usize, j: usize| blade(i).gp(blade(j).reverse()).coeffs[0];
     let mut n = 0;
     for (x, &i) in blades.iter().enumerate() {

@@ -7,8 +7,8 @@ mod common;
 use common::*;
 
 mod ortho {
-    cga::algebra! {
-        scalar = cga::Real;
+    cga_macros::algebra! {
+        scalar = cga_core::Real;
         signature = (4, 1);
         dense Dense;
         type Scalar = [s];
@@ -75,5 +75,5 @@ fn lines_are_sparser_in_the_null_basis() {
         assert!(max_rel_diff(&back.coeffs, &line.coeffs) <= 1e-15);
     }
     assert_eq!(ortho::Line::<f64>::BLADES.len(), 9);
-    assert_eq!(cga::Line::<f64>::BLADES.len(), 6);
+    assert_eq!(cga_core::Line::<f64>::BLADES.len(), 6);
 }

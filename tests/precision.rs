@@ -10,8 +10,10 @@
 
 mod common;
 
-use cga::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
-use cga::{Circle, Disk, GeometryError, Hit, InterpolationError, Line, NormalError, Pair, Plane, Real, Sphere, up};
+use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga_core::{
+    Circle, Disk, GeometryError, Hit, InterpolationError, Line, NormalError, Pair, Plane, Real, Sphere, up,
+};
 use common::Rng;
 use common::dd::{Dd, dd3, f3};
 
@@ -212,11 +214,11 @@ fn pair_errors(rng: &mut Rng, rho: f64, samples: usize) -> (f64, f64) {
         let h = rng.decades(-3.0, 3.0);
         let (m, d) = (scale(rng.direction(), rho * h), rng.direction());
         let (a, b) = (add(m, scale(d, -h)), add(m, scale(d, h)));
-        let err = |p: cga::Bivector| match p.end_points() {
+        let err = |p: cga_core::Bivector| match p.end_points() {
             Ok([x, y]) => norm(sub(x, a)).max(norm(sub(y, b))) / h,
             Err(_) => f64::INFINITY,
         };
-        closed = closed.max(err(cga::Bivector::from_points(a, b).unwrap()));
+        closed = closed.max(err(cga_core::Bivector::from_points(a, b).unwrap()));
         wedge = wedge.max(err(up(a) ^ up(b)));
     }
     (closed, wedge)

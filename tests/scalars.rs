@@ -3,7 +3,7 @@
 
 mod common;
 
-use cga::{Circle, Dual, Line, Motor, Real, Rotor, Sandwich, Translator, Vector, product_table};
+use cga_core::{Circle, Dual, Line, Motor, Real, Rotor, Sandwich, Translator, Vector, product_table};
 
 fn dual_circle(a: Circle, da: Circle) -> Circle<Dual> {
     let (x, dx) = (a.to_array(), da.to_array());

@@ -10,8 +10,8 @@
 //! `cargo test --test stability -- --nocapture --test-threads 1` prints the table of
 //! `docs/STABILITY.md`.
 
-use cga::euclid::{E3, cross, dot, norm, sub, unit};
-use cga::{Circle, InterpolationError, NormalError, Pair, Real, Vector, up};
+use cga_core::euclid::{E3, cross, dot, norm, sub, unit};
+use cga_core::{Circle, InterpolationError, NormalError, Pair, Real, Vector, up};
 
 type Params = (E3, E3, f64);
 
@@ -333,7 +333,7 @@ fn cospherical_circles() {
     let pair = Pair::new(circle::<f64>(a), circle::<f64>(b)).unwrap();
     // Σ = −X X̃ has no 4-vector part for co-spherical circles: K is a scalar.
     let x = pair.c1 * 0.5 + pair.c2 * 0.5;
-    let sigma = cga::Interpolable::neg_square(x);
+    let sigma = cga_core::Interpolable::neg_square(x);
     let quad = sigma.grade4().to_array().iter().fold(0.0f64, |m, v| m.max(v.abs()));
     assert!(quad < 1e-12 * sigma.s.abs(), "4-vector part {quad:e}");
     report(
@@ -353,7 +353,7 @@ fn through_a_zero_radius_circle() {
     let mut sigma = up([0.5, 0.0, 0.0]);
     sigma.ei += 0.5 * 0.8 * 0.8;
     let imaginary: Circle = (sigma ^ Vector { e3: 1.0, ..Vector::zero() }).undual();
-    assert_eq!(imaginary.centre_normal_radius(), Err(cga::GeometryError::Imaginary));
+    assert_eq!(imaginary.centre_normal_radius(), Err(cga_core::GeometryError::Imaginary));
     let pair = Pair::new(c1, imaginary).unwrap();
     let (mut last_radius, mut no_root) = (f64::INFINITY, 0);
     for i in 0..=1000 {

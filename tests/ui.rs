@@ -6,6 +6,6 @@
 #[test]
 fn macro_input_errors_and_a_plain_algebra() {
     let t = trybuild::TestCases::new();
-    t.compile_fail("tests/ui/fail/*.rs");
-    t.pass("tests/ui/pass/*.rs");
+    t.compile_fail("ui/fail/*.rs");
+    t.pass("ui/pass/*.rs");
 }

@@ -3,8 +3,8 @@
 
 mod common;
 
-use cga::euclid::E3;
-use cga::{
+use cga_core::euclid::E3;
+use cga_core::{
     Bivector, Circle, GeometricProduct, Line, Motor, Multivector, Plane, Rotor, Sandwich, Sphere, Translator, down,
     exp, rotor_between_lines, up,
 };
@@ -77,7 +77,7 @@ fn exp_matches_the_series_and_log_inverts_it() {
         let back = m.log().unwrap();
         assert!(max_rel_diff(&back.to_array(), &b.to_array()) < 1e-10, "log(exp B) = B: {back:?} vs {b:?}");
     }
-    assert_eq!(exp(Bivector { eoi: 1.0, ..Bivector::zero() }), Err(cga::VersorError::NotRigid));
+    assert_eq!(exp(Bivector { eoi: 1.0, ..Bivector::zero() }), Err(cga_core::VersorError::NotRigid));
 }
 
 #[test]

@@ -1,10 +1,10 @@
 //! `algebra!`: declare a geometric algebra and get grade-sparse Rust types whose products
 //! are computed at expansion time, term by term.
 //!
-//! The generator has three layers: [`parse`] reads the invocation (syntax only), `resolve`
+//! The generator has three layers: `parse` reads the invocation (syntax only), `resolve`
 //! (this file) checks it against the algebra and reports every mistake with the span of
-//! the offending token, [`model`] computes metric, change of basis and Cayley tables with
-//! no `syn` in sight, and [`codegen`] turns tables into code.
+//! the offending token, `model` computes metric, change of basis and Cayley tables with
+//! no `syn` in sight, and `codegen` turns tables into code.
 //!
 //! # Input
 //!

@@ -1,7 +1,7 @@
 //! Double-double numbers (the `twofloat` crate, about 106 bits) as a [`Real`]: the same
 //! generic code run with 32 digits, a reference for the rounding error of the f64 run.
 
-use cga::Real;
+use cga_core::Real;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 use twofloat::TwoFloat;
 

@@ -3,13 +3,13 @@
 
 pub mod dd;
 
-use cga::{Multivector, Real};
+use cga_core::{Multivector, Real};
 use serde_json::Value;
 use std::path::PathBuf;
 
 /// `tests/golden`: clifford's vectors, carried by the repository (see PROVENANCE.md there).
 pub fn golden_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/golden")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("golden")
 }
 
 /// A golden file, parsed; its blade order is checked against [`Multivector::BLADES`].

@@ -1,5 +1,5 @@
-cga::algebra! {
-    scalar = cga::Real;
+cga_macros::algebra! {
+    scalar = cga_core::Real;
     signature = (0, 0);
     type Scalar = [s];
 }

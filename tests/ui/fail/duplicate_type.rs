@@ -1,5 +1,5 @@
-cga::algebra! {
-    scalar = cga::Real;
+cga_macros::algebra! {
+    scalar = cga_core::Real;
     signature = (4, 1);
     type Vector = [grade(1)];
     type Circle = [grade(3)];

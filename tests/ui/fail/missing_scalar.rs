@@ -1,4 +1,4 @@
-cga::algebra! {
+cga_macros::algebra! {
     signature = (3, 0);
     type Vector = [grade(1)];
 }

@@ -1,7 +1,7 @@
 //! An algebra with no `basis`: the orthonormal e1..e3 of G(3,0), used from a fresh crate.
 
-cga::algebra! {
-    scalar = cga::Real;
+cga_macros::algebra! {
+    scalar = cga_core::Real;
     signature = (3, 0);
     dense Dense;
     type Scalar = [s];
