@@ -1122,6 +1122,7 @@ impl<'a> Gen<'a> {
         quote! {
             /// Which product a [`ProductEntry`] evaluates.
             #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+            #[doc(hidden)]
             pub enum ProductKind {
                 /// `A B`
                 Geometric,
@@ -1139,6 +1140,7 @@ impl<'a> Gen<'a> {
 
             /// Which linear map a [`UnaryEntry`] evaluates.
             #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+            #[doc(hidden)]
             pub enum UnaryKind {
                 /// `Ã`
                 Reverse,
@@ -1158,6 +1160,7 @@ impl<'a> Gen<'a> {
 
             /// A generated product between two types, evaluated on storage-basis arrays.
             #[derive(Clone, Copy, Debug)]
+            #[doc(hidden)]
             pub struct ProductEntry<T> {
                 /// The product.
                 pub kind: ProductKind,
@@ -1181,6 +1184,7 @@ impl<'a> Gen<'a> {
 
             /// A generated linear map (or the squared norm) of one type.
             #[derive(Clone, Copy, Debug)]
+            #[doc(hidden)]
             pub struct UnaryEntry<T> {
                 /// The map.
                 pub kind: UnaryKind,
@@ -1199,11 +1203,13 @@ impl<'a> Gen<'a> {
             }
 
             /// Every generated product (and sandwich), for checking them all against the dense type.
+            #[doc(hidden)]
             pub fn product_table<T: #real>() -> Vec<ProductEntry<T>> {
                 vec![#(#products),*]
             }
 
             /// Every generated unary map, for checking them all against the dense type.
+            #[doc(hidden)]
             pub fn unary_table<T: #real>() -> Vec<UnaryEntry<T>> {
                 vec![#(#unaries),*]
             }
