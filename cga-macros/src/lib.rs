@@ -343,13 +343,9 @@ mod tests {
             "type Z = [grade(-1)];",
             "type Y = [s e1];",
         ];
-        let mut state = 0x9e3779b97f4a7c15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        use rand::{RngExt, SeedableRng};
+        let mut rng = rand_xorshift::XorShiftRng::seed_from_u64(0x9e37_79b9_7f4a_7c15);
+        let mut next = move || rng.random::<u64>();
         let (mut expanded, mut rejected) = (0, 0);
         for _ in 0..400 {
             // Mostly well-formed headers, so that the checks past the parser are reached.

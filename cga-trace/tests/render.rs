@@ -213,13 +213,9 @@ fn a_ray_in_a_far_end_circles_plane_hits_it() {
 fn look_at_works_for_any_pose() {
     use cga_core::euclid::{cross, dot, unit};
     use cga_trace::camera::Camera;
-    let mut state = 77u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64 * 20.0 - 10.0
-    };
+    use rand::{RngExt, SeedableRng};
+    let mut rng = rand_xorshift::XorShiftRng::seed_from_u64(77);
+    let mut next = move || rng.random_range(-10.0..10.0);
     for _ in 0..200 {
         let (pos, target, up) = ([next(), next(), next()], [next(), next(), next()], [next(), next(), next()]);
         let forward = unit(sub(target, pos)).unwrap();

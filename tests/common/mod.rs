@@ -56,20 +56,18 @@ pub fn assert_mv_close(got: &Multivector, want: &Multivector, tol: f64, what: &s
     assert!(d <= tol, "{what}: differs by {d:e} (> {tol:e})\n got  {:?}\n want {:?}", got.coeffs, want.coeffs);
 }
 
-/// A deterministic xorshift stream, so random tests are repeatable.
-pub struct Rng(u64);
+/// A seeded stream (the `rand_xorshift` crate), so random tests are repeatable, with the
+/// draws the tests use.
+pub struct Rng(rand_xorshift::XorShiftRng);
 
 impl Rng {
-    /// A stream from a nonzero seed.
+    /// The stream of `seed`.
     pub fn new(seed: u64) -> Self {
-        Rng(seed.max(1))
+        Rng(rand::SeedableRng::seed_from_u64(seed))
     }
     /// Uniform in [0, 1).
     pub fn unit(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        rand::RngExt::random::<f64>(&mut self.0)
     }
     /// Uniform in [lo, hi).
     pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
