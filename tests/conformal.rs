@@ -113,7 +113,7 @@ fn objects_agree_with_euclidean_formulas() {
         let (cc, cn, cr) = circle.centre_normal_radius().unwrap();
         assert!(close3(cc, centre.into(), 1e-9), "seed {seed}: circle centre {cc:?} vs {centre}");
         assert!((DVec3::from(cn) - w.normalize()).length() < 1e-9, "seed {seed}: circle normal");
-        assert!((cr - (a - centre).length()).abs() < 1e-9 * cr.max(1.0), "seed {seed}: circle radius");
+        approx::assert_relative_eq!(cr, (a - centre).length(), epsilon = 1e-9, max_relative = 1e-9);
 
         // Circumsphere of a, b, c, d: solve 2 (x_i − a) · c = |x_i|² − |a|².
         let m = glam::DMat3::from_cols(b - a, c - a, d - a).transpose();
@@ -125,7 +125,7 @@ fn objects_agree_with_euclidean_formulas() {
         let sc = m.inverse() * rhs;
         let (s_c, s_r) = Sphere::through(a.into(), b.into(), c.into(), d.into()).unwrap().centre_radius().unwrap();
         assert!(close3(s_c, sc.into(), 1e-7), "seed {seed}: sphere centre {s_c:?} vs {sc}");
-        assert!((s_r - (a - sc).length()).abs() < 1e-7 * s_r.max(1.0), "seed {seed}: sphere radius");
+        approx::assert_relative_eq!(s_r, (a - sc).length(), epsilon = 1e-7, max_relative = 1e-7);
 
         // Line through a, b: direction and nearest point to the origin.
         let line = Line::through(a.into(), b.into()).unwrap();
@@ -137,7 +137,7 @@ fn objects_agree_with_euclidean_formulas() {
         // Plane through a, b, c: normal and offset.
         let (n, off) = Plane::through(a.into(), b.into(), c.into()).unwrap().normal_offset().unwrap();
         assert!((DVec3::from(n) - w.normalize()).length() < 1e-9, "seed {seed}: plane normal");
-        assert!((off - w.normalize().dot(a)).abs() < 1e-9 * off.abs().max(1.0), "seed {seed}: plane offset");
+        approx::assert_relative_eq!(off, w.normalize().dot(a), epsilon = 1e-9, max_relative = 1e-9);
 
         // Point pair a ∧ b: its end points, in order.
         let [x, y] = Bivector::from_points(a.into(), b.into()).unwrap().end_points().unwrap();
@@ -147,7 +147,7 @@ fn objects_agree_with_euclidean_formulas() {
         let (cc2, cn2, cr2) =
             Circle::from_centre_normal_radius(centre.into(), w.into(), 2.5).unwrap().centre_normal_radius().unwrap();
         assert!(close3(cc2, centre.into(), 1e-9) && (DVec3::from(cn2) - w.normalize()).length() < 1e-9);
-        assert!((cr2 - 2.5).abs() < 1e-9);
+        approx::assert_abs_diff_eq!(cr2, 2.5, epsilon = 1e-9);
         let (c3, r3) = Sphere::from_centre_radius(a.into(), 0.75).unwrap().centre_radius().unwrap();
         assert!(close3(c3, a.into(), 1e-12) && (r3 - 0.75).abs() < 1e-12);
         let (n4, off4) = Plane::from_point_normal(a.into(), w.into()).unwrap().normal_offset().unwrap();
@@ -195,9 +195,7 @@ fn line_from_point_direction_is_the_normalised_wedge() {
         let q = [p[0] + d[0], p[1] + d[1], p[2] + d[2]];
         let wedge = ((up(p) ^ up(q)) ^ cga_core::ei()).try_normalise().unwrap();
         let scale = 1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max);
-        for (a, b) in direct.to_array().iter().zip(wedge.to_array()) {
-            assert!((a - b).abs() < 1e-12 * scale, "{direct:?} vs {wedge:?}");
-        }
+        approx::assert_abs_diff_eq!(direct, wedge, epsilon = 1e-12 * scale);
     }
 }
 
@@ -214,8 +212,6 @@ fn plane_from_point_normal_is_the_plane_through_three_points() {
         let add = |a: E3, b: E3| [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
         let through = Plane::through(p, add(p, u), add(p, v)).unwrap();
         let scale = 1.0 + p.iter().map(|x| x.abs()).fold(0.0, f64::max);
-        for (a, b) in direct.to_array().iter().zip(through.to_array()) {
-            assert!((a - b).abs() < 1e-12 * scale, "{direct:?} vs {through:?}");
-        }
+        approx::assert_abs_diff_eq!(direct, through, epsilon = 1e-12 * scale);
     }
 }

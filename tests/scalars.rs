@@ -39,7 +39,7 @@ fn dual_numbers_differentiate_normalisation() {
     let minus = (a - da.scale(h)).normalise();
     for ((d, p), m) in exact.to_array().iter().zip(plus.to_array()).zip(minus.to_array()) {
         let fd = (p - m) / (2.0 * h);
-        assert!((d.du - fd).abs() < 1e-7 * fd.abs().max(1.0), "dual {} vs finite difference {fd}", d.du);
+        approx::assert_relative_eq!(d.du, fd, epsilon = 1e-7, max_relative = 1e-7);
     }
 }
 
@@ -71,6 +71,6 @@ fn f32_motor_on_point() {
     let x32 = Vector::from_array(x.to_array().map(|c| c as f32));
     let (p64, p32) = (motor.sandwich(x), m32.sandwich(x32));
     for (a, b) in p64.to_array().iter().zip(p32.to_array()) {
-        assert!((a - b.to_f64()).abs() < 1e-5 * a.abs().max(1.0));
+        approx::assert_relative_eq!(*a, b.to_f64(), epsilon = 1e-5, max_relative = 1e-5);
     }
 }

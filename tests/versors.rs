@@ -118,7 +118,7 @@ fn the_rotor_between_two_lines_takes_one_to_the_other() {
         let l1 = Line::through(vec(&mut rng, 4.0).into(), vec(&mut rng, 4.0).into()).unwrap();
         let l2 = Line::through(vec(&mut rng, 4.0).into(), vec(&mut rng, 4.0).into()).unwrap();
         let r = rotor_between_lines(l1, l2).unwrap();
-        assert!(((r * r.reverse()).s - 1.0).abs() < 1e-10, "R R̃ = 1");
+        approx::assert_abs_diff_eq!((r * r.reverse()).s, 1.0, epsilon = 1e-10); // R R̃ = 1
         let moved = r.sandwich(l1);
         assert!(max_rel_diff(&moved.to_array(), &l2.to_array()) < 1e-9, "R L1 R̃ = L2: {moved:?} vs {l2:?}");
     }

@@ -67,6 +67,7 @@ pub(crate) struct Spec {
     pub dense: Option<parse::Named>,
     pub types: Vec<TypeSpec>,
     pub aliases: Vec<parse::Alias>,
+    pub approx: Option<parse::Approx>,
 }
 
 pub(crate) struct TypeSpec {
@@ -122,7 +123,7 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         }
         names.push(alias.name.clone());
     }
-    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases })
+    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases, approx: input.approx })
 }
 
 fn check_new_name(names: &[Ident], name: &Ident) -> syn::Result<()> {

@@ -15,6 +15,15 @@ pub struct Input {
     pub dense: Option<Named>,
     pub types: Vec<TypeDecl>,
     pub aliases: Vec<Alias>,
+    pub approx: Option<Approx>,
+}
+
+/// `#[cfg(…)] approx = path::to::approx;`: implement the `approx` crate's comparison traits
+/// for every type, each impl carrying the item's attributes (so a crate can gate them behind
+/// a feature).
+pub struct Approx {
+    pub attrs: Vec<Attribute>,
+    pub path: Path,
 }
 
 /// `signature = (p, q);`
@@ -68,7 +77,15 @@ pub struct Alias {
 
 impl Parse for Input {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let mut out = Input { scalar: None, signature: None, basis: None, dense: None, types: vec![], aliases: vec![] };
+        let mut out = Input {
+            scalar: None,
+            signature: None,
+            basis: None,
+            dense: None,
+            types: vec![],
+            aliases: vec![],
+            approx: None,
+        };
         while !input.is_empty() {
             let attrs = input.call(Attribute::parse_outer)?;
             if input.peek(Token![type]) {
@@ -108,6 +125,10 @@ impl Parse for Input {
                     set_once(&mut out.dense, named, &key)?;
                 }
                 "versor" => out.types.push(parse_type(input, attrs, true)?),
+                "approx" => {
+                    input.parse::<Token![=]>()?;
+                    set_once(&mut out.approx, Approx { attrs, path: input.parse()? }, &key)?;
+                }
                 "alias" => {
                     let name = input.parse()?;
                     input.parse::<Token![=]>()?;
@@ -117,7 +138,7 @@ impl Parse for Input {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown item `{other}`: expected `scalar`, `signature`, `basis`, `dense`, `type`, `versor` or `alias`"
+                            "unknown item `{other}`: expected `scalar`, `signature`, `basis`, `dense`, `type`, `versor`, `alias` or `approx`"
                         ),
                     ));
                 }

@@ -49,11 +49,17 @@ pub fn max_rel_diff(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| (x - y).abs() / x.abs().max(y.abs()).max(1.0)).fold(0.0, f64::max)
 }
 
-/// Asserts two dense multivectors agree to `tol` (relative above magnitude 1).
+/// Asserts two dense multivectors agree to `tol`: absolutely below magnitude 1, relatively
+/// above (the generated `approx::RelativeEq`, coefficient by coefficient).
 #[track_caller]
 pub fn assert_mv_close(got: &Multivector, want: &Multivector, tol: f64, what: &str) {
     let d = max_rel_diff(&got.coeffs, &want.coeffs);
-    assert!(d <= tol, "{what}: differs by {d:e} (> {tol:e})\n got  {:?}\n want {:?}", got.coeffs, want.coeffs);
+    assert!(
+        approx::relative_eq!(*got, *want, epsilon = tol, max_relative = tol),
+        "{what}: differs by {d:e} (> {tol:e})\n got  {:?}\n want {:?}",
+        got.coeffs,
+        want.coeffs
+    );
 }
 
 /// A seeded stream (the `rand_xorshift` crate), so random tests are repeatable, with the

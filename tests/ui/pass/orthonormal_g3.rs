@@ -1,4 +1,5 @@
-//! An algebra with no `basis`: the orthonormal e1..e3 of G(3,0), used from a fresh crate.
+//! An algebra with no `basis`: the orthonormal e1..e3 of G(3,0), used from a fresh crate,
+//! with the `approx` comparisons.
 
 cga_macros::algebra! {
     scalar = cga_core::Real;
@@ -8,6 +9,7 @@ cga_macros::algebra! {
     type Vector = [grade(1)];
     type Bivector = [grade(2)];
     versor Rotor = [s, grade(2)];
+    approx = ::approx;
 }
 
 fn main() {
@@ -21,7 +23,7 @@ fn main() {
     let h = std::f64::consts::FRAC_1_SQRT_2;
     let quarter = Rotor { s: h, e12: -h, e13: 0.0, e23: 0.0 };
     let turned = quarter.sandwich(Vector { e1: 1.0, e2: 0.0, e3: 0.0 });
-    assert!((turned.e2 - 1.0).abs() < 1e-15 && turned.e1.abs() < 1e-15);
+    approx::assert_abs_diff_eq!(turned, Vector { e1: 0.0, e2: 1.0, e3: 0.0 }, epsilon = 1e-15);
     let dense: Dense = x.into();
     assert_eq!(Vector::from_dense(&(dense * dense)), Vector::zero());
     assert_eq!((x * x).s, x.norm_squared());
