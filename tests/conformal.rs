@@ -215,3 +215,19 @@ fn plane_from_point_normal_is_the_plane_through_three_points() {
         approx::assert_abs_diff_eq!(direct, through, epsilon = 1e-12 * scale);
     }
 }
+
+/// Points convert from and to `[f64; 3]` and glam vectors (feature `glam`), through `up` and
+/// `down`; a point at infinity is a named error.
+#[test]
+fn points_convert_to_and_from_euclidean_vectors() {
+    let x = [1.5, -2.0, 0.25];
+    let p: cga_core::Vector = x.into();
+    assert_eq!(p, up(x));
+    assert_eq!(p.to_point(), Ok(x));
+    let g: cga_core::Vector = DVec3::from(x).into();
+    assert_eq!(DVec3::try_from(g), Ok(DVec3::from(x)));
+    let single: cga_core::Vector<f32> = glam::Vec3::new(1.0, 2.0, 3.0).into();
+    assert_eq!(glam::Vec3::try_from(single), Ok(glam::Vec3::new(1.0, 2.0, 3.0)));
+    let infinity = cga_core::Vector::<f64> { ei: 1.0, ..cga_core::Vector::zero() };
+    assert_eq!(DVec3::try_from(infinity), Err(GeometryError::AtInfinity));
+}

@@ -96,6 +96,8 @@
 
 pub mod algebra;
 pub mod conformal;
+mod convert;
+mod display;
 mod dual;
 pub mod euclid;
 pub mod evolved;
