@@ -12,7 +12,7 @@ use cga_core::{Circle, Interpolable, Line, Real};
 use cga_trace::Renderer;
 use cga_trace::ray::Ray;
 use cga_trace::scene::Scene;
-use cga_trace::shapes::{Crossing, Shape};
+use cga_trace::shapes::Crossing;
 use cga_trace::surface::bernstein::Roots;
 use cga_trace::surface::{EvolvedSurface, Family, Finder, Method};
 use plotters::prelude::*;
@@ -480,10 +480,7 @@ fn evolved(scene: &Scene) -> &EvolvedSurface {
     scene
         .objects
         .iter()
-        .find_map(|o| match &o.shape {
-            Shape::Evolved(s) => Some(&**s),
-            _ => None,
-        })
+        .find_map(|o| o.shape.downcast_ref::<EvolvedSurface>())
         .expect("the scene has an evolved surface")
 }
 

@@ -10,7 +10,7 @@ use crate::bvh::Bvh;
 use crate::film::Film;
 use crate::ray::{Ray, crosses, leaving_origin};
 use crate::scene::{Object, Scene};
-use crate::shapes::{Crossing, Hit, Shape};
+use crate::shapes::{Crossing, Hit};
 use cga_core::euclid::{E3, dot, norm, reflect, scale, sub, unit};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
@@ -73,9 +73,7 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     scene: &'a Scene,
     /// The objects in `B`'s form, in scene order.
     shapes: Vec<B::Shape>,
-    /// Bounding spheres of the objects worth culling: disks and triangles (a sphere's own
-    /// test is no dearer than its bound's; planes are unbounded; evolved surfaces cull
-    /// themselves).
+    /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
     bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
     bvh: Option<Bvh>,
@@ -96,10 +94,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let shapes = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
         let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
         let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
-        let cull = |(o, b): (&Object, &Option<(E3, f64)>)| match o.shape {
-            Shape::Disk(_) | Shape::Triangle { .. } => *b,
-            _ => None,
-        };
+        let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
         Renderer { scene, shapes, bounds, bvh, counts: RayCounts::default() }
     }

@@ -5,15 +5,16 @@
 
 use crate::camera::{Camera, CameraError};
 use crate::frame::Frame;
-use crate::shapes::Shape;
+use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 #[cfg(feature = "evolved")]
 use crate::surface::EvolvedSurface;
 use crate::surface::Method;
-use cga_core::euclid::{E3, sub};
-use cga_core::{Disk, GeometryError, Motor, Plane, Rotor, Sphere};
+use cga_core::euclid::E3;
+use cga_core::{GeometryError, Motor, Rotor};
 use serde::Deserialize;
 use std::ops::Range;
 use std::path::Path;
+use std::sync::Arc;
 use toml::Spanned;
 
 /// Surface colour and Blinn–Phong coefficients.
@@ -201,7 +202,7 @@ pub struct Object {
     /// Its name in the scene file (or `object N`).
     pub name: String,
     /// Geometry.
-    pub shape: Shape,
+    pub shape: Arc<dyn Shape>,
     /// Material.
     pub material: Material,
 }
@@ -403,28 +404,20 @@ fn build_object(spec: ObjectSpec, index: usize, method: Method, frame: &Frame) -
         | ObjectSpec::Triangle { name, material, .. }
         | ObjectSpec::Evolved { name, material, .. } => (name_of(name), *material),
     };
-    let shape = || -> Result<Shape, String> {
+    let shape = || -> Result<Arc<dyn Shape>, String> {
         check_material(&material)?;
         let (at, length) = (|x| frame.point(x), |l| frame.length(l));
         Ok(match spec {
             ObjectSpec::Sphere { centre, radius, .. } => {
-                let (centre, radius) = (at(centre), length(radius));
-                let sphere = Sphere::from_centre_radius(centre, radius).map_err(geometry)?;
-                Shape::Sphere { sphere, centre, radius }
+                Arc::new(SphereShape::new(at(centre), length(radius)).map_err(geometry)?)
             }
-            ObjectSpec::Plane { point, normal, .. } => {
-                Shape::Plane(Plane::from_point_normal(at(point), normal).map_err(geometry)?)
-            }
+            ObjectSpec::Plane { point, normal, .. } => Arc::new(PlaneShape::new(at(point), normal).map_err(geometry)?),
             ObjectSpec::Disk { centre, normal, radius, .. } => {
-                Shape::Disk(Disk::from_centre_normal_radius(at(centre), normal, length(radius)).map_err(geometry)?)
+                Arc::new(DiskShape::new(at(centre), normal, length(radius)).map_err(geometry)?)
             }
-            ObjectSpec::Triangle { corners, .. } => {
-                let corners = corners.map(at);
-                let plane = Plane::through(corners[0], corners[1], corners[2]).map_err(geometry)?;
-                Shape::Triangle { plane, corners }
-            }
+            ObjectSpec::Triangle { corners, .. } => Arc::new(TriangleShape::new(corners.map(at)).map_err(geometry)?),
             #[cfg(feature = "evolved")]
-            ObjectSpec::Evolved { c1, c2, .. } => Shape::Evolved(Box::new(evolved(*c1, *c2, method, frame)?)),
+            ObjectSpec::Evolved { c1, c2, .. } => Arc::new(evolved(*c1, *c2, method, frame)?),
             #[cfg(not(feature = "evolved"))]
             ObjectSpec::Evolved { .. } => {
                 let _ = method;
@@ -441,7 +434,7 @@ fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method, frame: &Frame) -> Res
     let (c1, n1, r1) = circle(c1, frame).map_err(|e| format!("c1: {e}"))?;
     let (c2, n2, r2) = circle(c2, frame).map_err(|e| format!("c2: {e}"))?;
     let origin = [0, 1, 2].map(|k| 0.5 * (c1[k] + c2[k]));
-    let local = |c: E3, n, r| cga_core::Circle::from_centre_normal_radius(sub(c, origin), n, r).map_err(geometry);
+    let local = |c: E3, n, r| cga_core::Circle::from_centre_normal_radius(cga_core::euclid::sub(c, origin), n, r).map_err(geometry);
     let (c1, c2) =
         (local(c1, n1, r1).map_err(|e| format!("c1: {e}"))?, local(c2, n2, r2).map_err(|e| format!("c2: {e}"))?);
     EvolvedSurface::in_frame(origin, c1, c2, method).map_err(|e| e.to_string())

@@ -4,7 +4,7 @@
 use cga_core::euclid::{E3, norm, sub};
 use cga_trace::ray::Ray;
 use cga_trace::scene::Scene;
-use cga_trace::shapes::Shape;
+use cga_trace::surface::EvolvedSurface;
 use cga_trace::{Aov, Encoding, Film, Renderer};
 use std::path::{Path, PathBuf};
 
@@ -198,7 +198,7 @@ fn a_ray_in_a_far_end_circles_plane_hits_it() {
          c1 = {{ centre = [10000.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }}\n\
          c2 = {{ centre = [10000.0, 0.0, 2.0], normal = [0.0, 0.3, 1.0], radius = 1.5 }}\n"
     ));
-    let Shape::Evolved(surface) = &s.objects[0].shape else { panic!("an evolved surface") };
+    let surface = s.objects[0].shape.downcast_ref::<EvolvedSurface>().expect("an evolved surface");
     let f = s.frame;
     let ray = Ray::new(f.point([1e4, -10.0, 0.0]), [0.0, 1.0, 0.0]).unwrap();
     let hit = surface.intersect(&ray, 0.0, f64::INFINITY).expect("the ray lies in c1's plane and crosses c1");
@@ -240,7 +240,7 @@ fn look_at_works_for_any_pose() {
 #[test]
 fn a_ray_in_an_interior_circles_plane_is_not_missed() {
     let s = Scene::load(&scene_path("surface.toml")).unwrap();
-    let Shape::Evolved(surface) = &s.objects[0].shape else { panic!("an evolved surface") };
+    let surface = s.objects[0].shape.downcast_ref::<EvolvedSurface>().expect("an evolved surface");
     let (family, origin) = surface.family();
     let pair = family.pair;
     for alpha in [0.25, 0.5, 0.75] {
@@ -261,12 +261,10 @@ fn a_ray_in_an_interior_circles_plane_is_not_missed() {
 /// the nearer (dense sampling can step over a pair of close roots).
 #[test]
 fn fast_methods_agree_with_dense_sampling() {
-    use cga_trace::surface::{EvolvedSurface, Method};
+    use cga_trace::surface::Method;
     let scene = load_sized("combined.toml", 40, 30);
-    let Some(Shape::Evolved(surface)) = scene.objects.iter().map(|o| &o.shape).find(|s| matches!(s, Shape::Evolved(_)))
-    else {
-        panic!("the combined scene has an evolved surface")
-    };
+    let surface = (scene.objects.iter().find_map(|o| o.shape.downcast_ref::<EvolvedSurface>()))
+        .expect("the combined scene has an evolved surface");
     let reference = surface.with_method(Method::Sampling { samples: 1024 }).unwrap();
     let methods: Vec<EvolvedSurface> = [
         Method::default(),

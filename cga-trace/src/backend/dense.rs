@@ -6,11 +6,10 @@
 use super::Backend;
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::{Crossing, Shape, facing, inside_triangle};
-#[cfg(feature = "evolved")]
-use crate::surface::EvolvedSurface;
+use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
 use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
 use cga_core::{FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
+use std::sync::Arc;
 
 /// The dense back end.
 #[derive(Clone, Copy, Debug, Default)]
@@ -44,9 +43,8 @@ pub enum DenseShape {
         /// The corners.
         corners: [E3; 3],
     },
-    /// An evolved surface (cga-core).
-    #[cfg(feature = "evolved")]
-    Evolved(Box<EvolvedSurface>),
+    /// Any other shape (an evolved surface, a kind added later): its own sparse geometry.
+    Other(Arc<dyn Shape>),
 }
 
 fn dense_up(x: E3) -> Multivector {
@@ -125,16 +123,17 @@ impl Backend for Dense {
         Some(Ray { origin: camera.position(), dir, line })
     }
 
-    fn prepare(shape: &Shape) -> DenseShape {
-        match shape {
-            Shape::Sphere { sphere, centre, .. } => DenseShape::Sphere { sphere: (*sphere).into(), centre: *centre },
-            Shape::Plane(plane) => DenseShape::Plane((*plane).into()),
-            Shape::Disk(disk) => {
-                DenseShape::Disk { plane: disk.plane.into(), centre: disk.centre, radius: disk.radius }
-            }
-            Shape::Triangle { plane, corners } => DenseShape::Triangle { plane: (*plane).into(), corners: *corners },
-            #[cfg(feature = "evolved")]
-            Shape::Evolved(surface) => DenseShape::Evolved(surface.clone()),
+    fn prepare(shape: &Arc<dyn Shape>) -> DenseShape {
+        if let Some(s) = shape.downcast_ref::<SphereShape>() {
+            DenseShape::Sphere { sphere: s.sphere.into(), centre: s.centre }
+        } else if let Some(p) = shape.downcast_ref::<PlaneShape>() {
+            DenseShape::Plane(p.plane.into())
+        } else if let Some(DiskShape { disk }) = shape.downcast_ref::<DiskShape>() {
+            DenseShape::Disk { plane: disk.plane.into(), centre: disk.centre, radius: disk.radius }
+        } else if let Some(t) = shape.downcast_ref::<TriangleShape>() {
+            DenseShape::Triangle { plane: t.plane.into(), corners: t.corners }
+        } else {
+            DenseShape::Other(shape.clone())
         }
     }
 
@@ -152,8 +151,7 @@ impl Backend for Dense {
             DenseShape::Triangle { plane, corners } => {
                 meet_plane(&ray.line, plane).filter(|x| within(x) && inside_triangle(*x, corners))?
             }
-            #[cfg(feature = "evolved")]
-            DenseShape::Evolved(surface) => return surface.intersect(ray, t_min, t_max),
+            DenseShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
         Some(Crossing { t: ray.t_of(point), point, alpha: None })
     }
@@ -167,8 +165,9 @@ impl Backend for Dense {
                 let dual = Vector::from_dense(&plane.dual());
                 (Some(*plane), [-dual.e1, -dual.e2, -dual.e3])
             }
-            #[cfg(feature = "evolved")]
-            DenseShape::Evolved(surface) => return facing(surface.normal(crossing), ray.dir),
+            DenseShape::Other(shape) => {
+                return Ray::new(ray.origin, ray.dir).map_or([0.0, 0.0, 1.0], |r| shape.normal(&r, crossing));
+            }
         };
         // L' − L, the reflected minus the incident line, is the normal line.
         let from_lines = mirror

@@ -5,7 +5,11 @@
 //! - [`Dense`]: the same algorithm with every product on the dense 32-coefficient
 //!   [`Multivector`](cga_core::Multivector) — what a user of a dense CGA library writes.
 //! - [`Plain`]: textbook Euclidean formulas with glam for spheres, planes, disks and
-//!   triangles; evolved surfaces reuse cga-core.
+//!   triangles.
+//!
+//! The last two are comparison baselines: they specialise the primitives they know (by
+//! downcasting) and hand every other shape — evolved surfaces, and any kind added later —
+//! to its own sparse geometry, so a new shape needs nothing here.
 //!
 //! A back end turns rays into what it meets objects with (its carrier), prepares each
 //! scene object once, and intersects and shades them; the integrator
@@ -21,6 +25,7 @@ use cga_core::Line;
 use cga_core::euclid::E3;
 pub use dense::{Dense, DenseShape};
 pub use plain::{Plain, PlainShape};
+use std::sync::Arc;
 
 /// Geometry code the renderer runs on.
 pub trait Backend: Send + Sync + 'static {
@@ -35,7 +40,7 @@ pub trait Backend: Send + Sync + 'static {
     /// The camera ray through pixel coordinates `(u, v)`.
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<Self::Carrier>>;
     /// A scene object in this back end's form.
-    fn prepare(shape: &Shape) -> Self::Shape;
+    fn prepare(shape: &Arc<dyn Shape>) -> Self::Shape;
     /// The nearest crossing with `t_min < t < t_max`.
     fn intersect(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> Option<Crossing>;
     /// The unit normal at a crossing, facing the ray.
@@ -48,7 +53,7 @@ pub struct Sparse;
 
 impl Backend for Sparse {
     type Carrier = Line;
-    type Shape = Shape;
+    type Shape = Arc<dyn Shape>;
     const NAME: &'static str = "sparse";
 
     fn ray(origin: E3, dir: E3) -> Option<Ray> {
@@ -59,15 +64,15 @@ impl Backend for Sparse {
         camera.ray(u, v)
     }
 
-    fn prepare(shape: &Shape) -> Shape {
+    fn prepare(shape: &Arc<dyn Shape>) -> Arc<dyn Shape> {
         shape.clone()
     }
 
-    fn intersect(shape: &Shape, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+    fn intersect(shape: &Arc<dyn Shape>, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         shape.intersect(ray, t_min, t_max)
     }
 
-    fn normal(shape: &Shape, ray: &Ray, crossing: &Crossing) -> E3 {
+    fn normal(shape: &Arc<dyn Shape>, ray: &Ray, crossing: &Crossing) -> E3 {
         shape.normal(ray, crossing)
     }
 }

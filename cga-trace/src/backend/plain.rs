@@ -1,15 +1,14 @@
 //! Plain-vector geometry with glam: the textbook formulas a tracer without CGA uses.
 //! Ray–sphere: the quadratic `|o + t d − c|² = r²`; ray–plane: `t = (δ − n·o)/(n·d)`;
-//! normals: `(x − c)/r` and `n`. Evolved surfaces reuse cga-core.
+//! normals: `(x − c)/r` and `n`. Other shapes (evolved surfaces) use their own geometry.
 
 use super::Backend;
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::{Crossing, Shape, facing, inside_triangle};
-#[cfg(feature = "evolved")]
-use crate::surface::EvolvedSurface;
+use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
 use cga_core::euclid::{E3, cross, unit};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// The plain-vector back end.
 #[derive(Clone, Copy, Debug, Default)]
@@ -52,9 +51,8 @@ pub enum PlainShape {
         /// Corners.
         corners: [E3; 3],
     },
-    /// An evolved surface (cga-core).
-    #[cfg(feature = "evolved")]
-    Evolved(Box<EvolvedSurface>),
+    /// Any other shape (an evolved surface, a kind added later): its own sparse geometry.
+    Other(Arc<dyn Shape>),
 }
 
 impl Backend for Plain {
@@ -72,25 +70,22 @@ impl Backend for Plain {
         Self::ray(camera.position(), (x * a + y * b + z * c).into())
     }
 
-    fn prepare(shape: &Shape) -> PlainShape {
+    fn prepare(shape: &Arc<dyn Shape>) -> PlainShape {
         let flat = |plane: &cga_core::Plane| plane.normal_offset().map_or((DVec3::Z, 0.0), |(n, d)| (n.into(), d));
-        match shape {
-            Shape::Sphere { centre, radius, .. } => PlainShape::Sphere { centre: (*centre).into(), radius: *radius },
-            Shape::Plane(plane) => {
-                let (normal, offset) = flat(plane);
-                PlainShape::Plane { normal, offset }
-            }
-            Shape::Disk(disk) => {
-                let (normal, offset) = flat(&disk.plane);
-                PlainShape::Disk { normal, offset, centre: disk.centre.into(), radius: disk.radius }
-            }
-            Shape::Triangle { corners, .. } => {
-                let [a, b, c] = corners.map(DVec3::from);
-                let normal = unit(cross((b - a).into(), (c - a).into())).map_or(DVec3::Z, DVec3::from);
-                PlainShape::Triangle { normal, offset: normal.dot(a), corners: *corners }
-            }
-            #[cfg(feature = "evolved")]
-            Shape::Evolved(surface) => PlainShape::Evolved(surface.clone()),
+        if let Some(s) = shape.downcast_ref::<SphereShape>() {
+            PlainShape::Sphere { centre: s.centre.into(), radius: s.radius }
+        } else if let Some(p) = shape.downcast_ref::<PlaneShape>() {
+            let (normal, offset) = flat(&p.plane);
+            PlainShape::Plane { normal, offset }
+        } else if let Some(DiskShape { disk }) = shape.downcast_ref::<DiskShape>() {
+            let (normal, offset) = flat(&disk.plane);
+            PlainShape::Disk { normal, offset, centre: disk.centre.into(), radius: disk.radius }
+        } else if let Some(t) = shape.downcast_ref::<TriangleShape>() {
+            let [a, b, c] = t.corners.map(DVec3::from);
+            let normal = unit(cross((b - a).into(), (c - a).into())).map_or(DVec3::Z, DVec3::from);
+            PlainShape::Triangle { normal, offset: normal.dot(a), corners: t.corners }
+        } else {
+            PlainShape::Other(shape.clone())
         }
     }
 
@@ -120,8 +115,7 @@ impl Backend for Plain {
             PlainShape::Triangle { normal, offset, corners } => {
                 on_plane(*normal, *offset).filter(|&t| inside_triangle((o + t * d).into(), corners))?
             }
-            #[cfg(feature = "evolved")]
-            PlainShape::Evolved(surface) => return surface.intersect(ray, t_min, t_max),
+            PlainShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
         Some(Crossing { t, point: (o + t * d).into(), alpha: None })
     }
@@ -132,8 +126,9 @@ impl Backend for Plain {
             PlainShape::Plane { normal, .. }
             | PlainShape::Disk { normal, .. }
             | PlainShape::Triangle { normal, .. } => *normal,
-            #[cfg(feature = "evolved")]
-            PlainShape::Evolved(surface) => return facing(surface.normal(crossing), ray.dir),
+            PlainShape::Other(shape) => {
+                return Ray::new(ray.origin, ray.dir).map_or([0.0, 0.0, 1.0], |r| shape.normal(&r, crossing));
+            }
         };
         facing(n.into(), ray.dir)
     }

@@ -5,7 +5,7 @@ use super::bernstein::Roots;
 use super::tree::{PAD, Tree};
 use super::{Family, Finder, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
-use crate::shapes::Crossing;
+use crate::shapes::{Crossing, Shape, facing};
 use cga_core::euclid::{E3, add, norm, scale, sub};
 use cga_core::{Circle, Line, Pair, Sandwich, Translator};
 
@@ -157,5 +157,23 @@ impl EvolvedSurface {
                 cga_core::euclid::unit(sub(x, c))
             })
             .unwrap_or([0.0, 0.0, 1.0])
+    }
+}
+
+impl Shape for EvolvedSurface {
+    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        EvolvedSurface::intersect(self, ray, t_min, t_max)
+    }
+
+    fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
+        facing(EvolvedSurface::normal(self, crossing), ray.dir)
+    }
+
+    fn bounds(&self) -> Option<(E3, f64)> {
+        Some(EvolvedSurface::bounds(self))
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
     }
 }

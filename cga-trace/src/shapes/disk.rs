@@ -1,0 +1,46 @@
+//! A disk: its plane met as a flat point, kept if within the rim.
+
+use super::plane::{cross_plane, flat_normal};
+use super::{Crossing, Shape, crossing_at, within};
+use crate::ray::Ray;
+use cga_core::euclid::{E3, norm, sub};
+use cga_core::{Disk, GeometryError};
+
+/// A disk: a circle, its plane, its exact centre and radius.
+#[derive(Clone, Debug)]
+pub struct DiskShape {
+    /// The disk.
+    pub disk: Disk,
+}
+
+impl DiskShape {
+    /// The disk of `centre`, `normal` and `radius`.
+    pub fn new(centre: E3, normal: E3, radius: f64) -> Result<Self, GeometryError> {
+        Ok(DiskShape { disk: Disk::from_centre_normal_radius(centre, normal, radius)? })
+    }
+}
+
+impl Shape for DiskShape {
+    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let d = &self.disk;
+        let x = cross_plane(ray, &d.plane)?;
+        (within(ray, t_min, t_max)(&x) && norm(sub(x, d.centre)) <= d.radius).then(|| crossing_at(ray, x))
+    }
+
+    fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
+        flat_normal(ray, &self.disk.plane)
+    }
+
+    fn bounds(&self) -> Option<(E3, f64)> {
+        Some((self.disk.centre, self.disk.radius))
+    }
+
+    /// A plane's meet and a rim test cost more than a bounding-sphere test.
+    fn cull(&self) -> bool {
+        true
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}

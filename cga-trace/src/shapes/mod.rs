@@ -1,0 +1,114 @@
+//! The objects a scene holds and how a ray meets them, one module per kind of shape. Every
+//! intersection is a CGA meet with the ray's line; of its points the nearest with
+//! `t_min < t < t_max` counts (hits behind the origin are dropped one by one, never the whole
+//! object). Finding a crossing and shading it are separate: shadow rays only need the
+//! crossing, so the normal — from the reflected line `N = L' − L` for primitives, from
+//! eq. 6–11 for evolved surfaces — is computed only for the hit that is shaded.
+//!
+//! A shape owns everything about itself ([`Shape`]): its intersection, its normal, its
+//! bounds and whether a ray should test them first. Adding a kind of shape is a module
+//! here (or, like [`crate::surface`], beside) and its entry in the scene format
+//! ([`crate::format`]); see ARCHITECTURE.md, "Adding a shape".
+
+mod disk;
+mod plane;
+mod sphere;
+mod triangle;
+
+use crate::ray::Ray;
+use cga_core::Plane;
+use cga_core::euclid::{E3, dot, unit};
+use core::any::Any;
+use core::fmt::Debug;
+pub use disk::DiskShape;
+pub use plane::PlaneShape;
+pub use sphere::SphereShape;
+pub use triangle::TriangleShape;
+pub(crate) use triangle::inside_triangle;
+
+/// Where a ray crosses an object.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// Ray parameter.
+    pub t: f64,
+    /// The point.
+    pub point: E3,
+    /// For an evolved surface, the α of the circle hit.
+    pub alpha: Option<f64>,
+}
+
+/// A crossing with its normal, ready to shade.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// Ray parameter.
+    pub t: f64,
+    /// The point.
+    pub point: E3,
+    /// Unit normal, facing the side the ray came from (surfaces are two-sided).
+    pub normal: E3,
+    /// For an evolved surface, the α of the circle hit.
+    pub alpha: Option<f64>,
+}
+
+/// A scene object's geometry: how rays meet it (with the generated sparse types), its
+/// normal, its bounds. Everything about a kind of shape is in its implementation.
+pub trait Shape: Send + Sync + Debug + Any {
+    /// The nearest crossing with `t_min < t < t_max`.
+    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing>;
+
+    /// The unit normal at a crossing of `ray`, facing the ray.
+    fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3;
+
+    /// A sphere `(centre, radius)` holding the shape, `None` when unbounded (a plane).
+    fn bounds(&self) -> Option<(E3, f64)>;
+
+    /// Whether a ray should test [`Shape::bounds`] before the shape itself: where the
+    /// shape's own test costs more than a sphere's (a sphere's does not; an evolved surface
+    /// culls itself).
+    fn cull(&self) -> bool {
+        false
+    }
+
+    /// The shape as `Any`, for back ends that specialise some kinds (the comparison
+    /// baselines) and for inspection.
+    fn as_any(&self) -> &dyn Any;
+
+    /// The nearest crossing and its normal.
+    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let c = self.intersect(ray, t_min, t_max)?;
+        Some(Hit { t: c.t, point: c.point, normal: self.normal(ray, &c), alpha: c.alpha })
+    }
+}
+
+impl dyn Shape {
+    /// The shape as a `S`, if it is one.
+    pub fn downcast_ref<S: Shape>(&self) -> Option<&S> {
+        self.as_any().downcast_ref()
+    }
+}
+
+/// Whether the point of a ray lies within `(t_min, t_max)`.
+fn within(ray: &Ray, t_min: f64, t_max: f64) -> impl Fn(&E3) -> bool + '_ {
+    move |x| {
+        let t = ray.t_of(*x);
+        t > t_min && t < t_max
+    }
+}
+
+/// The crossing at `point`.
+fn crossing_at(ray: &Ray, point: E3) -> Crossing {
+    Crossing { t: ray.t_of(point), point, alpha: None }
+}
+
+/// The unit normal from the reflected line: the direction of `L' − L` for the mirror plane
+/// at the crossing, or `fallback` where that vanishes (a grazing ray, `L' = L`), facing the ray.
+fn mirror_normal(ray: &Ray, mirror: Option<Plane>, fallback: E3) -> E3 {
+    // Only the direction of L' − L is needed: no normalisation.
+    let from_lines = mirror.and_then(|m| (ray.line.reflect_in_plane(&m) - ray.line).direction().ok());
+    facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
+}
+
+/// `n` turned to face against `dir`.
+pub(crate) fn facing(n: E3, dir: E3) -> E3 {
+    if dot(n, dir) > 0.0 { n.map(|x| -x) } else { n }
+}

@@ -1,0 +1,51 @@
+//! A sphere: met as the point pair `L ∨ S`, classified by its square.
+
+use super::{Crossing, Shape, crossing_at, mirror_normal, within};
+use crate::ray::Ray;
+use cga_core::euclid::{E3, sub};
+use cga_core::{GeometryError, Hit as MeetHit, Plane, RoundMeet, Sphere};
+
+/// A sphere, with its centre and radius (for bounds and normals).
+#[derive(Clone, Debug)]
+pub struct SphereShape {
+    /// OPNS sphere, normalised.
+    pub sphere: Sphere,
+    /// Centre.
+    pub centre: E3,
+    /// Radius.
+    pub radius: f64,
+}
+
+impl SphereShape {
+    /// The sphere of `centre` and `radius`.
+    pub fn new(centre: E3, radius: f64) -> Result<Self, GeometryError> {
+        Ok(SphereShape { sphere: Sphere::from_centre_radius(centre, radius)?, centre, radius })
+    }
+}
+
+impl Shape for SphereShape {
+    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        // Rays and spheres are normalised, so the meet is classified with weight 1, as
+        // `Line::meet_sphere` would after computing the two norms.
+        let meet = RoundMeet::new(ray.line & self.sphere, 1.0);
+        if meet.hit == MeetHit::Miss {
+            return None;
+        }
+        let point = meet.points_along(ray.dir)?.into_iter().find(within(ray, t_min, t_max))?;
+        Some(crossing_at(ray, point))
+    }
+
+    /// From the line reflected in the tangent plane at the crossing.
+    fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
+        let x = crossing.point;
+        mirror_normal(ray, Plane::from_point_normal(x, sub(x, self.centre)).ok(), sub(x, self.centre))
+    }
+
+    fn bounds(&self) -> Option<(E3, f64)> {
+        Some((self.centre, self.radius))
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
