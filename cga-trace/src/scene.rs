@@ -434,7 +434,9 @@ fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method, frame: &Frame) -> Res
     let (c1, n1, r1) = circle(c1, frame).map_err(|e| format!("c1: {e}"))?;
     let (c2, n2, r2) = circle(c2, frame).map_err(|e| format!("c2: {e}"))?;
     let origin = [0, 1, 2].map(|k| 0.5 * (c1[k] + c2[k]));
-    let local = |c: E3, n, r| cga_core::Circle::from_centre_normal_radius(cga_core::euclid::sub(c, origin), n, r).map_err(geometry);
+    let local = |c: E3, n, r| {
+        cga_core::Circle::from_centre_normal_radius(cga_core::euclid::sub(c, origin), n, r).map_err(geometry)
+    };
     let (c1, c2) =
         (local(c1, n1, r1).map_err(|e| format!("c1: {e}"))?, local(c2, n2, r2).map_err(|e| format!("c2: {e}"))?);
     EvolvedSurface::in_frame(origin, c1, c2, method).map_err(|e| e.to_string())

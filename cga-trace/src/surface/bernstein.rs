@@ -8,6 +8,7 @@
 //! interval's coefficients change sign at most once, then refined by Newton steps kept
 //! inside the bracket — no companion-matrix eigenvalues.
 
+use super::newton::{Stop, safeguarded};
 use cga_core::Real;
 use smallvec::SmallVec;
 
@@ -298,34 +299,13 @@ impl<T: Real> Bernstein<T> {
         // few ulps of the largest coefficient): further steps only wander.
         let largest = self.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
         let noise = T::from_f64(16.0) * T::epsilon() * largest;
-        let (mut lo, mut hi) = (a, b);
-        let half = T::from_f64(0.5);
         let tolerance = tolerance.max(T::epsilon() * T::from_f64(4.0));
         // Start where the control polygon crosses zero (over the whole interval: it lies
         // within O(1/n²) of the curve), or where the chord does.
         let start = if a == T::zero() && b == T::one() { self.polygon_crossing() } else { None };
-        let mut t = start.unwrap_or_else(|| a + (b - a) * pa / (pa - pb));
-        if !(t > a && t < b) {
-            t = half * (a + b);
-        }
-        for _ in 0..100 {
-            let (p, slope) = self.eval_with_slope(t);
-            if p.abs() <= noise {
-                return t;
-            }
-            if (p > T::zero()) == positive_at_a {
-                lo = t;
-            } else {
-                hi = t;
-            }
-            let step = t - p / slope;
-            let next = if step > lo && step < hi { step } else { half * (lo + hi) };
-            if (next - t).abs() <= tolerance || hi - lo <= tolerance {
-                return next;
-            }
-            t = next;
-        }
-        t
+        let start = start.unwrap_or_else(|| a + (b - a) * pa / (pa - pb));
+        let stop = Stop { noise, absolute: tolerance, relative: T::zero(), iterations: 100 };
+        safeguarded(|t| Some(self.eval_with_slope(t)), (a, b), positive_at_a, start, stop)
     }
 
     /// Where the control polygon `(k/n, cₖ)` first crosses zero.

@@ -7,6 +7,7 @@
 //! [`Family::polynomial`]) whose roots are isolated in the Bernstein basis.
 
 use super::bernstein::{Bernstein, Roots, Scaled};
+use super::newton::{Stop, safeguarded};
 use cga_core::euclid::{E3, dot, norm, scale, sub};
 use cga_core::{Circle, Dual, Interpolable, Line, Pair, Real, ScalarQuadvector, Vector, down};
 use smallvec::SmallVec;
@@ -322,30 +323,10 @@ impl<T: Real> Family<T> {
 
     /// The root of `f` in `[lo, hi]` (`f(lo) = f_lo`, `f(hi)` of the other sign): Newton
     /// steps with the exact slope, replaced by bisection whenever one would leave the bracket.
-    fn newton(&self, line: &Line<Dual<T>>, mut lo: T, mut hi: T, f_lo: T) -> T {
-        let positive_lo = f_lo > T::zero();
-        let half = T::from_f64(0.5);
+    fn newton(&self, line: &Line<Dual<T>>, lo: T, hi: T, f_lo: T) -> T {
         let eps = T::epsilon();
-        let mut x = half * (lo + hi);
-        for _ in 0..64 {
-            let Some((f, slope)) = self.f_and_slope(line, x) else { return x };
-            if f == T::zero() {
-                return x;
-            }
-            if (f > T::zero()) == positive_lo {
-                lo = x
-            } else {
-                hi = x
-            }
-            let step = x - f / slope;
-            let next = if step > lo && step < hi { step } else { half * (lo + hi) };
-            let small = T::from_f64(4.0) * eps * next.abs().max(T::from_f64(1e-30));
-            if (next - x).abs() <= small || hi - lo <= eps + eps {
-                return next;
-            }
-            x = next;
-        }
-        x
+        let stop = Stop { noise: T::zero(), absolute: eps + eps, relative: T::from_f64(4.0) * eps, iterations: 64 };
+        safeguarded(|x| self.f_and_slope(line, x), (lo, hi), f_lo > T::zero(), T::from_f64(0.5) * (lo + hi), stop)
     }
 
     /// The α minimising `|f|` on `[lo, hi]` (golden-section search).

@@ -22,6 +22,8 @@ mod evolved;
 #[cfg(feature = "evolved")]
 pub mod family;
 #[cfg(feature = "evolved")]
+mod newton;
+#[cfg(feature = "evolved")]
 mod tree;
 
 use cga_core::{GeometryError, InterpolationError};
