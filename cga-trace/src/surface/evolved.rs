@@ -3,7 +3,7 @@
 
 use super::bernstein::Roots;
 use super::tree::{PAD, Tree};
-use super::{Family, Finder, Method, SurfaceError};
+use super::{Family, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
 use cga_core::euclid::{E3, add, norm, scale, sub};
@@ -72,12 +72,7 @@ impl EvolvedSurface {
 
     /// The bounding-sphere tree, for the methods that cull with one.
     fn tree(pair: &Pair<Circle>, method: Method) -> Result<Option<Tree>, SurfaceError> {
-        Ok(match method {
-            Method::Hierarchy { leaves, .. } | Method::Hybrid { leaves, .. } => {
-                Some(Tree::new(pair, leaves.next_power_of_two().max(1))?)
-            }
-            Method::Sampling { .. } | Method::Polynomial { .. } => None,
-        })
+        method.tree_leaves().map(|leaves| Tree::new(pair, leaves)).transpose()
     }
 
     /// The bounding sphere `(centre, radius)` in world coordinates.
@@ -110,19 +105,13 @@ impl EvolvedSurface {
     pub fn candidates(&self, local: &Ray, t_min: f64, t_max: f64) -> Roots<f64> {
         let mut out = Roots::new();
         let line = &local.line;
-        let culled = |finder: &dyn Fn(usize) -> Finder, out: &mut Roots<f64>| {
-            let tree = self.tree.as_ref().expect("a tree for this method");
-            for (lo, hi, leaves) in tree.intervals(local, t_min, t_max) {
-                self.family.roots(line, finder(leaves), lo, hi, out);
+        match &self.tree {
+            Some(tree) => {
+                for (lo, hi, leaves) in tree.intervals(local, t_min, t_max) {
+                    self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
+                }
             }
-        };
-        match self.method {
-            Method::Sampling { samples } => self.family.roots(line, Finder::Samples(samples), 0.0, 1.0, &mut out),
-            Method::Polynomial { tolerance } => {
-                self.family.roots(line, Finder::Polynomial(tolerance), 0.0, 1.0, &mut out)
-            }
-            Method::Hierarchy { per_leaf, .. } => culled(&|leaves| Finder::Slope(per_leaf.max(2) * leaves), &mut out),
-            Method::Hybrid { tolerance, .. } => culled(&|_| Finder::Polynomial(tolerance), &mut out),
+            None => self.family.roots(line, self.method.finder(1), 0.0, 1.0, &mut out),
         }
         out
     }
@@ -132,12 +121,7 @@ impl EvolvedSurface {
     pub fn intersect<C>(&self, ray: &Ray<C>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let local = self.local_ray(ray, t_min, t_max)?;
         let alphas = self.candidates(&local, t_min, t_max);
-        let polish = match self.method {
-            Method::Polynomial { tolerance } | Method::Hybrid { tolerance, .. } => {
-                Finder::Polynomial(tolerance).polishes()
-            }
-            Method::Sampling { .. } | Method::Hierarchy { .. } => false,
-        };
+        let polish = self.method.finder(1).polishes();
         let ray = (local.origin, local.dir, &local.line);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;
         Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })

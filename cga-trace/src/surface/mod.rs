@@ -98,6 +98,30 @@ impl Default for Method {
     }
 }
 
+/// The one place where a [`Method`] becomes the two things it decides: how rays are culled
+/// (an α-tree of bounding spheres, or none) and how roots are found over each α-interval a
+/// ray reaches ([`Finder`]).
+#[cfg(feature = "evolved")]
+impl Method {
+    /// The leaves of the α-tree the method culls with (a power of two), `None` for no tree.
+    pub fn tree_leaves(&self) -> Option<usize> {
+        match *self {
+            Method::Hierarchy { leaves, .. } | Method::Hybrid { leaves, .. } => Some(leaves.next_power_of_two().max(1)),
+            Method::Sampling { .. } | Method::Polynomial { .. } => None,
+        }
+    }
+
+    /// The root finder over an interval spanning `leaves` leaves of the tree (the whole of
+    /// `[0, 1]` for methods without one).
+    pub fn finder(&self, leaves: usize) -> Finder {
+        match *self {
+            Method::Sampling { samples } => Finder::Samples(samples),
+            Method::Polynomial { tolerance } | Method::Hybrid { tolerance, .. } => Finder::Polynomial(tolerance),
+            Method::Hierarchy { per_leaf, .. } => Finder::Slope(per_leaf.max(2) * leaves),
+        }
+    }
+}
+
 impl Method {
     /// Why these settings cannot work, if they cannot.
     pub fn check(&self) -> Result<(), String> {
