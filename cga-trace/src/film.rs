@@ -1,7 +1,7 @@
 //! The film: linear RGB pixels, `(0, 0)` bottom-left, written to PNG with the sRGB transfer
 //! curve (or clipped linear values).
 
-use crate::scene::Encoding;
+use crate::settings::Encoding;
 use std::path::Path;
 
 /// A rendered image in linear RGB.

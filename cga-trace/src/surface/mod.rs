@@ -124,17 +124,17 @@ impl Method {
 
 impl Method {
     /// Why these settings cannot work, if they cannot.
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), &'static str> {
         let leaves_ok = |leaves: usize| (1..=1 << 16).contains(&leaves);
         let tolerance_ok = |t: f64| (0.0..=0.1).contains(&t);
         match *self {
-            Method::Sampling { samples } if samples < 2 => Err("samples must be at least 2".into()),
+            Method::Sampling { samples } if samples < 2 => Err("samples must be at least 2"),
             Method::Hierarchy { leaves, per_leaf } if !leaves_ok(leaves) || per_leaf < 2 => {
-                Err("leaves must be 1 to 65536 and per_leaf at least 2".into())
+                Err("leaves must be 1 to 65536 and per_leaf at least 2")
             }
-            Method::Polynomial { tolerance } if !tolerance_ok(tolerance) => Err("tolerance must be 0 to 0.1".into()),
+            Method::Polynomial { tolerance } if !tolerance_ok(tolerance) => Err("tolerance must be 0 to 0.1"),
             Method::Hybrid { leaves, tolerance } if !leaves_ok(leaves) || !tolerance_ok(tolerance) => {
-                Err("leaves must be 1 to 65536 and tolerance 0 to 0.1".into())
+                Err("leaves must be 1 to 65536 and tolerance 0 to 0.1")
             }
             _ => Ok(()),
         }
