@@ -1,7 +1,7 @@
 //! The scene file format (TOML, via serde): what each table and object may hold, and how a
 //! parsed file becomes the camera, frame and shapes of a [`Scene`](crate::Scene). Unknown
-//! fields are errors. Each kind of object is one variant of [`ObjectSpec`] and one arm of
-//! [`build_object`], which calls the shape's own constructor.
+//! fields are errors. Each kind of object is one variant of `ObjectSpec` and one arm of
+//! `build_object`, which calls the shape's own constructor.
 
 use crate::camera::Camera;
 use crate::frame::Frame;

@@ -1,0 +1,222 @@
+//! Tables → Rust. Every generated function is straight-line code over named fields: one
+//! expression per nonzero output blade, one multiplication per nonzero table term.
+
+use crate::model::{Algebra, Bilinear, Product, Term, Unary, cover};
+use crate::{Spec, TypeSpec};
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+use std::collections::BTreeMap;
+
+mod approx;
+mod dense;
+mod products;
+mod registry;
+mod types;
+
+pub fn generate(spec: &Spec) -> TokenStream {
+    let g = Gen::new(spec);
+    let mut out = g.traits();
+    for t in &spec.types {
+        out.extend(g.type_items(t));
+    }
+    out.extend(g.embeddings());
+    out.extend(g.products());
+    out.extend(g.sandwiches());
+    out.extend(g.dense());
+    out.extend(g.registry());
+    out.extend(g.aliases());
+    out.extend(approx::approx(spec));
+    out
+}
+
+/// Where a map's result goes: a declared type, or the dense type when none covers it.
+#[derive(Clone, Copy)]
+enum Target {
+    Type(usize),
+    Dense,
+}
+
+/// A product to generate: its kind, operand types (indices), result and table.
+struct Planned {
+    kind: Product,
+    lhs: usize,
+    rhs: usize,
+    target: Target,
+    table: Bilinear,
+}
+
+/// Names and symbols of a product kind.
+struct ProductNames {
+    trait_name: &'static str,
+    method: &'static str,
+    operator: Option<(&'static str, &'static str)>,
+    formula: &'static str,
+    kind_variant: &'static str,
+}
+
+fn names(kind: Product) -> ProductNames {
+    let (trait_name, method, operator, formula, kind_variant) = match kind {
+        Product::Geometric => ("GeometricProduct", "gp", Some(("Mul", "mul")), "A B", "Geometric"),
+        Product::Outer => ("OuterProduct", "wedge", Some(("BitXor", "bitxor")), "A ∧ B", "Outer"),
+        Product::Inner => ("InnerProduct", "inner", Some(("BitOr", "bitor")), "A · B (Hestenes)", "Inner"),
+        Product::LeftContraction => ("LeftContraction", "lc", None, "A ⌋ B", "LeftContraction"),
+        Product::Regressive => ("RegressiveProduct", "vee", Some(("BitAnd", "bitand")), "A ∨ B", "Regressive"),
+    };
+    ProductNames { trait_name, method, operator, formula, kind_variant }
+}
+
+/// The two stages of a versor's sandwich on a type (see `Gen::sandwich_plan`).
+struct SandwichPlan {
+    versor: usize,
+    object: usize,
+    stage1: Bilinear,
+    stage2: Bilinear,
+    target: Target,
+}
+
+struct Gen<'a> {
+    spec: &'a Spec,
+    a: &'a Algebra,
+    real: &'a syn::Path,
+    dim: usize,
+    /// Canonical position of every storage blade: its index in storage arrays.
+    rank: Vec<usize>,
+    /// Every nonzero product of an ordered pair of types, planned once (the products and
+    /// the registry both read it).
+    plans: Vec<Planned>,
+    /// Every sandwich of a versor on a type, planned once.
+    sandwich_plans: Vec<SandwichPlan>,
+}
+
+impl<'a> Gen<'a> {
+    fn new(spec: &'a Spec) -> Self {
+        let a = &spec.algebra;
+        let mut g =
+            Gen { spec, a, real: &spec.scalar, dim: a.dim(), rank: a.rank(), plans: vec![], sandwich_plans: vec![] };
+        g.plans = g.product_plan();
+        g.sandwich_plans = g.all_sandwich_plans();
+        g
+    }
+
+    pub(super) fn field(&self, blade: usize) -> syn::Ident {
+        format_ident!("{}", self.a.blade_name(blade))
+    }
+
+    pub(super) fn target_for(&self, blades: &[usize]) -> Option<Target> {
+        let models: Vec<_> = self.spec.types.iter().map(|t| t.model.clone()).collect();
+        match cover(&models, blades) {
+            Some(t) => Some(Target::Type(t)),
+            None => self.spec.dense.as_ref().map(|_| Target::Dense),
+        }
+    }
+
+    pub(super) fn target_ty(&self, target: Target) -> TokenStream {
+        let ident = match target {
+            Target::Type(t) => &self.spec.types[t].ident,
+            Target::Dense => &self.dense_ident(),
+        };
+        quote!(#ident<T>)
+    }
+
+    pub(super) fn target_name(&self, target: Target) -> String {
+        match target {
+            Target::Type(t) => self.spec.types[t].ident.to_string(),
+            Target::Dense => self.dense_ident().to_string(),
+        }
+    }
+
+    /// Storage indices of a target's blades, as a `&'static [usize]` expression.
+    pub(super) fn target_index(&self, target: Target) -> TokenStream {
+        match target {
+            Target::Type(t) => {
+                let ranks = self.spec.types[t].model.blades.iter().map(|&b| self.rank[b]);
+                quote!(&[#(#ranks),*])
+            }
+            Target::Dense => {
+                let all = 0..self.dim;
+                quote!(&[#(#all),*])
+            }
+        }
+    }
+
+    pub(super) fn dense_ident(&self) -> syn::Ident {
+        self.spec.dense.as_ref().map_or_else(|| format_ident!("Multivector"), |d| d.name.clone())
+    }
+
+    /// A value of `target` whose blades are given by `exprs` (the rest zero).
+    pub(super) fn construct(&self, target: Target, exprs: &BTreeMap<usize, TokenStream>) -> TokenStream {
+        let real = self.real;
+        match target {
+            Target::Type(t) => {
+                let ty = &self.spec.types[t];
+                let ident = &ty.ident;
+                let fields = ty.model.blades.iter().map(|&b| {
+                    let f = self.field(b);
+                    match exprs.get(&b) {
+                        Some(e) => quote!(#f: #e),
+                        None => quote!(#f: <T as #real>::zero()),
+                    }
+                });
+                quote!(#ident { #(#fields),* })
+            }
+            Target::Dense => {
+                let dense = self.dense_ident();
+                let dim = self.dim;
+                let sets = exprs.iter().map(|(b, e)| {
+                    let i = self.rank[*b];
+                    quote!(c[#i] = #e;)
+                });
+                quote!({
+                    let mut c = [<T as #real>::zero(); #dim];
+                    #(#sets)*
+                    #dense::from_storage(&c)
+                })
+            }
+        }
+    }
+
+    /// `Σ coeff · product`, signs folded into `+`/`−`; a coefficient other than ±1 costs
+    /// one multiplication by a constant.
+    pub(super) fn sum(&self, terms: impl IntoIterator<Item = (f64, TokenStream)>) -> TokenStream {
+        let real = self.real;
+        let mut out = TokenStream::new();
+        for (i, (c, p)) in terms.into_iter().enumerate() {
+            let magnitude = c.abs();
+            let p = if (magnitude - 1.0).abs() < 1e-12 {
+                p
+            } else {
+                let m = Literal::f64_suffixed(magnitude);
+                quote!(<T as #real>::from_f64(#m) * (#p))
+            };
+            out.extend(match (i, c < 0.0) {
+                (0, false) => p,
+                (0, true) => quote!(-#p),
+                (_, false) => quote!(+ #p),
+                (_, true) => quote!(- #p),
+            });
+        }
+        out
+    }
+
+    pub(super) fn bilinear_exprs(
+        &self,
+        terms: &[(usize, Vec<Term>)],
+        lhs: &[usize],
+        rhs: &[usize],
+    ) -> BTreeMap<usize, TokenStream> {
+        terms
+            .iter()
+            .map(|(blade, terms)| {
+                let e = self.sum(terms.iter().map(|t| {
+                    let (l, r) = (self.field(lhs[t.lhs]), self.field(rhs[t.rhs]));
+                    (t.coeff, quote!(a.#l * b.#r))
+                }));
+                (*blade, e)
+            })
+            .collect()
+    }
+}
+
+fn subscript(k: usize) -> char {
+    char::from_u32(0x2080 + k as u32).unwrap_or('?')
+}

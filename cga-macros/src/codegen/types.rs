@@ -1,0 +1,386 @@
+//! Per type: the struct, its constructors and conversions, reverse, involute, conjugate,
+//! dual, grade projections, norms, arithmetic; embeddings between types; aliases; the
+//! product traits.
+
+use super::*;
+
+impl Gen<'_> {
+    pub(super) fn traits(&self) -> TokenStream {
+        let mut out = TokenStream::new();
+        for kind in Product::ALL {
+            let n = names(kind);
+            let (tr, m) = (format_ident!("{}", n.trait_name), format_ident!("{}", n.method));
+            let doc = format!(
+                " The product `{}`, generated for every pair of types whose Cayley table is not identically zero.",
+                n.formula
+            );
+            out.extend(quote! {
+                #[doc = #doc]
+                pub trait #tr<Rhs> {
+                    /// The smallest declared type that holds every nonzero blade of the result.
+                    type Output;
+                    #[doc = #doc]
+                    fn #m(self, rhs: Rhs) -> Self::Output;
+                }
+            });
+        }
+        out.extend(quote! {
+            /// The sandwich `V X Ṽ` of a versor `V` and any object `X`. A versor preserves
+            /// grades, so only `X`'s grades are computed; the result type is the smallest
+            /// declared type holding the nonzero blades of those grades (a translator turns
+            /// a rotor into a motor, but keeps a line a line).
+            pub trait Sandwich<X> {
+                /// The type of `V X Ṽ`.
+                type Output;
+                /// `V X Ṽ`.
+                fn sandwich(self, x: X) -> Self::Output;
+            }
+        });
+        out
+    }
+
+    pub(super) fn type_items(&self, t: &TypeSpec) -> TokenStream {
+        let real = self.real;
+        let ident = &t.ident;
+        let attrs = &t.attrs;
+        let blades = &t.model.blades;
+        let n = blades.len();
+        let fields: Vec<_> = blades.iter().map(|&b| self.field(b)).collect();
+        let blade_names: Vec<String> = blades.iter().map(|&b| self.a.blade_name(b)).collect();
+        let field_docs = blade_names.iter().map(|b| format!(" Coefficient of `{b}`."));
+        let ranks = blades.iter().map(|&b| self.rank[b]);
+        let ranks2 = ranks.clone();
+        let dim = self.dim;
+        let summary = format!(" {n} coefficients: `{}`.", blade_names.join("`, `"));
+
+        let signs = |kind: Unary| -> Vec<TokenStream> {
+            blades
+                .iter()
+                .map(|&b| {
+                    let f = self.field(b);
+                    let sign = self.a.unary(kind, b).get(&b).copied().unwrap_or(1.0);
+                    if sign < 0.0 { quote!(#f: -self.#f) } else { quote!(#f: self.#f) }
+                })
+                .collect()
+        };
+        let (rev, inv, conj) = (signs(Unary::Reverse), signs(Unary::Involute), signs(Unary::Conjugate));
+        let dual = self.linear_map(t, Unary::Dual, "dual", "The dual `A I⁻¹` (I the unit pseudoscalar).");
+        let undual = self.linear_map(t, Unary::Undual, "undual", "The undual `A I`, inverse of `dual`.");
+        let grades = self.grade_projections(t);
+        let norm = self.norm_squared(t);
+
+        quote! {
+            #(#attrs)*
+            #[doc = ""]
+            #[doc = #summary]
+            #[derive(Clone, Copy, Debug, PartialEq, Default)]
+            pub struct #ident<T = f64> {
+                #( #[doc = #field_docs] pub #fields: T, )*
+            }
+
+            impl<T: #real> #ident<T> {
+                /// Blade of every field, in field order.
+                pub const BLADES: [&'static str; #n] = [#(#blade_names),*];
+                /// Index of every field in a storage-basis array (canonical blade order).
+                pub const STORAGE_INDEX: [usize; #n] = [#(#ranks),*];
+
+                /// All coefficients zero.
+                #[inline]
+                pub fn zero() -> Self {
+                    Self { #(#fields: <T as #real>::zero()),* }
+                }
+
+                /// From coefficients in field order.
+                #[inline]
+                pub fn from_array(c: [T; #n]) -> Self {
+                    let [#(#fields),*] = c;
+                    Self { #(#fields),* }
+                }
+
+                /// Coefficients in field order.
+                #[inline]
+                pub fn to_array(self) -> [T; #n] {
+                    [#(self.#fields),*]
+                }
+
+                /// This type's blades taken from a storage-basis array; other blades are dropped.
+                #[inline]
+                pub fn from_storage(c: &[T; #dim]) -> Self {
+                    Self { #(#fields: c[#ranks2]),* }
+                }
+
+                /// As a storage-basis array (canonical blade order), other blades zero.
+                #[inline]
+                pub fn to_storage(self) -> [T; #dim] {
+                    let mut c = [<T as #real>::zero(); #dim];
+                    for (i, x) in Self::STORAGE_INDEX.iter().zip(self.to_array()) {
+                        c[*i] = x;
+                    }
+                    c
+                }
+
+                /// Reverse `Ã`: grade k times (−1)^(k(k−1)/2).
+                #[inline]
+                pub fn reverse(self) -> Self {
+                    Self { #(#rev),* }
+                }
+
+                /// Grade involution `Â`: grade k times (−1)^k.
+                #[inline]
+                pub fn involute(self) -> Self {
+                    Self { #(#inv),* }
+                }
+
+                /// Clifford conjugate `Ā`: grade k times (−1)^(k(k+1)/2).
+                #[inline]
+                pub fn conjugate(self) -> Self {
+                    Self { #(#conj),* }
+                }
+
+                /// Every coefficient times `s`.
+                #[inline]
+                pub fn scale(self, s: T) -> Self {
+                    Self { #(#fields: self.#fields * s),* }
+                }
+
+                #dual
+                #undual
+                #grades
+                #norm
+
+                /// `√|⟨A Ã⟩₀|`.
+                #[inline]
+                pub fn norm(self) -> T {
+                    self.norm_squared().abs().sqrt()
+                }
+
+                /// `A / √|⟨A Ã⟩₀|`, so that `A Ã = ±1` for blades and versors. A null `A`
+                /// (a point, `⟨A Ã⟩₀ = 0`) gives non-finite coefficients: see `try_normalise`.
+                #[inline]
+                pub fn normalise(self) -> Self {
+                    self.scale(<T as #real>::one() / self.norm())
+                }
+
+                /// `A / √|⟨A Ã⟩₀|`, or `None` when `⟨A Ã⟩₀` is zero or not finite.
+                #[inline]
+                pub fn try_normalise(self) -> Option<Self> {
+                    let inv = <T as #real>::one() / self.norm();
+                    (self.norm_squared() != <T as #real>::zero() && inv.is_finite()).then(|| self.scale(inv))
+                }
+            }
+
+            impl<T: #real> core::ops::Add for #ident<T> {
+                type Output = Self;
+                #[inline]
+                fn add(self, rhs: Self) -> Self {
+                    Self { #(#fields: self.#fields + rhs.#fields),* }
+                }
+            }
+
+            impl<T: #real> core::ops::Sub for #ident<T> {
+                type Output = Self;
+                #[inline]
+                fn sub(self, rhs: Self) -> Self {
+                    Self { #(#fields: self.#fields - rhs.#fields),* }
+                }
+            }
+
+            impl<T: #real> core::ops::Neg for #ident<T> {
+                type Output = Self;
+                #[inline]
+                fn neg(self) -> Self {
+                    Self { #(#fields: -self.#fields),* }
+                }
+            }
+
+            impl<T: #real> core::ops::AddAssign for #ident<T> {
+                #[inline]
+                fn add_assign(&mut self, rhs: Self) {
+                    *self = *self + rhs;
+                }
+            }
+
+            impl<T: #real> core::ops::SubAssign for #ident<T> {
+                #[inline]
+                fn sub_assign(&mut self, rhs: Self) {
+                    *self = *self - rhs;
+                }
+            }
+
+            impl<T: #real> core::ops::Mul<T> for #ident<T> {
+                type Output = Self;
+                /// Scale by a scalar.
+                #[inline]
+                fn mul(self, s: T) -> Self {
+                    self.scale(s)
+                }
+            }
+        }
+    }
+
+    /// A linear map (dual, undual) of one type into the type that covers its image.
+    pub(super) fn linear_map(&self, t: &TypeSpec, kind: Unary, method: &str, doc: &str) -> TokenStream {
+        let Some((target, exprs, _)) = self.unary_exprs(t, kind) else {
+            return TokenStream::new();
+        };
+        let (m, out_ty, body) = (format_ident!("{method}"), self.target_ty(target), self.construct(target, &exprs));
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn #m(self) -> #out_ty {
+                let a = self;
+                #body
+            }
+        }
+    }
+
+    /// The image of every blade of `t` under `kind`, grouped by output blade, and its target.
+    pub(super) fn unary_exprs(
+        &self,
+        t: &TypeSpec,
+        kind: Unary,
+    ) -> Option<(Target, BTreeMap<usize, TokenStream>, usize)> {
+        let mut by_out: BTreeMap<usize, Vec<(f64, TokenStream)>> = BTreeMap::new();
+        for &b in &t.model.blades {
+            let f = self.field(b);
+            for (r, c) in self.a.unary(kind, b) {
+                by_out.entry(r).or_default().push((c, quote!(a.#f)));
+            }
+        }
+        let outs: Vec<usize> = by_out.keys().copied().collect();
+        let target = self.target_for(&outs)?;
+        let terms = by_out.values().map(Vec::len).sum();
+        let exprs = by_out.into_iter().map(|(r, ts)| (r, self.sum(ts))).collect();
+        Some((target, exprs, terms))
+    }
+
+    /// `gradeK()` for every grade of a type that holds more than one grade.
+    pub(super) fn grade_projections(&self, t: &TypeSpec) -> TokenStream {
+        let mut out = TokenStream::new();
+        for (k, blades) in self.grades_of(t) {
+            let Some(target) = self.target_for(&blades) else { continue };
+            let exprs = blades
+                .iter()
+                .map(|&b| {
+                    let f = self.field(b);
+                    (b, quote!(self.#f))
+                })
+                .collect();
+            let (m, ty, body) = (format_ident!("grade{k}"), self.target_ty(target), self.construct(target, &exprs));
+            let doc = format!(" The grade-{k} part `⟨A⟩{}`.", subscript(k));
+            out.extend(quote! {
+                #[doc = #doc]
+                #[inline]
+                pub fn #m(self) -> #ty {
+                    #body
+                }
+            });
+        }
+        out
+    }
+
+    /// Grades present in a type with their blades, when it holds more than one grade.
+    pub(super) fn grades_of(&self, t: &TypeSpec) -> Vec<(usize, Vec<usize>)> {
+        let mut by_grade: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+        for &b in &t.model.blades {
+            by_grade.entry(b.count_ones() as usize).or_default().push(b);
+        }
+        if by_grade.len() < 2 {
+            return Vec::new();
+        }
+        by_grade.into_iter().collect()
+    }
+
+    /// Terms of `⟨A Ã⟩₀` with `a_i a_j` and `a_j a_i` merged: `(coeff, i, j)`, i ≤ j.
+    pub(super) fn norm_terms(&self, t: &TypeSpec) -> Vec<(f64, usize, usize)> {
+        let blades = &t.model.blades;
+        let mut merged: BTreeMap<(usize, usize), f64> = BTreeMap::new();
+        for (i, &x) in blades.iter().enumerate() {
+            for (j, &y) in blades.iter().enumerate() {
+                let rev = self.a.unary(Unary::Reverse, y).get(&y).copied().unwrap_or(1.0);
+                if let Some(c) = self.a.product(Product::Geometric, x, y).get(&0) {
+                    *merged.entry((i.min(j), i.max(j))).or_insert(0.0) += c * rev;
+                }
+            }
+        }
+        merged.into_iter().filter(|(_, c)| c.abs() > 1e-9).map(|((i, j), c)| (c, i, j)).collect()
+    }
+
+    pub(super) fn norm_squared(&self, t: &TypeSpec) -> TokenStream {
+        let real = self.real;
+        let terms = self.norm_terms(t);
+        let blades = &t.model.blades;
+        let body = if terms.is_empty() {
+            quote!(<T as #real>::zero())
+        } else {
+            self.sum(terms.iter().map(|&(c, i, j)| {
+                let (x, y) = (self.field(blades[i]), self.field(blades[j]));
+                // Merged cross terms carry ±2: `x (y + y)` doubles without a constant.
+                if (c.abs() - 2.0).abs() < 1e-12 {
+                    (c.signum(), quote!(self.#x * (self.#y + self.#y)))
+                } else {
+                    (c, quote!(self.#x * self.#y))
+                }
+            }))
+        };
+        let doc = format!(
+            " The squared norm `⟨A Ã⟩₀`: {} multiplications (symmetric terms merged). Zero for null elements such as points; its sign depends on the object.",
+            terms.len()
+        );
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn norm_squared(self) -> T {
+                #body
+            }
+        }
+    }
+
+    /// `From<Sub> for Super` whenever one type's blades are a subset of another's.
+    pub(super) fn embeddings(&self) -> TokenStream {
+        let real = self.real;
+        let mut out = TokenStream::new();
+        for sub in &self.spec.types {
+            for (pos, sup) in self.spec.types.iter().enumerate() {
+                let fits = sub.model.blades.iter().all(|b| sup.model.blades.contains(b));
+                if sub.ident == sup.ident || !fits {
+                    continue;
+                }
+                let exprs = sub
+                    .model
+                    .blades
+                    .iter()
+                    .map(|&b| {
+                        let f = self.field(b);
+                        (b, quote!(x.#f))
+                    })
+                    .collect();
+                let body = self.construct(Target::Type(pos), &exprs);
+                let (s, p) = (&sub.ident, &sup.ident);
+                let doc = format!(" Every `{s}` is a `{p}` whose other blades are zero.");
+                out.extend(quote! {
+                    #[doc = #doc]
+                    impl<T: #real> From<#s<T>> for #p<T> {
+                        #[inline]
+                        fn from(x: #s<T>) -> Self {
+                            #body
+                        }
+                    }
+                });
+            }
+        }
+        out
+    }
+
+    pub(super) fn aliases(&self) -> TokenStream {
+        let mut out = TokenStream::new();
+        for alias in &self.spec.aliases {
+            let (attrs, name, target) = (&alias.attrs, &alias.name, &alias.target);
+            out.extend(quote! {
+                #(#attrs)*
+                pub type #name<T = f64> = #target<T>;
+            });
+        }
+        out
+    }
+}
