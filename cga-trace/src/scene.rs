@@ -1,5 +1,5 @@
 //! Scenes: a checked scene file ([`crate::format`]) read into the renderer's
-//! [`Frame`](crate::frame::Frame) — camera, objects, lights and settings — and the errors a
+//! [`Frame`] — camera, objects, lights and settings — and the errors a
 //! file can have, each naming the file, line and column and, for invalid values or
 //! geometry, the table or object and a typed reason.
 
