@@ -231,3 +231,13 @@ fn points_convert_to_and_from_euclidean_vectors() {
     let infinity = cga_core::Vector::<f64> { ei: 1.0, ..cga_core::Vector::zero() };
     assert_eq!(DVec3::try_from(infinity), Err(GeometryError::AtInfinity));
 }
+
+/// The constructors a user guesses first (`new`) are the documented ones.
+#[test]
+fn new_is_the_constructor_from_euclidean_data() {
+    let (c, n) = ([1.0, -2.0, 0.5], [0.3, 0.1, 1.0]);
+    assert_eq!(Sphere::new(c, 2.0), Sphere::from_centre_radius(c, 2.0));
+    assert_eq!(Circle::new(c, n, 2.0), Circle::from_centre_normal_radius(c, n, 2.0));
+    assert_eq!(Plane::new(c, n), Plane::from_point_normal(c, n));
+    assert_eq!(Line::new(c, n), Line::from_point_direction(c, n));
+}

@@ -104,6 +104,12 @@ impl<T: Real> Line<T> {
         line.to_array().iter().all(|x| x.is_finite()).then_some(line).ok_or(GeometryError::Overflow)
     }
 
+    /// [`Line::from_point_direction`]: the constructor a user looks for first.
+    #[inline]
+    pub fn new(point: E3<T>, direction: E3<T>) -> Result<Self> {
+        Self::from_point_direction(point, direction)
+    }
+
     /// The line through `p` with direction `d`, normalised: the same blade as
     /// `Line::through(p, p + d)` normalised, written down directly. For `L = up(a) ∧ up(b) ∧ ei`
     /// the `e_k o i` part is `(a − b)_k` and the `e_ij i` part the moment `a × b`; normalised,
@@ -159,6 +165,12 @@ impl<T: Real> Plane<T> {
         Self::from_point_normal(a, n)
     }
 
+    /// [`Plane::from_point_normal`]: the constructor a user looks for first.
+    #[inline]
+    pub fn new(point: E3<T>, normal: E3<T>) -> Result<Self> {
+        Self::from_point_normal(point, normal)
+    }
+
     /// The plane through `p` with normal `n`, normalised: the blade `Plane::through` gives for
     /// three points spanning it counter-clockwise about `n`, written down from its dual
     /// `P I5⁻¹ = −(n̂ + δ ei)`, `δ = n̂ · p` (no products).
@@ -203,6 +215,12 @@ impl<T: Real> Sphere<T> {
         }
         let sphere = Self::from_centre_radius(add(a, offset), norm(offset))?;
         Ok(if volume > T::zero() { -sphere } else { sphere })
+    }
+
+    /// [`Sphere::from_centre_radius`]: the constructor a user looks for first.
+    #[inline]
+    pub fn new(centre: E3<T>, radius: T) -> Result<Self> {
+        Self::from_centre_radius(centre, radius)
     }
 
     /// The sphere of centre `c` and radius `r`: `undual(σ)` with the dual sphere
@@ -262,6 +280,12 @@ impl<T: Real> Circle<T> {
             return Err(GeometryError::Overflow);
         }
         Self::from_centre_normal_radius(add(a, offset), w, norm(offset))
+    }
+
+    /// [`Circle::from_centre_normal_radius`]: the constructor a user looks for first.
+    #[inline]
+    pub fn new(centre: E3<T>, normal: E3<T>, radius: T) -> Result<Self> {
+        Self::from_centre_normal_radius(centre, normal, radius)
     }
 
     /// The circle of centre `c`, plane normal `n` and radius `r`: the meet `S ∨ Π` of the
