@@ -85,7 +85,7 @@ fn line_sphere_meets_match_clifford() {
             hits += 1;
             for x in pair.end_points().unwrap() {
                 let d = DVec3::from(x) - DVec3::from(e3(&case["centre"]));
-                assert!((d.length() - r).abs() < 1e-9 * r.max(1.0), "case {n}: end point off the sphere");
+                approx::assert_relative_eq!(d.length(), r, epsilon = 1e-9, max_relative = 1e-9); // on the sphere
             }
         }
     }
@@ -149,9 +149,11 @@ fn objects_agree_with_euclidean_formulas() {
         assert!(close3(cc2, centre.into(), 1e-9) && (DVec3::from(cn2) - w.normalize()).length() < 1e-9);
         approx::assert_abs_diff_eq!(cr2, 2.5, epsilon = 1e-9);
         let (c3, r3) = Sphere::from_centre_radius(a.into(), 0.75).unwrap().centre_radius().unwrap();
-        assert!(close3(c3, a.into(), 1e-12) && (r3 - 0.75).abs() < 1e-12);
+        assert!(close3(c3, a.into(), 1e-12));
+        approx::assert_abs_diff_eq!(r3, 0.75, epsilon = 1e-12);
         let (n4, off4) = Plane::from_point_normal(a.into(), w.into()).unwrap().normal_offset().unwrap();
-        assert!((DVec3::from(n4) - w.normalize()).length() < 1e-9 && (off4 - w.normalize().dot(a)).abs() < 1e-9);
+        approx::assert_abs_diff_eq!(n4.as_slice(), w.normalize().to_array().as_slice(), epsilon = 1e-9);
+        approx::assert_abs_diff_eq!(off4, w.normalize().dot(a), epsilon = 1e-9);
         let l5 = Line::from_point_direction(a.into(), (b - a).into()).unwrap();
         assert!((DVec3::from(l5.direction().unwrap()) - dir).length() < 1e-12);
     }

@@ -125,6 +125,6 @@ fn circle_meets_vanish_exactly_where_the_line_touches() {
         let v: Vector = l.meet_circle(&circle);
         (v | v).s
     };
-    assert!(sq(&through_rim).abs() < 1e-12, "{}", sq(&through_rim));
+    approx::assert_abs_diff_eq!(sq(&through_rim), 0.0, epsilon = 1e-12);
     assert!(sq(&away).abs() > 1e-3);
 }

@@ -8,7 +8,10 @@
 //! # A guide
 //!
 //! **Objects from Euclidean data, and back.** Every constructor returns `Result` with a
-//! named [`GeometryError`]; read-backs return the Euclidean parameters.
+//! named [`GeometryError`]; read-backs return the Euclidean parameters. The convention
+//! throughout: `Result` with a named error wherever something is wrong ([`GeometryError`],
+//! [`InterpolationError`], [`NormalError`], [`VersorError`]); `Option` only where "nothing"
+//! is an ordinary answer (a line that misses a sphere, a line parallel to a plane).
 //!
 //! ```
 //! use cga_core::{Circle, Line, Sphere};

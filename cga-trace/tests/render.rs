@@ -42,13 +42,15 @@ fn a_ray_hits_a_sphere_where_the_quadratic_says() {
     let ray = Ray::new(f.point([0.0, -10.0, 0.0]), [0.0, 1.0, 0.0]).unwrap();
     let hit = s.objects[0].shape.hit(&ray, 0.0, f64::INFINITY).unwrap();
     let (t, point) = (f.world_length(hit.t), f.world_point(hit.point));
-    assert!((t - 8.0).abs() < 1e-12 && norm(sub(point, [0.0, -2.0, 0.0])) < 1e-12);
+    approx::assert_abs_diff_eq!(t, 8.0, epsilon = 1e-12);
+    approx::assert_abs_diff_eq!(point.as_slice(), [0.0, -2.0, 0.0].as_slice(), epsilon = 1e-12);
     assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "normal {:?}", hit.normal);
     // From inside, the hit in front of the origin counts, not the one behind.
     let inside = Ray::new(f.point([0.0, 0.5, 0.0]), [0.0, 1.0, 0.0]).unwrap();
     let hit = s.objects[0].shape.hit(&inside, 0.0, f64::INFINITY).unwrap();
     let (t, point) = (f.world_length(hit.t), f.world_point(hit.point));
-    assert!((point[1] - 2.0).abs() < 1e-12 && (t - 1.5).abs() < 1e-12);
+    approx::assert_abs_diff_eq!(point[1], 2.0, epsilon = 1e-12);
+    approx::assert_abs_diff_eq!(t, 1.5, epsilon = 1e-12);
     assert!(norm(sub(hit.normal, [0.0, -1.0, 0.0])) < 1e-12, "two-sided normal faces the ray");
     // Entirely behind: no hit.
     let away = Ray::new(f.point([0.0, -10.0, 0.0]), [0.0, -1.0, 0.0]).unwrap();
@@ -295,7 +297,7 @@ fn fast_methods_agree_with_dense_sampling() {
                         let same = (want.t - got.t).abs() <= 1e-9 * want.t;
                         assert!(same || got.t < want.t, "{m:?}, ray {ray:?}: t {} vs reference {}", got.t, want.t);
                         if same {
-                            assert!((want.alpha.unwrap() - got.alpha.unwrap()).abs() < 1e-9, "{m:?}");
+                            approx::assert_abs_diff_eq!(want.alpha.unwrap(), got.alpha.unwrap(), epsilon = 1e-9);
                         }
                     }
                     (Some(want), None) => panic!("{m:?}: missed hit at t = {} ({ray:?})", want.t),
@@ -337,7 +339,7 @@ fn camera_rays_match_eq_2_term_by_term() {
         for (u, v) in [(0.5, 0.5), (31.7, 20.2), (63.5, 47.5), (10.0, 40.0)] {
             let (fast, literal) = (camera.ray(u, v).unwrap(), camera.ray_by_sandwich(u, v).unwrap());
             for (a, b) in fast.line.to_array().iter().zip(literal.line.to_array()) {
-                assert!((a - b).abs() < 1e-12 * (1.0 + norm(position)), "{fast:?} vs {literal:?}");
+                approx::assert_abs_diff_eq!(*a, b, epsilon = 1e-12 * (1.0 + norm(position)));
             }
             assert!(norm(sub(fast.dir, literal.dir)) < 1e-12 && fast.origin == literal.origin);
         }
