@@ -271,9 +271,15 @@ fn interpolation_far_away_is_refused_by_name_and_the_estimate_bounds_the_error()
     // The issue's case: unit circles at |c| = 1.5e5 came back Ok with a radius 10× off.
     let (a, b) = far_pair(1.5e5);
     assert!(matches!(pair_f64(a, b), Err(InterpolationError::IllConditioned { .. })));
-    // A tiny circle paired with a unit one (the issue: off by 3.5, silently).
-    let tiny = pair_f64(([0.0; 3], [0.0, 0.0, 1.0], 1e-6), ([0.3, 0.1, 1.0], [0.2, 0.0, 1.0], 1.0));
+    // A circle of radius 1e-6 six units from the origin (ρ = 6e6) paired with a unit one:
+    // f64 loses 1.2e-6 there, beyond the promised accuracy, and says so.
+    let tiny = pair_f64(([5.0, -3.0, 2.0], [0.0, 0.0, 1.0], 1e-6), ([5.3, -2.9, 3.0], [0.2, 0.0, 1.0], 1.0));
     assert!(matches!(tiny, Err(InterpolationError::IllConditioned { .. })), "{tiny:?}");
+    // At the origin the same pair is well conditioned (sizes alone do not matter) and exact.
+    let (a, b) = (([0.0; 3], [0.0, 0.0, 1.0], 1e-6), ([0.3, 0.1, 1.0], [0.2, 0.0, 1.0], 1.0));
+    let p = pair_f64(a, b).expect("accepted");
+    let (circle, _) = interpolation_errors(&p, &pair_dd(a, b));
+    assert!(circle <= p.condition() && circle < 1e-14, "{circle:e}");
     // Wherever the pair is accepted, the estimate bounds the error of C_½ and of the normal.
     for d in [1.0, 10.0, 100.0, 300.0, 1e3, 3e3, 6e3] {
         let (a, b) = far_pair(d);

@@ -374,7 +374,7 @@ impl<T: Real> Bivector<T> {
 /// A disk: a circle and the plane it bounds a piece of, with the rim's centre and radius
 /// read once (meets test every ray against them).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Disk<T = f64> {
+pub struct Disk<T: Real = f64> {
     /// The rim.
     pub circle: Circle<T>,
     /// `C ∧ ei`, normalised.

@@ -286,4 +286,13 @@ mod tests {
         let e = Even::<f64> { s: 1.5, e12: -2.0, ..Even::zero() };
         assert_eq!(format!("{e}"), "1.5 − 2 e12");
     }
+
+    #[test]
+    fn debug_shows_the_nonzero_coefficients() {
+        let e = Even::<f64> { s: 1.5, e12: -2.0, ..Even::zero() };
+        assert_eq!(format!("{e:?}"), "Even { s: 1.5, e12: -2.0 }");
+        assert_eq!(format!("{:?}", Scalar::<f64>::zero()), "Scalar { s: 0.0 }");
+        let l: Line = Line::through([0.0; 3], [1.0, 0.0, 0.0]).unwrap();
+        assert_eq!(format!("{l:?}"), "Line { e1oi: -1.0 }");
+    }
 }

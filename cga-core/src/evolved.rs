@@ -47,7 +47,7 @@ pub enum NormalError {
 
 /// Every quantity of the normal computation, for inspection and testing.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NormalParts<T = f64> {
+pub struct NormalParts<T: Real = f64> {
     /// `C_α`.
     pub circle: Circle<T>,
     /// `dC_α/dα`.
@@ -115,7 +115,7 @@ impl<T: Real> Pair<Circle<T>> {
         let r = r1.min(r2);
         let turn = norm(cross(n1, n2)).atan2(dot(n1, n2).abs());
         let delta = (norm(sub(a, b)) + (r1 - r2).abs() + r * turn) / r;
-        let rho = (norm(a) + r1).max(norm(b) + r2).max(norm(sub(a, b))) / r;
+        let rho = (norm(a) / r1).max(norm(b) / r2);
         T::epsilon().to_f64() * (1.0 + rho).powi(2) / delta + self.condition()
     }
 }

@@ -261,23 +261,24 @@ impl<X> Pair<X> {
     }
 
     /// The relative error to expect of `C_α` (its centre, radius, normal) from rounding:
-    /// `ε (1 + ρ)³`, `ρ = max(|c₁| + r₁, |c₂| + r₂, |c₁ − c₂|) / min(r₁, r₂)` for rounds
-    /// of centres `cᵢ` and sizes `rᵢ` (0 for flats, whose coefficients grow only linearly).
+    /// `ε (1 + ρ)³`, `ρ = max(|c₁|/r₁, |c₂|/r₂)` for rounds of centres `cᵢ` and sizes `rᵢ`
+    /// (each round's distance from the origin in units of its own size; 0 for flats, whose
+    /// coefficients grow only linearly).
     ///
-    /// Why `ρ³`: the coefficients of a round grow like `ρ²`, and the projector's square
-    /// `−X X̃` cancels them back to size 1. Measured (docs/STABILITY.md, `cargo test --test
-    /// precision -- --ignored --nocapture`): through this crate's constructors the normal's
-    /// error stays 10× below the estimate and C_α's centre and radius 300× below; from
-    /// correctly rounded blades (50-digit references, `tests/far_reference.rs`) up to 0.3×.
+    /// Why: a round's null-basis coefficients grow like `ρ²` (as `|c|²/r` against `1/r`), and
+    /// the projector's square `−X X̃` cancels them back to size 1. The sizes alone do not
+    /// matter: a circle of radius 1e-8 at the origin beside a unit one interpolates to
+    /// rounding. Measured (docs/STABILITY.md, `cargo test --test precision -- --ignored
+    /// --nocapture`): through this crate's constructors the normal's error stays 10× below
+    /// the estimate and C_α's centre and radius 300× below; from correctly rounded blades
+    /// (50-digit references, `tests/far_reference.rs`) within it.
     pub fn condition<T: Real>(&self) -> f64
     where
         X: Interpolable<T>,
     {
         let (Some((a, r1)), Some((b, r2))) = (self.c1.reach(), self.c2.reach()) else { return 0.0 };
-        let (r1, r2) = (r1.to_f64(), r2.to_f64());
-        let (a, b) = (a.map(|x| x.to_f64()), b.map(|x| x.to_f64()));
-        let reach = (norm(a) + r1).max(norm(b) + r2).max(norm(sub(a, b)));
-        let rho = reach / r1.min(r2);
+        let own = |c: crate::euclid::E3<T>, r: T| norm(c.map(|x| x.to_f64())) / r.to_f64();
+        let rho = own(a, r1).max(own(b, r2));
         T::epsilon().to_f64() * (1.0 + rho).powi(3)
     }
 

@@ -206,15 +206,15 @@ fn double_root(surface: &EvolvedSurface, ray: &Ray, alpha: f64) -> bool {
     family.f_and_slope(&line.lift(), alpha).is_some_and(|(_, d)| d.abs() < 1e-6 * scale)
 }
 
-/// A tiny deterministic generator (xorshift64*).
-struct Rng(u64);
+/// A seeded stream (the `rand_xorshift` crate) with the draws the report uses.
+struct Rng(rand_xorshift::XorShiftRng);
 
 impl Rng {
+    fn new(seed: u64) -> Self {
+        Rng(rand::SeedableRng::seed_from_u64(seed))
+    }
     fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
+        rand::RngExt::random::<f64>(&mut self.0)
     }
     fn range(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.next()
@@ -284,7 +284,7 @@ fn on_circle(family: &Family<f64>, alpha: f64, angle: f64) -> Option<(E3, E3, E3
 fn adversarial(surface: &EvolvedSurface, per_kind: usize, seed: u64) -> Vec<TestRay> {
     let (family, origin) = surface.family();
     let size = surface.bounds().1;
-    let mut rng = Rng(seed | 1);
+    let mut rng = Rng::new(seed);
     let mut out = Vec::new();
     let world = |x: E3| add(x, origin);
     let push = |out: &mut Vec<TestRay>, ray: Option<Ray>, t_max: f64, kind: &'static str| {

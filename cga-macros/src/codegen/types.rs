@@ -73,9 +73,21 @@ impl Gen<'_> {
             #(#attrs)*
             #[doc = ""]
             #[doc = #summary]
-            #[derive(Clone, Copy, Debug, PartialEq, Default)]
+            #[derive(Clone, Copy, PartialEq, Default)]
             pub struct #ident<T = f64> {
                 #( #[doc = #field_docs] pub #fields: T, )*
+            }
+
+            /// The nonzero coefficients by blade (`Circle { e12o: 0.5, e3oi: -2.0 }`; all of
+            /// them when every one is zero). `Display` gives the Euclidean reading.
+            impl<T: #real> core::fmt::Debug for #ident<T> {
+                fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                    let zero = <T as #real>::zero();
+                    let all_zero = true #( && self.#fields == zero )*;
+                    let mut out = f.debug_struct(stringify!(#ident));
+                    #( if all_zero || self.#fields != zero { out.field(stringify!(#fields), &self.#fields); } )*
+                    out.finish()
+                }
             }
 
             impl<T: #real> #ident<T> {
