@@ -150,13 +150,14 @@ pub(crate) fn build_object(
     (shape().map(|shape| Object { name: name.clone(), shape, material }), name)
 }
 
-/// An evolved surface, its circles built in a frame centred between them (inside `frame`).
+/// An evolved surface, its circles built in the frame of [`EvolvedSurface::frame_origin`]
+/// (inside `frame`).
 #[cfg(feature = "evolved")]
 fn evolved(c1: CircleSpec, c2: CircleSpec, method: Method, frame: &Frame) -> Result<EvolvedSurface, Invalid> {
     let on = |which| move |e| Invalid::Circle { which, reason: Box::new(e) };
     let (c1, n1, r1) = circle(c1, frame).map_err(on("c1"))?;
     let (c2, n2, r2) = circle(c2, frame).map_err(on("c2"))?;
-    let origin = [0, 1, 2].map(|k| 0.5 * (c1[k] + c2[k]));
+    let origin = EvolvedSurface::frame_origin((c1, r1), (c2, r2));
     let local = |c: E3, n, r| cga_core::Circle::from_centre_normal_radius(cga_core::euclid::sub(c, origin), n, r);
     let c1 = local(c1, n1, r1).map_err(|e| on("c1")(e.into()))?;
     let c2 = local(c2, n2, r2).map_err(|e| on("c2")(e.into()))?;

@@ -207,7 +207,9 @@ fn a_ray_in_a_far_end_circles_plane_hits_it() {
     assert!(norm(sub(f.world_point(hit.point), [1e4, -1.0, 0.0])) < 1e-6, "hit at {:?}", hit.point);
     assert!(hit.alpha.is_some_and(|a| a.abs() < 1e-12), "hit {hit:?}");
     let (centre, radius): (E3, f64) = surface.bounds();
-    assert!(norm(sub(f.world_point(centre), [1e4, 0.0, 1.0])) < 1e-9 && f.world_length(radius) >= 1.5);
+    // The bound sits at the surface's frame origin, the circles' centre of similitude.
+    let origin = EvolvedSurface::frame_origin(([1e4, 0.0, 0.0], 1.0), ([1e4, 0.0, 2.0], 1.5));
+    assert!(norm(sub(f.world_point(centre), origin)) < 1e-9 && f.world_length(radius) >= 1.5);
 }
 
 /// Any pose: the centre pixel looks at the target, and up in the image is up in the world.

@@ -6,7 +6,7 @@ use super::tree::{PAD, Tree};
 use super::{Family, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
-use cga_core::euclid::{E3, add, norm, scale, sub};
+use cga_core::euclid::{E3, add, norm, sub};
 use cga_core::{Circle, Line, Pair, Sandwich, Translator};
 
 /// A surface swept by the circles interpolated between two circles.
@@ -29,14 +29,25 @@ const BOUND_SAMPLES: usize = 512;
 
 impl EvolvedSurface {
     /// The surface between `c1` (α = 0) and `c2` (α = 1), given in world coordinates and
-    /// moved to a frame centred between them.
+    /// moved to the frame of [`EvolvedSurface::frame_origin`].
     pub fn new(c1: Circle, c2: Circle, method: Method) -> Result<Self, SurfaceError> {
         let centre =
             |c: &Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
-        let ((p1, _, _), (p2, _, _)) = (centre(&c1, 1)?, centre(&c2, 2)?);
-        let origin = scale(add(p1, p2), 0.5);
+        let ((p1, _, r1), (p2, _, r2)) = (centre(&c1, 1)?, centre(&c2, 2)?);
+        let origin = Self::frame_origin((p1, r1), (p2, r2));
         let to_local = Translator::from_vector(origin.map(|x| -x));
         Self::in_frame(origin, to_local.sandwich(c1), to_local.sandwich(c2), method)
+    }
+
+    /// The best origin for a pair of circles of centres `cᵢ` and radii `rᵢ`: their internal
+    /// centre of similitude `(r₂ c₁ + r₁ c₂) / (r₁ + r₂)`, where each circle's distance from the
+    /// origin in its own radii, `ρᵢ = |cᵢ − o| / rᵢ`, is the same, `|c₁ − c₂| / (r₁ + r₂)`, and
+    /// the larger of the two as small as it can be (the interpolation's error grows as
+    /// `ε (1 + ρ)³`, [`cga_core::Pair::condition`]). For equal radii it is the midpoint; for
+    /// radii eight decades apart it sits at the small circle.
+    pub fn frame_origin((c1, r1): (E3, f64), (c2, r2): (E3, f64)) -> E3 {
+        let w = r1 + r2;
+        [0, 1, 2].map(|k| (r2 * c1[k] + r1 * c2[k]) / w)
     }
 
     /// The surface between circles given in a frame whose origin is `origin` (world
