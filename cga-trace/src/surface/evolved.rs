@@ -145,8 +145,10 @@ impl EvolvedSurface {
         let x = sub(crossing.point, self.origin);
         let alpha = crossing.alpha.unwrap_or(0.0);
         let pair = &self.family.pair;
-        pair.normal(alpha, x)
-            .ok()
+        // The crossing was verified on C_α to the surface's own tolerance (1e-6 r), and the
+        // pair built in a local frame: eq. 6–11 directly, without `Pair::normal`'s checks for
+        // arbitrary callers (which would refuse points that far off the circle).
+        (pair.normal_parts(alpha, x).ok().and_then(|p| p.normal_line.direction().ok()))
             .or_else(|| {
                 let (c, _, _) = pair.at(alpha).ok()?.centre_normal_radius().ok()?;
                 cga_core::euclid::unit(sub(x, c))
