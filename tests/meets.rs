@@ -40,7 +40,7 @@ fn line_sphere_meets_agree_with_the_quadratic() {
             }
             None => {
                 assert_eq!(meet.hit, Hit::Miss);
-                assert!(meet.points(&line).is_none());
+                assert_eq!(meet.points(&line), Err(cga_core::GeometryError::Imaginary));
                 miss += 1;
             }
             _ => {}

@@ -55,14 +55,15 @@ pub fn up<T: Real>(x: E3<T>) -> Vector<T> {
     Vector { e1: x[0], e2: x[1], e3: x[2], eo: T::one(), ei: half * dot(x, x) }
 }
 
-/// `down(X) = x / (−X · ei)`: the Euclidean point of a (finite) point of any weight, `None`
-/// at infinity (`X · ei ≈ 0`). Only the `e1, e2, e3, eo` parts are read.
+/// `down(X) = x / (−X · ei)`: the Euclidean point of a (finite) point of any weight,
+/// `AtInfinity` at infinity (`X · ei ≈ 0`). Only the `e1, e2, e3, eo` parts are read.
 #[inline]
-pub fn down<T: Real>(p: Vector<T>) -> Option<E3<T>> {
+pub fn down<T: Real>(p: Vector<T>) -> Result<E3<T>> {
     let x = [p.e1, p.e2, p.e3];
     let weight = p.eo; // −X · ei
     let inv = T::one() / weight;
-    (weight.abs() > tolerance(magnitude(&[x])) * T::epsilon().sqrt() && inv.is_finite()).then(|| scale(x, inv))
+    let finite = weight.abs() > tolerance(magnitude(&[x])) * T::epsilon().sqrt() && inv.is_finite();
+    if finite { Ok(scale(x, inv)) } else { Err(GeometryError::AtInfinity) }
 }
 
 /// The point at infinity `ei`.
@@ -253,7 +254,7 @@ impl<T: Real> Sphere<T> {
 
 /// Centre and radius of a dual sphere `λ(up(c) − ½r² ei)`.
 fn round_centre_radius<T: Real>(sigma: Vector<T>) -> Result<(E3<T>, T)> {
-    let centre = down(sigma).ok_or(GeometryError::AtInfinity)?;
+    let centre = down(sigma)?;
     let r2 = sigma.norm_squared() / (sigma.eo * sigma.eo); // σ · σ = ⟨σ σ̃⟩₀ for a vector
     if r2 < T::zero() {
         return Err(GeometryError::Imaginary);
@@ -323,7 +324,7 @@ impl<T: Real> Circle<T> {
         if r2 < T::zero() {
             return Err(GeometryError::Imaginary);
         }
-        let centre = down(((*self * ei()) * *self).grade1()).ok_or(GeometryError::AtInfinity)?;
+        let centre = down(((*self * ei()) * *self).grade1())?;
         Ok((centre, normal, r2.sqrt()))
     }
 }
@@ -362,8 +363,8 @@ impl<T: Real> Bivector<T> {
         let s = sq.sqrt();
         let d = ei::<T>().lc(*self);
         let pd = (*self * d).grade1();
-        let a = down(pd - d.scale(s)).ok_or(GeometryError::Degenerate)?;
-        let b = down(pd + d.scale(s)).ok_or(GeometryError::Degenerate)?;
+        let a = down(pd - d.scale(s)).map_err(|_| GeometryError::Degenerate)?;
+        let b = down(pd + d.scale(s)).map_err(|_| GeometryError::Degenerate)?;
         if s <= T::zero() {
             return Err(GeometryError::Degenerate);
         }

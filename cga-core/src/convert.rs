@@ -16,7 +16,7 @@ impl<T: Real> Vector<T> {
     /// `down(X)`: the Euclidean point of a conformal point of any weight, `AtInfinity` when
     /// its weight `−X · ei` vanishes.
     pub fn to_point(self) -> Result<E3<T>, GeometryError> {
-        down(self).ok_or(GeometryError::AtInfinity)
+        down(self)
     }
 }
 

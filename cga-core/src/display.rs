@@ -79,7 +79,7 @@ impl<T: Real> Display for Vector<T> {
     fn fmt(&self, f: &mut Formatter<'_>) -> Result {
         let square = self.norm_squared().to_f64();
         let size = self.to_array().iter().fold(0.0f64, |m, x| m.max(x.to_f64().abs()));
-        match down(*self) {
+        match down(*self).ok() {
             Some(x) if square.abs() <= 1e-12 * size * size => {
                 f.write_str("point ")?;
                 triple(f, x)
@@ -242,7 +242,7 @@ impl<T: Real> Display for Motor<T> {
     /// image of the origin.
     fn fmt(&self, f: &mut Formatter<'_>) -> Result {
         let r = Rotor { s: self.s, e12: self.e12, e13: self.e13, e23: self.e23 };
-        let t = down(crate::Sandwich::sandwich(*self, crate::up([T::zero(); 3])));
+        let t = down(crate::Sandwich::sandwich(*self, crate::up([T::zero(); 3]))).ok();
         if let Some((angle, axis)) = rotation(&r) {
             f.write_str("rotation ")?;
             num(f, angle)?;

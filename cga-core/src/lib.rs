@@ -10,8 +10,9 @@
 //! **Objects from Euclidean data, and back.** Every constructor returns `Result` with a
 //! named [`GeometryError`]; read-backs return the Euclidean parameters. The convention
 //! throughout: `Result` with a named error wherever something is wrong ([`GeometryError`],
-//! [`InterpolationError`], [`NormalError`], [`VersorError`]); `Option` only where "nothing"
-//! is an ordinary answer (a line that misses a sphere, a line parallel to a plane).
+//! [`InterpolationError`], [`NormalError`], [`VersorError`]: `down` of a point at infinity,
+//! the points of a missed sphere, …); `Option` only where "nothing" is an ordinary answer
+//! with no more to say (a line parallel to a plane, or crossing it outside a disk).
 //!
 //! ```
 //! use cga_core::{Circle, Line, Sphere};

@@ -63,19 +63,19 @@ impl<T: Real> RoundMeet<Bivector<T>, T> {
     }
 
     /// The points of the meet ordered along `line`'s direction (a tangent gives the touching
-    /// point twice), `None` for a miss.
-    pub fn points(&self, line: &Line<T>) -> Option<[E3<T>; 2]> {
-        self.points_along(line.direction().ok()?)
+    /// point twice); `Imaginary` for a miss (the pair is imaginary).
+    pub fn points(&self, line: &Line<T>) -> Result<[E3<T>; 2]> {
+        self.points_along(line.direction()?)
     }
 
     /// The points of the meet ordered along the direction `d` (the carrier's; it need not be
-    /// unit), `None` for a miss: `A, B ∝ (P ∓ √P²)(ei ⌋ P)`, whose grade-1 parts are
+    /// unit), `Imaginary` for a miss: `A, B ∝ (P ∓ √P²)(ei ⌋ P)`, whose grade-1 parts are
     /// `P·(ei ⌋ P) ∓ √P² (ei ⌋ P)` (the inner product computes only that part).
-    pub fn points_along(&self, d: E3<T>) -> Option<[E3<T>; 2]> {
+    pub fn points_along(&self, d: E3<T>) -> Result<[E3<T>; 2]> {
         let e = crate::ei::<T>().lc(self.pair);
         let pe = self.pair | e;
         let [a, b] = match self.hit {
-            Hit::Miss => return None,
+            Hit::Miss => return Err(GeometryError::Imaginary),
             Hit::Two => {
                 let s = self.square.sqrt();
                 [down(pe - e.scale(s))?, down(pe + e.scale(s))?]
@@ -86,7 +86,7 @@ impl<T: Real> RoundMeet<Bivector<T>, T> {
                 [p, p]
             }
         };
-        Some(if dot(sub(b, a), d) < T::zero() { [b, a] } else { [a, b] })
+        Ok(if dot(sub(b, a), d) < T::zero() { [b, a] } else { [a, b] })
     }
 }
 
@@ -184,8 +184,8 @@ impl<T: Real> Line<T> {
             (dot(n, x) - delta).abs() <= tolerance(r * rho * rho)
         };
         match meet.points(self) {
-            Some([x, _]) => on_plane(x).then_some(meet.hit),
-            None => Some(Hit::Miss),
+            Ok([x, _]) => on_plane(x).then_some(meet.hit),
+            Err(_) => Some(Hit::Miss),
         }
     }
 

@@ -56,11 +56,11 @@ impl Camera {
             return Err(CameraError::NotPositive);
         }
         let cam = pose.sandwich(up([0.0; 3]));
-        let position = down(cam).ok_or(CameraError::NotPositive)?;
+        let position = down(cam).map_err(|_| CameraError::NotPositive)?;
         let axis = |k: usize| {
             let mut e = [0.0; 3];
             e[k] = 1.0;
-            down(pose.sandwich(up(e))).map(|x| sub(x, position)).ok_or(CameraError::NotPositive)
+            down(pose.sandwich(up(e))).map(|x| sub(x, position)).map_err(|_| CameraError::NotPositive)
         };
         let axes = [axis(0)?, axis(1)?, axis(2)?];
         let basis = |k: usize| {

@@ -93,11 +93,11 @@ fn meet_sphere(line: &Multivector, sphere: &Multivector, dir: E3) -> Option<[E3;
     let d = dense_ei().lc(pair);
     // Classified as `RoundMeet::new` classifies: |P²| against the operands' norms.
     let [a, b] = if square.abs() <= tolerance(weight(line) * weight(sphere)) {
-        let p = down(Vector::from_dense(&(pair * d).grade(1)))?;
+        let p = down(Vector::from_dense(&(pair * d).grade(1))).ok()?;
         [p, p]
     } else if square > 0.0 {
         let (s, pd) = (square.sqrt(), (pair * d).grade(1));
-        [down(Vector::from_dense(&(pd - d.scale(s))))?, down(Vector::from_dense(&(pd + d.scale(s))))?]
+        [down(Vector::from_dense(&(pd - d.scale(s)))).ok()?, down(Vector::from_dense(&(pd + d.scale(s)))).ok()?]
     } else {
         return None;
     };

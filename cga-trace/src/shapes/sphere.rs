@@ -31,7 +31,7 @@ impl Shape for SphereShape {
         if meet.hit == MeetHit::Miss {
             return None;
         }
-        let point = meet.points_along(ray.dir)?.into_iter().find(within(ray, t_min, t_max))?;
+        let point = meet.points_along(ray.dir).ok()?.into_iter().find(within(ray, t_min, t_max))?;
         Some(crossing_at(ray, point))
     }
 

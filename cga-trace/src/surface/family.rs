@@ -427,7 +427,7 @@ fn hit_points<T: Real>(circle: &Circle<T>, (origin, dir, line): (E3<T>, E3<T>, &
         let to_line = norm(sub(rel, scale(dir, dot(rel, dir))));
         (norm(d) - r).abs() < tol && dot(d, n).abs() < tol && to_line < tol
     };
-    points.extend(down(line.meet_circle(circle)).filter(on_both));
+    points.extend(down(line.meet_circle(circle)).ok().filter(on_both));
     if points.is_empty() {
         // The line in the circle's plane: |o + t d − c|² = r².
         let oc = sub(origin, c);
