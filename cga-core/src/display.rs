@@ -53,12 +53,45 @@ fn terms(f: &mut Formatter<'_>, names: &[&str], values: &[f64]) -> Result {
     if first { f.write_str("0") } else { Ok(()) }
 }
 
+/// The nonzero coefficients by blade name: every type's fallback when it has no Euclidean
+/// reading, and the whole display of those that never have one.
+trait Terms {
+    fn terms(&self, f: &mut Formatter<'_>) -> Result;
+}
+
+macro_rules! terms_of {
+    ($($ty:ident),*) => {$(
+        impl<T: Real> Terms for $ty<T> {
+            fn terms(&self, f: &mut Formatter<'_>) -> Result {
+                terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64()))
+            }
+        }
+    )*};
+}
+
+terms_of!(
+    Scalar,
+    Infinity,
+    Pseudoscalar,
+    ScalarQuadvector,
+    Even,
+    Odd,
+    Vector,
+    FlatPoint,
+    Bivector,
+    Line,
+    Plane,
+    Circle,
+    Sphere,
+    Motor
+);
+
 macro_rules! by_terms {
     ($($ty:ident),*) => {$(
         impl<T: Real> Display for $ty<T> {
             /// The nonzero coefficients by blade name.
             fn fmt(&self, f: &mut Formatter<'_>) -> Result {
-                terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64()))
+                self.terms(f)
             }
         }
     )*};
@@ -99,7 +132,7 @@ impl<T: Real> Display for Vector<T> {
                     f.write_str(", offset ")?;
                     num(f, -d.to_f64())
                 }
-                Err(_) => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+                Err(_) => self.terms(f),
             },
         }
     }
@@ -113,7 +146,7 @@ impl<T: Real> Display for FlatPoint<T> {
                 f.write_str("flat point ")?;
                 triple(f, x)
             }
-            None => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            None => self.terms(f),
         }
     }
 }
@@ -130,9 +163,9 @@ impl<T: Real> Display for Bivector<T> {
             }
             Err(crate::GeometryError::Imaginary) => {
                 f.write_str("imaginary point pair: ")?;
-                terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64()))
+                self.terms(f)
             }
-            Err(_) => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            Err(_) => self.terms(f),
         }
     }
 }
@@ -147,7 +180,7 @@ impl<T: Real> Display for Line<T> {
                 f.write_str(" along ")?;
                 triple(f, d)
             }
-            _ => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            _ => self.terms(f),
         }
     }
 }
@@ -162,7 +195,7 @@ impl<T: Real> Display for Plane<T> {
                 f.write_str(" offset ")?;
                 num(f, d.to_f64())
             }
-            Err(_) => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            Err(_) => self.terms(f),
         }
     }
 }
@@ -179,11 +212,12 @@ impl<T: Real> Display for Circle<T> {
                 f.write_str(" radius ")?;
                 num(f, r.to_f64())
             }
-            Err(crate::GeometryError::AtInfinity) => match Line::from_storage(&self.to_storage()).direction() {
-                Ok(_) => Display::fmt(&Line::from_storage(&self.to_storage()), f),
-                Err(_) => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            // A circle of infinite radius: the line it is, when it has a direction.
+            Err(crate::GeometryError::AtInfinity) => match Line::from_storage(&self.to_storage()) {
+                line if line.direction().is_ok() => Display::fmt(&line, f),
+                _ => self.terms(f),
             },
-            Err(_) => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            Err(_) => self.terms(f),
         }
     }
 }
@@ -199,7 +233,7 @@ impl<T: Real> Display for Sphere<T> {
                 num(f, r.to_f64())
             }
             Err(crate::GeometryError::AtInfinity) => Display::fmt(&Plane::from_storage(&self.to_storage()), f),
-            Err(_) => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            Err(_) => self.terms(f),
         }
     }
 }
@@ -255,7 +289,7 @@ impl<T: Real> Display for Motor<T> {
                 f.write_str("translation ")?;
                 triple(f, t)
             }
-            None => terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64())),
+            None => self.terms(f),
         }
     }
 }
