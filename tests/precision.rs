@@ -372,11 +372,12 @@ fn stability_tables() {
     }
     println!("\n### Line ∨ sphere: error of P² = (r² − d²)/r² against ρ (distances 1…1e6, radii 1e-4…1e4)\n");
     println!(
-        "| ρ | max \\|P² − (r² − d²)/r²\\| | / ε(1 + ρ)² | band \\|d − r\\|/r | misclassified, before (64 ε Σ P_k²) | misclassified, after |"
+        "| ρ | max \\|P² − (r² − d²)/r²\\| | / ε(1 + ρ)² | band \\|d − r\\|/r | misclassified, before (64 ε Σ P_k²) | misclassified, after | f32: max \\|P² − …\\| | f32: misclassified |"
     );
-    println!("|---|---|---|---|---|---|");
+    println!("|---|---|---|---|---|---|---|---|");
     for rho in [1.0, 1e2, 1e4, 1e6, 1e8] {
         let (mut worst, mut before, mut after) = (0.0f64, 0, 0);
+        let (mut worst32, mut after32) = (0.0f64, 0);
         for _ in 0..1000 {
             let r = rng.decades(-4.0, 4.0);
             let c = scale(rng.direction(), rho * r);
@@ -396,9 +397,27 @@ fn stability_tables() {
             };
             before += usize::from(old != euclid);
             after += usize::from(m.hit != euclid);
+            // The same configuration in f32.
+            let t = |x: E3| x.map(|v| v as f32);
+            let (p, d) = (line.point().unwrap(), line.direction().unwrap());
+            let line32 = Line::<f32>::from_point_direction(t(p), t(d)).unwrap();
+            match Sphere::<f32>::from_centre_radius(t(c), r as f32) {
+                Ok(s32) => {
+                    let m32 = line32.meet_sphere(&s32);
+                    worst32 = worst32.max((f64::from(m32.square) - (r * r - h * h) / (r * r)).abs());
+                    after32 += usize::from(m32.hit != euclid);
+                }
+                Err(_) => {
+                    worst32 = f64::INFINITY;
+                    after32 += 1;
+                }
+            }
         }
         let w = worst / (EPS * (1.0 + rho).powi(2));
-        println!("| {rho:.0e} | {worst:.1e} | {w:.2} | {:.1e} | {before} / 1000 | {after} / 1000 |", band(rho));
+        println!(
+            "| {rho:.0e} | {worst:.1e} | {w:.2} | {:.1e} | {before} / 1000 | {after} / 1000 | {worst32:.1e} | {after32} / 1000 |",
+            band(rho)
+        );
     }
     println!("\n### Interpolation C_½ and its normal against ρ (unit circles at distance d), f64 vs double-double\n");
     println!(
@@ -440,8 +459,10 @@ fn stability_tables() {
         );
     }
     println!("\n### Normal of nearly identical circles against their difference Δ\n");
-    println!("| Δ | normal error (rad), unchecked | `normal_condition` | `Pair::normal` |");
-    println!("|---|---|---|---|");
+    println!(
+        "| Δ | normal error (rad), unchecked | `normal_condition` | `Pair::normal` | f32: normal error (rad), unchecked |"
+    );
+    println!("|---|---|---|---|---|");
     for delta in [1e-3, 1e-6, 1e-8, 1e-10, 1e-12, 1e-15] {
         let a = ([1.0, 2.0, 3.0], [0.2, 0.3, 1.0], 1.5);
         let b = ([1.0 + delta, 2.0, 3.0 - delta], [0.2, 0.3 + delta, 1.0], 1.5 + delta);
@@ -452,7 +473,19 @@ fn stability_tables() {
             Ok(_) => "Ok".to_string(),
             Err(e) => format!("{e:?}").split(' ').next().unwrap_or("").to_string(),
         };
-        println!("| {delta:.0e} | {normal:.1e} | {:.1e} | {checked} |", p.normal_condition());
+        // f32: the same circles, the normal at the same point, against double-double.
+        let reference = pair_dd(a, b);
+        let (dc, dn, dr) = reference.at(Dd::from_f64(0.5)).unwrap().centre_normal_radius().unwrap();
+        let x = add(f3(dc), scale(perpendicular(f3(dn)), dr.hi()));
+        let want = f3(reference.normal(Dd::from_f64(0.5), dd3(x)).unwrap());
+        let t = |v: E3| v.map(|y| y as f32);
+        let c32 = |q: (E3, E3, f64)| Circle::<f32>::from_centre_normal_radius(t(q.0), t(q.1), q.2 as f32).ok();
+        let normal32 = (c32(a).zip(c32(b)))
+            .and_then(|(x1, x2)| Pair::new_unchecked(x1, x2).ok())
+            .and_then(|p32| p32.normal_parts(0.5f32, t(x)).ok())
+            .and_then(|parts| parts.normal_line.direction().ok())
+            .map_or(f64::INFINITY, |n| norm(cross(n.map(f64::from), want)));
+        println!("| {delta:.0e} | {normal:.1e} | {:.1e} | {checked} | {normal32:.1e} |", p.normal_condition());
     }
 }
 
