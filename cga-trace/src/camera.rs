@@ -3,12 +3,13 @@
 //! `P_ij = M up(f e2 − x_max/2 (1 − 2u/w) e1 − y_max/2 (1 − 2v/h) e3) M̃`, `(u, v)` the
 //! pixel centre `(i + ½, j + ½)`. In the camera's frame it looks along `e2` with `e3` up.
 
+use crate::limits::{EXTENT_OVER_FOCAL, MAX_PIXELS, MAX_SIDE};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, scale, sub, unit};
 use cga_core::{Line, Motor, Rotor, Sandwich, Translator, Vector, down, ei, up};
 
 /// Why a camera cannot be built.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum CameraError {
     /// The camera sits on the point it looks at.
     #[error("the camera position equals the look-at point")]
@@ -19,6 +20,26 @@ pub enum CameraError {
     /// A zero or negative size, focal length or image extent.
     #[error("focal length, image extents and size must be positive")]
     NotPositive,
+    /// An image larger than [`MAX_SIDE`] per side or [`MAX_PIXELS`] in all.
+    #[error("{width} × {height} pixels is larger than the limit ({MAX_SIDE} per side, {MAX_PIXELS} in all)")]
+    TooLarge {
+        /// Width asked for.
+        width: u32,
+        /// Height asked for.
+        height: u32,
+    },
+    /// The image-plane extents over the focal length outside [`EXTENT_OVER_FOCAL`]: every
+    /// pixel would see the same direction in f64, or the field of view is all but 180°.
+    #[error("the field of view is degenerate: x_max/f = {x:.3e} and y_max/f = {y:.3e} must lie in [1e-6, 1e6]")]
+    FieldOfView {
+        /// `x_max / f`.
+        x: f64,
+        /// `y_max / f`.
+        y: f64,
+    },
+    /// The pose is not a rigid motion (its sandwich does not map points to points).
+    #[error("the pose is not a rigid motion")]
+    NotRigid,
 }
 
 /// A pinhole camera.
@@ -55,12 +76,20 @@ impl Camera {
         if !(focal.is_finite() && x_max.is_finite() && y_max.is_finite()) {
             return Err(CameraError::NotPositive);
         }
+        if width > MAX_SIDE || height > MAX_SIDE || u64::from(width) * u64::from(height) > MAX_PIXELS {
+            return Err(CameraError::TooLarge { width, height });
+        }
+        let (x, y) = (x_max / focal, y_max / focal);
+        let (lo, hi) = EXTENT_OVER_FOCAL;
+        if !((lo..=hi).contains(&x) && (lo..=hi).contains(&y)) {
+            return Err(CameraError::FieldOfView { x, y });
+        }
         let cam = pose.sandwich(up([0.0; 3]));
-        let position = down(cam).map_err(|_| CameraError::NotPositive)?;
+        let position = down(cam).map_err(|_| CameraError::NotRigid)?;
         let axis = |k: usize| {
             let mut e = [0.0; 3];
             e[k] = 1.0;
-            down(pose.sandwich(up(e))).map(|x| sub(x, position)).map_err(|_| CameraError::NotPositive)
+            down(pose.sandwich(up(e))).map(|x| sub(x, position)).map_err(|_| CameraError::NotRigid)
         };
         let axes = [axis(0)?, axis(1)?, axis(2)?];
         let basis = |k: usize| {

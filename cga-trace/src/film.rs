@@ -1,7 +1,10 @@
-//! The film: linear RGB pixels, `(0, 0)` bottom-left, written to PNG with the sRGB transfer
-//! curve (or clipped linear values).
+//! The film: linear RGB pixels, `(0, 0)` bottom-left, written as an 8- or 16-bit PNG (with
+//! the sRGB transfer curve, or clipped linear values) or as linear floating point in
+//! OpenEXR or Radiance HDR, the format chosen by the file's extension.
 
 use crate::settings::Encoding;
+use image::{ImageBuffer, ImageFormat, Rgb};
+use std::io::{Seek, Write};
 use std::path::Path;
 
 /// A rendered image in linear RGB.
@@ -15,6 +18,55 @@ pub struct Film {
     pub pixels: Vec<[f64; 3]>,
 }
 
+/// How an image file stores the film.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Output {
+    /// PNG, 8 bits a channel, encoded ([`Encoding`]).
+    Png8,
+    /// PNG, 16 bits a channel, encoded ([`Encoding`]).
+    Png16,
+    /// OpenEXR, linear 32-bit floats, unclipped.
+    Exr,
+    /// Radiance RGBE (`.hdr`), linear, unclipped.
+    Hdr,
+}
+
+/// Why an output file cannot be written as asked.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// The extension names no format this renderer writes.
+    #[error("`{0}`: unknown image extension (use .png, .exr or .hdr)")]
+    Extension(String),
+    /// A bit depth other than 8 or 16, or one given for a floating-point format.
+    #[error("{bits}-bit output is not possible for {format} (PNG takes 8 or 16; EXR and HDR are floating point)")]
+    BitDepth {
+        /// Asked for.
+        bits: u8,
+        /// The format.
+        format: &'static str,
+    },
+    /// Encoding failed.
+    #[error(transparent)]
+    Image(#[from] image::ImageError),
+}
+
+impl Output {
+    /// The format for `path`'s extension (case-insensitive) and, for PNG, `bits` per channel
+    /// (8 when not given).
+    pub fn for_path(path: &Path, bits: Option<u8>) -> Result<Output, OutputError> {
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
+        Ok(match (ext.as_str(), bits) {
+            ("png", None | Some(8)) => Output::Png8,
+            ("png", Some(16)) => Output::Png16,
+            ("exr", None) => Output::Exr,
+            ("hdr", None) => Output::Hdr,
+            ("png", Some(bits)) => return Err(OutputError::BitDepth { bits, format: "PNG" }),
+            ("exr" | "hdr", Some(bits)) => return Err(OutputError::BitDepth { bits, format: "EXR and HDR" }),
+            _ => return Err(OutputError::Extension(path.display().to_string())),
+        })
+    }
+}
+
 impl Film {
     /// From rows, bottom row first.
     pub fn from_rows(width: u32, height: u32, rows: Vec<Vec<[f64; 3]>>) -> Self {
@@ -23,30 +75,90 @@ impl Film {
 
     /// The linear colour of pixel `(i, j)`.
     pub fn get(&self, i: u32, j: u32) -> [f64; 3] {
-        self.pixels[(j * self.width + i) as usize]
+        self.pixels[j as usize * self.width as usize + i as usize]
+    }
+
+    /// An image of the film, top row first, each channel mapped by `f`.
+    fn image<P>(&self, f: impl Fn(f64) -> P) -> ImageBuffer<Rgb<P>, Vec<P>>
+    where
+        Rgb<P>: image::Pixel<Subpixel = P>,
+    {
+        ImageBuffer::from_fn(self.width, self.height, |x, y| Rgb(self.get(x, self.height - 1 - y).map(&f)))
     }
 
     /// 8-bit RGB, top row first, encoded.
     pub fn to_rgb8(&self, encoding: Encoding) -> image::RgbImage {
-        image::RgbImage::from_fn(self.width, self.height, |x, y| {
-            let c = self.get(x, self.height - 1 - y);
-            image::Rgb(c.map(|v| encode(v, encoding)))
-        })
+        self.image(|v| (encode(v, encoding) * 255.0).round() as u8)
     }
 
-    /// Write a PNG.
+    /// 16-bit RGB, top row first, encoded.
+    pub fn to_rgb16(&self, encoding: Encoding) -> ImageBuffer<Rgb<u16>, Vec<u16>> {
+        self.image(|v| (encode(v, encoding) * 65535.0).round() as u16)
+    }
+
+    /// Linear 32-bit floats, top row first, unclipped (NaN as 0; infinities as the largest
+    /// f32, since the formats store no infinity usefully).
+    pub fn to_rgb32f(&self) -> image::Rgb32FImage {
+        self.image(|v| if v.is_nan() { 0.0 } else { (v as f32).clamp(-f32::MAX, f32::MAX) })
+    }
+
+    /// Write a PNG (8-bit).
     pub fn save_png(&self, path: &Path, encoding: Encoding) -> Result<(), image::ImageError> {
-        self.to_rgb8(encoding).save_with_format(path, image::ImageFormat::Png)
+        self.to_rgb8(encoding).save_with_format(path, ImageFormat::Png)
+    }
+
+    /// Write the film in `output`'s format to `w` (`encoding` applies to PNG only).
+    pub fn write<W: Write + Seek>(&self, w: &mut W, output: Output, encoding: Encoding) -> Result<(), OutputError> {
+        match output {
+            Output::Png8 => self.to_rgb8(encoding).write_to(w, ImageFormat::Png)?,
+            Output::Png16 => self.to_rgb16(encoding).write_to(w, ImageFormat::Png)?,
+            Output::Exr => self.to_rgb32f().write_to(w, ImageFormat::OpenExr)?,
+            Output::Hdr => {
+                // Radiance stores no negative values.
+                let mut img = self.to_rgb32f();
+                img.pixels_mut().flat_map(|p| p.0.iter_mut()).for_each(|v| *v = v.max(0.0));
+                img.write_to(w, ImageFormat::Hdr)?
+            }
+        }
+        Ok(())
     }
 }
 
-/// One channel to 8 bits: clipped to [0, 1], sRGB-encoded or not, rounded.
-pub fn encode(v: f64, encoding: Encoding) -> u8 {
-    let v = if v.is_finite() { v.clamp(0.0, 1.0) } else { 0.0 };
-    let e = match encoding {
+/// One channel in `[0, 1]`: clipped (NaN as 0, +∞ as 1: a colour that overflows is as
+/// bright as can be), then sRGB-encoded or not.
+pub fn encode(v: f64, encoding: Encoding) -> f64 {
+    let v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+    match encoding {
         Encoding::Linear => v,
         Encoding::Srgb if v <= 0.003_130_8 => 12.92 * v,
         Encoding::Srgb => 1.055 * v.powf(1.0 / 2.4) - 0.055,
-    };
-    (e * 255.0).round() as u8
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn overflowing_colours_are_white_and_nan_black() {
+        let film = Film { width: 3, height: 1, pixels: vec![[f64::INFINITY; 3], [f64::NAN; 3], [0.5, 2.0, -1.0]] };
+        let img = film.to_rgb8(Encoding::Linear);
+        assert_eq!(img.get_pixel(0, 0).0, [255; 3]);
+        assert_eq!(img.get_pixel(1, 0).0, [0; 3]);
+        assert_eq!(img.get_pixel(2, 0).0, [128, 255, 0]);
+        assert_eq!(film.to_rgb16(Encoding::Linear).get_pixel(2, 0).0, [32768, 65535, 0]);
+    }
+
+    #[test]
+    fn the_extension_picks_the_format() {
+        let out = |p: &str, bits| Output::for_path(Path::new(p), bits);
+        assert_eq!(out("a.png", None).unwrap(), Output::Png8);
+        assert_eq!(out("a.PNG", Some(16)).unwrap(), Output::Png16);
+        assert_eq!(out("a.exr", None).unwrap(), Output::Exr);
+        assert_eq!(out("a.hdr", None).unwrap(), Output::Hdr);
+        assert!(matches!(out("a.jpg", None), Err(OutputError::Extension(_))));
+        assert!(matches!(out("a", None), Err(OutputError::Extension(_))));
+        assert!(matches!(out("a.exr", Some(16)), Err(OutputError::BitDepth { .. })));
+        assert!(matches!(out("a.png", Some(12)), Err(OutputError::BitDepth { .. })));
+    }
 }

@@ -12,6 +12,7 @@ pub mod film;
 pub mod format;
 pub mod frame;
 pub mod light;
+pub mod limits;
 pub mod material;
 pub mod ray;
 pub mod render;

@@ -1,5 +1,6 @@
 //! Point lights.
 
+use crate::format::numbers;
 use crate::scene::Invalid;
 use cga_core::euclid::E3;
 use serde::Deserialize;
@@ -9,9 +10,10 @@ use serde::Deserialize;
 #[serde(deny_unknown_fields)]
 pub struct Light {
     /// Where it is.
+    #[serde(deserialize_with = "numbers")]
     pub position: E3,
     /// Linear RGB intensity.
-    #[serde(default = "white")]
+    #[serde(default = "white", deserialize_with = "numbers")]
     pub colour: [f64; 3],
 }
 

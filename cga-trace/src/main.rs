@@ -1,18 +1,24 @@
-//! `cga-trace render SCENE.toml -o out.png`: render a scene file to a PNG.
+//! `cga-trace render SCENE.toml -o out.png`: render a scene file to an image.
 
 use anyhow::Context;
 use cga_trace::backend::{Backend, Dense, Plain, Sparse};
+use cga_trace::film::Output;
+use cga_trace::limits::MAX_SPP;
+use cga_trace::render::Window;
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
-use std::io::IsTerminal;
-use std::path::PathBuf;
+use std::io::{BufWriter, IsTerminal};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 use std::time::Instant;
 
 #[derive(Parser)]
 #[command(
     name = "cga-trace",
     version,
-    about = "Ray-trace spheres, planes, disks, triangles and evolved circle surfaces with conformal geometric algebra"
+    about = "Ray-trace spheres, planes, disks, triangles and evolved circle surfaces with conformal geometric algebra",
+    after_help = "Scene files are TOML: every table and field, with examples, is in the README's \
+                  \"Scene files\" section (README.md#scene-files); cga-trace/scenes/ holds complete scenes."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -21,89 +27,156 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Render a scene file to a PNG.
-    Render {
-        /// The scene (TOML).
-        scene: PathBuf,
-        /// The PNG to write.
-        #[arg(short, long, default_value = "out.png")]
-        output: PathBuf,
-        /// Image width in pixels (overrides the scene; the height follows the aspect unless given).
-        #[arg(long)]
-        width: Option<u32>,
-        /// Image height in pixels (overrides the scene).
-        #[arg(long)]
-        height: Option<u32>,
-        /// Worker threads (default: all cores).
-        #[arg(long)]
-        threads: Option<usize>,
-        /// Reflection depth (overrides the scene).
-        #[arg(long)]
-        max_depth: Option<u32>,
-        /// PNG encoding (overrides the scene).
-        #[arg(long, value_enum)]
-        encoding: Option<Encoding>,
-        /// Write a debug image instead of the shaded one.
-        #[arg(long, value_enum, default_value_t = Aov::Shaded)]
-        aov: Aov,
-        /// Geometry code: generated sparse types, the dense multivector, or plain vectors.
-        #[arg(long, value_enum, default_value_t = BackendKind::Sparse)]
-        backend: BackendKind,
-    },
+    /// Render a scene file to an image (PNG, OpenEXR or Radiance HDR, by extension).
+    #[command(after_help = "The scene format: README.md#scene-files.")]
+    Render(Render),
 }
 
-fn main() -> anyhow::Result<()> {
-    let Command::Render { scene, output, width, height, threads, max_depth, encoding, aov, backend } =
-        Cli::parse().command;
-    let mut scene = Scene::load(&scene)?;
-    resize(&mut scene, width, height)?;
-    if let Some(d) = max_depth {
+#[derive(clap::Args)]
+struct Render {
+    /// The scene (TOML; see README.md#scene-files).
+    scene: PathBuf,
+    /// The image to write: .png (8- or 16-bit, encoded), .exr or .hdr (linear floats).
+    #[arg(short, long, default_value = "out.png")]
+    output: PathBuf,
+    /// Bits per channel of a PNG: 8 or 16.
+    #[arg(long)]
+    bit_depth: Option<u8>,
+    /// Image width in pixels (the height follows at the same aspect unless given).
+    #[arg(long)]
+    width: Option<u32>,
+    /// Image height in pixels (the width follows at the same aspect unless given).
+    #[arg(long)]
+    height: Option<u32>,
+    /// Horizontal field of view in degrees (sets x_max = 2 f tan(fov/2); y_max follows).
+    #[arg(long)]
+    fov: Option<f64>,
+    /// Samples per pixel, stratified (overrides the scene; 1 = the pixel centre).
+    #[arg(long)]
+    spp: Option<u32>,
+    /// Render only the window x0,x1,y0,y1 (fractions of the image, y from the top, as
+    /// pbrt's --cropwindow); windows of one frame assemble into it byte for byte.
+    #[arg(long, value_delimiter = ',', num_args = 4, value_names = ["X0", "X1", "Y0", "Y1"], allow_negative_numbers = true)]
+    crop: Option<Vec<f64>>,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Reflection depth (overrides the scene).
+    #[arg(long)]
+    max_depth: Option<u32>,
+    /// PNG encoding (overrides the scene).
+    #[arg(long, value_enum)]
+    encoding: Option<Encoding>,
+    /// Write a debug image instead of the shaded one.
+    #[arg(long, value_enum, default_value_t = Aov::Shaded)]
+    aov: Aov,
+    /// Geometry code: generated sparse types, the dense multivector, or plain vectors.
+    #[arg(long, value_enum, default_value_t = BackendKind::Sparse)]
+    backend: BackendKind,
+}
+
+/// User errors print one line (every cause once, no backtrace, whatever `RUST_BACKTRACE`
+/// says) and exit with status 1.
+fn main() -> ExitCode {
+    let Command::Render(args) = Cli::parse().command;
+    match render_command(args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", one_line(&e));
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The error and its causes on one line, each cause left out when an earlier message
+/// already says it.
+fn one_line(e: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if !line.contains(&text) {
+            if !line.is_empty() {
+                line.push_str(": ");
+            }
+            line.push_str(&text);
+        }
+    }
+    line.replace(['\n', '\r'], " ")
+}
+
+fn render_command(args: Render) -> anyhow::Result<()> {
+    // Everything that can be wrong with the output is found before any rendering.
+    let output = Output::for_path(&args.output, args.bit_depth)?;
+    let file =
+        std::fs::File::create(&args.output).with_context(|| format!("cannot write {}", args.output.display()))?;
+    let result = render_to(&args, output, file);
+    if result.is_err() {
+        let _ = std::fs::remove_file(&args.output);
+    }
+    result
+}
+
+fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Result<()> {
+    let mut scene = Scene::load(&args.scene)?;
+    if let Some(degrees) = args.fov {
+        scene.set_fov(degrees).context("--fov")?;
+    }
+    if let Some(note) = scene.resize(args.width, args.height).context("--width/--height")? {
+        eprintln!("note: {note}");
+    }
+    if let Some(d) = args.max_depth {
         scene.settings.max_depth = d;
     }
-    let encoding = encoding.unwrap_or(scene.settings.encoding);
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(0)).build()?;
+    if let Some(spp) = args.spp {
+        scene.settings.spp = spp;
+    }
+    scene.settings.check().context("--max-depth/--spp")?;
+    if !(1..=MAX_SPP).contains(&scene.settings.spp) {
+        anyhow::bail!("--spp must be 1 to {MAX_SPP}");
+    }
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let window = match &args.crop {
+        Some(c) => Window::crop(w, h, [c[0], c[1], c[2], c[3]]).map_err(anyhow::Error::msg).context("--crop")?,
+        None => Window::full(w, h),
+    };
+    let encoding = args.encoding.unwrap_or(scene.settings.encoding);
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(args.threads.unwrap_or(0)).build()?;
 
-    let bar = indicatif::ProgressBar::new(u64::from(scene.camera.height));
+    let bar = indicatif::ProgressBar::new(window.rows.len() as u64);
     if !std::io::stderr().is_terminal() {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let render = match backend {
+    let render = match args.backend {
         BackendKind::Sparse => render::<Sparse>,
         BackendKind::Dense => render::<Dense>,
         BackendKind::Plain => render::<Plain>,
     };
     let start = Instant::now();
-    let (film, (primary, shadow, reflection)) = pool.install(|| render(&scene, aov, &|| bar.inc(1)));
+    let (film, (primary, shadow, reflection)) = pool.install(|| render(&scene, args.aov, window, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    film.save_png(&output, encoding).with_context(|| format!("writing {}", output.display()))?;
+    write(&film, &args.output, output, encoding, file)?;
 
     let total = primary + shadow + reflection;
     eprintln!(
         "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s -> {}",
         u64::from(film.width) * u64::from(film.height),
         total as f64 / seconds.max(1e-9),
-        output.display()
+        args.output.display()
     );
     Ok(())
 }
 
 /// The image and the rays cast `(primary, shadow, reflection)`, on back end `B`.
-fn render<B: Backend>(scene: &Scene, aov: Aov, on_row: &(dyn Fn() + Sync)) -> (Film, (u64, u64, u64)) {
+fn render<B: Backend>(scene: &Scene, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> (Film, (u64, u64, u64)) {
     let renderer = Renderer::<B>::with_backend(scene);
-    let film = renderer.render(aov, on_row);
+    let film = renderer.render_window(aov, window, on_row);
     (film, renderer.counts.get())
 }
 
-/// Apply `--width`/`--height`, keeping the image plane's aspect when only one is given.
-fn resize(scene: &mut Scene, width: Option<u32>, height: Option<u32>) -> anyhow::Result<()> {
-    let c = scene.camera;
-    let (w, h) = match (width, height) {
-        (None, None) => return Ok(()),
-        (Some(w), None) => (w, ((f64::from(w) * c.y_max / c.x_max).round() as u32).max(1)),
-        (None, Some(h)) => (((f64::from(h) * c.x_max / c.y_max).round() as u32).max(1), h),
-        (Some(w), Some(h)) => (w, h),
-    };
-    scene.camera = cga_trace::camera::Camera::new(c.pose, c.focal, c.x_max, c.y_max, w, h)?;
+fn write(film: &Film, path: &Path, output: Output, encoding: Encoding, file: std::fs::File) -> anyhow::Result<()> {
+    let mut w = BufWriter::new(file);
+    film.write(&mut w, output, encoding).with_context(|| format!("writing {}", path.display()))?;
+    w.into_inner().map_err(|e| e.into_error()).with_context(|| format!("writing {}", path.display()))?;
     Ok(())
 }

@@ -1,5 +1,6 @@
 //! Materials: a surface's colour and Blinn–Phong coefficients (the paper's eq. 12).
 
+use crate::format::{number, numbers};
 use crate::scene::Invalid;
 use serde::Deserialize;
 
@@ -8,21 +9,22 @@ use serde::Deserialize;
 #[serde(deny_unknown_fields)]
 pub struct Material {
     /// Linear RGB in [0, 1].
+    #[serde(deserialize_with = "numbers")]
     pub colour: [f64; 3],
     /// Ambient coefficient `k_a`.
-    #[serde(default = "half")]
+    #[serde(default = "half", deserialize_with = "number")]
     pub ka: f64,
     /// Diffuse coefficient `k_d`.
-    #[serde(default = "one")]
+    #[serde(default = "one", deserialize_with = "number")]
     pub kd: f64,
     /// Specular coefficient `k_s`.
-    #[serde(default = "one")]
+    #[serde(default = "one", deserialize_with = "number")]
     pub ks: f64,
     /// Specular exponent `q`.
-    #[serde(default = "hundred")]
+    #[serde(default = "hundred", deserialize_with = "number")]
     pub q: f64,
     /// Mirror reflection `k_r`.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "number")]
     pub kr: f64,
 }
 

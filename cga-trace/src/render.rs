@@ -13,6 +13,8 @@ use crate::scene::{Object, Scene};
 use crate::shapes::{Crossing, Hit};
 use cga_core::euclid::{E3, dot, norm, reflect, scale, sub, unit};
 use rayon::prelude::*;
+use smallvec::SmallVec;
+use std::ops::Range;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
 /// What an image shows.
@@ -165,11 +167,37 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// [`Renderer::trace`], counting the rays cast into `cast` (shared counters would be
     /// contended by every thread on every ray).
-    fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
+    ///
+    /// Bounces are followed in a loop, not by recursion, so that no depth can overflow the
+    /// stack: each hit's own colour and `k_r` are kept, and summed from the deepest up as
+    /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
+    /// order, so the same bits).
+    fn trace_counted(&self, ray: &Ray<B::Carrier>, mut depth: u32, cast: &mut Cast) -> [f64; 3] {
         let settings = &self.scene.settings;
-        let Some((hit, object)) = self.nearest(ray, T_MIN, f64::INFINITY) else {
-            return settings.background;
+        let mut layers: SmallVec<[([f64; 3], f64); 8]> = SmallVec::new();
+        let mut ray = *ray;
+        let deepest = loop {
+            let Some((hit, object)) = self.nearest(&ray, T_MIN, f64::INFINITY) else {
+                break settings.background;
+            };
+            let (local, n) = (self.shade(&ray, &hit, object, cast), hit.normal);
+            let kr = object.material.kr;
+            if !(kr > 0.0 && depth < settings.max_depth) {
+                break local;
+            }
+            let r = reflect(ray.dir, n);
+            let Some(reflected) = B::ray(leaving_origin(hit.point, n, r), r) else { break local };
+            cast.reflection += 1;
+            layers.push((local, kr));
+            (ray, depth) = (reflected, depth + 1);
         };
+        layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
+    }
+
+    /// The ambient and direct light at a hit (eq. 12 without the reflected term), casting a
+    /// shadow ray towards each light that could reach it.
+    fn shade(&self, ray: &Ray<B::Carrier>, hit: &Hit, object: &Object, cast: &mut Cast) -> [f64; 3] {
+        let settings = &self.scene.settings;
         let m = &object.material;
         let (n, v) = (hit.normal, ray.dir.map(|x| -x));
         let mut colour = scale(m.colour, m.ka * settings.ambient);
@@ -199,16 +227,6 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 *out += s * f_att * (c * m.kd * diffuse.max(0.0) + m.ks * specular) * l;
             }
         }
-        if m.kr > 0.0 && depth < settings.max_depth {
-            let r = reflect(ray.dir, n);
-            if let Some(reflected) = B::ray(leaving_origin(hit.point, n, r), r) {
-                cast.reflection += 1;
-                let bounced = self.trace_counted(&reflected, depth + 1, cast);
-                for (out, b) in colour.iter_mut().zip(bounced) {
-                    *out += m.kr * b;
-                }
-            }
-        }
         colour
     }
 
@@ -220,9 +238,25 @@ impl<'a, B: Backend> Renderer<'a, B> {
         colour
     }
 
+    /// One pixel, averaged over the scene's `spp` samples ([`sample_offset`]; the centre
+    /// alone for one sample).
     fn pixel_counted(&self, i: u32, j: u32, aov: Aov, cast: &mut Cast) -> [f64; 3] {
-        let camera = &self.scene.camera;
-        let Some(ray) = B::camera_ray(camera, f64::from(i) + 0.5, f64::from(j) + 0.5) else {
+        let spp = self.scene.settings.spp.max(1);
+        if spp == 1 {
+            return self.sample(f64::from(i) + 0.5, f64::from(j) + 0.5, aov, cast);
+        }
+        let mut sum = [0.0; 3];
+        for s in 0..spp {
+            let (du, dv) = sample_offset(i, j, s);
+            let c = self.sample(f64::from(i) + du, f64::from(j) + dv, aov, cast);
+            sum = [0, 1, 2].map(|k| sum[k] + c[k]);
+        }
+        sum.map(|x| x / f64::from(spp))
+    }
+
+    /// The colour (or AOV) seen at continuous pixel coordinates `(u, v)`.
+    fn sample(&self, u: f64, v: f64, aov: Aov, cast: &mut Cast) -> [f64; 3] {
+        let Some(ray) = B::camera_ray(&self.scene.camera, u, v) else {
             return self.scene.settings.background;
         };
         cast.primary += 1;
@@ -241,17 +275,131 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// The whole image, rows in parallel on rayon's pool; `on_row` is called as each row
     /// finishes (for a progress bar).
     pub fn render(&self, aov: Aov, on_row: &(dyn Fn() + Sync)) -> Film {
-        let (w, h) = (self.scene.camera.width, self.scene.camera.height);
-        let rows: Vec<Vec<[f64; 3]>> = (0..h)
+        let camera = &self.scene.camera;
+        self.render_window(aov, Window::full(camera.width, camera.height), on_row)
+    }
+
+    /// The pixels of `window` only, as an image of its size. Every pixel depends on its
+    /// position alone, so windows of a frame rendered anywhere assemble into the frame,
+    /// byte for byte, and any thread count gives the same bytes.
+    pub fn render_window(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
+        let rows: Vec<Vec<[f64; 3]>> = window
+            .rows
+            .clone()
             .into_par_iter()
             .map(|j| {
                 let mut cast = Cast::default();
-                let row = (0..w).map(|i| self.pixel_counted(i, j, aov, &mut cast)).collect();
+                let row = window.columns.clone().map(|i| self.pixel_counted(i, j, aov, &mut cast)).collect();
                 self.counts.add(&cast);
                 on_row();
                 row
             })
             .collect();
-        Film::from_rows(w, h, rows)
+        Film::from_rows(window.columns.len() as u32, window.rows.len() as u32, rows)
+    }
+}
+
+/// A rectangle of pixels: `columns` from the left, `rows` from the bottom (the film's
+/// `(0, 0)` is bottom-left).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// Pixel columns `i`.
+    pub columns: Range<u32>,
+    /// Pixel rows `j`, counted from the bottom.
+    pub rows: Range<u32>,
+}
+
+impl Window {
+    /// The whole `width × height` image.
+    pub fn full(width: u32, height: u32) -> Self {
+        Window { columns: 0..width, rows: 0..height }
+    }
+
+    /// pbrt's crop window: the fractions `[x0, x1] × [y0, y1]` of a `width × height` image,
+    /// `x` from the left and `y` from the top, as pixels `⌈x0 w⌉ .. ⌈x1 w⌉` and
+    /// `⌈y0 h⌉ .. ⌈y1 h⌉` (so windows that share an edge share no pixel and miss none).
+    pub fn crop(width: u32, height: u32, [x0, x1, y0, y1]: [f64; 4]) -> Result<Self, &'static str> {
+        let ok = |a: f64, b: f64| (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && a < b;
+        if !(ok(x0, x1) && ok(y0, y1)) {
+            return Err("a crop window is x0,x1,y0,y1 with 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1");
+        }
+        let at = |f: f64, n: u32| (f * f64::from(n)).ceil() as u32;
+        let (columns, top) = (at(x0, width)..at(x1, width), at(y0, height)..at(y1, height));
+        if columns.is_empty() || top.is_empty() {
+            return Err("the crop window holds no pixel centre at this image size");
+        }
+        // Rows from the top to rows from the bottom.
+        Ok(Window { columns, rows: height - top.end..height - top.start })
+    }
+}
+
+/// Where sample `s` of pixel `(i, j)` falls, as an offset in `[0, 1)²` from the pixel's
+/// corner: the first two dimensions of the Sobol' sequence (a (0, 2)-sequence: every prefix
+/// of `2^k` samples has one in each of the `2^k` elementary boxes of every shape), with the
+/// digits of each coordinate scrambled by a hash of the pixel (random digit scrambling keeps
+/// that stratification and decorrelates neighbouring pixels). Deterministic: the same for
+/// any thread count or crop.
+pub fn sample_offset(i: u32, j: u32, s: u32) -> (f64, f64) {
+    let pixel = hash(i ^ hash(j ^ 0x9e37_79b9));
+    let x = s.reverse_bits() ^ hash(pixel ^ 0x68bc_21eb);
+    let y = sobol_second(s) ^ hash(pixel ^ 0x02e5_be93);
+    let unit = |bits: u32| f64::from(bits) / 4_294_967_296.0;
+    (unit(x), unit(y))
+}
+
+/// The second dimension of the Sobol' sequence (primitive polynomial `x + 1`): direction
+/// numbers `v₀ = 2³¹`, `v_k = v_{k−1} ⊕ (v_{k−1} >> 1)`, XORed over the bits of `s`.
+fn sobol_second(mut s: u32) -> u32 {
+    let (mut v, mut y) = (1u32 << 31, 0);
+    while s != 0 {
+        if s & 1 == 1 {
+            y ^= v;
+        }
+        s >>= 1;
+        v ^= v >> 1;
+    }
+    y
+}
+
+/// A 32-bit integer hash with good avalanche (two multiply–xorshift rounds).
+fn hash(mut x: u32) -> u32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7feb_352d);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846c_a68b);
+    x ^ (x >> 16)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn samples_are_stratified_in_every_elementary_box() {
+        // 16 samples: one in each of the 16 cells of the 16×1, 8×2, 4×4, 2×8, 1×16 grids.
+        for (i, j) in [(0, 0), (7, 3), (1000, 20)] {
+            let points: Vec<_> = (0..16).map(|s| sample_offset(i, j, s)).collect();
+            for k in 0..=4 {
+                let (nx, ny) = (1u32 << k, 1u32 << (4 - k));
+                let mut seen = [false; 16];
+                for &(x, y) in &points {
+                    assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+                    let cell = (x * f64::from(nx)) as u32 * ny + (y * f64::from(ny)) as u32;
+                    assert!(!std::mem::replace(&mut seen[cell as usize], true), "pixel ({i}, {j}), {nx}×{ny}");
+                }
+            }
+        }
+        assert_ne!(sample_offset(0, 0, 0), sample_offset(1, 0, 0), "pixels are decorrelated");
+    }
+
+    #[test]
+    fn crop_windows_tile_the_image() {
+        let w = Window::crop(10, 7, [0.0, 0.5, 0.0, 1.0 / 3.0]).unwrap();
+        assert_eq!(w, Window { columns: 0..5, rows: 4..7 });
+        let rest = Window::crop(10, 7, [0.5, 1.0, 1.0 / 3.0, 1.0]).unwrap();
+        assert_eq!(rest, Window { columns: 5..10, rows: 0..4 });
+        assert!(Window::crop(10, 7, [0.5, 0.5, 0.0, 1.0]).is_err());
+        assert!(Window::crop(10, 7, [0.0, 1.0, 0.0, 1.1]).is_err());
+        assert!(Window::crop(10, 7, [0.0, 1.0, f64::NAN, 1.0]).is_err());
     }
 }

@@ -7,6 +7,7 @@ use crate::camera::{Camera, CameraError};
 use crate::format::{SceneFile, build_camera, build_object};
 use crate::frame::Frame;
 use crate::light::Light;
+use crate::limits::{MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
 use crate::material::Material;
 use crate::settings::Settings;
 use crate::shapes::Shape;
@@ -44,6 +45,9 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Settings.
     pub settings: Settings,
+    /// Whether the file gives both image-plane extents (`x_max` or `fov`, and `y_max`): then
+    /// [`Scene::resize`] keeps them, and pixels need not be square.
+    pub pinned: bool,
 }
 
 /// What is wrong with a scene file.
@@ -92,6 +96,39 @@ pub enum Invalid {
     /// A value out of range or missing (the message names it).
     #[error("{0}")]
     Value(&'static str),
+    /// The fields given do not make the object (the message says which it takes).
+    #[error("{0}")]
+    Form(&'static str),
+    /// A list of the wrong length.
+    #[error("expected {expected} {what}, found {found}")]
+    Count {
+        /// What is counted.
+        what: &'static str,
+        /// How many it takes.
+        expected: usize,
+        /// How many were given.
+        found: usize,
+    },
+    /// More of something than [`crate::limits`] allows.
+    #[error("{found} {what} exceed the limit of {limit}")]
+    Limit {
+        /// What is counted.
+        what: &'static str,
+        /// How many were given.
+        found: u64,
+        /// The limit.
+        limit: u64,
+    },
+    /// The problem is with one field, at `span` in the file.
+    #[error("`{field}`: {reason}")]
+    Field {
+        /// The field's name.
+        field: &'static str,
+        /// Its bytes in the file.
+        span: Range<usize>,
+        /// Why.
+        reason: Box<Invalid>,
+    },
     /// The surface method's settings.
     #[error("surface_method: {0}")]
     SurfaceMethod(&'static str),
@@ -105,24 +142,42 @@ pub enum Invalid {
     #[cfg(feature = "evolved")]
     #[error(transparent)]
     Surface(#[from] SurfaceError),
-    /// One circle of an evolved surface.
-    #[error("{which}: {reason}")]
-    Circle {
-        /// `c1` or `c2`.
-        which: &'static str,
-        /// Why.
-        reason: Box<Invalid>,
-    },
     /// An evolved surface in a build without them.
     #[error("this build leaves out evolved surfaces (cargo feature `evolved`)")]
     NoEvolved,
 }
 
+impl Invalid {
+    /// `reason`, about the field `field` at `span`.
+    pub fn at(field: &'static str, span: Range<usize>, reason: Invalid) -> Invalid {
+        Invalid::Field { field, span, reason: Box::new(reason) }
+    }
+
+    /// The span of the innermost field this is about, if any.
+    fn span(&self) -> Option<Range<usize>> {
+        match self {
+            Invalid::Field { span, reason, .. } => reason.span().or_else(|| Some(span.clone())),
+            _ => None,
+        }
+    }
+}
+
 impl Scene {
-    /// Read and check a scene file.
+    /// Read and check a scene file of at most [`MAX_FILE_BYTES`](crate::limits::MAX_FILE_BYTES).
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        use std::io::Read;
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io { file: file.clone(), source })?;
+        let io = |source| SceneError::Io { file: file.clone(), source };
+        let mut bytes = Vec::new();
+        std::fs::File::open(path).and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)).map_err(io)?;
+        if bytes.len() as u64 > MAX_FILE_BYTES {
+            let message = format!("the file is larger than the limit of {MAX_FILE_BYTES} bytes");
+            return Err(SceneError::Syntax { file, line: 1, column: 1, message });
+        }
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let (line, column) = line_column_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
+            SceneError::Syntax { file: file.clone(), line, column, message: "the file is not UTF-8 text".into() }
+        })?;
         Scene::parse(&text, &file)
     }
 
@@ -132,23 +187,38 @@ impl Scene {
         let spec: SceneFile = toml::from_str(text).map_err(|e| {
             let (line, column) = at(e.span());
             let mut message = e.message().trim().to_string();
-            if let Some(key) = key_at(text, e.span().map_or(0, |s| s.start)).filter(|k| !message.contains(k.as_str())) {
+            if message == "duplicate key"
+                && let Some(key) = e.span().and_then(|s| text.get(s))
+            {
+                message = format!("duplicate key `{}`", key.trim().escape_debug());
+            } else if let Some(key) =
+                key_at(text, e.span().map_or(0, |s| s.start)).filter(|k| !message.contains(k.as_str()))
+            {
                 message = format!("field `{key}`: {message}");
             }
             SceneError::Syntax { file: file.into(), line, column, message }
         })?;
         let invalid = |span: Range<usize>, what: String, reason: Invalid| {
-            let (line, column) = at(Some(span));
+            let (line, column) = at(Some(reason.span().unwrap_or(span)));
             SceneError::Invalid { file: file.into(), line, column, what, reason }
         };
         let (settings, render_span) = spec.render.map_or((Settings::default(), 0..0), |r| (*r.get_ref(), r.span()));
         settings.check().map_err(|reason| invalid(render_span, "render".into(), reason))?;
+        let limit = |what, found: usize, limit: usize| {
+            (found > limit).then_some(Invalid::Limit { what, found: found as u64, limit: limit as u64 })
+        };
+        if let Some(e) =
+            limit("objects", spec.objects.len(), MAX_OBJECTS).or(limit("lights", spec.lights.len(), MAX_LIGHTS))
+        {
+            return Err(invalid(0..0, "scene".into(), e));
+        }
         let camera_span = spec.camera.span();
         let anchors: Vec<E3> = (spec.objects.iter().filter_map(|o| o.get_ref().anchor()))
             .chain(spec.lights.iter().map(|l| l.get_ref().position))
             .collect();
-        let (camera, frame) = build_camera(spec.camera.into_inner(), anchors)
-            .map_err(|reason| invalid(camera_span, "camera".into(), reason))?;
+        let in_camera = |reason| invalid(camera_span.clone(), "camera".into(), reason);
+        let parts = spec.camera.into_inner().parts().map_err(in_camera)?;
+        let (camera, frame) = build_camera(&parts, anchors).map_err(in_camera)?;
         for (k, light) in spec.lights.iter().enumerate() {
             light.get_ref().check().map_err(|reason| invalid(light.span(), format!("light {}", k + 1), reason))?;
         }
@@ -162,7 +232,8 @@ impl Scene {
             let what = format!("object `{name}`");
             objects.push(object.map_err(|reason| invalid(span, what, reason))?);
         }
-        Ok(Scene { frame, camera, objects, lights, settings })
+        let pinned = parts.pinned;
+        Ok(Scene { frame, camera, objects, lights, settings, pinned })
     }
 }
 
@@ -174,6 +245,53 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
     let key = segment.split('=').next()?.trim();
     (!key.is_empty() && segment.contains('=') && key.chars().all(|c| c.is_alphanumeric() || c == '_' || c == '.'))
         .then(|| key.to_string())
+}
+
+impl Scene {
+    /// The image resized to `width × height`; given one, the other follows at the image's
+    /// present aspect (`h = round(w h₀ / w₀)`). Pixels stay square — `y_max = x_max h / w` —
+    /// unless the file pins both extents ([`Scene::pinned`]): then both are kept, and the
+    /// note returned says how far from square the pixels have become.
+    pub fn resize(&mut self, width: Option<u32>, height: Option<u32>) -> Result<Option<String>, CameraError> {
+        let c = self.camera;
+        let follow = |a: u32, b0: u32, a0: u32| {
+            let b = (f64::from(a) * f64::from(b0) / f64::from(a0)).round();
+            b.clamp(1.0, f64::from(u32::MAX)) as u32
+        };
+        let (w, h) = match (width, height) {
+            (None, None) => return Ok(None),
+            (Some(w), None) => (w, follow(w, c.height, c.width)),
+            (None, Some(h)) => (follow(h, c.width, c.height), h),
+            (Some(w), Some(h)) => (w, h),
+        };
+        let y_max = if self.pinned { c.y_max } else { c.x_max * f64::from(h) / f64::from(w.max(1)) };
+        self.camera = Camera::new(c.pose, c.focal, c.x_max, y_max, w, h)?;
+        let aspect = (c.x_max / f64::from(w)) / (y_max / f64::from(h));
+        Ok((self.pinned && (aspect - 1.0).abs() > 1e-3).then(|| {
+            format!(
+                "the scene gives both x_max and y_max, so they are kept: pixels are {aspect:.4} times as wide as tall"
+            )
+        }))
+    }
+
+    /// Set the horizontal field of view to `degrees` (strictly between 0 and 180):
+    /// `x_max = 2 f tan(θ/2)`, and `y_max` follows for square pixels.
+    pub fn set_fov(&mut self, degrees: f64) -> Result<(), CameraError> {
+        let c = self.camera;
+        if !(degrees > 0.0 && degrees < 180.0) {
+            return Err(CameraError::FieldOfView { x: f64::NAN, y: f64::NAN });
+        }
+        let x_max = 2.0 * c.focal * (degrees.to_radians() / 2.0).tan();
+        let y_max = x_max * f64::from(c.height) / f64::from(c.width);
+        self.camera = Camera::new(c.pose, c.focal, x_max, y_max, c.width, c.height)?;
+        self.pinned = false;
+        Ok(())
+    }
+}
+
+/// 1-based line and column of a byte offset into bytes that are not all text.
+fn line_column_bytes(bytes: &[u8], offset: usize) -> (usize, usize) {
+    line_column(&String::from_utf8_lossy(&bytes[..offset]), offset)
 }
 
 /// 1-based line and column of a byte offset.

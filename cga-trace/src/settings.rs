@@ -1,6 +1,8 @@
 //! Render settings: depth, background, ambient light, shadows, attenuation, output
 //! encoding, and how evolved surfaces are intersected.
 
+use crate::format::{number, numbers};
+use crate::limits::{MAX_DEPTH, MAX_SPP};
 use crate::scene::Invalid;
 use crate::surface::Method;
 use serde::Deserialize;
@@ -20,23 +22,26 @@ pub enum Encoding {
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct Settings {
-    /// Reflection recursion depth.
+    /// Reflection depth: bounces after the first hit (at most [`MAX_DEPTH`]).
     #[serde(default = "five")]
     pub max_depth: u32,
+    /// Samples per pixel, stratified over the pixel (at most [`MAX_SPP`]; 1: the centre).
+    #[serde(default = "one_sample")]
+    pub spp: u32,
     /// Colour of rays that hit nothing.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "numbers")]
     pub background: [f64; 3],
     /// Ambient light intensity (times `k_a` and the colour).
-    #[serde(default = "ambient")]
+    #[serde(default = "ambient", deserialize_with = "number")]
     pub ambient: f64,
     /// Fraction of a light's diffuse and specular that passes a blocker (0: hard shadows).
-    #[serde(default)]
+    #[serde(default, deserialize_with = "number")]
     pub shadow_transmission: f64,
     /// Whether shadow rays are cast at all (`false`: every light reaches every point).
     #[serde(default = "yes")]
     pub shadows: bool,
     /// `f_att = min(1, 1 / (c0 + c1 d + c2 d²))`, `d` the distance to the light.
-    #[serde(default = "no_attenuation")]
+    #[serde(default = "no_attenuation", deserialize_with = "numbers")]
     pub attenuation: [f64; 3],
     /// PNG encoding.
     #[serde(default)]
@@ -53,6 +58,9 @@ fn yes() -> bool {
 pub(crate) fn five() -> u32 {
     5
 }
+fn one_sample() -> u32 {
+    1
+}
 fn ambient() -> f64 {
     0.3
 }
@@ -64,6 +72,7 @@ impl Default for Settings {
     fn default() -> Self {
         Settings {
             max_depth: five(),
+            spp: 1,
             background: [0.0; 3],
             ambient: ambient(),
             shadow_transmission: 0.0,
@@ -76,7 +85,8 @@ impl Default for Settings {
 }
 
 impl Settings {
-    /// Values finite and in range, and a usable surface method.
+    /// Values finite and in range, counts within [`crate::limits`], and a usable surface
+    /// method.
     pub fn check(&self) -> Result<(), Invalid> {
         let s = self;
         let finite = s
@@ -87,6 +97,19 @@ impl Settings {
             .all(|x| x.is_finite());
         if !finite {
             return Err(Invalid::Value("values must be finite"));
+        }
+        if s.max_depth > MAX_DEPTH {
+            return Err(Invalid::Limit {
+                what: "bounces (max_depth)",
+                found: s.max_depth.into(),
+                limit: MAX_DEPTH.into(),
+            });
+        }
+        if !(1..=MAX_SPP).contains(&s.spp) {
+            return Err(Invalid::Value("spp (samples per pixel) must be 1 to 4096"));
+        }
+        if s.ambient < 0.0 || s.background.iter().any(|&c| c < 0.0) {
+            return Err(Invalid::Value("ambient and background must be ≥ 0"));
         }
         if !(0.0..=1.0).contains(&s.shadow_transmission) {
             return Err(Invalid::Value("shadow_transmission must lie in [0, 1]"));

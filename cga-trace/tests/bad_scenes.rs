@@ -33,7 +33,7 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
         (
             "zero-radius sphere",
             with_object("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 0.0\n"),
-            vec!["bad.toml:6:", "`thing`", "radius"],
+            vec!["bad.toml:11:", "`thing`", "radius"],
         ),
         (
             "negative radius disk",
@@ -69,7 +69,7 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             with_object(
                 "type = \"evolved\"\nc1 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0, blade = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0] }\nc2 = { centre = [0.0, 0.0, 1.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }\n",
             ),
-            vec!["`thing`", "either"],
+            vec!["bad.toml:10:", "`thing`", "c1", "give `blade`"],
         ),
         (
             "camera on its target",
@@ -91,7 +91,7 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             format!(
                 "{CAMERA}[[objects]]\nname = \"thing\"\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = {{ colour = [nan, 0.0, 0.0] }}\n"
             ),
-            vec!["`thing`", "finite"],
+            vec!["bad.toml:11:", "colour", "NaN"],
         ),
         (
             "negative attenuation",
@@ -104,6 +104,202 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:6:", "light 1"],
         ),
         ("bad encoding", format!("{CAMERA}[render]\nencoding = \"gamma\"\n"), vec!["bad.toml:7:", "gamma"]),
+        // Counts and sizes beyond crate::limits.
+        ("deep mirrors", format!("{CAMERA}[render]\nmax_depth = 5000\n"), vec!["render", "5000 bounces", "1024"]),
+        (
+            "huge image",
+            "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [0.0, 1.0, 0.0]\nwidth = 4294967295\nheight = 1\n".into(),
+            vec!["bad.toml:4:", "`width`", "larger than the limit"],
+        ),
+        (
+            "100000 × 100000",
+            "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [0.0, 1.0, 0.0]\nwidth = 100000\nheight = 100000\n".into(),
+            vec!["camera", "larger than the limit"],
+        ),
+        (
+            "many samples",
+            format!("{CAMERA}[render]\nsurface_method = {{ method = \"sampling\", samples = 100000000000 }}\n"),
+            vec!["render", "samples must be 2 to 65536"],
+        ),
+        (
+            "many per_leaf",
+            format!(
+                "{CAMERA}[render]\nsurface_method = {{ method = \"hierarchy\", leaves = 64, per_leaf = 100000000000 }}\n"
+            ),
+            vec!["render", "per_leaf"],
+        ),
+        ("spp zero", format!("{CAMERA}[render]\nspp = 0\n"), vec!["render", "spp"]),
+        ("spp huge", format!("{CAMERA}[render]\nspp = 100000\n"), vec!["render", "4096"]),
+        (
+            "too many lights",
+            format!("{CAMERA}{}", "[[lights]]\nposition = [0.0, 0.0, 9.0]\n".repeat(1025)),
+            vec!["1025 lights", "1024"],
+        ),
+        // Extra or missing numbers, wherever they are.
+        (
+            "camera position of 4",
+            CAMERA.replace("0.0, -10.0, 0.0]", "0.0, -10.0, 0.0, 7.0]"),
+            vec!["bad.toml:2:", "position", "expected 3 numbers, found 4"],
+        ),
+        (
+            "look_at of 4",
+            CAMERA.replace("look_at = [0.0, 0.0, 0.0]", "look_at = [0.0, 0.0, 0.0, 1.0]"),
+            vec!["bad.toml:3:", "look_at", "found 4"],
+        ),
+        ("up of 2", format!("{CAMERA}up = [0.0, 1.0]\n"), vec!["bad.toml:6:", "up", "found 2"]),
+        (
+            "camera motor of 9",
+            "[camera]\nmotor = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n".into(),
+            vec!["bad.toml:2:", "motor", "expected 8 numbers, found 9"],
+        ),
+        (
+            "light position of 4",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 0.0, 1.0]\n"),
+            vec!["bad.toml:7:", "found 4"],
+        ),
+        (
+            "light colour of 4",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 0.0]\ncolour = [1.0, 1.0, 1.0, 1.0]\n"),
+            vec!["bad.toml:8:", "colour", "found 4"],
+        ),
+        (
+            "background of 4",
+            format!("{CAMERA}[render]\nbackground = [0.0, 0.0, 0.0, 0.0]\n"),
+            vec!["bad.toml:7:", "background", "found 4"],
+        ),
+        (
+            "attenuation of 2",
+            format!("{CAMERA}[render]\nattenuation = [1.0, 0.0]\n"),
+            vec!["bad.toml:7:", "attenuation", "found 2"],
+        ),
+        (
+            "object centre of 4",
+            with_object("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0, 0.0]\nradius = 1.0\n"),
+            vec!["bad.toml:10:", "centre", "found 4"],
+        ),
+        (
+            "material colour of 2",
+            format!(
+                "{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0] }}\n"
+            ),
+            vec!["bad.toml:10:", "colour", "found 2"],
+        ),
+        (
+            "corners of 4",
+            with_object(
+                "type = \"triangle\"\ncorners = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]\n",
+            ),
+            vec!["bad.toml:10:", "corners", "expected 3 points, found 4"],
+        ),
+        (
+            "sphere through 3 points",
+            with_object("type = \"sphere\"\npoints = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]\n"),
+            vec!["bad.toml:10:", "points", "expected 4 points, found 3"],
+        ),
+        // Numbers that are not finite or are out of range, named as such.
+        ("NaN camera", CAMERA.replace("-10.0", "nan"), vec!["bad.toml:2:", "position", "NaN"]),
+        (
+            "infinite camera",
+            CAMERA.replace("look_at = [0.0, 0.0, 0.0]", "look_at = [inf, 0.0, 0.0]"),
+            vec!["bad.toml:3:", "inf is not finite"],
+        ),
+        (
+            "disk of radius 1e200",
+            with_object("type = \"disk\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nradius = 1e200\n"),
+            vec!["bad.toml:12:", "radius", "out of range"],
+        ),
+        (
+            "sphere at 1e308",
+            with_object("type = \"sphere\"\ncentre = [1e308, 0.0, 0.0]\nradius = 1.0\n"),
+            vec!["bad.toml:10:", "centre", "out of range"],
+        ),
+        (
+            "focal length 1e300",
+            format!("{CAMERA}focal_length = 1e300\n"),
+            vec!["bad.toml:6:", "focal_length", "out of range"],
+        ),
+        ("focal length 1e50", format!("{CAMERA}focal_length = 1e50\n"), vec!["camera", "field of view is degenerate"]),
+        ("fov of 180", format!("{CAMERA}fov = 180.0\n"), vec!["bad.toml:6:", "fov", "between 0 and 180"]),
+        ("fov and x_max", format!("{CAMERA}fov = 60.0\nx_max = 1.0\n"), vec!["bad.toml:6:", "not both"]),
+        // Duplicates, forms, degenerate values.
+        ("duplicate key", format!("{CAMERA}width = 9\n"), vec!["bad.toml:6:", "duplicate key `width`"]),
+        ("negative ambient", format!("{CAMERA}[render]\nambient = -0.5\n"), vec!["render", "ambient"]),
+        (
+            "non-rigid camera motor",
+            "[camera]\nmotor = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 3.0]\nwidth = 8\nheight = 8\n".into(),
+            vec!["bad.toml:2:", "motor", "not rigid"],
+        ),
+        (
+            "non-rigid object motor",
+            with_object(
+                "type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmotor = [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 2.0, 5.0]\n",
+            ),
+            vec!["bad.toml:12:", "motor", "not rigid"],
+        ),
+        (
+            "zero motor",
+            with_object(
+                "type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmotor = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]\n",
+            ),
+            vec!["motor", "no rotation part"],
+        ),
+        (
+            "motor and transform",
+            with_object(
+                "type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmotor = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\ntransform = [{ translate = [1.0, 0.0, 0.0] }]\n",
+            ),
+            vec!["bad.toml:12:", "not both"],
+        ),
+        (
+            "a step of two kinds",
+            with_object(
+                "type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\ntransform = [{ translate = [1.0, 0.0, 0.0], rotate = { axis = [0.0, 0.0, 1.0], degrees = 9.0 } }]\n",
+            ),
+            vec!["bad.toml:12:", "exactly one"],
+        ),
+        (
+            "a rotation about nothing",
+            with_object(
+                "type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\ntransform = [{ rotate = { axis = [0.0, 0.0, 0.0], degrees = 9.0 } }]\n",
+            ),
+            vec!["bad.toml:12:", "zero"],
+        ),
+        (
+            "sphere with a normal",
+            with_object("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nnormal = [0.0, 0.0, 1.0]\n"),
+            vec!["bad.toml:12:", "`normal`", "a sphere takes"],
+        ),
+        (
+            "disk without radius",
+            with_object("type = \"disk\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\n"),
+            vec!["`thing`", "a disk takes"],
+        ),
+        (
+            "coincident points",
+            with_object("type = \"disk\"\npoints = [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]]\n"),
+            vec!["bad.toml:10:", "points", "coincide"],
+        ),
+        (
+            "identical circles",
+            with_object(
+                "type = \"evolved\"\nc1 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }\nc2 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }\n",
+            ),
+            vec!["`thing`", "same circle", "no surface"],
+        ),
+        (
+            "reversed circles",
+            with_object(
+                "type = \"evolved\"\nc1 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }\nc2 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, -1.0], radius = 1.0 }\n",
+            ),
+            vec!["`thing`", "opposite orientations"],
+        ),
+        (
+            "control characters in a name",
+            format!(
+                "{CAMERA}[[objects]]\nname = \"bell\\u0007\\u001b[31m\"\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = -1.0\n{MATERIAL}"
+            ),
+            vec!["bell\\u{7}\\u{1b}[31m"],
+        ),
     ]
 }
 
@@ -112,17 +308,23 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
 #[test]
 fn bad_scene_files_give_located_errors() {
     println!("| input | error |\n|---|---|");
+    let mut failures = Vec::new();
     for (what, text, fragments) in cases() {
         let err = match Scene::parse(&text, "bad.toml") {
-            Ok(_) => panic!("{what}: accepted"),
+            Ok(_) => {
+                failures.push(format!("{what}: accepted"));
+                continue;
+            }
             Err(e) => e.to_string(),
         };
         println!("| {what} | `{}` |", err.replace('\n', " ").replace('|', "\\|"));
-        assert!(err.starts_with("bad.toml:"), "{what}: no location in `{err}`");
-        for f in fragments {
-            assert!(err.contains(f), "{what}: `{err}` lacks `{f}`");
+        if !err.starts_with("bad.toml:") || err.chars().any(char::is_control) {
+            failures.push(format!("{what}: no location, or control characters, in `{err}`"));
         }
+        failures
+            .extend(fragments.iter().filter(|f| !err.contains(**f)).map(|f| format!("{what}: `{err}` lacks `{f}`")));
     }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]

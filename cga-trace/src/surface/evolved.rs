@@ -6,7 +6,7 @@ use super::tree::{PAD, Tree};
 use super::{Family, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
-use cga_core::euclid::{E3, add, norm, sub};
+use cga_core::euclid::{E3, add, cross, dot, norm, sub};
 use cga_core::{Circle, Line, Pair, Sandwich, Translator};
 
 /// A surface swept by the circles interpolated between two circles.
@@ -23,6 +23,10 @@ pub struct EvolvedSurface {
     /// Bounding spheres over α-intervals, for the methods that cull with them.
     tree: Option<Tree>,
 }
+
+/// Circles whose centres and radii differ by less than this times the radius, and whose
+/// normals by less than this in angle, are one circle ([`SurfaceError::SameCircle`]).
+const SAME_CIRCLE: f64 = 1e-12;
 
 /// The bounding sphere is sampled this finely, then padded.
 const BOUND_SAMPLES: usize = 512;
@@ -58,12 +62,18 @@ impl EvolvedSurface {
     /// rounded coefficients is not exactly a blade (`C C̃` then has a 4-vector part), and the
     /// polynomial method relies on `⟨−X X̃⟩₄ = α(1 − α) W` exactly.
     pub fn in_frame(origin: E3, c1: Circle, c2: Circle, method: Method) -> Result<Self, SurfaceError> {
-        let blade = |c: Circle, which| {
-            let not_a_circle = |reason| SurfaceError::NotACircle { which, reason };
-            let (centre, normal, radius) = c.centre_normal_radius().map_err(not_a_circle)?;
-            Circle::from_centre_normal_radius(centre, normal, radius).map_err(not_a_circle)
+        let parts =
+            |c: Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
+        let ((p1, n1, r1), (p2, n2, r2)) = (parts(c1, 1)?, parts(c2, 2)?);
+        let close = SAME_CIRCLE * r1.max(r2);
+        if norm(sub(p1, p2)) <= close && (r1 - r2).abs() <= close && norm(cross(n1, n2)) <= SAME_CIRCLE {
+            return Err(SurfaceError::SameCircle { reversed: dot(n1, n2) < 0.0 });
+        }
+        let blade = |(centre, normal, radius), which| {
+            Circle::from_centre_normal_radius(centre, normal, radius)
+                .map_err(|reason| SurfaceError::NotACircle { which, reason })
         };
-        let pair = Pair::new(blade(c1, 1)?, blade(c2, 2)?)?;
+        let pair = Pair::new(blade((p1, n1, r1), 1)?, blade((p2, n2, r2), 2)?)?;
         let mut radius = 0.0f64;
         for k in 0..=BOUND_SAMPLES {
             let alpha = k as f64 / BOUND_SAMPLES as f64;

@@ -43,6 +43,13 @@ pub enum SurfaceError {
         /// What it is instead.
         reason: GeometryError,
     },
+    /// The two circles are one circle (to 1e-12 of its radius), the same way round or
+    /// reversed: the family is that circle alone, which bounds nothing.
+    #[error("c1 and c2 are the same circle{}: they sweep no surface", if *reversed { " with opposite orientations" } else { "" })]
+    SameCircle {
+        /// Whether the normals are opposite.
+        reversed: bool,
+    },
     /// The two circles cannot be normalised and aligned.
     #[error("the circles cannot be normalised")]
     Degenerate,
@@ -123,14 +130,19 @@ impl Method {
 }
 
 impl Method {
-    /// Why these settings cannot work, if they cannot.
+    /// Why these settings cannot work, if they cannot: too few samples to find a root, more
+    /// than [`MAX_SURFACE_SAMPLES`](crate::limits::MAX_SURFACE_SAMPLES) per ray, more than
+    /// 65536 leaves, or a tolerance outside `[0, 0.1]`.
     pub fn check(&self) -> Result<(), &'static str> {
+        use crate::limits::MAX_SURFACE_SAMPLES as MAX;
         let leaves_ok = |leaves: usize| (1..=1 << 16).contains(&leaves);
         let tolerance_ok = |t: f64| (0.0..=0.1).contains(&t);
         match *self {
-            Method::Sampling { samples } if samples < 2 => Err("samples must be at least 2"),
-            Method::Hierarchy { leaves, per_leaf } if !leaves_ok(leaves) || per_leaf < 2 => {
-                Err("leaves must be 1 to 65536 and per_leaf at least 2")
+            Method::Sampling { samples } if !(2..=MAX).contains(&samples) => Err("samples must be 2 to 65536"),
+            Method::Hierarchy { leaves, per_leaf }
+                if !leaves_ok(leaves) || per_leaf < 2 || leaves.next_power_of_two().saturating_mul(per_leaf) > MAX =>
+            {
+                Err("leaves must be 1 to 65536, per_leaf at least 2, and leaves × per_leaf at most 65536")
             }
             Method::Polynomial { tolerance } if !tolerance_ok(tolerance) => Err("tolerance must be 0 to 0.1"),
             Method::Hybrid { leaves, tolerance } if !leaves_ok(leaves) || !tolerance_ok(tolerance) => {

@@ -1,0 +1,432 @@
+//! The scene file format (TOML, via serde): what each table and object may hold, and how a
+//! parsed file becomes the camera, frame and shapes of a [`Scene`](crate::Scene).
+//!
+//! Unknown fields are errors; every number is checked where it is read ([`numbers`]), so
+//! that its error points at it. An object is one flat table (not a serde-tagged enum, which
+//! would lose the position of every value inside it): its `type` decides which fields it
+//! takes, and [`build_object`] builds it from them in the scene's [`Frame`], moved by its
+//! `motor` or `transform` ([`transform`]).
+
+mod numbers;
+mod transform;
+
+pub(crate) use numbers::{number, numbers};
+
+use crate::camera::Camera;
+use crate::frame::Frame;
+use crate::light::Light;
+use crate::limits::{MAX_PIXELS, MAX_SIDE};
+use crate::material::Material;
+use crate::scene::{Invalid, Object};
+use crate::settings::Settings;
+use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
+#[cfg(feature = "evolved")]
+use crate::surface::EvolvedSurface;
+use crate::surface::Method;
+use cga_core::euclid::E3;
+use cga_core::{Circle, Motor, Plane, Rotor, Sandwich, Sphere, down, up};
+use numbers::{Num, Nums, V3};
+use serde::Deserialize;
+use std::ops::Range;
+use std::sync::Arc;
+use toml::Spanned;
+use transform::{Step, in_frame, rigid, world_motor};
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct SceneFile {
+    pub camera: Spanned<CameraSpec>,
+    pub render: Option<Spanned<Settings>>,
+    #[serde(default)]
+    pub lights: Vec<Spanned<Light>>,
+    #[serde(default)]
+    pub objects: Vec<Spanned<ObjectSpec>>,
+}
+
+/// The camera: a pose (`position`, `look_at`, `up`, or a `motor`), focal length, image-plane
+/// extents (or a horizontal field of view) and pixel size.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct CameraSpec {
+    position: Option<V3>,
+    look_at: Option<V3>,
+    up: Option<V3>,
+    /// Motor coefficients `s, e12, e13, e23, e1i, e2i, e3i, e123i` (instead of position/look_at).
+    motor: Option<Spanned<Nums<8>>>,
+    focal_length: Option<Spanned<Num>>,
+    /// Image-plane width; default 2 (90° horizontal field of view with `f = 1`).
+    x_max: Option<Spanned<Num>>,
+    /// Image-plane height; default `x_max · height / width` (square pixels).
+    y_max: Option<Spanned<Num>>,
+    /// Horizontal field of view in degrees, instead of `x_max`: `x_max = 2 f tan(fov/2)`.
+    fov: Option<Spanned<Num>>,
+    width: Spanned<u32>,
+    height: Spanned<u32>,
+}
+
+/// The camera as the file gives it, before it is placed in the scene's frame.
+pub(crate) struct CameraParts {
+    pub pose: Motor,
+    pub focal: f64,
+    pub x_max: f64,
+    pub y_max: f64,
+    pub width: u32,
+    pub height: u32,
+    /// Whether the file gives both `x_max` and `y_max` (pixels then need not be square).
+    pub pinned: bool,
+}
+
+impl CameraSpec {
+    /// The pose, focal length, extents and size, checked.
+    pub(crate) fn parts(self) -> Result<CameraParts, Invalid> {
+        let pose = match (self.motor, self.position, self.look_at) {
+            (Some(m), None, None) => rigid(m.get_ref().0).map_err(|e| Invalid::at("motor", m.span(), e))?,
+            (None, Some(p), Some(t)) => Camera::pose_look_at(p.0, t.0, self.up.map_or([0.0, 0.0, 1.0], |u| u.0))?,
+            _ => return Err(Invalid::Value("give either `motor`, or `position` and `look_at`")),
+        };
+        let (width, height) = (*self.width.get_ref(), *self.height.get_ref());
+        if width > MAX_SIDE || height > MAX_SIDE || u64::from(width) * u64::from(height) > MAX_PIXELS {
+            let field = if width > MAX_SIDE || height <= MAX_SIDE {
+                ("width", self.width.span())
+            } else {
+                ("height", self.height.span())
+            };
+            return Err(Invalid::at(
+                field.0,
+                field.1,
+                Invalid::Camera(crate::camera::CameraError::TooLarge { width, height }),
+            ));
+        }
+        let value = |x: &Option<Spanned<Num>>| x.as_ref().map(|x| x.get_ref().0);
+        let focal = value(&self.focal_length).unwrap_or(1.0);
+        let x_max = match (&self.x_max, &self.fov) {
+            (Some(_), Some(fov)) => {
+                return Err(Invalid::at("fov", fov.span(), Invalid::Value("give `x_max` or `fov`, not both")));
+            }
+            (None, Some(fov)) if !(fov.get_ref().0 > 0.0 && fov.get_ref().0 < 180.0) => {
+                return Err(Invalid::at(
+                    "fov",
+                    fov.span(),
+                    Invalid::Value("the field of view must lie strictly between 0 and 180 degrees"),
+                ));
+            }
+            (None, Some(fov)) => 2.0 * focal * (fov.get_ref().0.to_radians() / 2.0).tan(),
+            (x_max, None) => value(x_max).unwrap_or(2.0),
+        };
+        let pinned = self.y_max.is_some();
+        let y_max = value(&self.y_max).unwrap_or(x_max * f64::from(height) / f64::from(width.max(1)));
+        Ok(CameraParts {
+            pose,
+            focal,
+            x_max,
+            y_max,
+            width,
+            height,
+            pinned: pinned && (self.x_max.is_some() || self.fov.is_some()),
+        })
+    }
+}
+
+/// The camera in the frame centred on it (sized by `anchors`), and that frame.
+pub(crate) fn build_camera(c: &CameraParts, anchors: Vec<E3>) -> Result<(Camera, Frame), Invalid> {
+    let world = Camera::new(c.pose, c.focal, c.x_max, c.y_max, c.width, c.height)?;
+    let frame = Frame::around(world.position(), anchors);
+    // In its own frame the camera only turns: M = T R, and R is M's scalar and e_jk parts.
+    let turn = Motor::from(Rotor { s: c.pose.s, e12: c.pose.e12, e13: c.pose.e13, e23: c.pose.e23 });
+    let camera = Camera::new(turn, c.focal, c.x_max, c.y_max, c.width, c.height)?;
+    Ok((camera, frame))
+}
+
+/// What an object is.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum Kind {
+    Sphere,
+    Plane,
+    Disk,
+    Triangle,
+    Evolved,
+}
+
+impl Kind {
+    /// The geometry fields this kind takes, and how to say so.
+    fn takes(self) -> (&'static [&'static str], &'static str) {
+        match self {
+            Kind::Sphere => {
+                (&["centre", "radius", "points"], "a sphere takes `centre` and `radius`, or `points` (four)")
+            }
+            Kind::Plane => (&["point", "normal", "points"], "a plane takes `point` and `normal`, or `points` (three)"),
+            Kind::Disk => (
+                &["centre", "normal", "radius", "points"],
+                "a disk takes `centre`, `normal` and `radius`, or `points` (three)",
+            ),
+            Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
+            Kind::Evolved => (&["c1", "c2"], "an evolved surface takes `c1` and `c2`"),
+        }
+    }
+}
+
+/// One `[[objects]]` table. Which geometry fields it needs depends on `type` ([`Kind::takes`]).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+#[cfg_attr(not(feature = "evolved"), allow(dead_code))]
+pub(crate) struct ObjectSpec {
+    #[serde(rename = "type")]
+    kind: Kind,
+    name: Option<String>,
+    material: Material,
+    centre: Option<Spanned<V3>>,
+    radius: Option<Spanned<Num>>,
+    normal: Option<Spanned<V3>>,
+    point: Option<Spanned<V3>>,
+    corners: Option<Spanned<Vec<V3>>>,
+    points: Option<Spanned<Vec<V3>>>,
+    c1: Option<Spanned<CircleSpec>>,
+    c2: Option<Spanned<CircleSpec>>,
+    motor: Option<Spanned<Nums<8>>>,
+    transform: Option<Spanned<Vec<Spanned<Step>>>>,
+}
+
+/// A circle for an evolved surface: Euclidean, through three points, or the original
+/// renderer's grade-3 coefficients in the orthonormal basis (order e123, e124, e125, e134,
+/// e135, e145, e234, e235, e245, e345); optionally moved.
+// Still parsed without the `evolved` feature, so that such objects get a clear error.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+#[cfg_attr(not(feature = "evolved"), allow(dead_code))]
+pub(crate) struct CircleSpec {
+    centre: Option<V3>,
+    normal: Option<V3>,
+    radius: Option<Num>,
+    points: Option<Spanned<Vec<V3>>>,
+    blade: Option<Nums<10>>,
+    motor: Option<Spanned<Nums<8>>>,
+    transform: Option<Spanned<Vec<Spanned<Step>>>>,
+}
+
+/// `N` points from a `points` or `corners` field, in `frame`.
+fn points<const N: usize>(field: &'static str, p: &Spanned<Vec<V3>>, frame: &Frame) -> Result<[E3; N], Invalid> {
+    let given = p.get_ref();
+    if given.len() != N {
+        let reason = Invalid::Count { what: "points", expected: N, found: given.len() };
+        return Err(Invalid::at(field, p.span(), reason));
+    }
+    Ok(std::array::from_fn(|k| frame.point(given[k].0)))
+}
+
+impl ObjectSpec {
+    /// A point that places the object (for sizing the scene's frame), if it has one.
+    pub(crate) fn anchor(&self) -> Option<E3> {
+        let first = |p: &Option<Spanned<Vec<V3>>>| p.as_ref().and_then(|p| p.get_ref().first()).map(|x| x.0);
+        (self.centre.as_ref().or(self.point.as_ref()).map(|c| c.get_ref().0))
+            .or_else(|| first(&self.points))
+            .or_else(|| first(&self.corners))
+            .or_else(|| self.c1.as_ref().and_then(|c| c.get_ref().centre.map(|c| c.0)))
+    }
+
+    /// The geometry fields given, with their spans.
+    fn given(&self) -> Vec<(&'static str, Range<usize>)> {
+        let span = |name, s: Option<Range<usize>>| s.map(|s| (name, s));
+        [
+            span("centre", self.centre.as_ref().map(Spanned::span)),
+            span("radius", self.radius.as_ref().map(Spanned::span)),
+            span("normal", self.normal.as_ref().map(Spanned::span)),
+            span("point", self.point.as_ref().map(Spanned::span)),
+            span("corners", self.corners.as_ref().map(Spanned::span)),
+            span("points", self.points.as_ref().map(Spanned::span)),
+            span("c1", self.c1.as_ref().map(Spanned::span)),
+            span("c2", self.c2.as_ref().map(Spanned::span)),
+        ]
+        .into_iter()
+        .flatten()
+        .collect()
+    }
+
+    /// A geometry error about one field, placed at that field when the object gives it.
+    fn locate(&self, e: Invalid) -> Invalid {
+        use cga_core::GeometryError as G;
+        let field = match &e {
+            Invalid::Geometry(G::ZeroRadius) => "radius",
+            Invalid::Geometry(G::ZeroVector) => "normal",
+            Invalid::Geometry(G::CoincidentPoints | G::CollinearPoints | G::CoplanarPoints)
+                if self.points.is_some() =>
+            {
+                "points"
+            }
+            Invalid::Geometry(G::CoincidentPoints | G::CollinearPoints) => "corners",
+            _ => return e,
+        };
+        match self.given().into_iter().find(|(f, _)| *f == field) {
+            Some((field, span)) => Invalid::at(field, span, e),
+            None => e,
+        }
+    }
+
+    /// The shape, in `frame`, with errors placed at their field ([`ObjectSpec::locate`]).
+    fn shape(self, method: Method, frame: &Frame) -> Result<Arc<dyn Shape>, Invalid> {
+        self.build(method, frame).map_err(|e| self.locate(e))
+    }
+
+    /// The shape, in `frame`: fields checked against the kind, built, then moved.
+    fn build(&self, method: Method, frame: &Frame) -> Result<Arc<dyn Shape>, Invalid> {
+        let (takes, says) = self.kind.takes();
+        if let Some((field, span)) = self.given().into_iter().find(|(f, _)| !takes.contains(f)) {
+            return Err(Invalid::at(field, span, Invalid::Form(says)));
+        }
+        let motor = world_motor(self.motor.as_ref(), self.transform.as_ref())?.map(|m| in_frame(m, frame));
+        let v = |x: &Option<Spanned<V3>>| x.as_ref().map(|x| x.get_ref().0);
+        let (centre, normal, point) = (v(&self.centre).map(|c| frame.point(c)), v(&self.normal), v(&self.point));
+        let radius = self.radius.as_ref().map(|r| frame.length(r.get_ref().0));
+        let form = || Invalid::Form(says);
+        Ok(match self.kind {
+            Kind::Sphere => {
+                let (c, r) = match (centre, radius, &self.points) {
+                    (Some(c), Some(r), None) => (c, r),
+                    (None, None, Some(p)) => {
+                        let [a, b, c, d] = points("points", p, frame)?;
+                        Sphere::through(a, b, c, d)?.centre_radius()?
+                    }
+                    _ => return Err(form()),
+                };
+                let (c, r) = match motor {
+                    Some(m) => m.sandwich(Sphere::from_centre_radius(c, r)?).centre_radius()?,
+                    None => (c, r),
+                };
+                Arc::new(SphereShape::new(c, r)?)
+            }
+            Kind::Plane => {
+                let (p, n) = match (point, normal, &self.points) {
+                    (Some(p), Some(n), None) => (frame.point(p), n),
+                    (None, None, Some(p)) => {
+                        let [a, b, c] = points("points", p, frame)?;
+                        let (n, _) = Plane::through(a, b, c)?.normal_offset()?;
+                        (a, n)
+                    }
+                    _ => return Err(form()),
+                };
+                let (p, n) = match motor {
+                    Some(m) => {
+                        let (n, d) = m.sandwich(Plane::from_point_normal(p, n)?).normal_offset()?;
+                        (n.map(|x| x * d), n)
+                    }
+                    None => (p, n),
+                };
+                Arc::new(PlaneShape::new(p, n)?)
+            }
+            Kind::Disk => {
+                let (c, n, r) = match (centre, normal, radius, &self.points) {
+                    (Some(c), Some(n), Some(r), None) => (c, n, r),
+                    (None, None, None, Some(p)) => {
+                        let [a, b, c] = points("points", p, frame)?;
+                        Circle::through(a, b, c)?.centre_normal_radius()?
+                    }
+                    _ => return Err(form()),
+                };
+                let (c, n, r) = moved_circle(motor, (c, n, r))?;
+                Arc::new(DiskShape::new(c, n, r)?)
+            }
+            Kind::Triangle => {
+                let corners = self.corners.as_ref().ok_or_else(form)?;
+                let mut corners: [E3; 3] = points("corners", corners, frame)?;
+                if let Some(m) = motor {
+                    for x in &mut corners {
+                        *x = down(m.sandwich(up(*x)))?;
+                    }
+                }
+                Arc::new(TriangleShape::new(corners)?)
+            }
+            #[cfg(feature = "evolved")]
+            Kind::Evolved => match (&self.c1, &self.c2) {
+                (Some(c1), Some(c2)) => Arc::new(evolved(c1, c2, motor, method, frame)?),
+                _ => return Err(form()),
+            },
+            #[cfg(not(feature = "evolved"))]
+            Kind::Evolved => {
+                let _ = method;
+                return Err(Invalid::NoEvolved);
+            }
+        })
+    }
+}
+
+/// A circle's centre, normal and radius after the sandwich `M C M̃`, if there is a motor.
+fn moved_circle(motor: Option<Motor>, (c, n, r): (E3, E3, f64)) -> Result<(E3, E3, f64), Invalid> {
+    Ok(match motor {
+        Some(m) => m.sandwich(Circle::from_centre_normal_radius(c, n, r)?).centre_normal_radius()?,
+        None => (c, n, r),
+    })
+}
+
+/// The object, built in `frame`, and its name (for errors, control characters escaped).
+pub(crate) fn build_object(
+    spec: ObjectSpec,
+    index: usize,
+    method: Method,
+    frame: &Frame,
+) -> (Result<Object, Invalid>, String) {
+    let name = spec.name.clone().unwrap_or_else(|| format!("object {}", index + 1));
+    let shown = name.escape_debug().to_string();
+    let material = spec.material;
+    let shape = material.check().and_then(|()| spec.shape(method, frame));
+    (shape.map(|shape| Object { name, shape, material }), shown)
+}
+
+/// An evolved surface, its circles built in the frame of [`EvolvedSurface::frame_origin`]
+/// (inside `frame`), each moved by its own transform and then by the object's.
+#[cfg(feature = "evolved")]
+fn evolved(
+    c1: &Spanned<CircleSpec>,
+    c2: &Spanned<CircleSpec>,
+    motor: Option<Motor>,
+    method: Method,
+    frame: &Frame,
+) -> Result<EvolvedSurface, Invalid> {
+    let on = |which, span: Range<usize>| move |e| Invalid::at(which, span.clone(), e);
+    let (s1, s2) = (c1.span(), c2.span());
+    let (c1, n1, r1) = circle(c1.get_ref(), motor, frame).map_err(on("c1", s1.clone()))?;
+    let (c2, n2, r2) = circle(c2.get_ref(), motor, frame).map_err(on("c2", s2.clone()))?;
+    let origin = EvolvedSurface::frame_origin((c1, r1), (c2, r2));
+    let local = |c: E3, n, r| Circle::from_centre_normal_radius(cga_core::euclid::sub(c, origin), n, r);
+    let c1 = local(c1, n1, r1).map_err(|e| on("c1", s1)(e.into()))?;
+    let c2 = local(c2, n2, r2).map_err(|e| on("c2", s2)(e.into()))?;
+    Ok(EvolvedSurface::in_frame(origin, c1, c2, method)?)
+}
+
+/// The orthonormal grade-3 blades, in the order scene files give them.
+#[cfg(feature = "evolved")]
+const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
+
+/// The centre, normal and radius of a circle spec in `frame`, moved by its own transform and
+/// then by `outer` (the object's, already in `frame`). A blade is read in world coordinates
+/// (where the file gives it) and then moved: its coefficients carry the circle no better
+/// than `ε (|c|/r)²` there, which is what the file holds.
+#[cfg(feature = "evolved")]
+fn circle(spec: &CircleSpec, outer: Option<Motor>, frame: &Frame) -> Result<(E3, E3, f64), Invalid> {
+    let own = world_motor(spec.motor.as_ref(), spec.transform.as_ref())?.map(|m| in_frame(m, frame));
+    let circle = match (spec.blade, spec.centre, spec.normal, spec.radius, &spec.points) {
+        (Some(b), None, None, None, None) => {
+            let mut dense = cga_core::Multivector::zero();
+            for (name, value) in BLADE_ORDER.iter().zip(b.0) {
+                let k = cga_core::Multivector::<f64>::BLADES
+                    .iter()
+                    .position(|x| x == name)
+                    .ok_or(Invalid::Value("blade order"))?;
+                dense.coeffs[k] = value;
+            }
+            let c = Circle::from_dense(&dense).try_normalise().ok_or(Invalid::Value("the blade is zero or null"))?;
+            let (c, n, r) = c.centre_normal_radius()?;
+            (frame.point(c), n, frame.length(r))
+        }
+        (None, Some(c), Some(n), Some(r), None) => (frame.point(c.0), n.0, frame.length(r.0)),
+        (None, None, None, None, Some(p)) => {
+            let [a, b, c] = points("points", p, frame)?;
+            Circle::through(a, b, c)?.centre_normal_radius()?
+        }
+        _ => return Err(Invalid::Form("give `blade`, or `centre`, `normal` and `radius`, or `points` (three)")),
+    };
+    let motor = match (own, outer) {
+        (Some(a), Some(b)) => Some(b * a),
+        (a, b) => a.or(b),
+    };
+    moved_circle(motor, circle)
+}

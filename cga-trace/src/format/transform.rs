@@ -1,0 +1,122 @@
+//! Object transforms in scene files: a motor, or a list of rotations, translations and
+//! motors composed in order, applied to an object's blade as the sandwich `X' = V X Ṽ`.
+//!
+//! Motors are given in world coordinates; the renderer's [`Frame`] is the world moved by
+//! `−o` and scaled by `1/s`, so a world motor `T_t R` acts there as `T_t' R` with
+//! `t' = (R o + t − o) / s` (the rotation is unchanged by a translation and a scaling of the
+//! frame).
+
+use super::numbers::{Num, Nums, V3};
+use crate::frame::Frame;
+use crate::scene::Invalid;
+use cga_core::euclid::{E3, norm};
+use cga_core::{Motor, Rotor, Sandwich, Translator, Vector};
+use serde::Deserialize;
+use toml::Spanned;
+
+/// One step of a `transform` list: exactly one of `rotate`, `translate`, `motor`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct Step {
+    rotate: Option<Rotation>,
+    translate: Option<V3>,
+    motor: Option<Nums<8>>,
+}
+
+/// `rotate = { axis = [x, y, z], degrees = θ }` (or `radians`), about the axis through the
+/// origin or through `about`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Rotation {
+    axis: V3,
+    degrees: Option<Num>,
+    radians: Option<Num>,
+    about: Option<V3>,
+}
+
+/// How far a motor may be from rigid, relative to its translation: the `e123i` part of
+/// `M R̃` (zero for `M = T R`) over `|t|/2`. Coefficients typed to six or more digits pass.
+const RIGID_TOLERANCE: f64 = 1e-6;
+
+/// The rigid motor of coefficients `s, e12, e13, e23, e1i, e2i, e3i, e123i`, normalised and
+/// rebuilt as `T R` exactly. Refused if it has no rotation part or is not rigid: a motor
+/// `M = T R` has `M R̃ = 1 − ½ t ei`, with no `e123i` part.
+pub(crate) fn rigid(c: [f64; 8]) -> Result<Motor, Invalid> {
+    let m = Motor::from_array(c);
+    let rotor = Rotor { s: m.s, e12: m.e12, e13: m.e13, e23: m.e23 };
+    let weight = norm([rotor.e12, rotor.e13, rotor.e23]).hypot(rotor.s);
+    if weight == 0.0 || !weight.is_finite() {
+        return Err(Invalid::Value("the motor has no rotation part (s, e12, e13, e23 are all zero)"));
+    }
+    let (m, rotor) = (m.scale(1.0 / weight), rotor.scale(1.0 / weight));
+    let p = m * rotor.reverse();
+    let t = [p.e1i, p.e2i, p.e3i].map(|x| -2.0 * x);
+    if p.e123i.abs() > RIGID_TOLERANCE * norm(t) / 2.0 {
+        return Err(Invalid::Value("the motor is not rigid: M R̃ has an e123i part (a motor is T R, T = 1 − ½ t ei)"));
+    }
+    Ok(Motor::from_rotor_translator(rotor, Translator::from_vector(t)))
+}
+
+impl Step {
+    /// This step as a world motor.
+    fn motor(&self) -> Result<Motor, Invalid> {
+        match (&self.rotate, self.translate, self.motor) {
+            (Some(r), None, None) => r.motor(),
+            (None, Some(t), None) => Ok(Motor::from(Translator::from_vector(t.0))),
+            (None, None, Some(m)) => rigid(m.0),
+            _ => Err(Invalid::Value("a transform step takes exactly one of `rotate`, `translate`, `motor`")),
+        }
+    }
+}
+
+impl Rotation {
+    fn motor(&self) -> Result<Motor, Invalid> {
+        let angle = match (self.degrees, self.radians) {
+            (Some(d), None) => d.0.to_radians(),
+            (None, Some(r)) => r.0,
+            _ => return Err(Invalid::Value("a rotation takes exactly one of `degrees`, `radians`")),
+        };
+        let r = Motor::from(Rotor::from_axis_angle(self.axis.0, angle)?);
+        Ok(match self.about {
+            // About an axis through p: shift p to the origin, turn, shift back.
+            Some(p) => {
+                Motor::from(Translator::from_vector(p.0)) * r * Motor::from(Translator::from_vector(p.0.map(|x| -x)))
+            }
+            None => r,
+        })
+    }
+}
+
+/// The world motor an object's `motor` or `transform` gives, if either: steps compose in the
+/// order listed (the first acts first), `V = V_n ⋯ V_1`.
+pub(crate) fn world_motor(
+    motor: Option<&Spanned<Nums<8>>>,
+    steps: Option<&Spanned<Vec<Spanned<Step>>>>,
+) -> Result<Option<Motor>, Invalid> {
+    let at = |span: std::ops::Range<usize>, field| move |reason| Invalid::at(field, span.clone(), reason);
+    match (motor, steps) {
+        (None, None) => Ok(None),
+        (Some(m), None) => rigid(m.get_ref().0).map(Some).map_err(at(m.span(), "motor")),
+        (None, Some(steps)) => {
+            let mut v = Motor::from(Rotor { s: 1.0, ..Rotor::zero() });
+            for step in steps.get_ref() {
+                v = step.get_ref().motor().map_err(at(step.span(), "transform"))? * v;
+            }
+            Ok(Some(v))
+        }
+        (Some(m), Some(_)) => {
+            Err(Invalid::at("motor", m.span(), Invalid::Value("give `motor` or `transform`, not both")))
+        }
+    }
+}
+
+/// A world motor as it acts in `frame`: `T_t R ↦ T_t' R`, `t' = (R o + t − o) / s`.
+pub(crate) fn in_frame(m: Motor, frame: &Frame) -> Motor {
+    let rotor = Rotor { s: m.s, e12: m.e12, e13: m.e13, e23: m.e23 };
+    let p = m * rotor.reverse();
+    let t = [p.e1i, p.e2i, p.e3i].map(|x| -2.0 * x);
+    let o = frame.origin;
+    let ro = rotor.sandwich(Vector::from_array([o[0], o[1], o[2], 0.0, 0.0])).to_array();
+    let shift: E3 = [0, 1, 2].map(|k| (ro[k] + t[k] - o[k]) / frame.scale);
+    Motor::from_rotor_translator(rotor, Translator::from_vector(shift))
+}

@@ -1,0 +1,41 @@
+//! The limits a scene file and the command line are held to. Each bounds what one number can
+//! make the renderer do — memory, time per pixel, stack — so that no input aborts, hangs or
+//! fills the machine; a value beyond one is an error that names the field and the limit.
+
+/// The largest magnitude of any number in a scene file. Conformal coefficients are products
+/// of up to three coordinates (`|x|² / r`), so values up to 1e100 keep every one finite in
+/// f64 (whose range ends near 1.8e308); beyond it a message about overflow would be all the
+/// user got.
+pub const MAX_MAGNITUDE: f64 = 1e100;
+
+/// Pixels per side of an image.
+pub const MAX_SIDE: u32 = 1 << 16;
+
+/// Pixels in an image: 2²⁵ (33.5 million, enough for 8K UHD, 7680 × 4320). The film holds
+/// 24 bytes a pixel, so at most 805 MB.
+pub const MAX_PIXELS: u64 = 1 << 25;
+
+/// Reflection depth. Bounces are traced in a loop, not by recursion, so depth costs no
+/// stack; the limit bounds the time a hall of mirrors can take per pixel.
+pub const MAX_DEPTH: u32 = 1024;
+
+/// Samples per pixel (`--spp`, `spp`).
+pub const MAX_SPP: u32 = 4096;
+
+/// Objects in a scene.
+pub const MAX_OBJECTS: usize = 1 << 20;
+
+/// Lights in a scene (each costs a shadow ray at every hit).
+pub const MAX_LIGHTS: usize = 1024;
+
+/// Bytes of a scene file. Larger files (or endless ones such as `/dev/zero`) are refused
+/// after reading this much.
+pub const MAX_FILE_BYTES: u64 = 64 << 20;
+
+/// Root-finding samples per ray of an evolved surface (`samples`, `leaves × per_leaf`).
+pub const MAX_SURFACE_SAMPLES: usize = 1 << 16;
+
+/// The image-plane extents over the focal length, `x_max / f` and `y_max / f`: between a
+/// field of view of about 1e-4 degrees and one of 180 degrees less 1e-4 degrees. Outside it
+/// every ray of the image is the same ray in f64, or no ray at all.
+pub const EXTENT_OVER_FOCAL: (f64, f64) = (1e-6, 1e6);
