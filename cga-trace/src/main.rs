@@ -56,8 +56,8 @@ struct Render {
     spp: Option<u32>,
     /// Render only the window x0,x1,y0,y1 (fractions of the image, y from the top, as
     /// pbrt's --cropwindow); windows of one frame assemble into it byte for byte.
-    #[arg(long, value_delimiter = ',', num_args = 4, value_names = ["X0", "X1", "Y0", "Y1"], allow_negative_numbers = true)]
-    crop: Option<Vec<f64>>,
+    #[arg(long, value_name = "X0,X1,Y0,Y1", value_parser = parse_crop, allow_hyphen_values = true)]
+    crop: Option<[f64; 4]>,
     /// Worker threads (default: all cores).
     #[arg(long)]
     threads: Option<usize>,
@@ -75,10 +75,26 @@ struct Render {
     backend: BackendKind,
 }
 
+/// `x0,x1,y0,y1`: four numbers.
+fn parse_crop(s: &str) -> Result<[f64; 4], String> {
+    let numbers: Vec<f64> =
+        s.split(',').map(|x| x.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|e| e.to_string())?;
+    numbers.try_into().map_err(|v: Vec<f64>| format!("four numbers x0,x1,y0,y1, not {}", v.len()))
+}
+
 /// User errors print one line (every cause once, no backtrace, whatever `RUST_BACKTRACE`
-/// says) and exit with status 1.
+/// says) and exit with status 1; a command line clap cannot read, its first line (status 2).
 fn main() -> ExitCode {
-    let Command::Render(args) = Cli::parse().command;
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            let text = e.render().to_string();
+            eprintln!("{} (see --help)", text.lines().next().unwrap_or("error: bad arguments"));
+            return ExitCode::from(2);
+        }
+        Err(e) => e.exit(),
+    };
+    let Command::Render(args) = cli.command;
     match render_command(args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -136,7 +152,7 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
     }
     let (w, h) = (scene.camera.width, scene.camera.height);
     let window = match &args.crop {
-        Some(c) => Window::crop(w, h, [c[0], c[1], c[2], c[3]]).map_err(anyhow::Error::msg).context("--crop")?,
+        Some(c) => Window::crop(w, h, *c).map_err(anyhow::Error::msg).context("--crop")?,
         None => Window::full(w, h),
     };
     let encoding = args.encoding.unwrap_or(scene.settings.encoding);

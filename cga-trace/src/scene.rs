@@ -196,7 +196,7 @@ impl Scene {
             {
                 message = format!("field `{key}`: {message}");
             }
-            SceneError::Syntax { file: file.into(), line, column, message }
+            SceneError::Syntax { file: file.into(), line, column, message: printable(&message) }
         })?;
         let invalid = |span: Range<usize>, what: String, reason: Invalid| {
             let (line, column) = at(Some(reason.span().unwrap_or(span)));
@@ -287,6 +287,11 @@ impl Scene {
         self.pinned = false;
         Ok(())
     }
+}
+
+/// `text` with control characters escaped (`\t`, `\u{1b}`), as messages quote the file.
+fn printable(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() { c.escape_debug().to_string() } else { c.to_string() }).collect()
 }
 
 /// 1-based line and column of a byte offset into bytes that are not all text.

@@ -1,0 +1,146 @@
+//! The command line as a user meets it: one-line errors without backtraces, the output
+//! checked before rendering, formats by extension, crop windows, and help that points at
+//! the scene format.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn scene(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("cga-trace-cli-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// `cga-trace render ARGS…`, with backtraces asked for (they must not appear).
+fn render(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_cga-trace")).arg("render").args(args).env("RUST_BACKTRACE", "1").output().unwrap()
+}
+
+/// The one line of a failed run.
+fn error_line(out: &Output) -> String {
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "one line, not {stderr:?}");
+    assert!(lines[0].starts_with("error: "), "{stderr}");
+    assert!(!stderr.contains("backtrace") && !stderr.contains("Stack"), "{stderr}");
+    lines[0].to_string()
+}
+
+#[test]
+fn user_errors_are_one_line_and_come_before_any_rendering() {
+    let dir = scratch("errors");
+    let primitives = scene("primitives.toml");
+    let p = primitives.to_str().unwrap();
+    let jpg = dir.join("x.jpg");
+    let e = error_line(&render(&[p, "-o", jpg.to_str().unwrap()]));
+    assert!(e.contains("x.jpg") && e.contains("unknown image extension"), "{e}");
+    assert!(!jpg.exists(), "nothing written");
+    let e = error_line(&render(&[p, "-o", dir.join("no/such/dir/x.png").to_str().unwrap()]));
+    assert!(e.contains("cannot write"), "{e}");
+    let e = error_line(&render(&[p, "-o", dir.join("x.exr").to_str().unwrap(), "--bit-depth", "16"]));
+    assert!(e.contains("16-bit"), "{e}");
+    // A missing scene: its cause once, not twice; the output it would have written is gone.
+    let out = dir.join("y.png");
+    let e = error_line(&render(&["no/such/scene.toml", "-o", out.to_str().unwrap()]));
+    assert!(e.contains("no/such/scene.toml") && e.matches("os error").count() == 1, "{e}");
+    assert!(!out.exists());
+    // A bad scene: located.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "[camera]\nposition = [0.0, 0.0, nan]\nlook_at = [0.0, 1.0, 0.0]\nwidth = 8\nheight = 8\n")
+        .unwrap();
+    let e = error_line(&render(&[bad.to_str().unwrap(), "-o", out.to_str().unwrap()]));
+    assert!(e.contains("bad.toml:2:") && e.contains("NaN"), "{e}");
+    // Limits on the command line too.
+    let e = error_line(&render(&[p, "-o", out.to_str().unwrap(), "--width", "100000", "--height", "100000"]));
+    assert!(e.contains("larger than the limit"), "{e}");
+    let e = error_line(&render(&[p, "-o", out.to_str().unwrap(), "--spp", "0"]));
+    assert!(e.contains("spp"), "{e}");
+    let e = error_line(&render(&[p, "-o", out.to_str().unwrap(), "--crop", "0.5,0.2,0,1"]));
+    assert!(e.contains("--crop") && e.contains("x0 < x1"), "{e}");
+    // What clap cannot read: one line too (status 2).
+    let out2 = render(&[p, "--crop", "0.5,0.2"]);
+    let stderr = String::from_utf8_lossy(&out2.stderr);
+    assert_eq!((out2.status.code(), stderr.lines().count()), (Some(2), 1), "{stderr}");
+    assert!(stderr.contains("four numbers"), "{stderr}");
+    // The scene file's size is bounded: an endless file is refused, not read forever.
+    #[cfg(unix)]
+    {
+        let e = error_line(&render(&["/dev/zero", "-o", out.to_str().unwrap()]));
+        assert!(e.contains("larger than the limit"), "{e}");
+    }
+}
+
+#[test]
+fn help_points_at_the_scene_format() {
+    let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).args(["render", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&out.stdout);
+    assert!(help.contains("README.md#scene-files") && help.contains("--spp") && help.contains("--crop"), "{help}");
+}
+
+#[test]
+fn formats_follow_the_extension() {
+    let dir = scratch("formats");
+    let p = scene("primitives.toml");
+    let run = |name: &str, extra: &[&str]| {
+        let path = dir.join(name);
+        let mut args = vec![p.to_str().unwrap(), "-o", path.to_str().unwrap(), "--width", "32", "--encoding", "linear"];
+        args.extend_from_slice(extra);
+        let out = render(&args);
+        assert!(out.status.success(), "{out:?}");
+        image::open(&path).unwrap()
+    };
+    let png8 = run("a.png", &[]);
+    let png16 = run("b.png", &["--bit-depth", "16"]);
+    let exr = run("c.exr", &[]);
+    let hdr = run("d.hdr", &[]);
+    assert_eq!(png8.color(), image::ColorType::Rgb8);
+    assert_eq!(png16.color(), image::ColorType::Rgb16);
+    assert_eq!((png8.width(), png8.height()), (32, 24));
+    // The floating-point files hold the linear values: where they are below 1 (unclipped),
+    // they agree with the 16-bit linear PNG to its quantisation (and RGBE's 8-bit mantissa).
+    let (exr, hdr, png16) = (exr.to_rgb32f(), hdr.to_rgb32f(), png16.to_rgb16());
+    let mut compared = 0;
+    for ((e, h), p) in exr.pixels().zip(hdr.pixels()).zip(png16.pixels()) {
+        for k in 0..3 {
+            let linear = f32::from(p.0[k]) / 65535.0;
+            if e.0[k] < 0.99 {
+                assert!((e.0[k] - linear).abs() <= 1.0 / 65535.0, "EXR {} against PNG {linear}", e.0[k]);
+                // RGBE shares one exponent: 8 bits of mantissa relative to the largest channel.
+                let largest = e.0.iter().fold(0f32, |a, b| a.max(*b));
+                assert!((h.0[k] - e.0[k]).abs() <= largest / 128.0 + 1e-6, "HDR {} against EXR {}", h.0[k], e.0[k]);
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared > 1000);
+}
+
+#[test]
+fn crops_from_the_command_line_assemble_into_the_frame() {
+    let dir = scratch("crops");
+    let p = scene("combined.toml");
+    let run = |name: &str, crop: Option<&str>| {
+        let path = dir.join(name);
+        let mut args = vec![p.to_str().unwrap(), "-o", path.to_str().unwrap(), "--width", "48", "--spp", "4"];
+        if let Some(c) = crop {
+            args.extend(["--crop", c]);
+        }
+        assert!(render(&args).status.success());
+        image::open(&path).unwrap().to_rgb8()
+    };
+    let full = run("full.png", None);
+    let top = run("top.png", Some("0,1,0,0.5"));
+    let bottom = run("bottom.png", Some("0,1,0.5,1"));
+    assert_eq!((top.height(), bottom.height()), (18, 18));
+    let mut assembled = image::RgbImage::new(48, 36);
+    image::imageops::replace(&mut assembled, &top, 0, 0);
+    image::imageops::replace(&mut assembled, &bottom, 0, 18);
+    assert_eq!(assembled.into_raw(), full.into_raw());
+}
