@@ -156,3 +156,18 @@ fn resizing_keeps_pixels_square_unless_both_extents_are_pinned() {
     // Too large: refused before anything is allocated.
     assert!(combined.resize(Some(100_000), Some(100_000)).is_err());
 }
+
+/// Every TOML example in the README parses (those without a camera, after one).
+#[test]
+fn the_readme_examples_are_valid_scenes() {
+    let readme =
+        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
+    let blocks: Vec<&str> = readme.split("```toml\n").skip(1).map(|b| b.split("```").next().unwrap()).collect();
+    assert!(blocks.len() >= 2);
+    for block in blocks {
+        let text = if block.contains("[camera]") { block.to_string() } else { format!("{CAMERA}{block}") };
+        if let Err(e) = Scene::parse(&text, "README.md") {
+            panic!("{e}\n{text}");
+        }
+    }
+}
