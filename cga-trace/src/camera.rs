@@ -15,7 +15,7 @@ pub enum CameraError {
     #[error("the camera position equals the look-at point")]
     NoDirection,
     /// The up vector is parallel to the viewing direction.
-    #[error("the up vector is parallel to the viewing direction")]
+    #[error("the up vector is zero or parallel to the viewing direction")]
     UpParallel,
     /// A zero or negative size, focal length or image extent.
     #[error("focal length, image extents and size must be positive")]

@@ -217,8 +217,8 @@ impl Scene {
             .chain(spec.lights.iter().map(|l| l.get_ref().position))
             .collect();
         let in_camera = |reason| invalid(camera_span.clone(), "camera".into(), reason);
-        let parts = spec.camera.into_inner().parts().map_err(in_camera)?;
-        let (camera, frame) = build_camera(&parts, anchors).map_err(in_camera)?;
+        let (world, pinned) = spec.camera.into_inner().world().map_err(in_camera)?;
+        let (camera, frame) = build_camera(&world, anchors).map_err(in_camera)?;
         for (k, light) in spec.lights.iter().enumerate() {
             light.get_ref().check().map_err(|reason| invalid(light.span(), format!("light {}", k + 1), reason))?;
         }
@@ -232,7 +232,6 @@ impl Scene {
             let what = format!("object `{name}`");
             objects.push(object.map_err(|reason| invalid(span, what, reason))?);
         }
-        let pinned = parts.pinned;
         Ok(Scene { frame, camera, objects, lights, settings, pinned })
     }
 }

@@ -203,6 +203,18 @@ fn mutated_scenes_error_or_render_cleanly() {
     std::panic::set_hook(hook);
     println!("{cases} mutants: {errors} located errors, {rendered} rendered cleanly, {} failures", failures.len());
     assert!(failures.is_empty(), "{}", failures.join("\n----\n"));
+    // Memory stayed bounded: the peak resident set of this process (Linux reports it).
+    if let Some(peak) = peak_resident_kib() {
+        println!("peak resident memory: {} MiB", peak / 1024);
+        assert!(peak < 2 << 20, "peak resident memory {peak} KiB");
+    }
     // Both outcomes are exercised, so the test cannot pass vacuously.
     assert!(errors > cases / 10 && rendered > cases / 10, "{errors} errors, {rendered} renders");
+}
+
+/// The process's peak resident set in KiB (`VmHWM`), where the system reports it.
+fn peak_resident_kib() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
 }

@@ -372,3 +372,31 @@ fn a_camera_on_a_surface_renders_cleanly() {
     }
     assert!((0..9).any(|j| film.get(12, j) != s.settings.background), "inwards it sees the sphere's inside");
 }
+
+/// Two facing mirrors at the deepest reflection allowed: the bounces are a loop, so a
+/// depth that once overflowed the stack (about 2,700 frames) costs none, and deeper is a
+/// named error rather than an abort.
+#[test]
+fn a_hall_of_mirrors_at_the_depth_limit_renders() {
+    let mirrors = |depth: u32| {
+        format!(
+            "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [0.0, 1.0, 0.0]\nwidth = 4\nheight = 3\nx_max = 0.01\n\
+             [render]\nmax_depth = {depth}\nshadows = false\n[[lights]]\nposition = [0.0, 0.0, 0.5]\n\
+             [[objects]]\ntype = \"plane\"\npoint = [0.0, 1.0, 0.0]\nnormal = [0.0, -1.0, 0.0]\n\
+             material = {{ colour = [0.01, 0.01, 0.01], kr = 0.999 }}\n\
+             [[objects]]\ntype = \"plane\"\npoint = [0.0, -1.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n\
+             material = {{ colour = [0.01, 0.01, 0.01], kr = 0.999 }}\n"
+        )
+    };
+    let s = scene(&mirrors(cga_trace::limits::MAX_DEPTH));
+    // On a thread with a small stack, as rayon's workers could have.
+    let film = std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(move || Renderer::new(&s).render(Aov::Shaded, &|| {}))
+        .unwrap()
+        .join()
+        .unwrap();
+    assert!(film.pixels.iter().flatten().all(|x| x.is_finite() && *x > 0.0));
+    let err = Scene::parse(&mirrors(cga_trace::limits::MAX_DEPTH + 1), "m.toml").unwrap_err().to_string();
+    assert!(err.contains("exceed the limit of 1024"), "{err}");
+}

@@ -64,21 +64,10 @@ pub(crate) struct CameraSpec {
     height: Spanned<u32>,
 }
 
-/// The camera as the file gives it, before it is placed in the scene's frame.
-pub(crate) struct CameraParts {
-    pub pose: Motor,
-    pub focal: f64,
-    pub x_max: f64,
-    pub y_max: f64,
-    pub width: u32,
-    pub height: u32,
-    /// Whether the file gives both `x_max` and `y_max` (pixels then need not be square).
-    pub pinned: bool,
-}
-
 impl CameraSpec {
-    /// The pose, focal length, extents and size, checked.
-    pub(crate) fn parts(self) -> Result<CameraParts, Invalid> {
+    /// The camera in world coordinates, checked, and whether the file gives both image-plane
+    /// extents (pixels then need not be square).
+    pub(crate) fn world(self) -> Result<(Camera, bool), Invalid> {
         let pose = match (self.motor, self.position, self.look_at) {
             (Some(m), None, None) => rigid(m.get_ref().0).map_err(|e| Invalid::at("motor", m.span(), e))?,
             (None, Some(p), Some(t)) => Camera::pose_look_at(p.0, t.0, self.up.map_or([0.0, 0.0, 1.0], |u| u.0))?,
@@ -113,24 +102,15 @@ impl CameraSpec {
             (None, Some(fov)) => 2.0 * focal * (fov.get_ref().0.to_radians() / 2.0).tan(),
             (x_max, None) => value(x_max).unwrap_or(2.0),
         };
-        let pinned = self.y_max.is_some();
+        let pinned = self.y_max.is_some() && (self.x_max.is_some() || self.fov.is_some());
         let y_max = value(&self.y_max).unwrap_or(x_max * f64::from(height) / f64::from(width.max(1)));
-        Ok(CameraParts {
-            pose,
-            focal,
-            x_max,
-            y_max,
-            width,
-            height,
-            pinned: pinned && (self.x_max.is_some() || self.fov.is_some()),
-        })
+        Ok((Camera::new(pose, focal, x_max, y_max, width, height)?, pinned))
     }
 }
 
 /// The camera in the frame centred on it (sized by `anchors`), and that frame.
-pub(crate) fn build_camera(c: &CameraParts, anchors: Vec<E3>) -> Result<(Camera, Frame), Invalid> {
-    let world = Camera::new(c.pose, c.focal, c.x_max, c.y_max, c.width, c.height)?;
-    let frame = Frame::around(world.position(), anchors);
+pub(crate) fn build_camera(c: &Camera, anchors: Vec<E3>) -> Result<(Camera, Frame), Invalid> {
+    let frame = Frame::around(c.position(), anchors);
     // In its own frame the camera only turns: M = T R, and R is M's scalar and e_jk parts.
     let turn = Motor::from(Rotor { s: c.pose.s, e12: c.pose.e12, e13: c.pose.e13, e23: c.pose.e23 });
     let camera = Camera::new(turn, c.focal, c.x_max, c.y_max, c.width, c.height)?;
