@@ -204,7 +204,13 @@ pub fn align<T: Real, X: Interpolable<T>>(c1: X, c2: X) -> X {
 /// The inputs are used as given (normalise and [`align`] them first: [`Pair::new`] does).
 /// The final renormalisation only removes rounding: `K⁻¹ X` is normalised exactly.
 pub fn interpolate<T: Real, X: Interpolable<T>>(c1: X, c2: X, alpha: T) -> Result<X, InterpolationError> {
-    let x = c1 * (T::one() - alpha) + c2 * alpha;
+    project_at(c1 * (T::one() - alpha) + c2 * alpha, alpha)
+}
+
+/// The square-root projector (eq. 4–5) of any sum `X` of blades of one kind:
+/// `C = K⁻¹ X / √|⟨…⟩₀|`, `K` the principal root of `−X X̃`. `alpha` only labels errors (the
+/// parameter at which `X` was formed).
+pub fn project_at<T: Real, X: Interpolable<T>>(x: X, alpha: T) -> Result<X, InterpolationError> {
     let sq = x.neg_square();
     let singular = || InterpolationError::Singular { alpha: alpha.to_f64() };
     let k = match sq.try_sqrt() {

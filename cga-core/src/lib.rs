@@ -108,13 +108,15 @@ pub mod evolved;
 pub mod interpolate;
 pub mod meet;
 mod real;
+pub mod spline;
 pub mod versor;
 
 pub use algebra::*;
 pub use conformal::{Disk, GeometryError, down, ei, up};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
-pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate};
+pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
 pub use meet::{Hit, RoundMeet};
 pub use real::Real;
+pub use spline::{Joining, Spline, SplineError};
 pub use versor::{VersorError, exp, rotor_between_lines};

@@ -163,7 +163,7 @@ impl Invalid {
 }
 
 impl Scene {
-    /// Read and check a scene file of at most [`MAX_FILE_BYTES`](crate::limits::MAX_FILE_BYTES).
+    /// Read and check a scene file of at most [`MAX_FILE_BYTES`].
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         use std::io::Read;
         let file = path.display().to_string();

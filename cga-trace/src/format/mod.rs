@@ -1,11 +1,11 @@
 //! The scene file format (TOML, via serde): what each table and object may hold, and how a
 //! parsed file becomes the camera, frame and shapes of a [`Scene`](crate::Scene).
 //!
-//! Unknown fields are errors; every number is checked where it is read ([`numbers`]), so
+//! Unknown fields are errors; every number is checked where it is read (`numbers.rs`), so
 //! that its error points at it. An object is one flat table (not a serde-tagged enum, which
 //! would lose the position of every value inside it): its `type` decides which fields it
-//! takes, and [`build_object`] builds it from them in the scene's [`Frame`], moved by its
-//! `motor` or `transform` ([`transform`]).
+//! takes, and `build_object` builds it from them in the scene's [`Frame`], moved by its
+//! `motor` or `transform` (`transform.rs`).
 
 mod numbers;
 mod transform;
