@@ -16,6 +16,7 @@
 use crate::conformal::{GeometryError, ei, up};
 use crate::euclid::{E3, cross, dot, norm, scale, sub};
 use crate::interpolate::{InterpolationError, Pair};
+use crate::spline::Spline;
 use crate::{Bivector, Circle, Line, Pseudoscalar, Real, Vector};
 
 /// Why a normal cannot be computed.
@@ -66,10 +67,10 @@ pub struct NormalParts<T: Real = f64> {
     pub normal_line: Line<T>,
 }
 
-impl<T: Real> Pair<Circle<T>> {
-    /// All of eq. 6–11 at parameter `α` and the point `x` (which should lie on `C_α`).
-    pub fn normal_parts(&self, alpha: T, x: E3<T>) -> Result<NormalParts<T>, InterpolationError> {
-        let (circle, circle_dot) = self.with_derivative(alpha)?;
+impl<T: Real> NormalParts<T> {
+    /// Eq. 6–11 from `C_α`, `Ċ_α` and the point `x` (which should lie on `C_α`), for any
+    /// family of circles: two ([`Pair::normal_parts`]) or many ([`Spline::normal_parts`]).
+    pub fn new(circle: Circle<T>, circle_dot: Circle<T>, x: E3<T>) -> Self {
         let omega = (circle * circle_dot).grade2();
         let point = up(x);
         let x_dot = point | omega;
@@ -77,7 +78,31 @@ impl<T: Real> Pair<Circle<T>> {
         let l_t = (x_dot ^ point) ^ ei();
         let i5 = Pseudoscalar { e123oi: -T::one() };
         let normal_line = Line::from_storage(&((l_t * l_c) * i5).to_storage());
-        Ok(NormalParts { circle, circle_dot, point, omega, x_dot, l_c, l_t, normal_line })
+        NormalParts { circle, circle_dot, point, omega, x_dot, l_c, l_t, normal_line }
+    }
+
+    /// The unit Euclidean normal at `x` (the point these parts were built for): the
+    /// direction of `N`, once `x` is checked to lie on `C_α` within
+    /// [`accuracy`](crate::interpolate::accuracy) radii (else `OffCircle`).
+    pub fn unit_normal(&self, x: E3<T>) -> Result<E3<T>, NormalError> {
+        let limit = crate::interpolate::accuracy::<T>();
+        let (c, n, r) = self.circle.centre_normal_radius()?;
+        let d = sub(x, c);
+        let along = dot(d, n);
+        let across = norm(sub(d, scale(n, along)));
+        let distance = ((along * along + (across - r) * (across - r)).sqrt() / r).to_f64();
+        if distance.is_nan() || distance > limit {
+            return Err(NormalError::OffCircle { distance });
+        }
+        Ok(self.normal_line.direction()?)
+    }
+}
+
+impl<T: Real> Pair<Circle<T>> {
+    /// All of eq. 6–11 at parameter `α` and the point `x` (which should lie on `C_α`).
+    pub fn normal_parts(&self, alpha: T, x: E3<T>) -> Result<NormalParts<T>, InterpolationError> {
+        let (circle, circle_dot) = self.with_derivative(alpha)?;
+        Ok(NormalParts::new(circle, circle_dot, x))
     }
 
     /// The unit Euclidean normal at `x` on `C_α`: the direction of `N` (its sign follows
@@ -89,21 +114,11 @@ impl<T: Real> Pair<Circle<T>> {
     /// circles' relative difference `(|c₁ − c₂| + |r₁ − r₂| + r ∠(n₁, n₂)) / r`, `r` the
     /// smaller radius and `ρ` as in [`Pair::condition`].
     pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
-        let limit = crate::interpolate::accuracy::<T>();
         let estimate = self.normal_condition();
-        if estimate.is_nan() || estimate > limit {
+        if estimate.is_nan() || estimate > crate::interpolate::accuracy::<T>() {
             return Err(NormalError::IllConditioned { estimate });
         }
-        let parts = self.normal_parts(alpha, x)?;
-        let (c, n, r) = parts.circle.centre_normal_radius()?;
-        let d = sub(x, c);
-        let along = dot(d, n);
-        let across = norm(sub(d, scale(n, along)));
-        let distance = ((along * along + (across - r) * (across - r)).sqrt() / r).to_f64();
-        if distance.is_nan() || distance > limit {
-            return Err(NormalError::OffCircle { distance });
-        }
-        Ok(parts.normal_line.direction()?)
+        self.normal_parts(alpha, x)?.unit_normal(x)
     }
 
     /// The expected angle error of [`Pair::normal`] (radians): see there.
@@ -117,5 +132,25 @@ impl<T: Real> Pair<Circle<T>> {
         let delta = (norm(sub(a, b)) + (r1 - r2).abs() + r * turn) / r;
         let rho = (norm(a) / r1).max(norm(b) / r2);
         T::epsilon().to_f64() * (1.0 + rho).powi(2) / delta + self.condition()
+    }
+}
+
+impl<T: Real> Spline<Circle<T>> {
+    /// All of eq. 6–11 at parameter `α` of the spline and the point `x` on `C_α`; `Ċ` is the
+    /// derivative in the spline's own `α` (exact, dual numbers through the Bézier segment and
+    /// the projector).
+    pub fn normal_parts(&self, alpha: T, x: E3<T>) -> Result<NormalParts<T>, InterpolationError> {
+        let (circle, circle_dot) = self.with_derivative(alpha)?;
+        Ok(NormalParts::new(circle, circle_dot, x))
+    }
+
+    /// The unit Euclidean normal at `x` on `C_α`, checked as [`Pair::normal`] checks it
+    /// (`OffCircle`; `IllConditioned` when [`Spline::condition`] exceeds the accuracy).
+    pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
+        let estimate = self.condition();
+        if estimate.is_nan() || estimate > crate::interpolate::accuracy::<T>() {
+            return Err(NormalError::IllConditioned { estimate });
+        }
+        self.normal_parts(alpha, x)?.unit_normal(x)
     }
 }

@@ -113,7 +113,9 @@ impl<X> Spline<X> {
         let count = |needs| Err(SplineError::Count { needs, found: n });
         match joining {
             _ if n < 2 => return count("a spline needs at least 2"),
-            Joining::Quadratic if n.is_multiple_of(2) => return count("quadratic Bézier segments need 2m + 1 (3, 5, 7, …)"),
+            Joining::Quadratic if n.is_multiple_of(2) => {
+                return count("quadratic Bézier segments need 2m + 1 (3, 5, 7, …)");
+            }
             Joining::Cubic if n % 3 != 1 => return count("cubic Bézier segments need 3m + 1 (4, 7, 10, …)"),
             Joining::KochanekBartels { tension, bias, continuity }
                 if ![tension, bias, continuity].iter().all(|p| (-1.0..=1.0).contains(p)) =>
