@@ -118,5 +118,5 @@ pub use evolved::{NormalError, NormalParts};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
 pub use meet::{Hit, RoundMeet};
 pub use real::Real;
-pub use spline::{Joining, Spline, SplineError};
+pub use spline::{Joining, Spline, SplineError, bezier};
 pub use versor::{VersorError, exp, rotor_between_lines};

@@ -217,8 +217,9 @@ impl<X> Spline<X> {
     }
 }
 
-/// `Σᵢ Bᵢ,d(t) Pᵢ` for `d + 1 ≤ 4` controls.
-fn bezier<T: Real, X: Interpolable<T>>(p: &[X], t: T) -> X {
+/// `Σᵢ Bᵢ,d(t) Pᵢ`, the Bézier curve of `d + 1 ≤ 4` controls at `t` (Bernstein weights
+/// `(1 − t)^{d−i} tⁱ C(d, i)`); one control is returned as it is.
+pub fn bezier<T: Real, X: Interpolable<T>>(p: &[X], t: T) -> X {
     let s = T::one() - t;
     let three = T::from_f64(3.0);
     match p {

@@ -271,7 +271,7 @@ fn scene_rays(scene: &Scene, surface: &EvolvedSurface) -> Vec<TestRay> {
 
 /// A point on `C_α`, in the local frame, with the circle's centre, normal and radius.
 fn on_circle(family: &Family<f64>, alpha: f64, angle: f64) -> Option<(E3, E3, E3, f64)> {
-    let (c, n, r) = family.pair.at(alpha).ok()?.centre_normal_radius().ok()?;
+    let (c, n, r) = family.at(alpha).ok()?.centre_normal_radius().ok()?;
     let u = cga_core::euclid::perpendicular(n);
     let v = cross(n, u);
     let x = add(c, add(scale(u, r * angle.cos()), scale(v, r * angle.sin())));
@@ -295,7 +295,7 @@ fn adversarial(surface: &EvolvedSurface, per_kind: usize, seed: u64) -> Vec<Test
     // The narrowest circle (by radius, over 1025 samples).
     let waist = (0..=1024)
         .map(|k| k as f64 / 1024.0)
-        .filter_map(|a| Some((a, family.pair.at(a).ok()?.centre_normal_radius().ok()?.2)))
+        .filter_map(|a| Some((a, family.at(a).ok()?.centre_normal_radius().ok()?.2)))
         .fold((0.0, f64::INFINITY), |m, (a, r)| if r < m.1 { (a, r) } else { m })
         .0;
     for _ in 0..per_kind {
@@ -433,7 +433,7 @@ fn stiff_surfaces() -> Vec<(String, EvolvedSurface)> {
 fn radius_range(surface: &EvolvedSurface) -> (f64, f64) {
     let (family, _) = surface.family();
     (0..=1024)
-        .filter_map(|k| family.pair.at(k as f64 / 1024.0).ok()?.centre_normal_radius().ok())
+        .filter_map(|k| family.at(k as f64 / 1024.0).ok()?.centre_normal_radius().ok())
         .fold((f64::INFINITY, 0.0f64), |(lo, hi), (_, _, r)| (lo.min(r), hi.max(r)))
 }
 

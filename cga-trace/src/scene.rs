@@ -119,6 +119,16 @@ pub enum Invalid {
         /// The limit.
         limit: u64,
     },
+    /// One element of a list (`circle 3`).
+    #[error("{what} {index}: {reason}")]
+    Indexed {
+        /// What the list holds.
+        what: &'static str,
+        /// 1-based position.
+        index: usize,
+        /// Why.
+        reason: Box<Invalid>,
+    },
     /// The problem is with one field, at `span` in the file.
     #[error("`{field}`: {reason}")]
     Field {
@@ -157,6 +167,7 @@ impl Invalid {
     fn span(&self) -> Option<Range<usize>> {
         match self {
             Invalid::Field { span, reason, .. } => reason.span().or_else(|| Some(span.clone())),
+            Invalid::Indexed { reason, .. } => reason.span(),
             _ => None,
         }
     }

@@ -246,7 +246,7 @@ fn a_ray_in_an_interior_circles_plane_is_not_missed() {
     let s = Scene::load(&scene_path("surface.toml")).unwrap();
     let surface = s.objects[0].shape.downcast_ref::<EvolvedSurface>().expect("an evolved surface");
     let (family, origin) = surface.family();
-    let pair = family.pair;
+    let pair = *family.pair();
     for alpha in [0.25, 0.5, 0.75] {
         let (c, n, r) = pair.at(alpha).unwrap().centre_normal_radius().unwrap();
         let centre = [c[0] + origin[0], c[1] + origin[1], c[2] + origin[2]];

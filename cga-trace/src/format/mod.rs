@@ -20,9 +20,11 @@ use crate::material::Material;
 use crate::scene::{Invalid, Object};
 use crate::settings::Settings;
 use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
-#[cfg(feature = "evolved")]
-use crate::surface::EvolvedSurface;
 use crate::surface::Method;
+#[cfg(feature = "evolved")]
+use crate::surface::{EvolvedSurface, SplineSurface};
+#[cfg(feature = "evolved")]
+use cga_core::Joining;
 use cga_core::euclid::E3;
 use cga_core::{Circle, Motor, Plane, Rotor, Sandwich, Sphere, down, up};
 use numbers::{Num, Nums, V3};
@@ -126,6 +128,24 @@ pub(crate) enum Kind {
     Disk,
     Triangle,
     Evolved,
+    Spline,
+}
+
+/// How a spline surface joins its circles (`joining = "…"`).
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub(crate) enum JoiningSpec {
+    /// Consecutive circles joined two by two.
+    #[default]
+    Linear,
+    /// Quadratic Bézier segments (2m + 1 circles).
+    Quadratic,
+    /// Cubic Bézier segments (3m + 1 circles).
+    Cubic,
+    /// Through every circle, C¹.
+    CatmullRom,
+    /// Through every circle, with `tension`, `bias`, `continuity`.
+    KochanekBartels,
 }
 
 impl Kind {
@@ -142,6 +162,10 @@ impl Kind {
             ),
             Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
             Kind::Evolved => (&["c1", "c2"], "an evolved surface takes `c1` and `c2`"),
+            Kind::Spline => (
+                &["circles", "joining", "tension", "bias", "continuity"],
+                "a spline surface takes `circles`, `joining`, and for joining = \"kochanek-bartels\" `tension`, `bias`, `continuity`",
+            ),
         }
     }
 }
@@ -163,6 +187,11 @@ pub(crate) struct ObjectSpec {
     points: Option<Spanned<Vec<V3>>>,
     c1: Option<Spanned<CircleSpec>>,
     c2: Option<Spanned<CircleSpec>>,
+    circles: Option<Spanned<Vec<Spanned<CircleSpec>>>>,
+    joining: Option<Spanned<JoiningSpec>>,
+    tension: Option<Spanned<Num>>,
+    bias: Option<Spanned<Num>>,
+    continuity: Option<Spanned<Num>>,
     motor: Option<Spanned<Nums<8>>>,
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
 }
@@ -202,6 +231,9 @@ impl ObjectSpec {
             .or_else(|| first(&self.points))
             .or_else(|| first(&self.corners))
             .or_else(|| self.c1.as_ref().and_then(|c| c.get_ref().centre.map(|c| c.0)))
+            .or_else(|| {
+                self.circles.as_ref().and_then(|c| c.get_ref().first()).and_then(|c| c.get_ref().centre.map(|c| c.0))
+            })
     }
 
     /// The geometry fields given, with their spans.
@@ -216,6 +248,11 @@ impl ObjectSpec {
             span("points", self.points.as_ref().map(Spanned::span)),
             span("c1", self.c1.as_ref().map(Spanned::span)),
             span("c2", self.c2.as_ref().map(Spanned::span)),
+            span("circles", self.circles.as_ref().map(Spanned::span)),
+            span("joining", self.joining.as_ref().map(Spanned::span)),
+            span("tension", self.tension.as_ref().map(Spanned::span)),
+            span("bias", self.bias.as_ref().map(Spanned::span)),
+            span("continuity", self.continuity.as_ref().map(Spanned::span)),
         ]
         .into_iter()
         .flatten()
@@ -320,12 +357,57 @@ impl ObjectSpec {
                 (Some(c1), Some(c2)) => Arc::new(evolved(c1, c2, motor, method, frame)?),
                 _ => return Err(form()),
             },
+            #[cfg(feature = "evolved")]
+            Kind::Spline => Arc::new(self.spline(motor, method, frame)?),
             #[cfg(not(feature = "evolved"))]
-            Kind::Evolved => {
+            Kind::Evolved | Kind::Spline => {
                 let _ = method;
                 return Err(Invalid::NoEvolved);
             }
         })
+    }
+}
+
+#[cfg(feature = "evolved")]
+impl ObjectSpec {
+    /// A spline surface through `circles`, each moved by its own transform and then by the
+    /// object's `motor` (already in `frame`).
+    fn spline(&self, motor: Option<Motor>, method: Method, frame: &Frame) -> Result<SplineSurface, Invalid> {
+        let form = || Invalid::Form(Kind::Spline.takes().1);
+        let circles = self.circles.as_ref().ok_or_else(form)?;
+        let joining = self.joining.as_ref().map_or(JoiningSpec::Linear, |j| *j.get_ref());
+        let parameter = |p: &Option<Spanned<Num>>| p.as_ref().map(|p| p.get_ref().0);
+        let (tension, bias, continuity) =
+            (parameter(&self.tension), parameter(&self.bias), parameter(&self.continuity));
+        if joining != JoiningSpec::KochanekBartels
+            && let Some((field, span)) =
+                self.given().into_iter().find(|(f, _)| ["tension", "bias", "continuity"].contains(f))
+        {
+            return Err(Invalid::at(
+                field,
+                span,
+                Invalid::Value("tension, bias and continuity need joining = \"kochanek-bartels\""),
+            ));
+        }
+        let joining = match joining {
+            JoiningSpec::Linear => Joining::Linear,
+            JoiningSpec::Quadratic => Joining::Quadratic,
+            JoiningSpec::Cubic => Joining::Cubic,
+            JoiningSpec::CatmullRom => Joining::CATMULL_ROM,
+            JoiningSpec::KochanekBartels => Joining::KochanekBartels {
+                tension: tension.unwrap_or(0.0),
+                bias: bias.unwrap_or(0.0),
+                continuity: continuity.unwrap_or(0.0),
+            },
+        };
+        let mut built = Vec::with_capacity(circles.get_ref().len());
+        for (k, c) in circles.get_ref().iter().enumerate() {
+            let reason = |e| {
+                Invalid::at("circles", c.span(), Invalid::Indexed { what: "circle", index: k + 1, reason: Box::new(e) })
+            };
+            built.push(circle(c.get_ref(), motor, frame).map_err(reason)?);
+        }
+        Ok(SplineSurface::new(&built, joining, method)?)
     }
 }
 

@@ -1,5 +1,6 @@
-//! Polynomials of degree ≤ 8 in the Bernstein basis on [0, 1], and real-root isolation by
-//! subdivision.
+//! Polynomials in the Bernstein basis on [0, 1] — of degree ≤ 8 for the surface between two
+//! circles, ≤ 36 for a cubic spline segment (`N`, the capacity, is a type parameter so the
+//! common case keeps its small arrays) — and real-root isolation by subdivision.
 //!
 //! `p(t) = Σₖ cₖ C(n, k) (1 − t)ⁿ⁻ᵏ tᵏ`. The basis is the well-conditioned one on an
 //! interval (Farouki–Rajan): coefficients bound the polynomial (convex hull), the number of
@@ -12,24 +13,29 @@ use super::newton::{Stop, safeguarded};
 use cga_core::Real;
 use smallvec::SmallVec;
 
-/// The largest degree.
+/// The largest degree of the two-circle polynomial (the default capacity is one more).
 pub const MAX_DEGREE: usize = 8;
 
-/// A polynomial of degree `degree ≤ 8` in the Bernstein basis on [0, 1].
+/// The largest degree any polynomial here may have: `12 d` for Bézier segments of degree
+/// `d ≤ 3`.
+pub const LARGEST_DEGREE: usize = 36;
+
+/// A polynomial of degree `degree < N` in the Bernstein basis on [0, 1].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bernstein<T> {
+pub struct Bernstein<T, const N: usize = { MAX_DEGREE + 1 }> {
     /// `c₀ … c_degree`; entries above the degree are unused.
-    pub c: [T; MAX_DEGREE + 1],
+    pub c: [T; N],
     /// The degree.
     pub degree: usize,
 }
 
-/// `C(n, k)` for `n ≤ 8`.
+/// `C(n, k)` for `n ≤ 36` (exact in f64: the largest, `C(36, 18)`, is below 2⁵³).
 fn binomial(n: usize, k: usize) -> f64 {
-    const ROWS: [[f64; 9]; 9] = {
-        let mut t = [[0.0; 9]; 9];
+    const M: usize = LARGEST_DEGREE + 1;
+    const ROWS: [[f64; M]; M] = {
+        let mut t = [[0.0; M]; M];
         let mut n = 0;
-        while n < 9 {
+        while n < M {
             t[n][0] = 1.0;
             let mut k = 1;
             while k <= n {
@@ -50,22 +56,35 @@ pub type Roots<T> = SmallVec<[T; 8]>;
 /// `C(n, k) cₖ`: products are plain convolutions, so polynomials are built in this form and
 /// converted once.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Scaled<T> {
-    c: [T; MAX_DEGREE + 1],
+pub struct Scaled<T, const N: usize = { MAX_DEGREE + 1 }> {
+    c: [T; N],
     degree: usize,
 }
 
-impl<T: Real> Scaled<T> {
+impl<T: Real, const N: usize> Scaled<T, N> {
+    /// The polynomial with scaled coefficients `c` (`C(n, k) cₖ` of the Bernstein ones).
+    pub fn new(c: &[T]) -> Self {
+        assert!(!c.is_empty() && c.len() <= N, "degree below the capacity");
+        let mut all = [T::zero(); N];
+        all[..c.len()].copy_from_slice(c);
+        Scaled { c: all, degree: c.len() - 1 }
+    }
+
+    /// The degree.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
     /// `(1 − t) a + t b`.
     pub fn linear(a: T, b: T) -> Self {
-        let mut c = [T::zero(); MAX_DEGREE + 1];
+        let mut c = [T::zero(); N];
         (c[0], c[1]) = (a, b);
         Scaled { c, degree: 1 }
     }
 
     /// `a (1 − t)² + b (1 − t) t + c t²`.
     pub fn quadratic(a: T, b: T, c: T) -> Self {
-        let mut all = [T::zero(); MAX_DEGREE + 1];
+        let mut all = [T::zero(); N];
         (all[0], all[1], all[2]) = (a, b, c);
         Scaled { c: all, degree: 2 }
     }
@@ -73,8 +92,8 @@ impl<T: Real> Scaled<T> {
     /// `p q`.
     pub fn mul(&self, q: &Self) -> Self {
         let degree = self.degree + q.degree;
-        assert!(degree <= MAX_DEGREE, "product degree above 8");
-        let mut c = [T::zero(); MAX_DEGREE + 1];
+        assert!(degree < N, "product degree above the capacity");
+        let mut c = [T::zero(); N];
         for i in 0..=self.degree {
             for j in 0..=q.degree {
                 c[i + j] = c[i + j] + self.c[i] * q.c[j];
@@ -100,14 +119,22 @@ impl<T: Real> Scaled<T> {
 
     /// `(1 − t) t p`: in this basis a shift of the coefficients, no arithmetic.
     pub fn times_g(&self) -> Self {
-        assert!(self.degree + 2 <= MAX_DEGREE, "product degree above 8");
-        let mut c = [T::zero(); MAX_DEGREE + 1];
+        assert!(self.degree + 2 < N, "product degree above the capacity");
+        let mut c = [T::zero(); N];
         c[1..self.degree + 2].copy_from_slice(&self.c[..=self.degree]);
         Scaled { c, degree: self.degree + 2 }
     }
 
+    /// `p / (t (1 − t))ᵏ` for a polynomial with that factor: its first and last `k`
+    /// coefficients in this basis are zero (to rounding) and are dropped (the inverse of
+    /// [`Scaled::times_g`]).
+    pub fn divide_g(&self, k: usize) -> Self {
+        assert!(self.degree >= 2 * k, "degree at least 2k");
+        Scaled::new(&self.c[k..=self.degree - k])
+    }
+
     /// In the Bernstein basis: `cₖ / C(n, k)`.
-    pub fn bernstein(&self) -> Bernstein<T> {
+    pub fn bernstein(&self) -> Bernstein<T, N> {
         let mut c = self.c;
         for (k, x) in c.iter_mut().enumerate().take(self.degree + 1) {
             *x = *x * T::from_f64(1.0 / binomial(self.degree, k));
@@ -116,11 +143,11 @@ impl<T: Real> Scaled<T> {
     }
 }
 
-impl<T: Real> Bernstein<T> {
+impl<T: Real, const N: usize> Bernstein<T, N> {
     /// The polynomial with Bernstein coefficients `c`.
     pub fn new(c: &[T]) -> Self {
-        assert!(!c.is_empty() && c.len() <= MAX_DEGREE + 1, "degree 0 to 8");
-        let mut all = [T::zero(); MAX_DEGREE + 1];
+        assert!(!c.is_empty() && c.len() <= N, "degree below the capacity");
+        let mut all = [T::zero(); N];
         all[..c.len()].copy_from_slice(c);
         Bernstein { c: all, degree: c.len() - 1 }
     }
@@ -282,7 +309,7 @@ impl<T: Real> Bernstein<T> {
     /// `p'`, degree `n − 1`: coefficients `n (cₖ₊₁ − cₖ)`.
     pub fn derivative(&self) -> Self {
         let n = self.degree;
-        let mut d = [T::zero(); MAX_DEGREE + 1];
+        let mut d = [T::zero(); N];
         for (k, slot) in d.iter_mut().enumerate().take(n) {
             *slot = T::from_f64(n as f64) * (self.c[k + 1] - self.c[k]);
         }
@@ -351,7 +378,7 @@ mod tests {
 
     #[test]
     fn times_g_is_the_product_with_t_one_minus_t() {
-        let p = Scaled::quadratic(0.3, -1.2, 2.5).mul(&Scaled::linear(0.7, -0.4));
+        let p: Scaled<f64> = Scaled::quadratic(0.3, -1.2, 2.5).mul(&Scaled::linear(0.7, -0.4));
         let g = Scaled::quadratic(0.0, 1.0, 0.0);
         assert_eq!(p.times_g(), p.mul(&g));
     }

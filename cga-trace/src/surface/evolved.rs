@@ -2,18 +2,21 @@
 //! method that finds its crossings with a ray.
 
 use super::bernstein::Roots;
+use super::family::{Circles, TwoCircles};
 use super::tree::{PAD, Tree};
 use super::{Family, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
 use cga_core::euclid::{E3, add, cross, dot, norm, sub};
-use cga_core::{Circle, Line, Pair, Sandwich, Translator};
+use cga_core::{Circle, Dual, Interpolable, Line, NormalParts, Pair, Sandwich, Translator};
 
-/// A surface swept by the circles interpolated between two circles.
+/// A surface swept by a family of circles `C_α`, `α ∈ [0, 1]`: by default those interpolated
+/// between two circles ([`TwoCircles`]); one segment of a spline surface
+/// ([`BezierSegment`](super::BezierSegment)) is the same object over another family.
 #[derive(Clone, Debug)]
-pub struct EvolvedSurface {
+pub struct EvolvedSurface<C = TwoCircles<f64>> {
     /// The circles in the local frame, with per-surface constants.
-    family: Family<f64>,
+    family: Family<f64, C>,
     /// The local frame's origin, in world coordinates.
     origin: E3,
     /// Bounding-sphere radius about `origin`.
@@ -74,26 +77,40 @@ impl EvolvedSurface {
                 .map_err(|reason| SurfaceError::NotACircle { which, reason })
         };
         let pair = Pair::new(blade((p1, n1, r1), 1)?, blade((p2, n2, r2), 2)?)?;
+        EvolvedSurface::of(origin, TwoCircles::new(pair), method)
+    }
+
+    /// The circles in the local frame (with per-surface constants), and the frame's origin.
+    pub fn family(&self) -> (&Family<f64>, E3) {
+        (&self.family, self.origin)
+    }
+}
+
+impl<C: Circles<f64>> EvolvedSurface<C> {
+    /// The surface swept by `circles`, given in a frame whose origin is `origin` (world
+    /// coordinates): bounding sphere (sampled, padded), and the method's tree. Refused where a
+    /// sampled `C_α` is a line (`Unbounded`) or has no real root.
+    pub fn of(origin: E3, circles: C, method: Method) -> Result<Self, SurfaceError> {
         let mut radius = 0.0f64;
         for k in 0..=BOUND_SAMPLES {
             let alpha = k as f64 / BOUND_SAMPLES as f64;
-            let (c, _, r) = pair.at(alpha)?.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })?;
+            let (c, _, r) = circles.at(alpha)?.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })?;
             radius = radius.max(norm(c) + r);
         }
-        let tree = Self::tree(&pair, method)?;
-        Ok(EvolvedSurface { family: Family::new(pair), origin, radius: radius * PAD, method, tree })
+        let tree = Self::tree(&circles, method)?;
+        Ok(EvolvedSurface { family: Family::of(circles), origin, radius: radius * PAD, method, tree })
     }
 
     /// The same surface (the same circles, oriented as they are) intersected by another
     /// method.
     pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
-        let tree = Self::tree(&self.family.pair, method)?;
+        let tree = Self::tree(&self.family.circles, method)?;
         Ok(EvolvedSurface { family: self.family.clone(), method, tree, ..*self })
     }
 
     /// The bounding-sphere tree, for the methods that cull with one.
-    fn tree(pair: &Pair<Circle>, method: Method) -> Result<Option<Tree>, SurfaceError> {
-        method.tree_leaves().map(|leaves| Tree::new(pair, leaves)).transpose()
+    fn tree(circles: &C, method: Method) -> Result<Option<Tree>, SurfaceError> {
+        method.tree_leaves().map(|leaves| Tree::new(circles, leaves)).transpose()
     }
 
     /// The bounding sphere `(centre, radius)` in world coordinates.
@@ -101,9 +118,14 @@ impl EvolvedSurface {
         (self.origin, self.radius)
     }
 
-    /// The circles in the local frame (with per-surface constants), and the frame's origin.
-    pub fn family(&self) -> (&Family<f64>, E3) {
-        (&self.family, self.origin)
+    /// The local frame's origin, in world coordinates.
+    pub fn origin(&self) -> E3 {
+        self.origin
+    }
+
+    /// The circles' root finders, in the local frame.
+    pub fn circles(&self) -> &Family<f64, C> {
+        &self.family
     }
 
     /// The method in use.
@@ -113,7 +135,7 @@ impl EvolvedSurface {
 
     /// The ray moved to the local frame, if it can reach the bounding sphere in
     /// `(t_min, t_max)`.
-    pub fn local_ray<C>(&self, ray: &Ray<C>, t_min: f64, t_max: f64) -> Option<Ray> {
+    pub fn local_ray<L>(&self, ray: &Ray<L>, t_min: f64, t_max: f64) -> Option<Ray> {
         if !crosses(ray, self.origin, self.radius, t_min, t_max) {
             return None;
         }
@@ -139,7 +161,7 @@ impl EvolvedSurface {
 
     /// The nearest crossing with `t_min < t < t_max`. Only the ray's origin and direction
     /// are read: the surface builds its line in its own frame, so every back end shares this.
-    pub fn intersect<C>(&self, ray: &Ray<C>, t_min: f64, t_max: f64) -> Option<Crossing> {
+    pub fn intersect<L>(&self, ray: &Ray<L>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let local = self.local_ray(ray, t_min, t_max)?;
         let alphas = self.candidates(&local, t_min, t_max);
         let polish = self.method.finder(1).polishes();
@@ -154,20 +176,24 @@ impl EvolvedSurface {
     pub fn normal(&self, crossing: &Crossing) -> E3 {
         let x = sub(crossing.point, self.origin);
         let alpha = crossing.alpha.unwrap_or(0.0);
-        let pair = &self.family.pair;
+        let circles = &self.family.circles;
         // The crossing was verified on C_α to the surface's own tolerance (1e-6 r), and the
-        // pair built in a local frame: eq. 6–11 directly, without `Pair::normal`'s checks for
-        // arbitrary callers (which would refuse points that far off the circle).
-        (pair.normal_parts(alpha, x).ok().and_then(|p| p.normal_line.direction().ok()))
+        // circles built in a local frame: eq. 6–11 directly, without `Pair::normal`'s checks
+        // for arbitrary callers (which would refuse points that far off the circle).
+        let parts = circles.at_dual(Dual::variable(alpha)).ok().map(|c| {
+            let (circle, circle_dot) = Circle::split(c);
+            NormalParts::new(circle, circle_dot, x)
+        });
+        (parts.and_then(|p| p.normal_line.direction().ok()))
             .or_else(|| {
-                let (c, _, _) = pair.at(alpha).ok()?.centre_normal_radius().ok()?;
+                let (c, _, _) = circles.at(alpha).ok()?.centre_normal_radius().ok()?;
                 cga_core::euclid::unit(sub(x, c))
             })
             .unwrap_or([0.0, 0.0, 1.0])
     }
 }
 
-impl Shape for EvolvedSurface {
+impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         EvolvedSurface::intersect(self, ray, t_min, t_max)
     }

@@ -9,7 +9,7 @@
 use super::bernstein::{Bernstein, Roots, Scaled};
 use super::newton::{Stop, safeguarded};
 use cga_core::euclid::{E3, dot, norm, scale, sub};
-use cga_core::{Circle, Dual, Interpolable, Line, Pair, Real, ScalarQuadvector, Vector, down};
+use cga_core::{Circle, Dual, Interpolable, InterpolationError, Line, Pair, Real, ScalarQuadvector, Vector, down};
 use smallvec::SmallVec;
 
 /// `|f|` below this fraction of its sampled scale counts as zero: a tangential touch.
@@ -17,11 +17,55 @@ const TOUCH: f64 = 1e-12;
 /// A root within this Newton step (in α) of α = 0 or 1 is looked for with `f` itself: rounding
 /// decides which side of the end it falls, and verification whether the ray meets the edge.
 const END_STEP: f64 = 1e-6;
+/// How far from a polynomial's root (in α) a touch of `f` is looked for ([`Family::roots`]
+/// with [`Circles::REFINE`]).
+const TOUCH_REACH: f64 = 1e-4;
+
+/// A one-parameter family of circles `C_α`, `α ∈ [0, 1]`: between two circles
+/// ([`TwoCircles`]) or along one segment of a spline ([`BezierSegment`](super::BezierSegment)). It gives the circles
+/// (on dual numbers too, for exact slopes) and a polynomial whose roots in [0, 1] include every
+/// α at which a line meets `C_α`; [`Family`] finds and verifies the roots for any of them.
+pub trait Circles<T: Real>: Clone + core::fmt::Debug {
+    /// The polynomial's type (its capacity follows its degree).
+    type Polynomial: RootPolynomial<T>;
+    /// `C_α`.
+    fn at(&self, alpha: T) -> Result<Circle<T>, InterpolationError>;
+    /// `C_α` on dual numbers: `(C_α, dC_α/dα)` in one.
+    fn at_dual(&self, alpha: Dual<T>) -> Result<Circle<Dual<T>>, InterpolationError>;
+    /// A polynomial in α whose roots in [0, 1] include every root of `f(α) = (C_α ∨ L)²`.
+    fn polynomial(&self, line: &Line<T>) -> Self::Polynomial;
+    /// Whether the polynomial's roots are refined by Newton on `f` itself (up to two steps,
+    /// each shorter than 1e-6 and kept only if `|f|` falls): for polynomials of high degree,
+    /// whose roots carry more rounding than `f`'s own.
+    const REFINE: bool = false;
+}
+
+/// What the root finder needs of a polynomial in the Bernstein basis, of any capacity.
+pub trait RootPolynomial<T: Real>: Copy {
+    /// The coefficients in use.
+    fn coefficients(&self) -> &[T];
+    /// The same polynomial on `[lo, hi]`, reparametrised to [0, 1].
+    fn restrict(&self, lo: T, hi: T) -> Self;
+    /// Every real root in `[lo, hi]` ([`Bernstein::roots_in`]).
+    fn roots_in(&self, lo: T, hi: T, tolerance: T, touch: T, out: &mut Roots<T>);
+}
+
+impl<T: Real, const N: usize> RootPolynomial<T> for Bernstein<T, N> {
+    fn coefficients(&self) -> &[T] {
+        Bernstein::coefficients(self)
+    }
+    fn restrict(&self, lo: T, hi: T) -> Self {
+        Bernstein::restrict(self, lo, hi)
+    }
+    fn roots_in(&self, lo: T, hi: T, tolerance: T, touch: T, out: &mut Roots<T>) {
+        Bernstein::roots_in(self, lo, hi, tolerance, touch, out)
+    }
+}
 
 /// The circles `C_α = K⁻¹ X_α / ‖…‖`, `X_α = (1 − α) C1 + α C2`, with what the polynomial
 /// formulation precomputes once per surface.
 #[derive(Clone, Debug)]
-pub struct Family<T: Real> {
+pub struct TwoCircles<T: Real> {
     /// Normalised, aligned end circles.
     pub pair: Pair<Circle<T>>,
     /// The same over dual numbers, for the exact `f'`.
@@ -34,6 +78,15 @@ pub struct Family<T: Real> {
     wc: [Circle<T>; 2],
     /// `W = 0`: the circles are co-spherical, `K` is a scalar and `C_α ∝ X_α`.
     cospherical: bool,
+}
+
+/// The roots of `f(α) = (C_α ∨ L)²` for the circles of `C`, found by the method a [`Finder`]
+/// names and verified on the circles themselves.
+#[derive(Clone, Debug)]
+pub struct Family<T: Real, C = TwoCircles<T>> {
+    /// The circles.
+    pub circles: C,
+    _scalar: core::marker::PhantomData<T>,
 }
 
 /// Which root finder [`Family::roots`] runs over an α-interval.
@@ -57,7 +110,7 @@ impl Finder {
     }
 }
 
-impl<T: Real> Family<T> {
+impl<T: Real> TwoCircles<T> {
     /// The family between normalised, aligned circles.
     pub fn new(pair: Pair<Circle<T>>) -> Self {
         let lifted = Pair { c1: pair.c1.lift(), c2: pair.c2.lift() };
@@ -69,26 +122,20 @@ impl<T: Real> Family<T> {
         let w = (w4 * w4).s;
         let wc = [Circle::from_storage(&(w4 * c1).to_storage()), Circle::from_storage(&(w4 * c2).to_storage())];
         let largest = w4.to_array().iter().fold(T::zero(), |m, x| m.max(x.abs()));
-        Family { pair, lifted, s, w, wc, cospherical: largest <= T::epsilon() }
+        TwoCircles { pair, lifted, s, w, wc, cospherical: largest <= T::epsilon() }
+    }
+}
+
+impl<T: Real> Circles<T> for TwoCircles<T> {
+    type Polynomial = Bernstein<T>;
+    const REFINE: bool = true;
+
+    fn at(&self, alpha: T) -> Result<Circle<T>, InterpolationError> {
+        self.pair.at(alpha)
     }
 
-    /// The same family in another scalar type (through `f64`).
-    pub fn cast<U: Real>(&self) -> Family<U> {
-        let convert = |c: &Circle<T>| Circle::from_array(c.to_array().map(|x| U::from_f64(x.to_f64())));
-        Family::new(Pair { c1: convert(&self.pair.c1), c2: convert(&self.pair.c2) })
-    }
-
-    /// `f(α) = (C_α ∨ L)²`; `None` where the interpolation fails.
-    pub fn f(&self, line: &Line<T>, alpha: T) -> Option<T> {
-        let c = self.pair.at(alpha).ok()?;
-        Some(line.meet_circle(&c).norm_squared())
-    }
-
-    /// `(f, f')` at α, exact: the interpolation and meet run on dual numbers.
-    pub fn f_and_slope(&self, line: &Line<Dual<T>>, alpha: T) -> Option<(T, T)> {
-        let c = self.lifted.at(Dual::variable(alpha)).ok()?;
-        let f = line.meet_circle(&c).norm_squared();
-        Some((f.re, f.du))
+    fn at_dual(&self, alpha: Dual<T>) -> Result<Circle<Dual<T>>, InterpolationError> {
+        self.lifted.at(alpha)
     }
 
     /// A polynomial in α whose roots in [0, 1] include every root of `f`.
@@ -105,7 +152,7 @@ impl<T: Real> Family<T> {
     /// (the paper's polynomial has degree 12). Its extra roots — the other branch of the
     /// root, and `b = 0` at the ends — are rejected by the caller's verification. For
     /// co-spherical circles (`W = 0`) `R` vanishes identically and `a` (degree 2) is used.
-    pub fn polynomial(&self, line: &Line<T>) -> Bernstein<T> {
+    fn polynomial(&self, line: &Line<T>) -> Bernstein<T> {
         let a_end = [line.meet_circle(&self.pair.c1), line.meet_circle(&self.pair.c2)];
         let product = |u: &[Vector<T>; 2], v: &[Vector<T>; 2]| {
             let dot = |x: &Vector<T>, y: &Vector<T>| (*x | *y).s;
@@ -123,6 +170,54 @@ impl<T: Real> Family<T> {
         let r = p1.mul(&p1).scale(self.w).add_scaled(T::one(), &self.s.mul(&p1).mul(&h));
         r.add_scaled(T::from_f64(0.25), &h.mul(&h).times_g().times_g()).bernstein()
     }
+}
+
+impl<T: Real> Family<T> {
+    /// The family between normalised, aligned circles.
+    pub fn new(pair: Pair<Circle<T>>) -> Self {
+        Family::of(TwoCircles::new(pair))
+    }
+
+    /// The end circles.
+    pub fn pair(&self) -> &Pair<Circle<T>> {
+        &self.circles.pair
+    }
+
+    /// The same family in another scalar type (through `f64`).
+    pub fn cast<U: Real>(&self) -> Family<U> {
+        let convert = |c: &Circle<T>| Circle::from_array(c.to_array().map(|x| U::from_f64(x.to_f64())));
+        Family::new(Pair { c1: convert(&self.pair().c1), c2: convert(&self.pair().c2) })
+    }
+
+    /// The polynomial of [`TwoCircles::polynomial`] (degree 8).
+    pub fn polynomial(&self, line: &Line<T>) -> Bernstein<T> {
+        self.circles.polynomial(line)
+    }
+}
+
+impl<T: Real, C: Circles<T>> Family<T, C> {
+    /// The root finders over `circles`.
+    pub fn of(circles: C) -> Self {
+        Family { circles, _scalar: core::marker::PhantomData }
+    }
+
+    /// `C_α`.
+    pub fn at(&self, alpha: T) -> Result<Circle<T>, InterpolationError> {
+        self.circles.at(alpha)
+    }
+
+    /// `f(α) = (C_α ∨ L)²`; `None` where the interpolation fails.
+    pub fn f(&self, line: &Line<T>, alpha: T) -> Option<T> {
+        let c = self.circles.at(alpha).ok()?;
+        Some(line.meet_circle(&c).norm_squared())
+    }
+
+    /// `(f, f')` at α, exact: the interpolation and meet run on dual numbers.
+    pub fn f_and_slope(&self, line: &Line<Dual<T>>, alpha: T) -> Option<(T, T)> {
+        let c = self.circles.at_dual(Dual::variable(alpha)).ok()?;
+        let f = line.meet_circle(&c).norm_squared();
+        Some((f.re, f.du))
+    }
 
     /// Candidate α in `[lo, hi]` by `finder`, appended to `out` in increasing order.
     pub fn roots(&self, line: &Line<T>, finder: Finder, lo: f64, hi: f64, out: &mut Roots<T>) {
@@ -131,7 +226,7 @@ impl<T: Real> Family<T> {
             Finder::Samples(n) => self.sampled(line, lo, hi, n.max(2), out),
             Finder::Slope(n) => self.sampled_with_slope(&line.lift(), lo, hi, n.max(2), out),
             Finder::Polynomial(tolerance) => {
-                let poly = self.polynomial(line);
+                let poly = self.circles.polynomial(line);
                 // A root within rounding of α = 0 or 1 (a ray through an end circle) can fall
                 // just outside [0, 1] in R; a short Newton step from the end tells, and f
                 // itself then places the root.
@@ -142,10 +237,21 @@ impl<T: Real> Family<T> {
                 let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
                 let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
                 let restricted = if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly };
+                let first = out.len();
                 restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
+                if C::REFINE {
+                    let lifted = line.lift();
+                    for k in first..out.len() {
+                        out[k] = self.polish_near(&lifted, out[k]);
+                        out[k] = self.touch_near(&lifted, out[k]);
+                    }
+                }
                 for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
-                    if near_end {
-                        out.push(self.polish(&line.lift(), end));
+                    // Kept only if it stays by the end: a polish that wanders off converges
+                    // (slowly, if to a touch) on a root the polynomial reports itself.
+                    let polished = if near_end { self.polish(&line.lift(), end) } else { continue };
+                    if (polished - end).abs() <= T::from_f64(END_STEP) {
+                        out.push(polished);
                     }
                 }
             }
@@ -288,21 +394,45 @@ impl<T: Real> Family<T> {
         best
     }
 
-    /// A few Newton steps on `f` from α, kept in [0, 1].
+    /// Newton steps on `f` from α, kept in [0, 1], until a step is below rounding (at most
+    /// 12: from an end, a root within `END_STEP` converges quadratically well before).
     fn polish(&self, line: &Line<Dual<T>>, mut alpha: T) -> T {
-        for _ in 0..4 {
+        for _ in 0..12 {
             let Some((f, slope)) = self.f_and_slope(line, alpha) else { break };
             let next = alpha - f / slope;
             if !next.is_finite() {
                 break;
             }
             let next = clamp_unit(next);
-            if next == alpha {
+            let settled = (next - alpha).abs() <= T::from_f64(4.0) * T::epsilon();
+            alpha = next;
+            if settled {
                 break;
             }
-            alpha = next;
         }
         alpha
+    }
+
+    /// A touch of `f` (a double root: `f'` changes sign) within `TOUCH_REACH` of α, found by
+    /// bisection on `f'`, if `|f|` is smaller there. A double root of a high-degree
+    /// polynomial is placed only to about the square root of its rounding; `f'` places it to
+    /// rounding.
+    fn touch_near(&self, line: &Line<Dual<T>>, alpha: T) -> T {
+        let reach = T::from_f64(TOUCH_REACH);
+        let (lo, hi) = (clamp_unit(alpha - reach), clamp_unit(alpha + reach));
+        let (Some((f, _)), Some((_, d_lo)), Some((_, d_hi))) =
+            (self.f_and_slope(line, alpha), self.f_and_slope(line, lo), self.f_and_slope(line, hi))
+        else {
+            return alpha;
+        };
+        if f == T::zero() || (d_lo > T::zero()) == (d_hi > T::zero()) {
+            return alpha;
+        }
+        let e = self.extremum(line, lo, hi, d_lo);
+        match self.f_and_slope(line, e) {
+            Some((fe, _)) if fe.abs() < f.abs() => e,
+            _ => alpha,
+        }
     }
 
     /// Where `f'` changes sign in `[lo, hi]` (`f'(lo) = d_lo`), by bisection.
@@ -396,7 +526,7 @@ impl<T: Real> Family<T> {
 
     /// The verified points where the ray meets `C_α`.
     fn verified(&self, alpha: T, ray: (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
-        self.pair.at(alpha).map_or_else(|_| SmallVec::new(), |circle| hit_points(&circle, ray))
+        self.circles.at(alpha).map_or_else(|_| SmallVec::new(), |circle| hit_points(&circle, ray))
     }
 }
 

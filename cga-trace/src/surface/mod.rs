@@ -24,13 +24,21 @@ pub mod family;
 #[cfg(feature = "evolved")]
 mod newton;
 #[cfg(feature = "evolved")]
+pub mod segment;
+#[cfg(feature = "evolved")]
+mod spline;
+#[cfg(feature = "evolved")]
 mod tree;
 
 use cga_core::{GeometryError, InterpolationError};
 #[cfg(feature = "evolved")]
 pub use evolved::EvolvedSurface;
 #[cfg(feature = "evolved")]
-pub use family::{Family, Finder};
+pub use family::{Circles, Family, Finder, TwoCircles};
+#[cfg(feature = "evolved")]
+pub use segment::BezierSegment;
+#[cfg(feature = "evolved")]
+pub use spline::SplineSurface;
 
 /// Why two circles make no surface this renderer can draw.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
@@ -56,6 +64,9 @@ pub enum SurfaceError {
     /// Somewhere between them the interpolation has no circle.
     #[error("the circles do not interpolate: {0}")]
     NoInterpolation(#[from] InterpolationError),
+    /// The control circles make no spline (their count, or its parameters).
+    #[error(transparent)]
+    Spline(#[from] cga_core::SplineError),
     /// Somewhere between them the family passes through a line (infinite radius).
     #[error("the surface is unbounded: at α = {alpha} the interpolated circle is a line")]
     Unbounded {

@@ -3,9 +3,9 @@
 //! tubes around the middle circle) it passes through.
 
 use super::SurfaceError;
+use super::family::Circles;
 use crate::ray::{Ray, crosses};
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
-use cga_core::{Circle, Pair};
 use smallvec::SmallVec;
 
 /// α-intervals a ray reaches, `(lo, hi, leaves)`, touching ones merged.
@@ -63,11 +63,12 @@ impl Tree {
     /// The tree over `leaves` (a power of two) equal α-intervals: each leaf bounds the
     /// circles sampled over its interval, padded by the largest motion between samples
     /// (centre, radius and tilt) twice over; each inner node bounds its children.
-    pub fn new(pair: &Pair<Circle>, leaves: usize) -> Result<Self, SurfaceError> {
+    pub fn new(circles: &impl Circles<f64>, leaves: usize) -> Result<Self, SurfaceError> {
         let empty = Node { centre: [0.0; 3], radius: 0.0, lo: 0.0, hi: 0.0, tube: None };
         let mut nodes = vec![empty; 2 * leaves - 1];
         for leaf in 0..leaves {
-            nodes[leaves - 1 + leaf] = leaf_node(pair, leaf as f64 / leaves as f64, (leaf + 1) as f64 / leaves as f64)?;
+            nodes[leaves - 1 + leaf] =
+                leaf_node(circles, leaf as f64 / leaves as f64, (leaf + 1) as f64 / leaves as f64)?;
         }
         for k in (0..leaves - 1).rev() {
             let (a, b) = (nodes[2 * k + 1], nodes[2 * k + 2]);
@@ -110,11 +111,11 @@ impl Tree {
 
 /// The leaf over `[lo, hi]`: a sphere around the sampled circles and a tube around the middle
 /// one, each padded by the largest step between samples.
-fn leaf_node(pair: &Pair<Circle>, lo: f64, hi: f64) -> Result<Node, SurfaceError> {
+fn leaf_node(family: &impl Circles<f64>, lo: f64, hi: f64) -> Result<Node, SurfaceError> {
     let mut circles = [([0.0; 3], [0.0; 3], 0.0); LEAF_SAMPLES + 1];
     for (s, slot) in circles.iter_mut().enumerate() {
         let alpha = lo + (hi - lo) * s as f64 / LEAF_SAMPLES as f64;
-        *slot = pair.at(alpha)?.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })?;
+        *slot = family.at(alpha)?.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })?;
     }
     let n = circles.len() as f64;
     let centre = circles.iter().fold([0.0; 3], |m, (c, _, _)| add(m, scale(*c, 1.0 / n)));

@@ -1,0 +1,171 @@
+//! A spline surface: the circles of a [`cga_core::Spline`] through `N ≥ 2` control circles
+//! (the paper's Fig. 3), one [`EvolvedSurface`] per segment — the two-circle family with its
+//! degree-8 polynomial for linear joins, a [`BezierSegment`] with its degree-`(12d − 4)`
+//! polynomial otherwise — sharing one local frame, so that neighbouring segments meet on the
+//! very same knot circle and leave no crack.
+
+use super::evolved::EvolvedSurface;
+use super::segment::BezierSegment;
+use super::{Method, SurfaceError, TwoCircles};
+use crate::ray::Ray;
+use crate::shapes::{Crossing, Shape, facing};
+use cga_core::euclid::{E3, norm, sub};
+use cga_core::{Circle, Joining, Pair, Spline};
+
+/// One segment, by the family its circles form.
+#[derive(Clone, Debug)]
+enum Segment {
+    /// Between two knots (linear joining): the exact degree-8 polynomial.
+    Linear(Box<EvolvedSurface>),
+    /// A quadratic or cubic Bézier segment.
+    Curved(Box<EvolvedSurface<BezierSegment<f64>>>),
+}
+
+impl Segment {
+    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        match self {
+            Segment::Linear(s) => s.intersect(ray, t_min, t_max),
+            Segment::Curved(s) => s.intersect(ray, t_min, t_max),
+        }
+    }
+
+    fn normal(&self, crossing: &Crossing) -> E3 {
+        match self {
+            Segment::Linear(s) => s.normal(crossing),
+            Segment::Curved(s) => s.normal(crossing),
+        }
+    }
+
+    fn bounds(&self) -> (E3, f64) {
+        match self {
+            Segment::Linear(s) => s.bounds(),
+            Segment::Curved(s) => s.bounds(),
+        }
+    }
+}
+
+/// A surface swept by the circles of a spline; `α ∈ [0, 1]` runs over all of it, segment `j`
+/// of `m` covering `[j/m, (j+1)/m]`.
+#[derive(Clone, Debug)]
+pub struct SplineSurface {
+    segments: Vec<Segment>,
+    /// The spline, in the local frame (for curvature and inspection).
+    spline: Spline<Circle>,
+    origin: E3,
+    radius: f64,
+}
+
+impl SplineSurface {
+    /// The frame origin for circles of centres `cᵢ` and radii `rᵢ`: `Σ(cᵢ/rᵢ) / Σ(1/rᵢ)`, which
+    /// for two circles is their centre of similitude ([`EvolvedSurface::frame_origin`]) and
+    /// in general keeps every circle's distance in its own radii, `|cᵢ − o|/rᵢ`, small.
+    pub fn frame_origin(circles: &[(E3, f64)]) -> E3 {
+        let weight: f64 = circles.iter().map(|(_, r)| 1.0 / r).sum();
+        [0, 1, 2].map(|k| circles.iter().map(|(c, r)| c[k] / r).sum::<f64>() / weight)
+    }
+
+    /// The surface through `circles` (centre, normal, radius, in the scene's frame), joined as
+    /// `joining` says, built in the frame of [`SplineSurface::frame_origin`].
+    pub fn new(circles: &[(E3, E3, f64)], joining: Joining, method: Method) -> Result<Self, SurfaceError> {
+        let origin = Self::frame_origin(&circles.iter().map(|&(c, _, r)| (c, r)).collect::<Vec<_>>());
+        let mut local = Vec::with_capacity(circles.len());
+        for (k, &(c, n, r)) in circles.iter().enumerate() {
+            let which = (k + 1).min(255) as u8;
+            local.push(
+                Circle::from_centre_normal_radius(sub(c, origin), n, r)
+                    .map_err(|reason| SurfaceError::NotACircle { which, reason })?,
+            );
+        }
+        if joining == Joining::Linear {
+            for pair in circles.windows(2) {
+                let (a, b) = (pair[0], pair[1]);
+                let close = 1e-12 * a.2.max(b.2);
+                if norm(sub(a.0, b.0)) <= close
+                    && (a.2 - b.2).abs() <= close
+                    && norm(cga_core::euclid::cross(a.1, b.1)) <= 1e-12
+                {
+                    return Err(SurfaceError::SameCircle { reversed: cga_core::euclid::dot(a.1, b.1) < 0.0 });
+                }
+            }
+        }
+        let spline = Spline::new(&local, joining)?;
+        let segments = (0..spline.segments())
+            .map(|j| {
+                let controls = spline.segment(j);
+                Ok(match controls {
+                    [a, b] => {
+                        let pair = TwoCircles::new(Pair { c1: *a, c2: *b });
+                        Segment::Linear(Box::new(EvolvedSurface::of(origin, pair, method)?))
+                    }
+                    _ => Segment::Curved(Box::new(EvolvedSurface::of(origin, BezierSegment::new(controls), method)?)),
+                })
+            })
+            .collect::<Result<Vec<_>, SurfaceError>>()?;
+        let radius = segments.iter().map(|s| s.bounds().1).fold(0.0, f64::max);
+        Ok(SplineSurface { segments, spline, origin, radius })
+    }
+
+    /// The same surface intersected by another method.
+    pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
+        let segments = (self.segments.iter())
+            .map(|s| {
+                Ok(match s {
+                    Segment::Linear(s) => Segment::Linear(Box::new(s.with_method(method)?)),
+                    Segment::Curved(s) => Segment::Curved(Box::new(s.with_method(method)?)),
+                })
+            })
+            .collect::<Result<Vec<_>, SurfaceError>>()?;
+        Ok(SplineSurface { segments, ..self.clone() })
+    }
+
+    /// The number of segments.
+    pub fn segments(&self) -> usize {
+        self.segments.len()
+    }
+
+    /// The spline, in the local frame whose origin is [`SplineSurface::origin`].
+    pub fn spline(&self) -> &Spline<Circle> {
+        &self.spline
+    }
+
+    /// The local frame's origin.
+    pub fn origin(&self) -> E3 {
+        self.origin
+    }
+
+    /// The segment holding `α`, and the parameter within it.
+    fn locate(&self, alpha: f64) -> (usize, f64) {
+        let m = self.segments.len();
+        let u = alpha * m as f64;
+        let j = (u.floor().max(0.0) as usize).min(m - 1);
+        (j, u - j as f64)
+    }
+}
+
+impl Shape for SplineSurface {
+    fn intersect(&self, ray: &Ray, t_min: f64, mut t_max: f64) -> Option<Crossing> {
+        let m = self.segments.len() as f64;
+        let mut best = None;
+        for (j, segment) in self.segments.iter().enumerate() {
+            if let Some(c) = segment.intersect(ray, t_min, t_max) {
+                t_max = c.t;
+                best = Some(Crossing { alpha: c.alpha.map(|t| (j as f64 + t) / m), ..c });
+            }
+        }
+        best
+    }
+
+    fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
+        let (j, t) = self.locate(crossing.alpha.unwrap_or(0.0));
+        facing(self.segments[j].normal(&Crossing { alpha: Some(t), ..*crossing }), ray.dir)
+    }
+
+    fn bounds(&self) -> Option<(E3, f64)> {
+        // Every segment's sphere is centred on the shared origin.
+        Some((self.origin, self.radius))
+    }
+
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
