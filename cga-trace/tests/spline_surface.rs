@@ -9,7 +9,8 @@ use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, uni
 use cga_core::{Circle, Dual, InterpolationError, Line, Spline};
 use cga_trace::camera::Camera;
 use cga_trace::ray::Ray;
-use cga_trace::shapes::Shape;
+use cga_trace::shapes::{Crossing, Shape};
+use std::time::Instant;
 use cga_trace::surface::bernstein::Bernstein;
 use cga_trace::surface::{Circles, EvolvedSurface, Method, SplineSurface};
 use rand::{RngExt, SeedableRng};
@@ -154,21 +155,133 @@ const QUICK: usize = 150;
 
 #[test]
 fn every_root_against_a_dense_reference() {
-    against_the_reference(Some(QUICK), 512);
+    let tally = against_the_reference(Some(QUICK), 512, &[Method::default()]);
+    tally[0].check();
 }
 
-/// All rays of every surface against 16,384 samples of `f` over the whole surface:
+/// All rays of every surface against 16,384 samples of `f` over the whole surface, for every
+/// method, with its time per ray — the error-against-run-time table of docs/SURFACE.md:
 /// `cargo test --release -p cga-trace --test spline_surface -- --ignored --nocapture`.
 #[test]
 #[ignore]
 fn every_root_against_a_dense_reference_all_rays() {
-    against_the_reference(None, 16_384);
+    let methods = [
+        Method::Sampling { samples: 64 },
+        Method::Sampling { samples: 256 },
+        Method::Sampling { samples: 1024 },
+        Method::Hierarchy { leaves: 64, per_leaf: 4 },
+        Method::Polynomial { tolerance: 0.0 },
+        Method::default(),
+    ];
+    let tallies = against_the_reference(None, 16_384, &methods);
+    println!("| method | rays | hits | missed | false | worst α error (crossing) | ns per ray |\n|---|---|---|---|---|---|---|");
+    for (method, t) in methods.iter().zip(&tallies) {
+        println!(
+            "| `{method:?}` | {} | {} | {} | {} | {:.1e} | {:.0} |",
+            t.rays,
+            t.hits,
+            t.missed.len(),
+            t.false_hits.len(),
+            t.worst_alpha,
+            t.seconds * 1e9 / t.rays as f64
+        );
+    }
+    println!(
+        "(default: {} nearer roots and {} touches found that the reference stepped over, {} touches \
+         placed more precisely; {} grazing hits, cos < 1e-3, not compared in α)",
+        tallies[5].nearer, tallies[5].touches, tallies[5].refined, tallies[5].grazing
+    );
+    tallies[4].check();
+    tallies[5].check();
 }
 
-fn against_the_reference(rays_per_surface: Option<usize>, samples: usize) {
+/// One method's agreement with the reference.
+#[derive(Default)]
+struct Tally {
+    rays: usize,
+    hits: usize,
+    missed: Vec<(E3, E3, f64, f64)>,
+    false_hits: Vec<(E3, E3, f64, f64)>,
+    nearer: usize,
+    touches: usize,
+    refined: usize,
+    grazing: usize,
+    worst_alpha: f64,
+    seconds: f64,
+}
+
+impl Tally {
+    /// 0 missed, 0 false, α to 1e-9 where the ray crosses the surface.
+    fn check(&self) {
+        println!(
+            "{} rays, {} hits: {} missed, {} false; {} nearer roots and {} touches found that sampling \
+             stepped over, {} touches placed more precisely; worst α difference {:.1e} where the ray \
+             crosses the surface ({} grazing hits, cos < 1e-3, not compared)",
+            self.rays,
+            self.hits,
+            self.missed.len(),
+            self.false_hits.len(),
+            self.nearer,
+            self.touches,
+            self.refined,
+            self.worst_alpha,
+            self.grazing
+        );
+        assert!(self.missed.is_empty(), "missed {:?}", &self.missed[..self.missed.len().min(5)]);
+        assert!(self.false_hits.is_empty(), "false {:?}", &self.false_hits[..self.false_hits.len().min(5)]);
+        assert!(self.worst_alpha <= 1e-9, "{:e}", self.worst_alpha);
+        assert!(self.hits > self.rays / 10, "{} of {}", self.hits, self.rays);
+    }
+
+    /// Where the method's crossing `got` stands against the reference's `want`.
+    fn add(&mut self, surface: &SplineSurface, ray: &Ray, want: Option<Crossing>, got: Option<Crossing>) {
+        self.rays += 1;
+        match (want, got) {
+            (Some(want), Some(got)) => {
+                self.hits += 1;
+                let scale = want.t.max(1.0);
+                let on = on_its_circle(surface, got.alpha.unwrap(), got.point);
+                if (want.t - got.t).abs() <= 1e-9 * scale {
+                    // α is defined to rounding where the ray crosses the surface; where it
+                    // grazes (cos < 1e-3), ray and surface stay within ε of each other over ~√ε
+                    // of the ray, and any method's α is that uncertain.
+                    let cos = dot(surface.normal(ray, &got), ray.dir).abs();
+                    if cos >= 1e-3 {
+                        self.worst_alpha = self.worst_alpha.max((want.alpha.unwrap() - got.alpha.unwrap()).abs());
+                    } else {
+                        self.grazing += 1;
+                    }
+                } else if got.t < want.t && on < 1e-9 {
+                    // A nearer root that sampling stepped over (a close pair or a touch).
+                    self.nearer += 1;
+                } else if (got.t - want.t).abs() <= 1e-6 * scale && on < 1e-9 {
+                    // The same point: a touch that sampling placed by minimising |f| (to about
+                    // √ε), this method to rounding.
+                    self.refined += 1;
+                } else {
+                    self.missed.push((ray.origin, ray.dir, want.t, got.t));
+                }
+            }
+            (Some(want), None) => self.missed.push((ray.origin, ray.dir, want.t, f64::NAN)),
+            (None, Some(got)) => {
+                // Sampling can step over a touch; the method's hit must lie on C_α.
+                let on = on_its_circle(surface, got.alpha.unwrap(), got.point);
+                if on < 1e-9 {
+                    self.touches += 1;
+                } else {
+                    self.false_hits.push((ray.origin, ray.dir, got.t, on));
+                }
+            }
+            (None, None) => {}
+        }
+    }
+}
+
+/// Every method against the reference on the rays of every surface (all, or `rays_per_surface`
+/// evenly thinned), and the time each method takes over them.
+fn against_the_reference(rays_per_surface: Option<usize>, samples: usize, methods: &[Method]) -> Vec<Tally> {
     let mut rng = XorShiftRng::seed_from_u64(8);
-    let (mut total, mut total_hits, mut nearer, mut touches, mut refined, mut worst_alpha) = (0, 0, 0, 0, 0, 0.0f64);
-    let mut grazing = 0;
+    let mut tallies: Vec<Tally> = methods.iter().map(|_| Tally::default()).collect();
     let surfaces = surfaces();
     assert!(surfaces.len() >= 7, "{} surfaces", surfaces.len());
     for (name, surface) in &surfaces {
@@ -181,61 +294,21 @@ fn against_the_reference(rays_per_surface: Option<usize>, samples: usize) {
             let step = rays.len().div_ceil(n);
             rays = rays.into_iter().step_by(step).collect();
         }
-        let (mut missed, mut false_hits, mut hits) = (Vec::new(), Vec::new(), 0);
-        for ray in &rays {
-            match (reference.intersect(ray, 0.0, f64::INFINITY), surface.intersect(ray, 0.0, f64::INFINITY)) {
-                (Some(want), Some(got)) => {
-                    hits += 1;
-                    let scale = want.t.max(1.0);
-                    let on = on_its_circle(surface, got.alpha.unwrap(), got.point);
-                    if (want.t - got.t).abs() <= 1e-9 * scale {
-                        // α is defined to rounding where the ray crosses the surface; where it
-                        // grazes (cos < 1e-3), ray and surface stay within ε of each other
-                        // over ~√ε of the ray, and any method's α is that uncertain.
-                        let cos = dot(surface.normal(ray, &got), ray.dir).abs();
-                        let d = (want.alpha.unwrap() - got.alpha.unwrap()).abs();
-                        if cos >= 1e-3 {
-                            worst_alpha = worst_alpha.max(d);
-                        } else {
-                            grazing += 1;
-                        }
-                    } else if got.t < want.t && on < 1e-9 {
-                        // A nearer root that sampling stepped over (a close pair or a touch).
-                        nearer += 1;
-                    } else if (got.t - want.t).abs() <= 1e-6 * scale && on < 1e-9 {
-                        // The same point: a touch that sampling placed by minimising |f|
-                        // (to about √ε), the polynomial to rounding.
-                        refined += 1;
-                    } else {
-                        missed.push((ray.origin, ray.dir, want.t, got.t));
-                    }
-                }
-                (Some(want), None) => missed.push((ray.origin, ray.dir, want.t, f64::NAN)),
-                (None, Some(got)) => {
-                    // Sampling can step over a touch; the polynomial's hit must lie on C_α.
-                    let on = on_its_circle(surface, got.alpha.unwrap(), got.point);
-                    if on < 1e-9 {
-                        touches += 1;
-                    } else {
-                        false_hits.push((ray.origin, ray.dir, got.t, on));
-                    }
-                }
-                (None, None) => {}
+        let wants: Vec<Option<Crossing>> = rays.iter().map(|r| reference.intersect(r, 0.0, f64::INFINITY)).collect();
+        for (method, tally) in methods.iter().zip(&mut tallies) {
+            let surface = surface.with_method(*method).unwrap();
+            let start = Instant::now();
+            let gots: Vec<Option<Crossing>> = rays.iter().map(|r| surface.intersect(r, 0.0, f64::INFINITY)).collect();
+            tally.seconds += start.elapsed().as_secs_f64();
+            let before = (tally.missed.len(), tally.false_hits.len());
+            for ((ray, want), got) in rays.iter().zip(&wants).zip(gots) {
+                tally.add(&surface, ray, *want, got);
             }
+            let (missed, false_hits) = (tally.missed.len() - before.0, tally.false_hits.len() - before.1);
+            println!("{name}, {method:?}: {} rays, {missed} missed, {false_hits} false", rays.len());
         }
-        println!("{name}: {} rays, {hits} hits, {} missed, {} false", rays.len(), missed.len(), false_hits.len());
-        assert!(missed.is_empty(), "{name}: missed {:?}", &missed[..missed.len().min(5)]);
-        assert!(false_hits.is_empty(), "{name}: false {:?}", &false_hits[..false_hits.len().min(5)]);
-        total += rays.len();
-        total_hits += hits;
     }
-    println!(
-        "{total} rays, {total_hits} hits: 0 missed, 0 false; {nearer} nearer roots and {touches} touches \
-         found that sampling stepped over, {refined} touches placed more precisely; worst α difference \
-         {worst_alpha:.1e} where the ray crosses the surface ({grazing} grazing hits, cos < 1e-3, not compared)"
-    );
-    assert!(worst_alpha <= 1e-9, "{worst_alpha:e}");
-    assert!(total_hits > total / 10, "{total_hits} of {total}");
+    tallies
 }
 
 /// Distance of `x` from `C_α`, in radii.
