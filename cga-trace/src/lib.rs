@@ -14,6 +14,8 @@ pub mod frame;
 pub mod light;
 pub mod limits;
 pub mod material;
+#[cfg(feature = "evolved")]
+pub mod mesh;
 pub mod ray;
 pub mod render;
 pub mod scene;

@@ -30,6 +30,29 @@ enum Command {
     /// Render a scene file to an image (PNG, OpenEXR or Radiance HDR, by extension).
     #[command(after_help = "The scene format: README.md#scene-files.")]
     Render(Render),
+    /// Export an evolved or spline surface of a scene as a triangle mesh with analytic
+    /// normals and (α, angle) texture coordinates: .obj, .ply or .glb, by extension.
+    #[cfg(feature = "evolved")]
+    Mesh(MeshArgs),
+}
+
+#[cfg(feature = "evolved")]
+#[derive(clap::Args)]
+struct MeshArgs {
+    /// The scene (TOML; see README.md#scene-files).
+    scene: PathBuf,
+    /// The name of the surface's object in the scene.
+    #[arg(long)]
+    object: String,
+    /// The mesh to write: .obj or .ply (f64 exact), .glb (f32).
+    #[arg(short, long)]
+    output: PathBuf,
+    /// Circles along α (the mesh has one more ring of vertices).
+    #[arg(long, default_value_t = 64)]
+    rings: usize,
+    /// Vertices around each circle.
+    #[arg(long, default_value_t = 128)]
+    segments: usize,
 }
 
 #[derive(clap::Args)]
@@ -94,8 +117,12 @@ fn main() -> ExitCode {
         }
         Err(e) => e.exit(),
     };
-    let Command::Render(args) = cli.command;
-    match render_command(args) {
+    let result = match cli.command {
+        Command::Render(args) => render_command(args),
+        #[cfg(feature = "evolved")]
+        Command::Mesh(args) => mesh_command(args),
+    };
+    match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {}", one_line(&e));
@@ -118,6 +145,30 @@ fn one_line(e: &anyhow::Error) -> String {
         }
     }
     line.replace(['\n', '\r'], " ")
+}
+
+#[cfg(feature = "evolved")]
+fn mesh_command(args: MeshArgs) -> anyhow::Result<()> {
+    use cga_trace::mesh::{Mesh, MeshFormat};
+    let format = MeshFormat::of(&args.output)?;
+    let file =
+        std::fs::File::create(&args.output).with_context(|| format!("cannot write {}", args.output.display()))?;
+    let result = (|| -> anyhow::Result<usize> {
+        let scene = Scene::load(&args.scene)?;
+        let mesh = Mesh::of(scene.swept(&args.object)?, &scene.frame, args.rings, args.segments)?;
+        mesh.save(file, format).with_context(|| format!("writing {}", args.output.display()))?;
+        Ok(mesh.triangles.len())
+    })();
+    match result {
+        Ok(triangles) => {
+            eprintln!("{triangles} triangles -> {}", args.output.display());
+            Ok(())
+        }
+        Err(e) => {
+            let _ = std::fs::remove_file(&args.output);
+            Err(e)
+        }
+    }
 }
 
 fn render_command(args: Render) -> anyhow::Result<()> {

@@ -10,11 +10,11 @@ use cga_core::{Circle, Dual, InterpolationError, Line, Spline};
 use cga_trace::camera::Camera;
 use cga_trace::ray::Ray;
 use cga_trace::shapes::{Crossing, Shape};
-use std::time::Instant;
 use cga_trace::surface::bernstein::Bernstein;
 use cga_trace::surface::{Circles, EvolvedSurface, Method, SplineSurface};
 use rand::{RngExt, SeedableRng};
 use rand_xorshift::XorShiftRng;
+use std::time::Instant;
 
 /// A circle as `(centre, normal, radius)`.
 type Round = (E3, E3, f64);
@@ -174,7 +174,9 @@ fn every_root_against_a_dense_reference_all_rays() {
         Method::default(),
     ];
     let tallies = against_the_reference(None, 16_384, &methods);
-    println!("| method | rays | hits | missed | false | worst α error (crossing) | ns per ray |\n|---|---|---|---|---|---|---|");
+    println!(
+        "| method | rays | hits | missed | false | worst α error (crossing) | ns per ray |\n|---|---|---|---|---|---|---|"
+    );
     for (method, t) in methods.iter().zip(&tallies) {
         println!(
             "| `{method:?}` | {} | {} | {} | {} | {:.1e} | {:.0} |",
