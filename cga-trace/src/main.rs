@@ -30,7 +30,7 @@ enum Command {
     /// Render a scene file to an image (PNG, OpenEXR or Radiance HDR, by extension).
     #[command(after_help = "The scene format: README.md#scene-files.")]
     Render(Render),
-    /// Export an evolved or spline surface of a scene as a triangle mesh with analytic
+    /// Export an evolved, spline or ruled surface of a scene as a triangle mesh with analytic
     /// normals and (α, angle) texture coordinates: .obj, .ply or .glb, by extension.
     #[cfg(feature = "evolved")]
     Mesh(MeshArgs),
@@ -149,13 +149,13 @@ fn one_line(e: &anyhow::Error) -> String {
 
 #[cfg(feature = "evolved")]
 fn mesh_command(args: MeshArgs) -> anyhow::Result<()> {
-    use cga_trace::mesh::{Mesh, MeshFormat};
+    use cga_trace::mesh::MeshFormat;
     let format = MeshFormat::of(&args.output)?;
     let file =
         std::fs::File::create(&args.output).with_context(|| format!("cannot write {}", args.output.display()))?;
     let result = (|| -> anyhow::Result<usize> {
         let scene = Scene::load(&args.scene)?;
-        let mesh = Mesh::of(scene.swept(&args.object)?, &scene.frame, args.rings, args.segments)?;
+        let mesh = scene.mesh(&args.object, args.rings, args.segments)?;
         mesh.save(file, format).with_context(|| format!("writing {}", args.output.display()))?;
         Ok(mesh.triangles.len())
     })();

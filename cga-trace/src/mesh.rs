@@ -12,7 +12,7 @@
 use crate::frame::Frame;
 use crate::scene::Scene;
 use crate::shapes::Shape;
-use crate::surface::{EvolvedSurface, SplineSurface};
+use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
 use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
 use std::io::Write;
 use std::path::Path;
@@ -65,7 +65,7 @@ pub enum MeshError {
     #[error("no object named `{0}` in the scene")]
     NoObject(String),
     /// The object is not a swept surface.
-    #[error("`{0}` is not an evolved or spline surface")]
+    #[error("`{0}` is not an evolved, spline or ruled surface")]
     NotSwept(String),
     /// Fewer than 1 ring or 3 segments, or more vertices than a u32 index holds.
     #[error("a mesh takes 1 to 65536 rings and 3 to 65536 segments")]
@@ -295,11 +295,73 @@ impl Mesh {
     }
 }
 
+impl Mesh {
+    /// A ruled surface: `rings + 1` rulings at `α = i / rings`, each cut into `segments`
+    /// (its `segments + 1` vertices at fractions `j / segments` of the ruling's extent), the
+    /// analytic normals (the grid's own where the surface is singular, `N = 0`), texture
+    /// coordinates `(α, j / segments)`.
+    pub fn of_ruled(surface: &RuledSurface, frame: &Frame, rings: usize, segments: usize) -> Result<Mesh, MeshError> {
+        if !(1..=1 << 16).contains(&rings)
+            || !(1..=1 << 16).contains(&segments)
+            || (rings + 1) * (segments + 1) > u32::MAX as usize
+        {
+            return Err(MeshError::Resolution);
+        }
+        let mut mesh = Mesh::default();
+        for i in 0..=rings {
+            let alpha = i as f64 / rings as f64;
+            for j in 0..=segments {
+                let v = j as f64 / segments as f64;
+                let (x, n) = surface.point_and_normal(alpha, v).ok_or(MeshError::NoCircle(alpha))?;
+                mesh.positions.push(frame.world_point(x));
+                // Where the surface is singular (N = 0), the grid's own normal (below).
+                mesh.normals.push(n.unwrap_or([0.0; 3]));
+                mesh.uvs.push([alpha, v]);
+            }
+        }
+        let w = segments + 1;
+        let at = |i: usize, j: usize| (i * w + j) as u32;
+        for i in 0..rings {
+            for j in 0..segments {
+                mesh.triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+                mesh.triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+            }
+        }
+        // Normals to the winding's front, from the grid's own tangents.
+        for i in 0..=rings {
+            for j in 0..=segments {
+                let p = |i: usize, j: usize| mesh.positions[i * w + j];
+                let along = sub(p((i + 1).min(rings), j), p(i.saturating_sub(1), j));
+                let across = sub(p(i, (j + 1).min(segments)), p(i, j.saturating_sub(1)));
+                let (k, geometric) = (i * w + j, cross(along, across));
+                if mesh.normals[k] == [0.0; 3] {
+                    mesh.normals[k] = unit(geometric).unwrap_or([0.0, 0.0, 1.0]);
+                } else if dot(geometric, mesh.normals[k]) < 0.0 {
+                    mesh.normals[k] = mesh.normals[k].map(|x| -x);
+                }
+            }
+        }
+        Ok(mesh)
+    }
+}
+
 impl Scene {
     /// The object named `name`, as a swept surface.
     pub fn swept(&self, name: &str) -> Result<&dyn Swept, MeshError> {
-        let object = self.objects.iter().find(|o| o.name == name).ok_or_else(|| MeshError::NoObject(name.into()))?;
-        swept(object.shape.as_ref()).ok_or_else(|| MeshError::NotSwept(name.into()))
+        swept(self.object(name)?.shape.as_ref()).ok_or_else(|| MeshError::NotSwept(name.into()))
+    }
+
+    /// The mesh of the object named `name`: an evolved, spline or ruled surface.
+    pub fn mesh(&self, name: &str, rings: usize, segments: usize) -> Result<Mesh, MeshError> {
+        let shape = self.object(name)?.shape.as_ref();
+        match shape.downcast_ref::<RuledSurface>() {
+            Some(ruled) => Mesh::of_ruled(ruled, &self.frame, rings, segments),
+            None => Mesh::of(self.swept(name)?, &self.frame, rings, segments),
+        }
+    }
+
+    fn object(&self, name: &str) -> Result<&crate::scene::Object, MeshError> {
+        self.objects.iter().find(|o| o.name == name).ok_or_else(|| MeshError::NoObject(name.into()))
     }
 }
 

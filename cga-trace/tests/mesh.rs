@@ -174,6 +174,36 @@ fn the_command_line_writes_each_format() {
         .args(["mesh", scene_file.to_str().unwrap(), "--object", "floor", "-o", missing.to_str().unwrap()])
         .output()
         .unwrap();
-    assert!(String::from_utf8_lossy(&out.stderr).contains("not an evolved or spline surface"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not an evolved, spline or ruled surface"));
     assert!(!missing.exists());
+}
+
+/// A ruled surface's mesh: every vertex on its ruling (α and the fraction along it from the
+/// texture coordinates) and the analytic normal there.
+#[test]
+fn ruled_meshes_read_back_on_their_rulings() {
+    let scene = scene("ruled.toml");
+    for name in ["band", "sheet"] {
+        let mesh = scene.mesh(name, 16, 8).unwrap();
+        let mut bytes = Vec::new();
+        mesh.write_ply(&mut bytes).unwrap();
+        let back = read_ply(&bytes);
+        let surface = scene.objects.iter().find(|o| o.name == name).unwrap();
+        let ruled = surface.shape.downcast_ref::<cga_trace::surface::RuledSurface>().unwrap();
+        let (mut off, mut angle, mut singular) = (0.0f64, 0.0f64, 0);
+        for ((x, n), uv) in back.positions.iter().zip(&back.normals).zip(&back.uvs) {
+            let (want, normal) = ruled.point_and_normal(uv[0], uv[1]).unwrap();
+            off = off.max(norm(sub(scene.frame.point(*x), want)));
+            match normal {
+                Some(normal) => angle = angle.max(norm(cross(*n, normal)).atan2(dot(*n, normal).abs())),
+                None => singular += 1,
+            }
+        }
+        println!(
+            "{name}: vertices {off:.1e} from their rulings' points, normals within {angle:.1e} rad \
+             ({singular} singular vertices given the grid's normal)"
+        );
+        assert!(singular <= 2, "{name}: {singular} singular vertices");
+        assert!(off <= 1e-12 && angle <= 1e-12, "{name}");
+    }
 }

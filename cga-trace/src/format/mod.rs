@@ -22,7 +22,7 @@ use crate::settings::Settings;
 use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
-use crate::surface::{EvolvedSurface, SplineSurface};
+use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
 #[cfg(feature = "evolved")]
 use cga_core::Joining;
 use cga_core::euclid::E3;
@@ -129,6 +129,25 @@ pub(crate) enum Kind {
     Triangle,
     Evolved,
     Spline,
+    Ruled,
+}
+
+/// A line of a ruled surface: a point on it and its direction.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+#[cfg_attr(not(feature = "evolved"), allow(dead_code))]
+pub(crate) struct LineSpec {
+    point: V3,
+    direction: V3,
+}
+
+/// A sphere bounding the rulings of a ruled surface of lines.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+#[cfg_attr(not(feature = "evolved"), allow(dead_code))]
+pub(crate) struct BoundSpec {
+    centre: V3,
+    radius: Num,
 }
 
 /// How a spline surface joins its circles (`joining = "…"`).
@@ -162,6 +181,10 @@ impl Kind {
             ),
             Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
             Kind::Evolved => (&["c1", "c2"], "an evolved surface takes `c1` and `c2`"),
+            Kind::Ruled => (
+                &["p1", "p2", "l1", "l2", "bound"],
+                "a ruled surface takes point pairs `p1` and `p2` (two points each), or lines `l1` and `l2` ({ point, direction }) and a `bound` ({ centre, radius })",
+            ),
             Kind::Spline => (
                 &["circles", "joining", "tension", "bias", "continuity"],
                 "a spline surface takes `circles`, `joining`, and for joining = \"kochanek-bartels\" `tension`, `bias`, `continuity`",
@@ -188,6 +211,11 @@ pub(crate) struct ObjectSpec {
     c1: Option<Spanned<CircleSpec>>,
     c2: Option<Spanned<CircleSpec>>,
     circles: Option<Spanned<Vec<Spanned<CircleSpec>>>>,
+    p1: Option<Spanned<Vec<V3>>>,
+    p2: Option<Spanned<Vec<V3>>>,
+    l1: Option<Spanned<LineSpec>>,
+    l2: Option<Spanned<LineSpec>>,
+    bound: Option<Spanned<BoundSpec>>,
     joining: Option<Spanned<JoiningSpec>>,
     tension: Option<Spanned<Num>>,
     bias: Option<Spanned<Num>>,
@@ -230,6 +258,8 @@ impl ObjectSpec {
         (self.centre.as_ref().or(self.point.as_ref()).map(|c| c.get_ref().0))
             .or_else(|| first(&self.points))
             .or_else(|| first(&self.corners))
+            .or_else(|| first(&self.p1))
+            .or_else(|| self.l1.as_ref().map(|l| l.get_ref().point.0))
             .or_else(|| self.c1.as_ref().and_then(|c| c.get_ref().centre.map(|c| c.0)))
             .or_else(|| {
                 self.circles.as_ref().and_then(|c| c.get_ref().first()).and_then(|c| c.get_ref().centre.map(|c| c.0))
@@ -249,6 +279,11 @@ impl ObjectSpec {
             span("c1", self.c1.as_ref().map(Spanned::span)),
             span("c2", self.c2.as_ref().map(Spanned::span)),
             span("circles", self.circles.as_ref().map(Spanned::span)),
+            span("p1", self.p1.as_ref().map(Spanned::span)),
+            span("p2", self.p2.as_ref().map(Spanned::span)),
+            span("l1", self.l1.as_ref().map(Spanned::span)),
+            span("l2", self.l2.as_ref().map(Spanned::span)),
+            span("bound", self.bound.as_ref().map(Spanned::span)),
             span("joining", self.joining.as_ref().map(Spanned::span)),
             span("tension", self.tension.as_ref().map(Spanned::span)),
             span("bias", self.bias.as_ref().map(Spanned::span)),
@@ -359,8 +394,10 @@ impl ObjectSpec {
             },
             #[cfg(feature = "evolved")]
             Kind::Spline => Arc::new(self.spline(motor, method, frame)?),
+            #[cfg(feature = "evolved")]
+            Kind::Ruled => Arc::new(self.ruled(motor, frame)?),
             #[cfg(not(feature = "evolved"))]
-            Kind::Evolved | Kind::Spline => {
+            Kind::Evolved | Kind::Spline | Kind::Ruled => {
                 let _ = method;
                 return Err(Invalid::NoEvolved);
             }
@@ -408,6 +445,59 @@ impl ObjectSpec {
             built.push(circle(c.get_ref(), motor, frame).map_err(reason)?);
         }
         Ok(SplineSurface::new(&built, joining, method)?)
+    }
+}
+
+#[cfg(feature = "evolved")]
+impl ObjectSpec {
+    /// A ruled surface of point pairs or of lines, moved by the object's `motor` (in
+    /// `frame`), in a local frame at the mean of its defining points.
+    fn ruled(&self, motor: Option<Motor>, frame: &Frame) -> Result<RuledSurface, Invalid> {
+        let form = || Invalid::Form(Kind::Ruled.takes().1);
+        let moved = |x: E3| -> Result<E3, Invalid> {
+            Ok(match motor {
+                Some(m) => down(m.sandwich(up(frame.point(x))))?,
+                None => frame.point(x),
+            })
+        };
+        let turned = |d: E3| -> Result<E3, Invalid> {
+            Ok(match motor {
+                Some(m) => {
+                    let r = Rotor { s: m.s, e12: m.e12, e13: m.e13, e23: m.e23 };
+                    let v = r.sandwich(cga_core::Vector::from_array([d[0], d[1], d[2], 0.0, 0.0])).to_array();
+                    [v[0], v[1], v[2]]
+                }
+                None => d,
+            })
+        };
+        let surface = match (&self.p1, &self.p2, &self.l1, &self.l2, &self.bound) {
+            (Some(p1), Some(p2), None, None, None) => {
+                let (p1, p2): ([E3; 2], [E3; 2]) =
+                    (points("p1", p1, &Frame::default())?, points("p2", p2, &Frame::default())?);
+                let (p1, p2) = ([moved(p1[0])?, moved(p1[1])?], [moved(p2[0])?, moved(p2[1])?]);
+                let origin = [0, 1, 2].map(|k| (p1[0][k] + p1[1][k] + p2[0][k] + p2[1][k]) / 4.0);
+                let local = |x: E3| cga_core::euclid::sub(x, origin);
+                RuledSurface::point_pairs(origin, p1.map(local), p2.map(local))?
+            }
+            (None, None, Some(l1), Some(l2), Some(bound)) => {
+                let (l1, l2, b) = (l1.get_ref(), l2.get_ref(), bound.get_ref());
+                let origin = moved(b.centre.0)?;
+                let local = |x: E3| -> Result<E3, Invalid> { Ok(cga_core::euclid::sub(moved(x)?, origin)) };
+                let line =
+                    |l: &LineSpec| -> Result<(E3, E3), Invalid> { Ok((local(l.point.0)?, turned(l.direction.0)?)) };
+                let radius = frame.length(b.radius.0);
+                if radius <= 0.0 {
+                    return Err(Invalid::at(
+                        "bound",
+                        bound.span(),
+                        Invalid::Value("the bound's radius must be positive"),
+                    ));
+                }
+                RuledSurface::lines(origin, line(l1)?, line(l2)?, ([0.0; 3], radius))?
+            }
+            _ => return Err(form()),
+        };
+        Ok(surface)
     }
 }
 

@@ -24,6 +24,8 @@ pub mod family;
 #[cfg(feature = "evolved")]
 mod newton;
 #[cfg(feature = "evolved")]
+mod ruled;
+#[cfg(feature = "evolved")]
 pub mod segment;
 #[cfg(feature = "evolved")]
 mod spline;
@@ -35,6 +37,8 @@ use cga_core::{GeometryError, InterpolationError};
 pub use evolved::EvolvedSurface;
 #[cfg(feature = "evolved")]
 pub use family::{Circles, Family, Finder, TwoCircles};
+#[cfg(feature = "evolved")]
+pub use ruled::{RuledSurface, Rulings};
 #[cfg(feature = "evolved")]
 pub use segment::BezierSegment;
 #[cfg(feature = "evolved")]

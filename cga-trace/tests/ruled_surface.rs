@@ -1,0 +1,196 @@
+//! Ruled surfaces of interpolated point pairs and lines: exact hits (the cubic and quartic of
+//! `cga-trace/src/surface/ruled.rs`) against a dense reference that samples the Plücker form
+//! on the interpolated rulings themselves, analytic normals against finite differences of
+//! the Euclidean surface, and shadows in the shipped scene.
+
+use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
+use cga_core::{Line, ei};
+use cga_trace::ray::Ray;
+use cga_trace::shapes::{Crossing, Shape};
+use cga_trace::surface::{RuledSurface, Rulings};
+use cga_trace::{Aov, Renderer, Scene};
+use rand::{RngExt, SeedableRng};
+use rand_xorshift::XorShiftRng;
+
+/// The ruling at α in the local frame: a point, a unit direction, the range along it.
+fn ruling(surface: &RuledSurface, alpha: f64) -> Option<(Line, E3, E3, (f64, f64))> {
+    match surface.rulings() {
+        Rulings::PointPairs(pair) => {
+            let b = pair.at(alpha).ok()?;
+            let [p, q] = b.end_points().ok()?;
+            Some(((b ^ ei()).try_normalise()?, p, unit(sub(q, p))?, (0.0, norm(sub(q, p)))))
+        }
+        Rulings::Lines { pair, bound } => {
+            let l = pair.at(alpha).ok()?;
+            let (p, d) = (l.point().ok()?, l.direction().ok()?);
+            let pc = sub(p, bound.0);
+            let (b, c) = (dot(pc, d), dot(pc, pc) - bound.1 * bound.1);
+            let disc = b * b - c;
+            (disc > 0.0).then(|| (l, p, d, (-b - disc.sqrt(), -b + disc.sqrt())))
+        }
+    }
+}
+
+/// The reference: the Plücker form of the ray and the normalised ruling sampled at `n`
+/// points, sign changes bisected to rounding, each root's closest approach kept if within
+/// the ruling's range: the nearest `(t, α)`.
+fn reference(surface: &RuledSurface, ray: &Ray, n: usize) -> Option<(f64, f64)> {
+    let o = sub(ray.origin, surface.origin());
+    let line = Line::from_point_unit_direction(o, ray.dir);
+    let f = |alpha: f64| ruling(surface, alpha).map(|(l, ..)| (line * l).e123i);
+    let mut best: Option<(f64, f64)> = None;
+    let mut prev = (0.0, f(0.0));
+    for k in 1..=n {
+        let alpha = k as f64 / n as f64;
+        let cur = (alpha, f(alpha));
+        if let (Some(a), Some(b)) = (prev.1, cur.1)
+            && (a > 0.0) != (b > 0.0)
+        {
+            let (mut lo, mut hi, f_lo) = (prev.0, cur.0, a);
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                match f(mid) {
+                    Some(v) if (v > 0.0) == (f_lo > 0.0) => lo = mid,
+                    _ => hi = mid,
+                }
+            }
+            let alpha = 0.5 * (lo + hi);
+            if let Some((_, p, u, (s0, s1))) = ruling(surface, alpha) {
+                let w0 = sub(o, p);
+                let (b, d, e) = (dot(ray.dir, u), dot(ray.dir, w0), dot(u, w0));
+                let den = 1.0 - b * b;
+                let (t, s) = ((b * e - d) / den, (e - b * d) / den);
+                if t > 0.0 && s >= s0 && s <= s1 && best.is_none_or(|x| t < x.0) {
+                    best = Some((t, alpha));
+                }
+            }
+        }
+        prev = cur;
+    }
+    best
+}
+
+fn surfaces() -> Vec<(&'static str, RuledSurface)> {
+    let scene = Scene::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/ruled.toml")).unwrap();
+    let mut out: Vec<(&str, RuledSurface)> = Vec::new();
+    for (name, object) in [("band (point pairs)", "band"), ("sheet (lines)", "sheet")] {
+        let shape = &scene.objects.iter().find(|o| o.name == object).unwrap().shape;
+        out.push((name, shape.downcast_ref::<RuledSurface>().unwrap().clone()));
+    }
+    out.push((
+        "twisted pairs",
+        RuledSurface::point_pairs([0.0; 3], [[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0]], [[0.0, -1.0, 2.0], [0.0, 1.0, 2.0]])
+            .unwrap(),
+    ));
+    out.push((
+        "skew lines",
+        RuledSurface::lines(
+            [0.0; 3],
+            ([-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+            ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+            ([0.0; 3], 3.0),
+        )
+        .unwrap(),
+    ));
+    out
+}
+
+/// Rays per surface (a debug build samples the reference 1,024 times per ray).
+const RAYS: usize = 150;
+
+#[test]
+fn hits_agree_with_a_dense_reference() {
+    let mut rng = XorShiftRng::seed_from_u64(3);
+    let (mut rays, mut hits, mut worst_alpha) = (0, 0, 0.0f64);
+    for (name, surface) in surfaces() {
+        let (c, r) = surface.bounds();
+        let (mut missed, mut false_hits) = (0, 0);
+        for _ in 0..RAYS {
+            // From outside the bound, at a random point inside it.
+            let d =
+                unit([rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)]).unwrap();
+            let target =
+                add(c, [rng.random_range(-r..r), rng.random_range(-r..r), rng.random_range(-r..r)].map(|x| 0.6 * x));
+            let ray = Ray::new(sub(target, scale(d, 3.0 * r)), d).unwrap();
+            rays += 1;
+            match (reference(&surface, &ray, 1024), surface.intersect(&ray, 0.0, f64::INFINITY)) {
+                (Some((t, alpha)), Some(got)) => {
+                    hits += 1;
+                    if (t - got.t).abs() > 1e-9 * t.max(1.0) {
+                        // Sampling steps over close root pairs; the polynomial's root must be nearer.
+                        assert!(got.t < t, "{name}: t {} against the reference's {t}", got.t);
+                    } else {
+                        worst_alpha = worst_alpha.max((alpha - got.alpha.unwrap()).abs());
+                    }
+                }
+                (Some(_), None) => missed += 1,
+                (None, Some(_)) => false_hits += 1,
+                (None, None) => {}
+            }
+        }
+        println!("{name}: {missed} missed, {false_hits} false");
+        assert_eq!((missed, false_hits), (0, 0), "{name}");
+    }
+    println!("{rays} rays, {hits} hits: 0 missed, 0 false; worst α difference {worst_alpha:.1e}");
+    assert!(worst_alpha <= 1e-9 && hits > rays / 5, "{worst_alpha:e}, {hits} hits");
+}
+
+#[test]
+fn normals_match_finite_differences() {
+    let mut rng = XorShiftRng::seed_from_u64(4);
+    let mut worst = 0.0f64;
+    for (name, surface) in surfaces() {
+        let o = surface.origin();
+        for _ in 0..200 {
+            let alpha = rng.random_range(0.05..0.95);
+            let Some((_, p, u, (s0, s1))) = ruling(&surface, alpha) else { continue };
+            let s = s0 + (s1 - s0) * rng.random_range(0.1..0.9);
+            let x = add(p, scale(u, s));
+            // ∂x/∂α along the ruling's own parameter (for pairs, the fraction of the segment;
+            // for lines, the distance from the closest point to the bound's centre), Richardson.
+            let point_at = |a: f64| -> Option<E3> {
+                let (_, p, u, (s0, s1)) = ruling(&surface, a)?;
+                let f = (s - s0) / (s1 - s0);
+                Some(add(p, scale(u, s0 + f * (s1 - s0))))
+            };
+            let d = |h: f64| Some(scale(sub(point_at(alpha + h)?, point_at(alpha - h)?), 0.5 / h));
+            let (Some(d1), Some(d2)) = (d(1e-4), d(5e-5)) else { continue };
+            let along = add(scale(d1, -1.0 / 3.0), scale(d2, 4.0 / 3.0));
+            let Some(fd) = unit(cross(along, u)) else { continue };
+            let n = surface.normal(&Crossing { t: 0.0, point: add(x, o), alpha: Some(alpha) });
+            let angle = norm(cross(n, fd)).atan2(dot(n, fd).abs());
+            worst = worst.max(angle);
+            assert!(angle < 1e-7, "{name}: α = {alpha}: {angle:e} rad");
+        }
+    }
+    println!("worst angle to the finite-difference normal: {worst:.1e} rad");
+}
+
+#[test]
+fn ruled_surfaces_cast_shadows_and_reflect() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/ruled.toml");
+    let mut scene = Scene::load(&path).unwrap();
+    scene.resize(Some(80), None).unwrap();
+    let lit = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+    let hits = Renderer::new(&scene).counts.get();
+    let _ = hits;
+    scene.settings.shadows = false;
+    let unshadowed = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+    scene.settings.shadows = true;
+    scene.settings.max_depth = 0;
+    let unreflected = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+    let differ = |a: &cga_trace::Film, b: &cga_trace::Film| {
+        a.pixels
+            .iter()
+            .zip(&b.pixels)
+            .filter(|(x, y)| x.iter().zip(y.iter()).any(|(p, q)| (p - q).abs() > 0.02))
+            .count()
+    };
+    assert!(lit.pixels.iter().flatten().all(|x| x.is_finite()));
+    let (shadowed, reflected) = (differ(&lit, &unshadowed), differ(&lit, &unreflected));
+    println!("{shadowed} pixels in shadow, {reflected} showing reflections");
+    assert!(shadowed > 100 && reflected > 100);
+}
