@@ -103,22 +103,44 @@ const RAYS: usize = 150;
 
 #[test]
 fn hits_agree_with_a_dense_reference() {
+    compare(RAYS, 1024);
+}
+
+/// 5,000 rays per surface against 16,384 samples, with the time per ray of each (the table
+/// in docs/SURFACE.md): `cargo test --release -p cga-trace --test ruled_surface -- --ignored
+/// --nocapture`.
+#[test]
+#[ignore]
+fn hits_agree_with_a_dense_reference_report() {
+    compare(5000, 16_384);
+}
+
+fn compare(per_surface: usize, samples: usize) {
+    use std::time::Instant;
     let mut rng = XorShiftRng::seed_from_u64(3);
     let (mut rays, mut hits, mut worst_alpha) = (0, 0, 0.0f64);
+    println!("| surface | rays | hits | missed | false | polynomial ns/ray | reference ns/ray |\n|---|---|---|---|---|---|---|");
     for (name, surface) in surfaces() {
         let (c, r) = surface.bounds();
-        let (mut missed, mut false_hits) = (0, 0);
-        for _ in 0..RAYS {
+        let (mut missed, mut false_hits, mut own_hits) = (0, 0, 0);
+        let mut test_rays = Vec::new();
+        for _ in 0..per_surface {
             // From outside the bound, at a random point inside it.
-            let d =
-                unit([rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)]).unwrap();
-            let target =
-                add(c, [rng.random_range(-r..r), rng.random_range(-r..r), rng.random_range(-r..r)].map(|x| 0.6 * x));
-            let ray = Ray::new(sub(target, scale(d, 3.0 * r)), d).unwrap();
+            let d = unit([rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)]).unwrap();
+            let target = add(c, [rng.random_range(-r..r), rng.random_range(-r..r), rng.random_range(-r..r)].map(|x| 0.6 * x));
+            test_rays.push(Ray::new(sub(target, scale(d, 3.0 * r)), d).unwrap());
+        }
+        let start = Instant::now();
+        let wants: Vec<_> = test_rays.iter().map(|ray| reference(&surface, ray, samples)).collect();
+        let reference_time = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        let gots: Vec<_> = test_rays.iter().map(|ray| surface.intersect(ray, 0.0, f64::INFINITY)).collect();
+        let own_time = start.elapsed().as_secs_f64();
+        for (want, got) in wants.into_iter().zip(gots) {
             rays += 1;
-            match (reference(&surface, &ray, 1024), surface.intersect(&ray, 0.0, f64::INFINITY)) {
+            match (want, got) {
                 (Some((t, alpha)), Some(got)) => {
-                    hits += 1;
+                    (hits, own_hits) = (hits + 1, own_hits + 1);
                     if (t - got.t).abs() > 1e-9 * t.max(1.0) {
                         // Sampling steps over close root pairs; the polynomial's root must be nearer.
                         assert!(got.t < t, "{name}: t {} against the reference's {t}", got.t);
@@ -131,7 +153,12 @@ fn hits_agree_with_a_dense_reference() {
                 (None, None) => {}
             }
         }
-        println!("{name}: {missed} missed, {false_hits} false");
+        let per = |s: f64| s * 1e9 / per_surface as f64;
+        println!(
+            "| {name} | {per_surface} | {own_hits} | {missed} | {false_hits} | {:.0} | {:.0} |",
+            per(own_time),
+            per(reference_time)
+        );
         assert_eq!((missed, false_hits), (0, 0), "{name}");
     }
     println!("{rays} rays, {hits} hits: 0 missed, 0 false; worst α difference {worst_alpha:.1e}");
