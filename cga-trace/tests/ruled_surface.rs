@@ -119,15 +119,19 @@ fn compare(per_surface: usize, samples: usize) {
     use std::time::Instant;
     let mut rng = XorShiftRng::seed_from_u64(3);
     let (mut rays, mut hits, mut worst_alpha) = (0, 0, 0.0f64);
-    println!("| surface | rays | hits | missed | false | polynomial ns/ray | reference ns/ray |\n|---|---|---|---|---|---|---|");
+    println!(
+        "| surface | rays | hits | missed | false | polynomial ns/ray | reference ns/ray |\n|---|---|---|---|---|---|---|"
+    );
     for (name, surface) in surfaces() {
         let (c, r) = surface.bounds();
         let (mut missed, mut false_hits, mut own_hits) = (0, 0, 0);
         let mut test_rays = Vec::new();
         for _ in 0..per_surface {
             // From outside the bound, at a random point inside it.
-            let d = unit([rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)]).unwrap();
-            let target = add(c, [rng.random_range(-r..r), rng.random_range(-r..r), rng.random_range(-r..r)].map(|x| 0.6 * x));
+            let d =
+                unit([rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)]).unwrap();
+            let target =
+                add(c, [rng.random_range(-r..r), rng.random_range(-r..r), rng.random_range(-r..r)].map(|x| 0.6 * x));
             test_rays.push(Ray::new(sub(target, scale(d, 3.0 * r)), d).unwrap());
         }
         let start = Instant::now();

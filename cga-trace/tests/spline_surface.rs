@@ -1,6 +1,6 @@
-//! Spline surfaces (the paper's Fig. 3) hit exactly: the degree-12d polynomial of each
-//! segment against a dense reference (4,096 samples of `f` per segment, sign changes bisected
-//! and minima of `|f|` searched) on the rays of renders and on adversarial rays — in a knot
+//! Spline surfaces (the paper's Fig. 3) hit exactly: the degree-(12d − 4) polynomial of each
+//! segment against a dense reference (samples of `f` over the whole surface, sign changes
+//! bisected and minima of `|f|` searched) on the rays of renders and on adversarial rays — in a knot
 //! circle's plane, grazing the surface, through a knot — with no missed and no false hits and
 //! α to 1e-9; and the segments meet without a crack.
 

@@ -20,6 +20,9 @@ const END_STEP: f64 = 1e-6;
 /// How far from a polynomial's root (in α) a touch of `f` is looked for ([`Family::roots`]
 /// with [`Circles::REFINE`]).
 const TOUCH_REACH: f64 = 1e-4;
+/// `|f|` at or below this after Newton is a simple root placed to rounding (`f` is
+/// dimensionless: the meet of a normalised circle and line).
+const SIMPLE: f64 = 1e-13;
 
 /// A one-parameter family of circles `C_α`, `α ∈ [0, 1]`: between two circles
 /// ([`TwoCircles`]) or along one segment of a spline ([`BezierSegment`](super::BezierSegment)). It gives the circles
@@ -128,7 +131,6 @@ impl<T: Real> TwoCircles<T> {
 
 impl<T: Real> Circles<T> for TwoCircles<T> {
     type Polynomial = Bernstein<T>;
-    const REFINE: bool = true;
 
     fn at(&self, alpha: T) -> Result<Circle<T>, InterpolationError> {
         self.pair.at(alpha)
@@ -242,8 +244,7 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
                 if C::REFINE {
                     let lifted = line.lift();
                     for k in first..out.len() {
-                        out[k] = self.polish_near(&lifted, out[k]);
-                        out[k] = self.touch_near(&lifted, out[k]);
+                        out[k] = self.refine(&lifted, out[k]);
                     }
                 }
                 for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
@@ -375,7 +376,14 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
     /// Up to two Newton steps on `f` from α, each taken only if shorter than `END_STEP`, and
     /// kept only if `|f|` falls (at a double root rounding can make a step worse).
     fn polish_near(&self, line: &Line<Dual<T>>, alpha: T) -> T {
-        let Some((mut f, mut slope)) = self.f_and_slope(line, alpha) else { return alpha };
+        self.polish_near_f(line, alpha).0
+    }
+
+    /// [`Family::polish_near`], and `|f|` where it ends (infinite if `f` has no value there).
+    fn polish_near_f(&self, line: &Line<Dual<T>>, alpha: T) -> (T, T) {
+        let Some((mut f, mut slope)) = self.f_and_slope(line, alpha) else {
+            return (alpha, T::from_f64(f64::INFINITY));
+        };
         let mut best = alpha;
         for _ in 0..2 {
             let step = f / slope;
@@ -391,7 +399,15 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
             }
             (best, f, slope) = (next, f_next, slope_next);
         }
-        best
+        (best, f.abs())
+    }
+
+    /// A root placed to rounding: Newton on `f` ([`Family::polish_near`]), and where that
+    /// leaves `|f|` above rounding — a touch, where Newton converges only linearly — the
+    /// extremum of `f` nearby ([`Family::touch_near`]).
+    fn refine(&self, line: &Line<Dual<T>>, alpha: T) -> T {
+        let (alpha, f) = self.polish_near_f(line, alpha);
+        if f <= T::from_f64(SIMPLE) { alpha } else { self.touch_near(line, alpha) }
     }
 
     /// Newton steps on `f` from α, kept in [0, 1], until a step is below rounding (at most
@@ -518,6 +534,22 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
                 let t = dot(sub(x, ray.0), ray.1);
                 if t > t_min && t < t_max && best.is_none_or(|b| t < b.0) {
                     best = Some((t, x, alpha));
+                }
+            }
+        }
+        // The crossing kept is placed to rounding on f itself: a root of the polynomial
+        // carries the polynomial's conditioning, and verification accepts it within 1e-6 r.
+        if let (Some((t, x, alpha)), Some(line)) = (best, &lifted) {
+            let refined = self.refine(line, alpha);
+            let distance = |y: &E3<T>| norm(sub(*y, x));
+            let nearest = self
+                .verified(refined, ray)
+                .into_iter()
+                .min_by(|a, b| distance(a).to_f64().total_cmp(&distance(b).to_f64()));
+            if let Some(y) = nearest {
+                let t2 = dot(sub(y, ray.0), ray.1);
+                if t2 > t_min && t2 < t_max && (t2 - t).abs() <= T::from_f64(1e-6) * (t.abs() + norm(sub(x, ray.0))) {
+                    best = Some((t2, y, refined));
                 }
             }
         }
