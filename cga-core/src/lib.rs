@@ -100,6 +100,7 @@
 
 pub mod algebra;
 pub mod conformal;
+pub mod curvature;
 mod convert;
 mod display;
 mod dual;
@@ -114,6 +115,7 @@ pub mod versor;
 pub use algebra::*;
 pub use conformal::{Disk, GeometryError, down, ei, up};
 pub use dual::Dual;
+pub use curvature::{Curvature, CurvatureError, curvature};
 pub use evolved::{NormalError, NormalParts};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
 pub use meet::{Hit, RoundMeet};

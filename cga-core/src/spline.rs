@@ -139,6 +139,14 @@ impl<X> Spline<X> {
         Ok(Spline { knots, controls, degree: joining.degree() })
     }
 
+    /// The same spline with every control mapped by `f` (to another scalar type, say).
+    pub fn map<Y>(&self, f: impl Fn(X) -> Y) -> Spline<Y>
+    where
+        X: Copy,
+    {
+        Spline { knots: self.knots.iter().map(|x| f(*x)).collect(), controls: self.controls.iter().map(|x| f(*x)).collect(), degree: self.degree }
+    }
+
     /// The controls as given, normalised and aligned.
     pub fn knots(&self) -> &[X] {
         &self.knots
