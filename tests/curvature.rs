@@ -176,7 +176,9 @@ fn curvature_agrees_with_finite_differences_on_random_surfaces() {
             continue;
         }
         let x = on_circle(&c, rng.range(0.0, std::f64::consts::TAU));
-        let (Ok(k), Some((fd_k, fd_h))) = (pair.curvature(alpha, x), finite_difference(&pair, alpha, x)) else { continue };
+        let (Ok(k), Some((fd_k, fd_h))) = (pair.curvature(alpha, x), finite_difference(&pair, alpha, x)) else {
+            continue;
+        };
         // Relative to the curvature's own scale (the larger principal curvature): K and H
         // pass through zero on a saddle's and a cylinder's lines.
         let scale_k = k.k[0].abs().max(k.k[1].abs());

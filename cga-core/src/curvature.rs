@@ -104,7 +104,12 @@ const UMBILIC: f64 = 1e-6;
 
 /// `x(α, s)` near `x₀` and the unit normal there, for `α`, `s` of any scalar (duals give the
 /// derivatives).
-fn point_and_normal<T: Real, F: CircleFamily<T>>(family: &F, x0: E3<f64>, alpha: T, s: T) -> Result<(E3<T>, E3<T>), CurvatureError> {
+fn point_and_normal<T: Real, F: CircleFamily<T>>(
+    family: &F,
+    x0: E3<f64>,
+    alpha: T,
+    s: T,
+) -> Result<(E3<T>, E3<T>), CurvatureError> {
     let (circle, circle_dot) = family.with_derivative(alpha)?;
     let (c, n, r) = circle.centre_normal_radius().map_err(|_| CurvatureError::NotOnCircle)?;
     let x0 = x0.map(T::from_f64);
@@ -112,7 +117,8 @@ fn point_and_normal<T: Real, F: CircleFamily<T>>(family: &F, x0: E3<f64>, alpha:
     let e = unit(sub(d, scale(n, dot(d, n)))).ok_or(CurvatureError::NotOnCircle)?;
     let f = cross(n, e);
     let x = add(c, add(scale(e, r * s.cos()), scale(f, r * s.sin())));
-    let normal = NormalParts::new(circle, circle_dot, x).normal_line.direction().map_err(|_| CurvatureError::Singular)?;
+    let normal =
+        NormalParts::new(circle, circle_dot, x).normal_line.direction().map_err(|_| CurvatureError::Singular)?;
     Ok((x, normal))
 }
 
@@ -124,12 +130,13 @@ pub fn curvature<T: Real, F: CircleFamily<T>>(family: &F, alpha: T, x: E3<T>) ->
     // d/dα at s = 0, and d/ds at α.
     let (xa, na) = point_and_normal(&lifted, x0, Dual::variable(alpha), Dual::constant(T::zero()))?;
     let (xs, ns) = point_and_normal(&lifted, x0, Dual::constant(alpha), Dual::variable(T::zero()))?;
-    let ((p, x_a), (nu, nu_a)) = (split(xa), split(na));
+    let ((_, x_a), (nu, nu_a)) = (split(xa), split(na));
     let ((_, x_s), (_, nu_s)) = (split(xs), split(ns));
     let (e, f, g) = (dot(x_a, x_a), dot(x_a, x_s), dot(x_s, x_s));
     let (l, m, n) = (-dot(x_a, nu_a), -dot(x_s, nu_a), -dot(x_s, nu_s));
     let det = e * g - f * f;
-    if !(det > T::epsilon() * e * g) {
+    // (Written so that a NaN determinant is singular too.)
+    if det.to_f64().is_nan() || det <= T::epsilon() * e * g {
         return Err(CurvatureError::Singular);
     }
     let gaussian = (l * n - m * m) / det;
@@ -154,8 +161,14 @@ pub fn curvature<T: Real, F: CircleFamily<T>>(family: &F, alpha: T, x: E3<T>) ->
         let t = unit(x_s).ok_or(CurvatureError::Singular)?;
         directions = [t, cross(nu, t)];
     }
-    let _ = p;
-    Ok(Curvature { normal: nu, k, directions, gaussian, mean, circle_tangent: unit(x_s).ok_or(CurvatureError::Singular)? })
+    Ok(Curvature {
+        normal: nu,
+        k,
+        directions,
+        gaussian,
+        mean,
+        circle_tangent: unit(x_s).ok_or(CurvatureError::Singular)?,
+    })
 }
 
 impl<T: Real> Pair<Circle<T>> {

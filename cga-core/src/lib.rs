@@ -100,8 +100,8 @@
 
 pub mod algebra;
 pub mod conformal;
-pub mod curvature;
 mod convert;
+pub mod curvature;
 mod display;
 mod dual;
 pub mod euclid;
@@ -114,8 +114,8 @@ pub mod versor;
 
 pub use algebra::*;
 pub use conformal::{Disk, GeometryError, down, ei, up};
-pub use dual::Dual;
 pub use curvature::{Curvature, CurvatureError, curvature};
+pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
 pub use meet::{Hit, RoundMeet};

@@ -144,7 +144,11 @@ impl<X> Spline<X> {
     where
         X: Copy,
     {
-        Spline { knots: self.knots.iter().map(|x| f(*x)).collect(), controls: self.controls.iter().map(|x| f(*x)).collect(), degree: self.degree }
+        Spline {
+            knots: self.knots.iter().map(|x| f(*x)).collect(),
+            controls: self.controls.iter().map(|x| f(*x)).collect(),
+            degree: self.degree,
+        }
     }
 
     /// The controls as given, normalised and aligned.
