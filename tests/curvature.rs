@@ -8,14 +8,6 @@ use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, uni
 use cga_core::{Circle, Pair, Rotor, Sandwich};
 use common::*;
 
-/// The point at angle θ on a circle.
-fn on_circle(c: &Circle, theta: f64) -> E3 {
-    let (centre, normal, r) = c.centre_normal_radius().unwrap();
-    let u = perpendicular(normal);
-    let v = cross(normal, u);
-    add(centre, add(scale(u, r * theta.cos()), scale(v, r * theta.sin())))
-}
-
 fn relative(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
 }

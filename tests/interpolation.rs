@@ -4,7 +4,7 @@
 
 mod common;
 
-use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use cga_core::{Bivector, Circle, InterpolationError, Line, Pair, Plane, ScalarQuadvector, Sphere, interpolate};
 use common::*;
 
@@ -127,14 +127,6 @@ fn evolved_surface_normals_match_clifford() {
 /// A random circle: centre in [−5, 5]³, any normal, radius in [0.5, 3].
 fn random_circle(rng: &mut Rng) -> Circle {
     Circle::from_centre_normal_radius(rng.e3(-5.0, 5.0), rng.e3(-1.0, 1.0), rng.range(0.5, 3.0)).unwrap()
-}
-
-/// The point at angle θ on a circle.
-fn on_circle(c: &Circle, theta: f64) -> E3 {
-    let (centre, normal, r) = c.centre_normal_radius().unwrap();
-    let u = perpendicular(normal);
-    let v = cross(normal, u);
-    add(centre, add(scale(u, r * theta.cos()), scale(v, r * theta.sin())))
 }
 
 /// The point of circle `c` nearest to `x`.

@@ -5,7 +5,7 @@
 
 mod common;
 
-use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use cga_core::{Circle, InterpolationError, Joining, Pair, Spline, SplineError};
 use common::*;
 
@@ -137,14 +137,6 @@ fn catmull_rom_is_smooth_at_the_knots_and_a_corner_is_not() {
     println!("derivative jump at interior knots: Catmull–Rom ≤ {smooth:.1e}, continuity 0.8 ≥ {corner:.1e}");
     assert!(smooth < 1e-9, "{smooth:e}");
     assert!(corner > 1e-3, "{corner:e}");
-}
-
-/// The point at angle θ on a circle.
-fn on_circle(c: &Circle, theta: f64) -> E3 {
-    let (centre, normal, r) = c.centre_normal_radius().unwrap();
-    let u = perpendicular(normal);
-    let v = cross(normal, u);
-    add(centre, add(scale(u, r * theta.cos()), scale(v, r * theta.sin())))
 }
 
 /// The point of circle `c` nearest to `x`.

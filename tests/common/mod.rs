@@ -192,3 +192,13 @@ impl Real for Counted {
         Counted { x: self.x.atan2(x.x), constant: self.constant && x.constant }
     }
 }
+
+/// The point at angle θ on a circle (from the perpendicular of its normal).
+#[allow(dead_code)]
+pub fn on_circle(c: &cga_core::Circle, theta: f64) -> cga_core::euclid::E3 {
+    use cga_core::euclid::{add, cross, perpendicular, scale};
+    let (centre, normal, r) = c.centre_normal_radius().unwrap();
+    let u = perpendicular(normal);
+    let v = cross(normal, u);
+    add(centre, add(scale(u, r * theta.cos()), scale(v, r * theta.sin())))
+}
