@@ -8,6 +8,7 @@
 pub mod backend;
 pub mod bvh;
 pub mod camera;
+pub mod colour;
 pub mod film;
 pub mod format;
 pub mod frame;

@@ -90,7 +90,8 @@ struct Render {
     /// PNG encoding (overrides the scene).
     #[arg(long, value_enum)]
     encoding: Option<Encoding>,
-    /// Write a debug image instead of the shaded one.
+    /// Write a debug image instead of the shaded one: normals, α, or a curvature of swept
+    /// surfaces in false colour (viridis; the scale is written to OUTPUT.scale.json).
     #[arg(long, value_enum, default_value_t = Aov::Shaded)]
     aov: Aov,
     /// Geometry code: generated sparse types, the dense multivector, or plain vectors.
@@ -222,6 +223,28 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
     let (film, (primary, shadow, reflection)) = pool.install(|| render(&scene, args.aov, window, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
+    let film = match cga_trace::colour::false_colour(&film, args.aov) {
+        Some((coloured, scale)) => {
+            // The scale beside the image: OUTPUT.scale.json.
+            let mut beside = args.output.clone().into_os_string();
+            beside.push(".scale.json");
+            let json = serde_json::to_string_pretty(&scale)?;
+            std::fs::write(&beside, json + "\n")
+                .with_context(|| format!("writing {}", Path::new(&beside).display()))?;
+            eprintln!(
+                "{}: {} ({}) from {:.4e} (left of the bar) to {:.4e} (right), {} pixels -> {}",
+                scale.map,
+                scale.quantity,
+                scale.unit,
+                scale.low,
+                scale.high,
+                scale.pixels,
+                Path::new(&beside).display()
+            );
+            coloured
+        }
+        None => film,
+    };
     write(&film, &args.output, output, encoding, file)?;
 
     let total = primary + shadow + reflection;

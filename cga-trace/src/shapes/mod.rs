@@ -73,6 +73,12 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// baselines) and for inspection.
     fn as_any(&self) -> &dyn Any;
 
+    /// The curvature of the surface at a crossing (in the scene's frame), for surfaces swept
+    /// by circles; `None` for the others (flat or of constant curvature, not reported).
+    fn curvature(&self, _crossing: &Crossing) -> Option<cga_core::Curvature> {
+        None
+    }
+
     /// The nearest crossing and its normal.
     fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let c = self.intersect(ray, t_min, t_max)?;

@@ -206,6 +206,10 @@ impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
         Some(EvolvedSurface::bounds(self))
     }
 
+    fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
+        self.family.circles.curvature(crossing.alpha?, sub(crossing.point, self.origin))
+    }
+
     fn as_any(&self) -> &dyn std::any::Any {
         self
     }

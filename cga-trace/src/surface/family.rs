@@ -37,6 +37,11 @@ pub trait Circles<T: Real>: Clone + core::fmt::Debug {
     fn at_dual(&self, alpha: Dual<T>) -> Result<Circle<Dual<T>>, InterpolationError>;
     /// A polynomial in α whose roots in [0, 1] include every root of `f(α) = (C_α ∨ L)²`.
     fn polynomial(&self, line: &Line<T>) -> Self::Polynomial;
+    /// The curvature of the surface at `x` on `C_α` ([`cga_core::curvature()`]), where the
+    /// family knows it.
+    fn curvature(&self, _alpha: T, _x: E3<T>) -> Option<cga_core::Curvature<T>> {
+        None
+    }
     /// Whether the polynomial's roots are refined by Newton on `f` itself (up to two steps,
     /// each shorter than 1e-6 and kept only if `|f|` falls): for polynomials of high degree,
     /// whose roots carry more rounding than `f`'s own.
@@ -131,6 +136,10 @@ impl<T: Real> TwoCircles<T> {
 
 impl<T: Real> Circles<T> for TwoCircles<T> {
     type Polynomial = Bernstein<T>;
+
+    fn curvature(&self, alpha: T, x: E3<T>) -> Option<cga_core::Curvature<T>> {
+        self.pair.curvature(alpha, x).ok()
+    }
 
     fn at(&self, alpha: T) -> Result<Circle<T>, InterpolationError> {
         self.pair.at(alpha)

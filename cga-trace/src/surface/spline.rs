@@ -165,6 +165,10 @@ impl Shape for SplineSurface {
         Some((self.origin, self.radius))
     }
 
+    fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
+        self.spline.curvature(crossing.alpha?, sub(crossing.point, self.origin)).ok()
+    }
+
     fn as_any(&self) -> &dyn std::any::Any {
         self
     }
