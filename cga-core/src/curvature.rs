@@ -81,7 +81,8 @@ pub struct Curvature<T: Real = f64> {
     pub gaussian: T,
     /// Mean curvature `H = (k₁ + k₂)/2`.
     pub mean: T,
-    /// The circle's unit tangent at the point (the direction of `L_C`).
+    /// The circle's unit tangent at the point (the direction of `L_C`; for a ruled surface,
+    /// the ruling's).
     pub circle_tangent: E3<T>,
 }
 
@@ -132,8 +133,26 @@ pub fn curvature<T: Real, F: CircleFamily<T>>(family: &F, alpha: T, x: E3<T>) ->
     let (xs, ns) = point_and_normal(&lifted, x0, Dual::constant(alpha), Dual::variable(T::zero()))?;
     let ((_, x_a), (nu, nu_a)) = (split(xa), split(na));
     let ((_, x_s), (_, nu_s)) = (split(xs), split(ns));
+    let second = [-dot(x_a, nu_a), -dot(x_s, nu_a), -dot(x_s, nu_s)];
+    from_fundamental_forms(x_a, x_s, nu, second, unit(x_s).ok_or(CurvatureError::Singular)?)
+}
+
+/// `k₁ − k₂` at or below this fraction of `|H|` is an umbilic (see [`from_fundamental_forms`]).
+const UMBILIC_FRACTION: f64 = UMBILIC;
+
+/// The curvature at a point of any surface `x(u, v)` from its tangents `x_u`, `x_v`, unit
+/// normal `ν`, and second fundamental form `[L, M, N]` (`L = x_uu · ν`, `M = x_uv · ν`,
+/// `N = x_vv · ν`): `K = (LN − M²)/(EG − F²)`, `H = (EN − 2FM + GL)/(2(EG − F²))`, the principal
+/// curvatures and directions from the shape operator `I⁻¹ II`; `tangent` is the direction
+/// [`Curvature::circle_angle`] measures from (the circle's, or a ruled surface's ruling).
+pub fn from_fundamental_forms<T: Real>(
+    x_a: E3<T>,
+    x_s: E3<T>,
+    nu: E3<T>,
+    [l, m, n]: [T; 3],
+    tangent: E3<T>,
+) -> Result<Curvature<T>, CurvatureError> {
     let (e, f, g) = (dot(x_a, x_a), dot(x_a, x_s), dot(x_s, x_s));
-    let (l, m, n) = (-dot(x_a, nu_a), -dot(x_s, nu_a), -dot(x_s, nu_s));
     let det = e * g - f * f;
     // (Written so that a NaN determinant is singular too.)
     if det.to_f64().is_nan() || det <= T::epsilon() * e * g {
@@ -152,23 +171,15 @@ pub fn curvature<T: Real, F: CircleFamily<T>>(family: &F, alpha: T, x: E3<T>) ->
         // Of the two rows, the longer gives the better-conditioned null vector.
         let (u, v) = if a * a + b * b >= c * c + d * d { (-b, a) } else { (-d, c) };
         let v3 = add(scale(x_a, u), scale(x_s, v));
-        unit(v3).unwrap_or_else(|| unit(x_s).unwrap_or(x_s))
+        unit(v3).unwrap_or(tangent)
     };
     let mut directions = [direction(k[0]), direction(k[1])];
-    if root <= T::from_f64(UMBILIC) * mean.abs() {
+    if root <= T::from_f64(UMBILIC_FRACTION) * mean.abs() {
         // An umbilic: every direction is principal (k₁ and k₂ are known only to about √ε
-        // there); report the circle's and the one across.
-        let t = unit(x_s).ok_or(CurvatureError::Singular)?;
-        directions = [t, cross(nu, t)];
+        // there); report the tangent's and the one across.
+        directions = [tangent, cross(nu, tangent)];
     }
-    Ok(Curvature {
-        normal: nu,
-        k,
-        directions,
-        gaussian,
-        mean,
-        circle_tangent: unit(x_s).ok_or(CurvatureError::Singular)?,
-    })
+    Ok(Curvature { normal: nu, k, directions, gaussian, mean, circle_tangent: tangent })
 }
 
 impl<T: Real> Pair<Circle<T>> {

@@ -225,3 +225,62 @@ fn ruled_surfaces_cast_shadows_and_reflect() {
     println!("{shadowed} pixels in shadow, {reflected} showing reflections");
     assert!(shadowed > 100 && reflected > 100);
 }
+
+/// Curvature of ruled surfaces (exact second derivatives of the rulings) against central
+/// differences of the Euclidean surface `x(α, v) = a(α) + v (b(α) − a(α))` (point pairs) or
+/// `p(α) + v d(α)` (lines; p the ruling's point nearest the local origin): `K ≤ 0` always.
+#[test]
+fn curvature_matches_finite_differences() {
+    let mut rng = XorShiftRng::seed_from_u64(5);
+    let mut worst = 0.0f64;
+    for (name, surface) in surfaces() {
+        let o = surface.origin();
+        let param = |a: f64, v: f64| -> Option<E3> {
+            match surface.rulings() {
+                Rulings::PointPairs(pair) => {
+                    let [p, q] = pair.at(a).ok()?.end_points().ok()?;
+                    Some(add(p, scale(sub(q, p), v)))
+                }
+                Rulings::Lines { pair, .. } => {
+                    let l = pair.at(a).ok()?;
+                    Some(add(l.point().ok()?, scale(l.direction().ok()?, v)))
+                }
+            }
+        };
+        for _ in 0..100 {
+            let alpha = rng.random_range(0.1..0.9);
+            let v = match surface.rulings() {
+                Rulings::PointPairs(_) => rng.random_range(0.1..0.9),
+                Rulings::Lines { .. } => rng.random_range(-1.0..1.0),
+            };
+            let Some(x) = param(alpha, v) else { continue };
+            let Some(k) = surface.curvature_at(alpha, add(x, o)) else { continue };
+            let fd = |h: f64| -> Option<(f64, f64)> {
+                let (p, pa, pm) = (param(alpha, v)?, param(alpha + h, v)?, param(alpha - h, v)?);
+                let (va, vm) = (param(alpha, v + h)?, param(alpha, v - h)?);
+                let (pp, p_m, m_p, mm) = (
+                    param(alpha + h, v + h)?,
+                    param(alpha + h, v - h)?,
+                    param(alpha - h, v + h)?,
+                    param(alpha - h, v - h)?,
+                );
+                let x_a = scale(sub(pa, pm), 0.5 / h);
+                let x_v = scale(sub(va, vm), 0.5 / h);
+                let x_aa = scale(add(sub(pa, scale(p, 2.0)), pm), 1.0 / (h * h));
+                let x_av = scale(add(sub(pp, p_m), sub(mm, m_p)), 0.25 / (h * h));
+                let nu = unit(cross(x_a, x_v))?;
+                let (e, f, g) = (dot(x_a, x_a), dot(x_a, x_v), dot(x_v, x_v));
+                let (l, m) = (dot(x_aa, nu), dot(x_av, nu));
+                let det = e * g - f * f;
+                Some((-m * m / det, (g * l - 2.0 * f * m) / (2.0 * det)))
+            };
+            let (Some(a), Some(b)) = (fd(1e-3), fd(5e-4)) else { continue };
+            let (fd_k, fd_h) = ((4.0 * b.0 - a.0) / 3.0, (4.0 * b.1.abs() - a.1.abs()) / 3.0);
+            let s = k.k[0].abs().max(k.k[1].abs());
+            assert!(k.gaussian <= 1e-12 * s * s, "{name}: K = {} > 0 on a ruled surface", k.gaussian);
+            worst = worst.max((k.gaussian - fd_k).abs() / (s * s)).max((k.mean.abs() - fd_h).abs() / s);
+        }
+    }
+    println!("ruled surfaces: K and |H| within {worst:.1e} (of k_max², k_max) of finite differences");
+    assert!(worst < 1e-6, "{worst:e}");
+}

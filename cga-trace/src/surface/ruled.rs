@@ -204,6 +204,37 @@ impl RuledSurface {
         Line::from_storage(&((l_t * l_c) * i5).to_storage()).direction().ok()
     }
 
+    /// The curvature at `x` (scene frame) on the ruling at α: the surface
+    /// `x(α, v) = p(α) + v d(α)` of the ruling's point and direction, their first and second
+    /// derivatives exact (the interpolation run on dual numbers over dual numbers), `x_vv = 0`
+    /// so `K = −M²/(EG − F²) ≤ 0`; [`cga_core::from_fundamental_forms`] does the rest, with
+    /// the ruling as the tangent the postulate's angle is measured from.
+    pub fn curvature_at(&self, alpha: f64, x: E3) -> Option<cga_core::Curvature> {
+        type D2 = Dual<Dual<f64>>;
+        let a = D2 { re: Dual::variable(alpha), du: Dual { re: 1.0, du: 0.0 } };
+        let lift2 = |l: Line| l.lift().lift();
+        let (p, d) = match &self.rulings {
+            Rulings::Lines { pair, .. } => {
+                let l = Pair { c1: lift2(pair.c1), c2: lift2(pair.c2) }.at(a).ok()?;
+                (l.point().ok()?, l.direction().ok()?)
+            }
+            Rulings::PointPairs(pair) => {
+                let lift = |b: Bivector| b.lift().lift();
+                let [p, q] = Pair { c1: lift(pair.c1), c2: lift(pair.c2) }.at(a).ok()?.end_points().ok()?;
+                (p, sub(q, p))
+            }
+        };
+        // Value, first and second derivative of each coordinate.
+        let parts = |v: E3<D2>| (v.map(|c| c.re.re), v.map(|c| c.re.du), v.map(|c| c.du.du));
+        let ((p0, p1, p2), (d0, d1, d2)) = (parts(p), parts(d));
+        let v = dot(sub(sub(x, self.origin), p0), d0) / dot(d0, d0);
+        let x_a = add(p1, scale(d1, v));
+        let x_aa = add(p2, scale(d2, v));
+        let nu = unit(cross(x_a, d0))?;
+        let second = [dot(x_aa, nu), dot(d1, nu), 0.0];
+        cga_core::from_fundamental_forms(x_a, d0, nu, second, unit(d0)?).ok()
+    }
+
     /// What is interpolated, in the local frame.
     pub fn rulings(&self) -> &Rulings {
         &self.rulings
@@ -273,6 +304,10 @@ impl Shape for RuledSurface {
 
     fn bounds(&self) -> Option<(E3, f64)> {
         Some(RuledSurface::bounds(self))
+    }
+
+    fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
+        self.curvature_at(crossing.alpha?, crossing.point)
     }
 
     fn as_any(&self) -> &dyn std::any::Any {
