@@ -84,6 +84,12 @@ pub struct Curvature<T: Real = f64> {
     /// The circle's unit tangent at the point (the direction of `L_C`; for a ruled surface,
     /// the ruling's).
     pub circle_tangent: E3<T>,
+    /// The scale of the relative error of `K`, `H` from rounding:
+    /// `ε (1 + r²/|x_α|²) EG/(EG − F²)` — large where the parametrisation degenerates: near
+    /// the points every circle of a pencil passes through (there `x_α → 0`), or where `x_α`
+    /// turns along the circle. Measured errors stay within `1e-9 + 10³ condition` (the
+    /// largest, 432 times it, on a sphere; `tests/curvature.rs`).
+    pub condition: f64,
 }
 
 impl<T: Real> Curvature<T> {
@@ -134,7 +140,11 @@ pub fn curvature<T: Real, F: CircleFamily<T>>(family: &F, alpha: T, x: E3<T>) ->
     let ((_, x_a), (nu, nu_a)) = (split(xa), split(na));
     let ((_, x_s), (_, nu_s)) = (split(xs), split(ns));
     let second = [-dot(x_a, nu_a), -dot(x_s, nu_a), -dot(x_s, nu_s)];
-    from_fundamental_forms(x_a, x_s, nu, second, unit(x_s).ok_or(CurvatureError::Singular)?)
+    let mut k = from_fundamental_forms(x_a, x_s, nu, second, unit(x_s).ok_or(CurvatureError::Singular)?)?;
+    // x_s has length r: the α-speed against it.
+    let speed = dot(x_a, x_a) / dot(x_s, x_s);
+    k.condition *= 1.0 + 1.0 / speed.to_f64();
+    Ok(k)
 }
 
 /// `k₁ − k₂` at or below this fraction of `|H|` is an umbilic (see [`from_fundamental_forms`]).
@@ -179,7 +189,8 @@ pub fn from_fundamental_forms<T: Real>(
         // there); report the tangent's and the one across.
         directions = [tangent, cross(nu, tangent)];
     }
-    Ok(Curvature { normal: nu, k, directions, gaussian, mean, circle_tangent: tangent })
+    let condition = T::epsilon().to_f64() * (e * g / det).to_f64();
+    Ok(Curvature { normal: nu, k, directions, gaussian, mean, circle_tangent: tangent, condition })
 }
 
 impl<T: Real> Pair<Circle<T>> {

@@ -450,6 +450,7 @@ mod tests {
                 gaussian: 0.25,
                 mean,
                 circle_tangent: [0.0, 1.0, 0.0],
+                condition: 0.0,
             };
             for aov in [Aov::Mean, Aov::K1, Aov::K2] {
                 assert_eq!(aov.value(&k, [-1.0, 0.0, 0.0], 1.0), 0.5, "{aov:?}");
