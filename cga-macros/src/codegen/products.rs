@@ -45,7 +45,7 @@ impl Gen<'_> {
                 impl<T: #real> #tr<#ri<T>> for #li<T> {
                     type Output = #out_ty;
                     #[doc = #doc]
-                    #[inline]
+                    #[inline(always)]
                     fn #m(self, rhs: #ri<T>) -> #out_ty {
                         let (a, b) = (self, rhs);
                         #body
@@ -58,7 +58,7 @@ impl Gen<'_> {
                     impl<T: #real> core::ops::#ot<#ri<T>> for #li<T> {
                         type Output = #out_ty;
                         #[doc = #doc]
-                        #[inline]
+                        #[inline(always)]
                         fn #om(self, rhs: #ri<T>) -> #out_ty {
                             #tr::#m(self, rhs)
                         }
@@ -144,7 +144,7 @@ impl Gen<'_> {
                 impl<T: #real> Sandwich<#xi<T>> for #vi<T> {
                     type Output = #out_ty;
                     #[doc = #doc]
-                    #[inline]
+                    #[inline(always)]
                     #[allow(unused_variables)]
                     fn sandwich(self, x: #xi<T>) -> #out_ty {
                         let v = self;
