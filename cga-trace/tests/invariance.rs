@@ -31,6 +31,10 @@ impl Similarity {
     }
 
     fn circle(&self, c: &mut Table) {
+        if let Some(Value::Array(points)) = c.get_mut("points") {
+            points.iter_mut().for_each(|p| self.point(p));
+            return;
+        }
         // A circle given as orthonormal blade coefficients is first read as centre, normal,
         // radius (near the origin, where the file's digits are exact enough), then moved.
         if let Some(blade) = c.remove("blade") {
@@ -77,6 +81,24 @@ impl Similarity {
                 if let Some(c) = object.get_mut(key).and_then(Value::as_table_mut) {
                     self.circle(c);
                 }
+            }
+            // Spline surfaces' circles; ruled surfaces' point pairs, lines and bound.
+            if let Some(Value::Array(circles)) = object.get_mut("circles") {
+                circles.iter_mut().filter_map(Value::as_table_mut).for_each(|c| self.circle(c));
+            }
+            for key in ["p1", "p2", "points"] {
+                if let Some(Value::Array(points)) = object.get_mut(key) {
+                    points.iter_mut().for_each(|p| self.point(p));
+                }
+            }
+            for key in ["l1", "l2"] {
+                if let Some(line) = object.get_mut(key).and_then(Value::as_table_mut) {
+                    self.point(line.get_mut("point").expect("point"));
+                }
+            }
+            if let Some(bound) = object.get_mut("bound").and_then(Value::as_table_mut) {
+                self.point(bound.get_mut("centre").expect("centre"));
+                self.length(bound.get_mut("radius").expect("radius"));
             }
         }
     }
@@ -129,6 +151,10 @@ fn difference(a: &[u8], b: &[u8]) -> (f64, f64) {
 }
 
 fn check<B: Backend>(width: u32, height: u32) {
+    check_scenes::<B>(&["primitives.toml", "surface.toml", "combined.toml"], width, height);
+}
+
+fn check_scenes<B: Backend>(names: &[&str], width: u32, height: u32) {
     let moves = [
         ("shifted 1e3", 1.0, 1e3),
         ("shifted 1e4", 1.0, 1e4),
@@ -138,7 +164,7 @@ fn check<B: Backend>(width: u32, height: u32) {
         ("scaled 1e3", 1e3, 0.0),
     ];
     let mut failures = Vec::new();
-    for name in ["primitives.toml", "surface.toml", "combined.toml"] {
+    for &name in names {
         let original = picture::<B>(&load(name, None, width, height));
         for (what, scale, shift) in moves {
             let moved = picture::<B>(&load(name, Some(&Similarity { scale, shift }), width, height));
@@ -160,6 +186,12 @@ fn sparse_pictures_do_not_depend_on_place_or_scale() {
 #[test]
 fn plain_pictures_do_not_depend_on_place_or_scale() {
     check::<Plain>(96, 72);
+}
+
+/// The spline and ruled scenes (smaller: a debug build intersects their surfaces slowly).
+#[test]
+fn spline_and_ruled_pictures_do_not_depend_on_place_or_scale() {
+    check_scenes::<Sparse>(&["fig3b.toml", "ruled.toml"], 48, 36);
 }
 
 #[test]
