@@ -121,6 +121,14 @@ fn coplanar_circles_sweep_the_plane() {
     assert!(worst < 1e-9, "{worst:e}");
 }
 
+/// Whether `c` has grown beyond ten times the size (radius, or distance from the origin) of
+/// every circle of `given`: there the family passes near a line, and second differences of
+/// the surface lose `ε|x|/h²` to rounding.
+fn outgrown(c: &Circle, given: &[Circle]) -> bool {
+    let size = |c: &Circle| c.centre_normal_radius().map_or(f64::INFINITY, |(c, _, r)| r.max(norm(c)));
+    size(c) > 10.0 * given.iter().map(size).fold(0.0, f64::max)
+}
+
 /// A random circle: centre in [−3, 3]³, any normal, radius in [0.5, 2].
 fn random_circle(rng: &mut Rng) -> Circle {
     Circle::from_centre_normal_radius(rng.e3(-3.0, 3.0), rng.e3(-1.0, 1.0), rng.range(0.5, 2.0)).unwrap()
@@ -168,8 +176,7 @@ fn curvature_agrees_with_finite_differences_on_random_surfaces() {
         // Where the family passes near a line its circles grow without bound, and second
         // differences lose ε|x|/h² to rounding: compare where circles stay within 10 radii of
         // the ends' size (the analytic values hold everywhere; the reference does not).
-        let r = |c: &Circle| c.centre_normal_radius().map_or(f64::INFINITY, |(c, _, r)| r.max(norm(c)));
-        if r(&c) > 10.0 * r(&pair.c1).max(r(&pair.c2)) {
+        if outgrown(&c, &[pair.c1, pair.c2]) {
             continue;
         }
         let x = on_circle(&c, rng.range(0.0, std::f64::consts::TAU));
@@ -215,8 +222,7 @@ fn spline_curvature_agrees_with_finite_differences() {
         let alpha = (rng.range(0.0, 3.0).floor() + rng.range(0.1, 0.9)) / 3.0;
         let Ok(c) = spline.at(alpha) else { continue };
         // As above: where circles grow far beyond the controls, the differences lose precision.
-        let size = |c: &Circle| c.centre_normal_radius().map_or(f64::INFINITY, |(c, _, r)| r.max(norm(c)));
-        if size(&c) > 10.0 * controls.iter().map(size).fold(0.0, f64::max) {
+        if outgrown(&c, &controls) {
             continue;
         }
         let x = on_circle(&c, rng.range(0.0, std::f64::consts::TAU));

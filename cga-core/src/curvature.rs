@@ -147,9 +147,6 @@ pub fn curvature<T: Real, F: CircleFamily<T>>(family: &F, alpha: T, x: E3<T>) ->
     Ok(k)
 }
 
-/// `k₁ − k₂` at or below this fraction of `|H|` is an umbilic (see [`from_fundamental_forms`]).
-const UMBILIC_FRACTION: f64 = UMBILIC;
-
 /// The curvature at a point of any surface `x(u, v)` from its tangents `x_u`, `x_v`, unit
 /// normal `ν`, and second fundamental form `[L, M, N]` (`L = x_uu · ν`, `M = x_uv · ν`,
 /// `N = x_vv · ν`): `K = (LN − M²)/(EG − F²)`, `H = (EN − 2FM + GL)/(2(EG − F²))`, the principal
@@ -184,7 +181,7 @@ pub fn from_fundamental_forms<T: Real>(
         unit(v3).unwrap_or(tangent)
     };
     let mut directions = [direction(k[0]), direction(k[1])];
-    if root <= T::from_f64(UMBILIC_FRACTION) * mean.abs() {
+    if root <= T::from_f64(UMBILIC) * mean.abs() {
         // An umbilic: every direction is principal (k₁ and k₂ are known only to about √ε
         // there); report the tangent's and the one across.
         directions = [tangent, cross(nu, tangent)];

@@ -79,3 +79,13 @@ pub fn perpendicular<T: Real>(n: E3<T>) -> E3<T> {
     let p = cross(n, axis);
     scale(p, T::one() / norm(p))
 }
+
+/// The distance of `x` from the circle of centre `c`, unit normal `n` and radius `r`, in
+/// radii: `√(h² + (ρ − r)²) / r`, `h` the height of `x` above the circle's plane and `ρ` its
+/// distance from the axis.
+pub fn circle_distance<T: Real>(x: E3<T>, (c, n, r): (E3<T>, E3<T>, T)) -> T {
+    let d = sub(x, c);
+    let along = dot(d, n);
+    let across = norm(sub(d, scale(n, along)));
+    (along * along + (across - r) * (across - r)).sqrt() / r
+}

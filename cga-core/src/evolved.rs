@@ -14,7 +14,7 @@
 //! its `Ċ`, `Ω`, `Ẋ`, `L_T` and `N` are the negatives of these (the golden files use it).
 
 use crate::conformal::{GeometryError, ei, up};
-use crate::euclid::{E3, cross, dot, norm, scale, sub};
+use crate::euclid::{E3, circle_distance, cross, dot, norm, sub};
 use crate::interpolate::{InterpolationError, Pair};
 use crate::spline::Spline;
 use crate::{Bivector, Circle, Line, Pseudoscalar, Real, Vector};
@@ -86,11 +86,7 @@ impl<T: Real> NormalParts<T> {
     /// [`accuracy`](crate::interpolate::accuracy) radii (else `OffCircle`).
     pub fn unit_normal(&self, x: E3<T>) -> Result<E3<T>, NormalError> {
         let limit = crate::interpolate::accuracy::<T>();
-        let (c, n, r) = self.circle.centre_normal_radius()?;
-        let d = sub(x, c);
-        let along = dot(d, n);
-        let across = norm(sub(d, scale(n, along)));
-        let distance = ((along * along + (across - r) * (across - r)).sqrt() / r).to_f64();
+        let distance = circle_distance(x, self.circle.centre_normal_radius()?).to_f64();
         if distance.is_nan() || distance > limit {
             return Err(NormalError::OffCircle { distance });
         }
@@ -114,11 +110,7 @@ impl<T: Real> Pair<Circle<T>> {
     /// circles' relative difference `(|c₁ − c₂| + |r₁ − r₂| + r ∠(n₁, n₂)) / r`, `r` the
     /// smaller radius and `ρ` as in [`Pair::condition`].
     pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
-        let estimate = self.normal_condition();
-        if estimate.is_nan() || estimate > crate::interpolate::accuracy::<T>() {
-            return Err(NormalError::IllConditioned { estimate });
-        }
-        self.normal_parts(alpha, x)?.unit_normal(x)
+        checked_normal(self.normal_condition(), || self.normal_parts(alpha, x), x)
     }
 
     /// The expected angle error of [`Pair::normal`] (radians): see there.
@@ -147,10 +139,19 @@ impl<T: Real> Spline<Circle<T>> {
     /// The unit Euclidean normal at `x` on `C_α`, checked as [`Pair::normal`] checks it
     /// (`OffCircle`; `IllConditioned` when [`Spline::condition`] exceeds the accuracy).
     pub fn normal(&self, alpha: T, x: E3<T>) -> Result<E3<T>, NormalError> {
-        let estimate = self.condition();
-        if estimate.is_nan() || estimate > crate::interpolate::accuracy::<T>() {
-            return Err(NormalError::IllConditioned { estimate });
-        }
-        self.normal_parts(alpha, x)?.unit_normal(x)
+        checked_normal(self.condition(), || self.normal_parts(alpha, x), x)
     }
+}
+
+/// The unit normal at `x` from `parts`, refused as `IllConditioned` when the expected error
+/// `estimate` exceeds [`accuracy`](crate::interpolate::accuracy).
+fn checked_normal<T: Real>(
+    estimate: f64,
+    parts: impl FnOnce() -> Result<NormalParts<T>, InterpolationError>,
+    x: E3<T>,
+) -> Result<E3<T>, NormalError> {
+    if estimate.is_nan() || estimate > crate::interpolate::accuracy::<T>() {
+        return Err(NormalError::IllConditioned { estimate });
+    }
+    parts()?.unit_normal(x)
 }

@@ -193,11 +193,15 @@ interpolable!(
 );
 
 /// `C2` or `−C2`, whichever is oriented like `C1`: the sign of `⟨C1 C̃2⟩₀` must be that of
-/// `⟨C1 C̃1⟩₀`. Without this, `C2 ≈ −C1` makes `X` pass through zero.
+/// `⟨C1 C̃1⟩₀`. Without this, `C2 ≈ −C1` makes `X` pass through zero. Where `⟨C1 C̃2⟩₀` is zero
+/// to rounding (perpendicular point pairs or lines, say) its sign says nothing — rounding
+/// would choose between two different interpolations, and moving or scaling the objects
+/// could choose the other — so `C2` is kept the way it was given.
 #[inline]
 pub fn align<T: Real, X: Interpolable<T>>(c1: X, c2: X) -> X {
     let (own, cross) = (c1.scalar_product(c1), c1.scalar_product(c2));
-    if (own < T::zero()) != (cross < T::zero()) { -c2 } else { c2 }
+    let undecided = cross.abs() <= T::from_f64(64.0) * T::epsilon() * (own * c2.scalar_product(c2)).abs().sqrt();
+    if !undecided && (own < T::zero()) != (cross < T::zero()) { -c2 } else { c2 }
 }
 
 /// `C_α = K⁻¹ X / √|⟨…⟩₀|` for `X = (1 − α) C1 + α C2`, `K` the principal root of `−X X̃`.

@@ -102,11 +102,6 @@ impl Film {
         self.image(|v| if v.is_nan() { 0.0 } else { (v as f32).clamp(-f32::MAX, f32::MAX) })
     }
 
-    /// Write a PNG (8-bit).
-    pub fn save_png(&self, path: &Path, encoding: Encoding) -> Result<(), image::ImageError> {
-        self.to_rgb8(encoding).save_with_format(path, ImageFormat::Png)
-    }
-
     /// Write the film in `output`'s format to `w` (`encoding` applies to PNG only).
     pub fn write<W: Write + Seek>(&self, w: &mut W, output: Output, encoding: Encoding) -> Result<(), OutputError> {
         match output {

@@ -150,38 +150,32 @@ fn one_line(e: &anyhow::Error) -> String {
 
 #[cfg(feature = "evolved")]
 fn mesh_command(args: MeshArgs) -> anyhow::Result<()> {
-    use cga_trace::mesh::MeshFormat;
-    let format = MeshFormat::of(&args.output)?;
-    let file =
-        std::fs::File::create(&args.output).with_context(|| format!("cannot write {}", args.output.display()))?;
-    let result = (|| -> anyhow::Result<usize> {
+    let format = cga_trace::mesh::MeshFormat::of(&args.output)?;
+    let triangles = write_or_remove(&args.output, |file| {
         let scene = Scene::load(&args.scene)?;
         let mesh = scene.mesh(&args.object, args.rings, args.segments)?;
         mesh.save(file, format).with_context(|| format!("writing {}", args.output.display()))?;
         Ok(mesh.triangles.len())
-    })();
-    match result {
-        Ok(triangles) => {
-            eprintln!("{triangles} triangles -> {}", args.output.display());
-            Ok(())
-        }
-        Err(e) => {
-            let _ = std::fs::remove_file(&args.output);
-            Err(e)
-        }
+    })?;
+    eprintln!("{triangles} triangles -> {}", args.output.display());
+    Ok(())
+}
+
+/// Create `path` (so that a path that cannot be written fails before any work), hand it to
+/// `work`, and remove it again if `work` fails.
+fn write_or_remove<T>(path: &Path, work: impl FnOnce(std::fs::File) -> anyhow::Result<T>) -> anyhow::Result<T> {
+    let file = std::fs::File::create(path).with_context(|| format!("cannot write {}", path.display()))?;
+    let result = work(file);
+    if result.is_err() {
+        let _ = std::fs::remove_file(path);
     }
+    result
 }
 
 fn render_command(args: Render) -> anyhow::Result<()> {
     // Everything that can be wrong with the output is found before any rendering.
     let output = Output::for_path(&args.output, args.bit_depth)?;
-    let file =
-        std::fs::File::create(&args.output).with_context(|| format!("cannot write {}", args.output.display()))?;
-    let result = render_to(&args, output, file);
-    if result.is_err() {
-        let _ = std::fs::remove_file(&args.output);
-    }
-    result
+    write_or_remove(&args.output, |file| render_to(&args, output, file))
 }
 
 fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Result<()> {

@@ -13,7 +13,7 @@ use crate::frame::Frame;
 use crate::scene::Scene;
 use crate::shapes::Shape;
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
-use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga_core::euclid::{E3, add, cross, dot, perpendicular, scale, sub, unit};
 use std::io::Write;
 use std::path::Path;
 
@@ -48,6 +48,15 @@ impl Swept for SplineSurface {
         let parts = self.spline().normal_parts(alpha, sub(x, self.origin())).ok()?;
         parts.normal_line.direction().ok()
     }
+}
+
+/// `Resolution` unless `1 ≤ rings ≤ 65536`, `least ≤ segments ≤ 65536` and every vertex has
+/// a `u32` index.
+fn check_resolution(rings: usize, segments: usize, least: usize) -> Result<(), MeshError> {
+    let ok = (1..=1 << 16).contains(&rings)
+        && (least..=1 << 16).contains(&segments)
+        && (rings + 1) * (segments + 1) <= u32::MAX as usize;
+    ok.then_some(()).ok_or(MeshError::Resolution)
 }
 
 /// A swept surface of a shape, if it is one.
@@ -121,12 +130,7 @@ impl Mesh {
     /// `rings + 1` circles at `α = i / rings`, each `segments + 1` vertices around (the last
     /// repeating the first), positions and normals moved out of `frame` to world coordinates.
     pub fn of(surface: &dyn Swept, frame: &Frame, rings: usize, segments: usize) -> Result<Mesh, MeshError> {
-        if !(1..=1 << 16).contains(&rings)
-            || !(3..=1 << 16).contains(&segments)
-            || (rings + 1) * (segments + 1) > u32::MAX as usize
-        {
-            return Err(MeshError::Resolution);
-        }
+        check_resolution(rings, segments, 3)?;
         let mut mesh = Mesh::default();
         let mut across: Option<E3> = None;
         for i in 0..=rings {
@@ -145,32 +149,37 @@ impl Mesh {
                 mesh.uvs.push([alpha, j as f64 / segments as f64]);
             }
         }
-        let at = |i: usize, j: usize| (i * (segments + 1) + j) as u32;
-        for i in 0..rings {
-            for j in 0..segments {
-                mesh.triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
-                mesh.triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
-            }
-        }
-        mesh.orient(rings, segments);
+        mesh.finish(rings, segments, true);
         Ok(mesh)
     }
 
-    /// Turn each analytic normal to the side the winding makes front: the sign of eq. 6–11's
-    /// `N` follows the circles' orientation, not the mesh's.
-    fn orient(&mut self, rings: usize, segments: usize) {
+    /// Triangulate the `(rings + 1) × (segments + 1)` grid of vertices, and turn each analytic
+    /// normal to the side the winding makes front (the sign of eq. 6–11's `N` follows the
+    /// circles' orientation, not the mesh's); a zero normal (a singular point) becomes the
+    /// grid's own. `closed`: the columns wrap around (the seam's two columns are one, their
+    /// neighbours columns 1 and n − 1).
+    fn finish(&mut self, rings: usize, segments: usize, closed: bool) {
         let w = segments + 1;
+        let at = |i: usize, j: usize| (i * w + j) as u32;
+        for i in 0..rings {
+            for j in 0..segments {
+                self.triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+                self.triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+            }
+        }
         for i in 0..=rings {
             for j in 0..=segments {
                 let p = |i: usize, j: usize| self.positions[i * w + j];
                 let (i0, i1) = (i.saturating_sub(1), (i + 1).min(rings));
-                // The seam's two columns are one: their neighbours are columns 1 and n − 1.
-                let (j0, j1) = if j == 0 || j == segments { (segments - 1, 1) } else { (j - 1, j + 1) };
-                let along = sub(p(i1, j), p(i0, j));
-                let around = sub(p(i, j1), p(i, j0));
-                let geometric = cross(along, around);
+                let (j0, j1) = match (closed, j) {
+                    (true, j) if j == 0 || j == segments => (segments - 1, 1),
+                    _ => (j.saturating_sub(1), (j + 1).min(segments)),
+                };
+                let geometric = cross(sub(p(i1, j), p(i0, j)), sub(p(i, j1), p(i, j0)));
                 let k = i * w + j;
-                if dot(geometric, self.normals[k]) < 0.0 {
+                if self.normals[k] == [0.0; 3] {
+                    self.normals[k] = unit(geometric).unwrap_or([0.0, 0.0, 1.0]);
+                } else if dot(geometric, self.normals[k]) < 0.0 {
                     self.normals[k] = self.normals[k].map(|x| -x);
                 }
             }
@@ -301,12 +310,7 @@ impl Mesh {
     /// analytic normals (the grid's own where the surface is singular, `N = 0`), texture
     /// coordinates `(α, j / segments)`.
     pub fn of_ruled(surface: &RuledSurface, frame: &Frame, rings: usize, segments: usize) -> Result<Mesh, MeshError> {
-        if !(1..=1 << 16).contains(&rings)
-            || !(1..=1 << 16).contains(&segments)
-            || (rings + 1) * (segments + 1) > u32::MAX as usize
-        {
-            return Err(MeshError::Resolution);
-        }
+        check_resolution(rings, segments, 1)?;
         let mut mesh = Mesh::default();
         for i in 0..=rings {
             let alpha = i as f64 / rings as f64;
@@ -319,28 +323,7 @@ impl Mesh {
                 mesh.uvs.push([alpha, v]);
             }
         }
-        let w = segments + 1;
-        let at = |i: usize, j: usize| (i * w + j) as u32;
-        for i in 0..rings {
-            for j in 0..segments {
-                mesh.triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
-                mesh.triangles.push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
-            }
-        }
-        // Normals to the winding's front, from the grid's own tangents.
-        for i in 0..=rings {
-            for j in 0..=segments {
-                let p = |i: usize, j: usize| mesh.positions[i * w + j];
-                let along = sub(p((i + 1).min(rings), j), p(i.saturating_sub(1), j));
-                let across = sub(p(i, (j + 1).min(segments)), p(i, j.saturating_sub(1)));
-                let (k, geometric) = (i * w + j, cross(along, across));
-                if mesh.normals[k] == [0.0; 3] {
-                    mesh.normals[k] = unit(geometric).unwrap_or([0.0, 0.0, 1.0]);
-                } else if dot(geometric, mesh.normals[k]) < 0.0 {
-                    mesh.normals[k] = mesh.normals[k].map(|x| -x);
-                }
-            }
-        }
+        mesh.finish(rings, segments, false);
         Ok(mesh)
     }
 }
@@ -363,12 +346,4 @@ impl Scene {
     fn object(&self, name: &str) -> Result<&crate::scene::Object, MeshError> {
         self.objects.iter().find(|o| o.name == name).ok_or_else(|| MeshError::NoObject(name.into()))
     }
-}
-
-/// The distance from `x` to `C_α` (centre `c`, unit normal `n`, radius `r`), in radii.
-pub fn off_circle(x: E3, (c, n, r): (E3, E3, f64)) -> f64 {
-    let d = sub(x, c);
-    let along = dot(d, n);
-    let across = norm(sub(d, scale(n, along)));
-    (along * along + (across - r) * (across - r)).sqrt() / r
 }

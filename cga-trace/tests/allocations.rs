@@ -1,5 +1,6 @@
 //! No allocation per ray or pixel: tracing every pixel of the combined scene (evolved surface,
-//! shadows, reflections) and of a scene of 200 spheres (through the BVH) allocates nothing.
+//! shadows, reflections), of a scene of 200 spheres (through the BVH), of a cubic spline surface
+//! and of the ruled surfaces allocates nothing.
 
 use cga_trace::{Renderer, Scene};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -44,7 +45,16 @@ fn tracing_allocates_nothing() {
     let combined = Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/combined.toml")))
         .expect("the combined scene");
     let many = Scene::parse(&spheres(200), "spheres.toml").expect("a scene of spheres");
-    for scene in [&combined, &many] {
+    // Spline surfaces (cubic Bézier segments, degree-32 polynomials) and ruled surfaces too;
+    // smaller, for a debug build.
+    let shipped = |name: &str| {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
+        let mut scene = Scene::load(&path).expect(name);
+        scene.resize(Some(80), None).unwrap();
+        scene
+    };
+    let (spline, ruled) = (shipped("fig3c.toml"), shipped("ruled.toml"));
+    for scene in [&combined, &many, &spline, &ruled] {
         let renderer = Renderer::new(scene);
         let camera = &scene.camera;
         let rays: Vec<_> = (0..camera.height)

@@ -4,9 +4,10 @@
 //! glb — and every normal is the analytic one (eq. 6–11) recomputed at the read-back point,
 //! and faces the winding's front wherever the grid resolves the surface.
 
+use cga_core::euclid::circle_distance;
 use cga_core::euclid::{E3, cross, dot, norm, sub};
 use cga_trace::Scene;
-use cga_trace::mesh::{Mesh, Swept, off_circle};
+use cga_trace::mesh::{Mesh, Swept};
 use std::path::Path;
 
 fn scene(name: &str) -> Scene {
@@ -84,7 +85,7 @@ fn check(back: &ReadBack, surface: &dyn Swept, scene: &Scene, triangles: usize) 
     for ((x, n), uv) in back.positions.iter().zip(&back.normals).zip(&back.uvs) {
         let x = scene.frame.point(*x);
         let circle = surface.circle(uv[0]).unwrap();
-        off = off.max(off_circle(x, circle));
+        off = off.max(circle_distance(x, circle));
         let analytic = surface.normal(uv[0], x).unwrap();
         angle = angle.max(norm(cross(*n, analytic)).atan2(dot(*n, analytic).abs()) + (norm(*n) - 1.0).abs());
     }

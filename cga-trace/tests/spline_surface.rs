@@ -5,7 +5,7 @@
 //! α to 1e-9; and the segments meet without a crack.
 
 use cga_core::Joining;
-use cga_core::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub, unit};
+use cga_core::euclid::{E3, add, circle_distance, cross, dot, perpendicular, scale, sub, unit};
 use cga_core::{Circle, Dual, InterpolationError, Line, Spline};
 use cga_trace::camera::Camera;
 use cga_trace::ray::Ray;
@@ -315,13 +315,8 @@ fn against_the_reference(rays_per_surface: Option<usize>, samples: usize, method
 
 /// Distance of `x` from `C_α`, in radii.
 fn on_its_circle(surface: &SplineSurface, alpha: f64, x: E3) -> f64 {
-    let Some((c, n, r)) = surface.spline().at(alpha).ok().and_then(|c| c.centre_normal_radius().ok()) else {
-        return f64::INFINITY;
-    };
-    let d = sub(sub(x, surface.origin()), c);
-    let along = dot(d, n);
-    let across = norm(sub(d, scale(n, along)));
-    (along * along + (across - r) * (across - r)).sqrt() / r
+    let circle = surface.spline().at(alpha).ok().and_then(|c| c.centre_normal_radius().ok());
+    circle.map_or(f64::INFINITY, |c| circle_distance(sub(x, surface.origin()), c))
 }
 
 /// Neighbouring segments meet on the same knot circle: rays aimed at points of every knot

@@ -12,10 +12,10 @@ mod transform;
 
 pub(crate) use numbers::{number, numbers};
 
-use crate::camera::Camera;
+use crate::camera::{Camera, CameraError};
 use crate::frame::Frame;
 use crate::light::Light;
-use crate::limits::{MAX_PIXELS, MAX_SIDE};
+use crate::limits::MAX_SIDE;
 use crate::material::Material;
 use crate::scene::{Invalid, Object};
 use crate::settings::Settings;
@@ -76,18 +76,6 @@ impl CameraSpec {
             _ => return Err(Invalid::Value("give either `motor`, or `position` and `look_at`")),
         };
         let (width, height) = (*self.width.get_ref(), *self.height.get_ref());
-        if width > MAX_SIDE || height > MAX_SIDE || u64::from(width) * u64::from(height) > MAX_PIXELS {
-            let field = if width > MAX_SIDE || height <= MAX_SIDE {
-                ("width", self.width.span())
-            } else {
-                ("height", self.height.span())
-            };
-            return Err(Invalid::at(
-                field.0,
-                field.1,
-                Invalid::Camera(crate::camera::CameraError::TooLarge { width, height }),
-            ));
-        }
         let value = |x: &Option<Spanned<Num>>| x.as_ref().map(|x| x.get_ref().0);
         let focal = value(&self.focal_length).unwrap_or(1.0);
         let x_max = match (&self.x_max, &self.fov) {
@@ -106,7 +94,15 @@ impl CameraSpec {
         };
         let pinned = self.y_max.is_some() && (self.x_max.is_some() || self.fov.is_some());
         let y_max = value(&self.y_max).unwrap_or(x_max * f64::from(height) / f64::from(width.max(1)));
-        Ok((Camera::new(pose, focal, x_max, y_max, width, height)?, pinned))
+        let camera = Camera::new(pose, focal, x_max, y_max, width, height).map_err(|e| match e {
+            // Camera::new holds the size limit; the error points at the side that breaks it.
+            CameraError::TooLarge { .. } if height > MAX_SIDE && width <= MAX_SIDE => {
+                Invalid::at("height", self.height.span(), e.into())
+            }
+            CameraError::TooLarge { .. } => Invalid::at("width", self.width.span(), e.into()),
+            e => e.into(),
+        })?;
+        Ok((camera, pinned))
     }
 }
 

@@ -30,7 +30,7 @@ pub struct Bernstein<T, const N: usize = { MAX_DEGREE + 1 }> {
 }
 
 /// `C(n, k)` for `n ≤ 36` (exact in f64: the largest, `C(36, 18)`, is below 2⁵³).
-fn binomial(n: usize, k: usize) -> f64 {
+pub(crate) fn binomial(n: usize, k: usize) -> f64 {
     const M: usize = LARGEST_DEGREE + 1;
     const ROWS: [[f64; M]; M] = {
         let mut t = [[0.0; M]; M];

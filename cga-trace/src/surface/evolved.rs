@@ -31,6 +31,16 @@ pub struct EvolvedSurface<C = TwoCircles<f64>> {
 /// normals by less than this in angle, are one circle ([`SurfaceError::SameCircle`]).
 const SAME_CIRCLE: f64 = 1e-12;
 
+/// `Err(SameCircle)` if two circles `(centre, unit normal, radius)` are one circle, the same
+/// way round or reversed: a family between them sweeps nothing.
+pub(super) fn distinct((p1, n1, r1): (E3, E3, f64), (p2, n2, r2): (E3, E3, f64)) -> Result<(), SurfaceError> {
+    let close = SAME_CIRCLE * r1.max(r2);
+    if norm(sub(p1, p2)) <= close && (r1 - r2).abs() <= close && norm(cross(n1, n2)) <= SAME_CIRCLE {
+        return Err(SurfaceError::SameCircle { reversed: dot(n1, n2) < 0.0 });
+    }
+    Ok(())
+}
+
 /// The bounding sphere is sampled this finely, then padded.
 const BOUND_SAMPLES: usize = 512;
 
@@ -68,10 +78,7 @@ impl EvolvedSurface {
         let parts =
             |c: Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
         let ((p1, n1, r1), (p2, n2, r2)) = (parts(c1, 1)?, parts(c2, 2)?);
-        let close = SAME_CIRCLE * r1.max(r2);
-        if norm(sub(p1, p2)) <= close && (r1 - r2).abs() <= close && norm(cross(n1, n2)) <= SAME_CIRCLE {
-            return Err(SurfaceError::SameCircle { reversed: dot(n1, n2) < 0.0 });
-        }
+        distinct((p1, n1, r1), (p2, n2, r2))?;
         let blade = |(centre, normal, radius), which| {
             Circle::from_centre_normal_radius(centre, normal, radius)
                 .map_err(|reason| SurfaceError::NotACircle { which, reason })
@@ -162,8 +169,13 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// The nearest crossing with `t_min < t < t_max`. Only the ray's origin and direction
     /// are read: the surface builds its line in its own frame, so every back end shares this.
     pub fn intersect<L>(&self, ray: &Ray<L>, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let local = self.local_ray(ray, t_min, t_max)?;
-        let alphas = self.candidates(&local, t_min, t_max);
+        self.intersect_local(&self.local_ray(ray, t_min, t_max)?, t_min, t_max)
+    }
+
+    /// [`EvolvedSurface::intersect`] for a ray already in the local frame (surfaces sharing a
+    /// frame, the segments of a spline, build it once).
+    pub fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let alphas = self.candidates(local, t_min, t_max);
         let polish = self.method.finder(1).polishes();
         let ray = (local.origin, local.dir, &local.line);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;

@@ -70,23 +70,6 @@ fn plucker(a: &Line, b: &Line) -> f64 {
     (*a * *b).e123i
 }
 
-/// The two blades normalised, each kept the way round the file gives it (`[a, b]`: the
-/// ruling runs from where `a` goes to where `b` goes; a line's direction). `Pair::new`
-/// would turn the second to agree in sign with the first, which is undecided when
-/// `⟨B₁ B̃₂⟩₀ = 0` (perpendicular pairs, as in `ruled.toml`) — rounding then picks one of
-/// two different surfaces, and moving or scaling the scene can pick the other. Opposite
-/// blades (the same pair given the other way round) meet `X = 0` and are refused when the
-/// surface is bounded.
-fn as_given<X: Interpolable<f64>>(b1: X, b2: X) -> Result<Pair<X>, SurfaceError> {
-    use cga_core::InterpolationError as E;
-    let pair = Pair { c1: b1.try_normalised().ok_or(E::Degenerate)?, c2: b2.try_normalised().ok_or(E::Degenerate)? };
-    let estimate = pair.condition();
-    if estimate.is_nan() || estimate > cga_core::interpolate::accuracy::<f64>() {
-        return Err(E::IllConditioned { estimate }.into());
-    }
-    Ok(pair)
-}
-
 /// Rulings sampled to bound the surface.
 const BOUND_SAMPLES: usize = 256;
 
@@ -97,7 +80,7 @@ impl RuledSurface {
         let not = |which| move |reason| SurfaceError::NotACircle { which, reason };
         let b1 = Bivector::from_points(p1[0], p1[1]).map_err(not(1))?;
         let b2 = Bivector::from_points(p2[0], p2[1]).map_err(not(2))?;
-        let pair = as_given(b1, b2)?;
+        let pair = Pair::new(b1, b2)?;
         let (s, w) = square(pair.c1, pair.c2, cross_term!(pair.c1, pair.c2));
         let w4 = w.grade4();
         let wx = [pair.c1, pair.c2].map(|c| Bivector::from_storage(&(w4 * c).to_storage()) ^ ei());
@@ -120,7 +103,7 @@ impl RuledSurface {
         let not = |which| move |reason| SurfaceError::NotACircle { which, reason };
         let a = Line::from_point_direction(l1.0, l1.1).map_err(not(1))?;
         let b = Line::from_point_direction(l2.0, l2.1).map_err(not(2))?;
-        let pair = as_given(a, b)?;
+        let pair = Pair::new(a, b)?;
         let (s, w) = square(pair.c1, pair.c2, cross_term!(pair.c1, pair.c2));
         let w4 = w.grade4();
         let wx = [pair.c1, pair.c2].map(|c| Line::from_storage(&(w4 * c).to_storage()));

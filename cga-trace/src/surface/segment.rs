@@ -23,7 +23,7 @@
 //! `a` (degree `2d`) is used. Everything is built as convolutions in the scaled Bernstein
 //! basis, in which the products of the controls' coefficients are exact sums.
 
-use super::bernstein::{Bernstein, LARGEST_DEGREE, Scaled};
+use super::bernstein::{Bernstein, LARGEST_DEGREE, Scaled, binomial};
 use super::family::Circles;
 use cga_core::{
     Circle, Dual, Interpolable, InterpolationError, Line, Real, ScalarQuadvector, Vector, bezier, project_at,
@@ -76,10 +76,8 @@ impl<T: Real> BezierSegment<T> {
     /// [`cga_core::Spline::segment`] gives them).
     pub fn new(controls: &[Circle<T>]) -> Self {
         let d = controls.len() - 1;
-        let binomial = |i: usize| {
-            T::from_f64([[1.0, 0.0, 0.0, 0.0], [1.0, 1.0, 0.0, 0.0], [1.0, 2.0, 1.0, 0.0], [1.0, 3.0, 3.0, 1.0]][d][i])
-        };
-        let x: Blades<Circle<T>> = controls.iter().enumerate().map(|(i, c)| c.scale(binomial(i))).collect();
+        let x: Blades<Circle<T>> =
+            controls.iter().enumerate().map(|(i, c)| c.scale(T::from_f64(binomial(d, i)))).collect();
         let neg = |a: Circle<T>, b: Circle<T>| -ScalarQuadvector::from_storage(&(a * b.reverse()).to_storage());
         let square = convolve(&x, &x, ScalarQuadvector::zero(), neg);
         let s = Scaled::new(&square.iter().map(|k| k.s).collect::<SmallVec<[T; 40]>>());

@@ -4,13 +4,13 @@
 //! polynomial otherwise — sharing one local frame, so that neighbouring segments meet on the
 //! very same knot circle and leave no crack.
 
-use super::evolved::EvolvedSurface;
+use super::evolved::{EvolvedSurface, distinct};
 use super::segment::BezierSegment;
 use super::{Method, SurfaceError, TwoCircles};
-use crate::ray::Ray;
+use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
-use cga_core::euclid::{E3, norm, sub};
-use cga_core::{Circle, Joining, Pair, Spline};
+use cga_core::euclid::{E3, sub};
+use cga_core::{Circle, Joining, Line, Pair, Spline};
 
 /// One segment, by the family its circles form.
 #[derive(Clone, Debug)]
@@ -22,10 +22,11 @@ enum Segment {
 }
 
 impl Segment {
-    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+    /// The nearest crossing of a ray in the shared local frame.
+    fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         match self {
-            Segment::Linear(s) => s.intersect(ray, t_min, t_max),
-            Segment::Curved(s) => s.intersect(ray, t_min, t_max),
+            Segment::Linear(s) => s.intersect_local(local, t_min, t_max),
+            Segment::Curved(s) => s.intersect_local(local, t_min, t_max),
         }
     }
 
@@ -77,15 +78,10 @@ impl SplineSurface {
             );
         }
         if joining == Joining::Linear {
+            // Two consecutive circles that are one make a span that sweeps nothing.
+            let unit_normal = |&(c, n, r): &(E3, E3, f64)| (c, cga_core::euclid::unit(n).unwrap_or(n), r);
             for pair in circles.windows(2) {
-                let (a, b) = (pair[0], pair[1]);
-                let close = 1e-12 * a.2.max(b.2);
-                if norm(sub(a.0, b.0)) <= close
-                    && (a.2 - b.2).abs() <= close
-                    && norm(cga_core::euclid::cross(a.1, b.1)) <= 1e-12
-                {
-                    return Err(SurfaceError::SameCircle { reversed: cga_core::euclid::dot(a.1, b.1) < 0.0 });
-                }
+                distinct(unit_normal(&pair[0]), unit_normal(&pair[1]))?;
             }
         }
         let spline = Spline::new(&local, joining)?;
@@ -146,8 +142,18 @@ impl Shape for SplineSurface {
     fn intersect(&self, ray: &Ray, t_min: f64, mut t_max: f64) -> Option<Crossing> {
         let m = self.segments.len() as f64;
         let mut best = None;
+        // Every segment shares the frame at `origin`: the ray's line there is built once.
+        let mut local: Option<Ray> = None;
         for (j, segment) in self.segments.iter().enumerate() {
-            if let Some(c) = segment.intersect(ray, t_min, t_max) {
+            let (centre, radius) = segment.bounds();
+            if !crosses(ray, centre, radius, t_min, t_max) {
+                continue;
+            }
+            let local = local.get_or_insert_with(|| {
+                let o = sub(ray.origin, self.origin);
+                Ray { origin: o, dir: ray.dir, line: Line::from_point_unit_direction(o, ray.dir) }
+            });
+            if let Some(c) = segment.intersect_local(local, t_min, t_max) {
                 t_max = c.t;
                 best = Some(Crossing { alpha: c.alpha.map(|t| (j as f64 + t) / m), ..c });
             }
