@@ -239,11 +239,13 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
         }
         None => film,
     };
-    write(&film, &args.output, output, encoding, file)?;
+    let writing = Instant::now();
+    pool.install(|| write(&film, &args.output, output, encoding, file))?;
+    let written = writing.elapsed().as_secs_f64();
 
     let total = primary + shadow + reflection;
     eprintln!(
-        "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s -> {}",
+        "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s, written in {written:.3} s -> {}",
         u64::from(film.width) * u64::from(film.height),
         total as f64 / seconds.max(1e-9),
         args.output.display()

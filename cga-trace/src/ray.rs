@@ -27,6 +27,12 @@ impl Ray {
         })
     }
 
+    /// The ray from `origin` along `dir`, which the caller knows to be a unit vector and
+    /// finite (reflected and light directions): not normalised again.
+    pub fn unit(origin: E3, dir: E3) -> Self {
+        Ray { origin, dir, line: Line::from_point_unit_direction(origin, dir) }
+    }
+
     /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir` (see
     /// [`leaving_origin`]).
     pub fn leaving(x: E3, n: E3, dir: E3) -> Option<Self> {

@@ -221,11 +221,11 @@ impl<'a, B: Backend> Renderer<'a, B> {
             if !(kr > 0.0 && depth < settings.max_depth) {
                 break local;
             }
+            // `dir` and `n` are unit, so is `r` (to rounding).
             let r = reflect(ray.dir, n);
-            let Some(reflected) = B::ray(leaving_origin(hit.point, n, r), r) else { break local };
             cast.reflection += 1;
             layers.push((local, kr));
-            (ray, depth) = (reflected, depth + 1);
+            (ray, depth) = (B::ray(leaving_origin(hit.point, n, r), r), depth + 1);
         };
         layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
     }
@@ -240,18 +240,21 @@ impl<'a, B: Backend> Renderer<'a, B> {
         for light in &self.scene.lights {
             let to_light = sub(light.position, hit.point);
             let distance = norm(to_light);
-            let Some(l) = unit(to_light) else { continue };
+            // One square root for the distance and the direction (a light at the hit point,
+            // or beyond f64's range, lights nothing).
+            if !(distance > 0.0 && distance.is_finite()) {
+                continue;
+            }
+            let l = scale(to_light, 1.0 / distance);
             let (diffuse, h) = (dot(n, l), unit([l[0] + v[0], l[1] + v[1], l[2] + v[2]]));
             let specular = h.map_or(0.0, |h| dot(n, h).max(0.0).powf(m.q));
             if diffuse <= 0.0 && specular <= 0.0 {
                 continue;
             }
             let mut s = 1.0;
-            if settings.shadows
-                && let Some(shadow) = B::ray(leaving_origin(hit.point, n, l), l)
-            {
+            if settings.shadows {
                 cast.shadow += 1;
-                if self.blocked(&shadow, distance) {
+                if self.blocked(&B::ray(leaving_origin(hit.point, n, l), l), distance) {
                     s = settings.shadow_transmission;
                 }
             }
@@ -329,19 +332,20 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// position alone, so windows of a frame rendered anywhere assemble into the frame,
     /// byte for byte, and any thread count gives the same bytes.
     pub fn render_window(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
-        let rows: Vec<Vec<[f64; 3]>> = window
-            .rows
-            .clone()
-            .into_par_iter()
-            .map(|j| {
-                let mut cast = Cast::default();
-                let row = window.columns.clone().map(|i| self.pixel_counted(i, j, aov, &mut cast)).collect();
-                self.counts.add(&cast);
-                on_row();
-                row
-            })
-            .collect();
-        Film::from_rows(window.columns.len() as u32, window.rows.len() as u32, rows)
+        let (width, height) = (window.columns.len(), window.rows.len());
+        // One allocation, each row written in place by whichever thread renders it.
+        let mut pixels = vec![[0.0; 3]; width * height];
+        // One row per task: rayon otherwise splits the image into few large pieces, and rows
+        // differ in cost (mirrors, surfaces), so one thread idles at the end.
+        pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
+            let mut cast = Cast::default();
+            for (pixel, i) in row.iter_mut().zip(window.columns.clone()) {
+                *pixel = self.pixel_counted(i, j, aov, &mut cast);
+            }
+            self.counts.add(&cast);
+            on_row();
+        });
+        Film { width: width as u32, height: height as u32, pixels }
     }
 }
 

@@ -109,10 +109,12 @@ impl Backend for Dense {
     type Shape = DenseShape;
     const NAME: &'static str = "dense";
 
-    fn ray(origin: E3, dir: E3) -> Option<Ray<Multivector>> {
-        let dir = unit(dir)?;
-        let line = line_through(origin, add(origin, scale(dir, magnitude(&[origin]))))?;
-        Some(Ray { origin, dir, line })
+    fn ray(origin: E3, dir: E3) -> Ray<Multivector> {
+        // Through `o` and `o + |o|∞ d`: two points as far apart as the origin is large, so
+        // that the line is as well conditioned as the sparse one (`d` is unit and finite, `o`
+        // finite: the points are distinct and the line exists).
+        let line = line_through(origin, add(origin, scale(dir, magnitude(&[origin])))).unwrap_or_default();
+        Ray { origin, dir, line }
     }
 
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<Multivector>> {

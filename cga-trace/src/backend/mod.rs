@@ -20,7 +20,7 @@ mod plain;
 
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::{Crossing, Shape};
+use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 use cga_core::Line;
 use cga_core::euclid::E3;
 pub use dense::{Dense, DenseShape};
@@ -35,8 +35,9 @@ pub trait Backend: Send + Sync + 'static {
     type Shape: Send + Sync;
     /// Name, for reports.
     const NAME: &'static str;
-    /// The ray from `origin` along `dir` (normalised here); `None` for a zero direction.
-    fn ray(origin: E3, dir: E3) -> Option<Ray<Self::Carrier>>;
+    /// The ray from `origin` along the unit direction `dir` (the integrator's secondary rays,
+    /// whose directions are unit by construction: not normalised again).
+    fn ray(origin: E3, dir: E3) -> Ray<Self::Carrier>;
     /// The camera ray through pixel coordinates `(u, v)`.
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<Self::Carrier>>;
     /// A scene object in this back end's form.
@@ -51,29 +52,71 @@ pub trait Backend: Send + Sync + 'static {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Sparse;
 
+/// A scene object for the sparse back end: the built-in primitives by value, so that their
+/// meets are inlined into the integrator's loop (a call through `dyn Shape` per object and
+/// ray cost 10 % of a frame of the primitives scene), any other shape through its trait.
+#[derive(Clone, Debug)]
+pub enum SparseShape {
+    /// A sphere.
+    Sphere(SphereShape),
+    /// An infinite plane.
+    Plane(PlaneShape),
+    /// A disk.
+    Disk(DiskShape),
+    /// A triangle.
+    Triangle(TriangleShape),
+    /// Any other shape (evolved, spline and ruled surfaces, kinds added later).
+    Other(Arc<dyn Shape>),
+}
+
+/// `$body` with `$s` bound to the shape inside a [`SparseShape`], whatever its kind.
+macro_rules! each_kind {
+    ($shape:expr, $s:ident => $body:expr) => {
+        match $shape {
+            SparseShape::Sphere($s) => $body,
+            SparseShape::Plane($s) => $body,
+            SparseShape::Disk($s) => $body,
+            SparseShape::Triangle($s) => $body,
+            SparseShape::Other($s) => $body,
+        }
+    };
+}
+
 impl Backend for Sparse {
     type Carrier = Line;
-    type Shape = Arc<dyn Shape>;
+    type Shape = SparseShape;
     const NAME: &'static str = "sparse";
 
-    fn ray(origin: E3, dir: E3) -> Option<Ray> {
-        Ray::new(origin, dir)
+    fn ray(origin: E3, dir: E3) -> Ray {
+        Ray::unit(origin, dir)
     }
 
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray> {
         camera.ray(u, v)
     }
 
-    fn prepare(shape: &Arc<dyn Shape>) -> Arc<dyn Shape> {
-        shape.clone()
+    fn prepare(shape: &Arc<dyn Shape>) -> SparseShape {
+        let any = shape.as_any();
+        if let Some(s) = any.downcast_ref::<SphereShape>() {
+            SparseShape::Sphere(s.clone())
+        } else if let Some(p) = any.downcast_ref::<PlaneShape>() {
+            SparseShape::Plane(p.clone())
+        } else if let Some(d) = any.downcast_ref::<DiskShape>() {
+            SparseShape::Disk(d.clone())
+        } else if let Some(t) = any.downcast_ref::<TriangleShape>() {
+            SparseShape::Triangle(t.clone())
+        } else {
+            SparseShape::Other(shape.clone())
+        }
     }
 
-    fn intersect(shape: &Arc<dyn Shape>, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        shape.intersect(ray, t_min, t_max)
+    #[inline(always)]
+    fn intersect(shape: &SparseShape, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        each_kind!(shape, s => s.intersect(ray, t_min, t_max))
     }
 
-    fn normal(shape: &Arc<dyn Shape>, ray: &Ray, crossing: &Crossing) -> E3 {
-        shape.normal(ray, crossing)
+    fn normal(shape: &SparseShape, ray: &Ray, crossing: &Crossing) -> E3 {
+        each_kind!(shape, s => s.normal(ray, crossing))
     }
 }
 

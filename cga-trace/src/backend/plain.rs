@@ -60,14 +60,14 @@ impl Backend for Plain {
     type Shape = PlainShape;
     const NAME: &'static str = "plain";
 
-    fn ray(origin: E3, dir: E3) -> Option<Ray<()>> {
-        Some(Ray { origin, dir: unit(dir)?, line: () })
+    fn ray(origin: E3, dir: E3) -> Ray<()> {
+        Ray { origin, dir, line: () }
     }
 
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<()>> {
         let [x, y, z] = camera.image_point(u, v);
         let [a, b, c] = camera.axes().map(DVec3::from);
-        Self::ray(camera.position(), (x * a + y * b + z * c).into())
+        Some(Self::ray(camera.position(), unit((x * a + y * b + z * c).into())?))
     }
 
     fn prepare(shape: &Arc<dyn Shape>) -> PlainShape {
@@ -89,6 +89,7 @@ impl Backend for Plain {
         }
     }
 
+    #[inline]
     fn intersect(shape: &PlainShape, ray: &Ray<()>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let (o, d) = (DVec3::from(ray.origin), DVec3::from(ray.dir));
         let within = |t: f64| t > t_min && t < t_max;

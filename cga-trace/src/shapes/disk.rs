@@ -21,6 +21,7 @@ impl DiskShape {
 }
 
 impl Shape for DiskShape {
+    #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let d = &self.disk;
         let x = cross_plane(ray, &d.plane)?;

@@ -30,6 +30,7 @@ pub(super) fn flat_normal(ray: &Ray, plane: &Plane) -> E3 {
 }
 
 impl Shape for PlaneShape {
+    #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         cross_plane(ray, &self.plane).filter(within(ray, t_min, t_max)).map(|x| crossing_at(ray, x))
     }

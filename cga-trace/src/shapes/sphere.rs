@@ -24,6 +24,7 @@ impl SphereShape {
 }
 
 impl Shape for SphereShape {
+    #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         // Rays and spheres are normalised, so the meet is classified with weight 1, as
         // `Line::meet_sphere` would after computing the two norms.

@@ -23,6 +23,7 @@ impl TriangleShape {
 }
 
 impl Shape for TriangleShape {
+    #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let x = cross_plane(ray, &self.plane)?;
         (within(ray, t_min, t_max)(&x) && inside_triangle(x, &self.corners)).then(|| crossing_at(ray, x))
