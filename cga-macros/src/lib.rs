@@ -404,6 +404,17 @@ mod tests {
         std::fs::create_dir_all(&target).expect("target dir");
         let out = target.join("cga-core-expanded.rs");
         std::fs::write(&out, &pretty).expect("write expansion");
+        // Every sum of several terms starts with a positive one where it has one, and is
+        // `−(…)` where it has none: a leading `−` on one term is a sign flip of its own.
+        let leading_minus = pretty
+            .lines()
+            .map(str::trim)
+            .filter(|l| {
+                let rhs = l.split_once(": ").or_else(|| l.split_once(" = ")).map_or("", |(_, r)| r);
+                rhs.starts_with('-') && !rhs.starts_with("-(") && (rhs.contains(" + ") || rhs.contains(" - "))
+            })
+            .count();
+        assert_eq!(leading_minus, 0, "sums that start with a negative term");
         let lines = pretty.lines().count();
         println!("generated: {lines} lines, {} bytes -> {}", pretty.len(), out.display());
         // The figure published in benches/README.md ("The expansion is N lines"), within 1 %.

@@ -176,9 +176,17 @@ impl<'a> Gen<'a> {
     }
 
     /// `Σ coeff · product`, signs folded into `+`/`−`; a coefficient other than ±1 costs
-    /// one multiplication by a constant.
+    /// one multiplication by a constant. The sum starts with a positive term where there is
+    /// one (a leading `−` is a sign flip of its own: an extra instruction on the critical
+    /// path), and a sum of negative terms only is written `−(p₁ + p₂ + …)`, one flip.
     pub(super) fn sum(&self, terms: impl IntoIterator<Item = (f64, TokenStream)>) -> TokenStream {
         let real = self.real;
+        let mut terms: Vec<_> = terms.into_iter().collect();
+        let all_negative = terms.iter().all(|(c, _)| *c < 0.0);
+        if let Some(first) = terms.iter().position(|(c, _)| *c > 0.0) {
+            let positive = terms.remove(first);
+            terms.insert(0, positive);
+        }
         let mut out = TokenStream::new();
         for (i, (c, p)) in terms.into_iter().enumerate() {
             let magnitude = c.abs();
@@ -188,14 +196,13 @@ impl<'a> Gen<'a> {
                 let m = Literal::f64_suffixed(magnitude);
                 quote!(<T as #real>::from_f64(#m) * (#p))
             };
-            out.extend(match (i, c < 0.0) {
-                (0, false) => p,
-                (0, true) => quote!(-#p),
+            out.extend(match (i, c < 0.0 && !all_negative) {
+                (0, _) => p,
                 (_, false) => quote!(+ #p),
                 (_, true) => quote!(- #p),
             });
         }
-        out
+        if all_negative && !out.is_empty() { quote!(-(#out)) } else { out }
     }
 
     pub(super) fn bilinear_exprs(
