@@ -109,6 +109,7 @@ pub mod evolved;
 pub mod interpolate;
 pub mod meet;
 mod real;
+pub mod simd;
 pub mod spline;
 pub mod versor;
 

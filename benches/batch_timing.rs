@@ -1,0 +1,127 @@
+//! Times the six operations of the Versor comparison (benches/peers/compare.sh) on our
+//! generated types, one at a time (`scalar`) and four lanes at a time through
+//! [`cga_core::simd`] (`simd`, packing and unpacking included), the same way
+//! benches/peers/versor.cpp times Versor: batches of 256 operands, `REPS` passes per round,
+//! the median over rounds, in ns per operation. Prints `operation form ns` lines.
+//!
+//! `cargo run --release -p cga-benches --example batch_timing`
+
+use cga_core::simd::{F64x4, Kernel, Lanes, run, run_packed};
+use cga_core::{Circle, Even, Line, Motor, PointPair, Rotor, Sandwich, Sphere, Vector};
+use std::hint::black_box;
+use std::time::Instant;
+
+const N: usize = 256;
+const REPS: usize = 4000;
+const ROUNDS: usize = 15;
+
+/// `up(x)` of the same deterministic spread of points as versor.cpp.
+fn point(i: usize, seed: f64) -> Vector {
+    let t = seed + i as f64;
+    let x = [3.0 * (1.3 * t).sin(), 2.0 * (0.7 * t).cos(), (2.9 * t).sin() - 0.5];
+    cga_core::up(x)
+}
+
+fn median_ns(mut f: impl FnMut()) -> f64 {
+    let mut r: Vec<f64> = (0..ROUNDS)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..REPS {
+                f();
+            }
+            t.elapsed().as_nanos() as f64 / (REPS * N) as f64
+        })
+        .collect();
+    r.sort_by(f64::total_cmp);
+    r[ROUNDS / 2]
+}
+
+/// Times an operation over `input` one at a time (`scalar`), and through
+/// [`cga_core::simd::run`] (`batch`: packing, the lanes, unpacking, dispatched to AVX2
+/// where the CPU has it), printing both.
+fn both<K: Kernel>(name: &str, input: &[K::Input], op: impl Fn(K::Input) -> K::Output)
+where
+    K::Output: Default,
+{
+    let mut out = vec![K::Output::default(); input.len()];
+    let scalar = median_ns(|| {
+        for (o, &x) in out.iter_mut().zip(black_box(input)) {
+            *o = op(x);
+        }
+        black_box(&out);
+    });
+    let batch = median_ns(|| {
+        run::<K>(black_box(input), &mut out);
+        black_box(&out);
+    });
+    let packed_in: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
+    let mut packed_out: Vec<_> = packed_in.iter().map(|&x| K::apply(x)).collect();
+    let packets = median_ns(|| {
+        run_packed::<K>(black_box(&packed_in), &mut packed_out);
+        black_box(&packed_out);
+    });
+    println!("{name} scalar {scalar:.3}");
+    println!("{name} batch {batch:.3}");
+    println!("{name} packets {packets:.3}");
+}
+
+/// A [`Kernel`] named `$name` from `$input` to `$output` computing `$body` over `$x`.
+macro_rules! kernel {
+    ($name:ident: $input:ty => $output:ident, |$x:pat_param| $body:expr) => {
+        struct $name;
+        impl Kernel for $name {
+            type Input = $input;
+            type Output = $output;
+            #[inline(always)]
+            fn apply($x: <$input as Lanes>::Packed) -> $output<F64x4> {
+                $body
+            }
+        }
+    };
+}
+kernel!(MeetSphere: (Line, Sphere) => PointPair, |(l, s)| l & s);
+kernel!(ThreePoints: (Vector, Vector, Vector) => Circle, |(x, y, z)| (x ^ y) ^ z);
+kernel!(MotorOnPoint: (Motor, Vector) => Vector, |(m, x)| m.sandwich(x));
+kernel!(CircleCircle: (Circle, Circle) => Even, |(x, y)| x * y);
+kernel!(MotorMotor: (Motor, Motor) => Motor, |(x, y)| x * y);
+kernel!(RotorRotor: (Rotor, Rotor) => Rotor, |(x, y)| x * y);
+
+fn main() {
+    let (a, b, c): (Vec<_>, Vec<_>, Vec<_>) =
+        (0..N).map(|i| (point(i, 0.0), point(i, 100.0), point(i, 200.0))).collect();
+    let ei = Vector::from_array([0.0, 0.0, 0.0, 0.0, 1.0]);
+    let lines: Vec<Line> = (0..N).map(|i| (a[i] ^ b[i]) ^ cga_core::ei()).collect();
+    let spheres: Vec<Sphere> = (0..N).map(|i| (c[i] - ei.scale(0.5 * (1.0 + 0.1 * (i % 7) as f64))).dual()).collect();
+    let circles: Vec<(Circle, Circle)> =
+        (0..N).map(|i| ((a[i] ^ b[i]) ^ c[i], (b[i] ^ c[i]) ^ point(i, 300.0))).collect();
+    let rotor = |s: f64, k: f64, v: [f64; 3]| Rotor { s, e12: v[0] * k, e13: v[1] * k, e23: v[2] * k };
+    let motor = |r: Rotor, t: [f64; 4]| Motor {
+        s: r.s,
+        e12: r.e12,
+        e13: r.e13,
+        e23: r.e23,
+        e1i: t[0],
+        e2i: t[1],
+        e3i: t[2],
+        e123i: t[3],
+    };
+    let (mut rotors, mut motors) = (Vec::new(), Vec::new());
+    for i in 0..N {
+        let (s, k) = ((0.01 * i as f64).sin(), (0.01 * i as f64).cos());
+        let (r1, r2) = (rotor(k, s, [0.6, -0.48, 0.64]), rotor(s, k, [0.36, 0.8, -0.48]));
+        rotors.push((r1, r2));
+        let m1 = motor(r1, [0.3 * i as f64, -0.2, 0.1 * s, 0.05 * k]);
+        let m2 = motor(r2, [0.1, 0.7 * s, -0.2 * i as f64, 0.02 * s]);
+        motors.push((m1, m2));
+    }
+    let meets: Vec<(Line, Sphere)> = lines.iter().copied().zip(spheres).collect();
+    let triples: Vec<(Vector, Vector, Vector)> = (0..N).map(|i| (a[i], b[i], c[i])).collect();
+    let moved: Vec<(Motor, Vector)> = (0..N).map(|i| (motors[i].0, a[i])).collect();
+
+    both::<MeetSphere>("line_meet_sphere", &meets, |(l, s)| l & s);
+    both::<ThreePoints>("circle_from_3_points", &triples, |(x, y, z)| (x ^ y) ^ z);
+    both::<MotorOnPoint>("motor_on_point", &moved, |(m, x)| m.sandwich(x));
+    both::<CircleCircle>("circle_times_circle", &circles, |(x, y)| x * y);
+    both::<MotorMotor>("motor_times_motor", &motors, |(x, y)| x * y);
+    both::<RotorRotor>("rotor_times_rotor", &rotors, |(x, y)| x * y);
+}

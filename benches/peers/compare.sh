@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Ours against Versor (github.com/wolftype/versor) on six operations, interleaved: the
+# harness versor.cpp built for baseline x86-64 and with -march=native, and our
+# examples/batch_timing (baseline build; the packets dispatch to AVX2 at run time), each run
+# ROUNDS times in turn; prints the table of medians for benches/README.md.
+#
+#   VERSOR_DIR=/path/to/versor benches/peers/compare.sh
+#
+# Only versor.cpp is ours: Versor's headers are read from the checkout, never copied here.
+set -euo pipefail
+: "${VERSOR_DIR:?set VERSOR_DIR to a checkout of github.com/wolftype/versor}"
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+out=${OUT:-$(mktemp -d)}
+rounds=${ROUNDS:-5}
+mkdir -p "$out"
+cxx=${CXX:-g++}
+
+"$cxx" -O3 -std=c++14 -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-baseline"
+"$cxx" -O3 -std=c++14 -march=native -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-native"
+cargo build --quiet --release -p cga-benches --example batch_timing --manifest-path "$root/Cargo.toml"
+ours="${CARGO_TARGET_DIR:-$root/target}/release/examples/batch_timing"
+
+: > "$out/raw.txt"
+for _ in $(seq "$rounds"); do
+    "$ours" >> "$out/raw.txt"
+    "$out/versor-baseline" | sed 's/ / versor-baseline /' >> "$out/raw.txt"
+    "$out/versor-native" | sed 's/ / versor-native /' >> "$out/raw.txt"
+done
+echo "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, $("$cxx" --version | head -1), $(rustc --version)"
+python3 - "$out/raw.txt" <<'PY'
+import sys, statistics, collections
+t = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    op, form, ns = line.split()
+    t[(op, form)].append(float(ns))
+m = {k: statistics.median(v) for k, v in t.items()}
+ops = list(dict.fromkeys(op for op, _ in t))
+print("| operation | ours scalar | ours batch | ours packets | Versor x86-64 | Versor native | native / packets | native / batch |")
+print("|---|---|---|---|---|---|---|---|")
+for op in ops:
+    g = lambda f: m[(op, f)]
+    print(f"| {op} | {g('scalar'):.2f} | {g('batch'):.2f} | {g('packets'):.2f} | {g('versor-baseline'):.2f} | "
+          f"{g('versor-native'):.2f} | {g('versor-native') / g('packets'):.2f}× | {g('versor-native') / g('batch'):.2f}× |")
+PY

@@ -1,0 +1,454 @@
+//! Four f64 lanes as a scalar: every generated type, product and sandwich runs on four
+//! independent operands at once, `Line<F64x4>` being a packet of four lines in
+//! structure-of-arrays form.
+//!
+//! Arithmetic, `sqrt`, `abs` and `max` are lane-wise; the order is the product order
+//! (`a < b` when every lane is), so code that branches on a comparison takes a branch only
+//! when all four lanes agree. Three ways to run an operation over many operands:
+//!
+//! - [`run_packed`]: over packets (`&[Line<F64x4>]`…), the form a ray tracer keeps its
+//!   packets in — the fastest;
+//! - [`run`]: over slices of ordinary values, packed four at a time and unpacked after
+//!   (the transposes cost about as much as a small product);
+//! - [`map`]: the same with a closure, compiled for the baseline only.
+//!
+//! `run` and `run_packed` take the operation as a [`Kernel`] and compile it twice, for the
+//! baseline (SSE2) and for AVX2 + FMA, choosing at run time: no `target-cpu` flag is
+//! needed and the binary runs on any x86-64. The lanes are a plain `[f64; 4]` that LLVM
+//! vectorises, not a SIMD crate's type: `wide` (tried first) picks its width when it is
+//! compiled, so under run-time dispatch it stays at two SSE2 registers.
+//!
+//! ```
+//! use cga_core::simd::{F64x4, map};
+//! use cga_core::{Line, PointPair, Sphere};
+//! let sphere = Sphere::from_centre_radius([0.0, 0.0, 0.0], 1.0).unwrap();
+//! let line = |k: usize| Line::through([k as f64 * 0.1, 0.0, -3.0], [0.0, 0.0, 3.0]).unwrap();
+//! let input: Vec<(Line, Sphere)> = (0..10).map(|k| (line(k), sphere)).collect();
+//! let mut pairs = vec![PointPair::zero(); 10];
+//! map(&input, &mut pairs, |(l, s): (Line<F64x4>, Sphere<F64x4>)| l & s);
+//! assert_eq!(pairs[7], line(7) & sphere); // the same bits as one at a time
+//! ```
+
+use crate::Real;
+use core::cmp::Ordering;
+use core::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Four f64 lanes, a [`Real`] whose arithmetic is lane-wise.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C, align(32))]
+pub struct F64x4(pub [f64; 4]);
+
+impl F64x4 {
+    /// The lanes `[a₀, a₁, a₂, a₃]`.
+    #[inline(always)]
+    pub fn new(lanes: [f64; 4]) -> Self {
+        F64x4(lanes)
+    }
+
+    /// The same value in every lane.
+    #[inline(always)]
+    pub fn splat(x: f64) -> Self {
+        F64x4([x; 4])
+    }
+
+    /// The lanes as an array.
+    #[inline(always)]
+    pub fn to_array(self) -> [f64; 4] {
+        self.0
+    }
+
+    /// `f` applied lane by lane (for what `wide` has no vector form of).
+    #[inline]
+    fn map(self, f: impl Fn(f64) -> f64) -> Self {
+        F64x4::new(self.to_array().map(f))
+    }
+}
+
+macro_rules! lane_wise {
+    ($($trait:ident $method:ident),*) => {$(
+        impl $trait for F64x4 {
+            type Output = F64x4;
+            #[inline(always)]
+            fn $method(self, rhs: F64x4) -> F64x4 {
+                let (a, b) = (self.0, rhs.0);
+                F64x4([a[0].$method(b[0]), a[1].$method(b[1]), a[2].$method(b[2]), a[3].$method(b[3])])
+            }
+        }
+    )*};
+}
+lane_wise!(Add add, Sub sub, Mul mul, Div div);
+
+impl Neg for F64x4 {
+    type Output = F64x4;
+    #[inline(always)]
+    fn neg(self) -> F64x4 {
+        F64x4(self.0.map(|x| -x))
+    }
+}
+
+/// The product order: `a < b` when every lane of `a` is below the same lane of `b`; lanes
+/// that disagree are unordered (`None`), so a comparison is true only for all four.
+impl PartialOrd for F64x4 {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        let (a, b) = (self.to_array(), other.to_array());
+        let all = |f: fn(&f64, &f64) -> bool| a.iter().zip(&b).all(|(x, y)| f(x, y));
+        if all(|x, y| x == y) {
+            Some(Ordering::Equal)
+        } else if all(|x, y| x <= y) {
+            Some(Ordering::Less)
+        } else if all(|x, y| x >= y) {
+            Some(Ordering::Greater)
+        } else {
+            None
+        }
+    }
+}
+
+impl Real for F64x4 {
+    /// Lane-wise maximum.
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        let (a, b) = (self.0, other.0);
+        F64x4([a[0].max(b[0]), a[1].max(b[1]), a[2].max(b[2]), a[3].max(b[3])])
+    }
+    #[inline(always)]
+    fn zero() -> Self {
+        F64x4::splat(0.0)
+    }
+    #[inline(always)]
+    fn one() -> Self {
+        F64x4::splat(1.0)
+    }
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        F64x4::splat(x)
+    }
+    /// Lane 0 (a scalar view of four values has no better meaning; use
+    /// [`F64x4::to_array`] for the lanes).
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self.to_array()[0]
+    }
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        F64x4(self.0.map(f64::sqrt))
+    }
+    #[inline(always)]
+    fn abs(self) -> Self {
+        F64x4(self.0.map(f64::abs))
+    }
+    /// Whether every lane is finite.
+    #[inline]
+    fn is_finite(self) -> bool {
+        self.to_array().iter().all(|x| x.is_finite())
+    }
+    #[inline]
+    fn epsilon() -> Self {
+        F64x4::splat(f64::EPSILON)
+    }
+    #[inline]
+    fn sin(self) -> Self {
+        self.map(f64::sin)
+    }
+    #[inline]
+    fn cos(self) -> Self {
+        self.map(f64::cos)
+    }
+    #[inline]
+    fn atan2(self, x: Self) -> Self {
+        let (y, x) = (self.to_array(), x.to_array());
+        F64x4::new([0, 1, 2, 3].map(|k| y[k].atan2(x[k])))
+    }
+}
+
+/// A generated type that packs four of itself into one of four lanes, field by field.
+pub trait Lanes: Copy {
+    /// The same type over [`F64x4`].
+    type Packed: Copy;
+    /// `[x₀, x₁, x₂, x₃]` as one value whose lane `k` is `x_k`.
+    fn pack(x: [Self; 4]) -> Self::Packed;
+    /// The inverse of [`Lanes::pack`].
+    fn unpack(p: Self::Packed) -> [Self; 4];
+}
+
+macro_rules! lanes {
+    ($($t:ident),*) => {$(
+        impl Lanes for crate::$t<f64> {
+            type Packed = crate::$t<F64x4>;
+            #[inline(always)]
+            fn pack(x: [Self; 4]) -> Self::Packed {
+                let a = x.map(|v| v.to_array());
+                crate::$t::from_array(core::array::from_fn(|k| F64x4::new([a[0][k], a[1][k], a[2][k], a[3][k]])))
+            }
+            #[inline(always)]
+            fn unpack(p: Self::Packed) -> [Self; 4] {
+                let a = p.to_array().map(F64x4::to_array);
+                core::array::from_fn(|lane| crate::$t::from_array(core::array::from_fn(|k| a[k][lane])))
+            }
+        }
+    )*};
+}
+lanes!(
+    Scalar,
+    Infinity,
+    Vector,
+    Bivector,
+    FlatPoint,
+    Line,
+    Circle,
+    Plane,
+    Sphere,
+    Pseudoscalar,
+    ScalarQuadvector,
+    Rotor,
+    Translator,
+    Motor,
+    Even,
+    Odd
+);
+
+macro_rules! tuple_lanes {
+    ($($x:ident $k:tt),*) => {
+        /// Tuples pack element by element.
+        impl<$($x: Lanes),*> Lanes for ($($x,)*) {
+            type Packed = ($($x::Packed,)*);
+            #[inline(always)]
+            fn pack(x: [Self; 4]) -> Self::Packed {
+                ($($x::pack(x.map(|t| t.$k)),)*)
+            }
+            #[inline(always)]
+            fn unpack(p: Self::Packed) -> [Self; 4] {
+                let parts = ($($x::unpack(p.$k),)*);
+                core::array::from_fn(|lane| ($(parts.$k[lane],)*))
+            }
+        }
+    };
+}
+tuple_lanes!(A 0, B 1);
+tuple_lanes!(A 0, B 1, C 2);
+
+/// `out[k] = f(input[k])` for every `k`, four at a time on [`F64x4`] lanes (a tail of
+/// fewer than four is padded with copies of the last input). `None`, and nothing written,
+/// where the lengths differ.
+#[inline]
+pub fn map<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: impl Fn(I::Packed) -> R::Packed) -> Option<()> {
+    if input.len() != out.len() {
+        return None;
+    }
+    map_lanes(input, out, &f);
+    Some(())
+}
+
+/// The loop of [`map`], lengths already checked.
+#[inline(always)]
+fn map_lanes<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: &impl Fn(I::Packed) -> R::Packed) {
+    let whole = input.len() / 4 * 4;
+    for (x, out) in input.chunks_exact(4).zip(out.chunks_exact_mut(4)) {
+        out.copy_from_slice(&R::unpack(f(I::pack([x[0], x[1], x[2], x[3]]))));
+        not_across_iterations();
+    }
+    if whole < input.len() {
+        let last = input.len() - 1;
+        let lanes = R::unpack(f(I::pack([0, 1, 2, 3].map(|k| input[(whole + k).min(last)]))));
+        out[whole..].copy_from_slice(&lanes[..input.len() - whole]);
+    }
+}
+
+/// One operation on packets of four, named so that [`run`] can compile it for the CPU it
+/// finds: a closure handed to a function compiled for AVX2 is a call LLVM may decline to
+/// inline (it did, for every product bigger than a rotor's), and a call out of the
+/// AVX2 function runs baseline code; a trait method marked `#[inline(always)]` is inlined.
+///
+/// ```
+/// use cga_core::simd::{F64x4, Kernel, run};
+/// use cga_core::{Line, PointPair, Sphere};
+/// struct Meet;
+/// impl Kernel for Meet {
+///     type Input = (Line, Sphere);
+///     type Output = PointPair;
+///     #[inline(always)]
+///     fn apply((l, s): (Line<F64x4>, Sphere<F64x4>)) -> PointPair<F64x4> {
+///         l & s
+///     }
+/// }
+/// let line = Line::through([0.5, 0.0, -3.0], [0.5, 0.0, 3.0]).unwrap();
+/// let input = vec![(line, Sphere::from_centre_radius([0.0; 3], 1.0).unwrap()); 6];
+/// let mut out = vec![PointPair::zero(); 6];
+/// run::<Meet>(&input, &mut out).unwrap();
+/// assert_eq!(out[5], line & input[5].1);
+/// ```
+pub trait Kernel {
+    /// What one operation takes (a type, or a tuple of types).
+    type Input: Lanes;
+    /// What it gives.
+    type Output: Lanes;
+    /// The operation on four operands at once.
+    fn apply(x: <Self::Input as Lanes>::Packed) -> <Self::Output as Lanes>::Packed;
+}
+
+/// `out[k] = K(input[k])` for every `k`, four at a time, compiled for AVX2 and FMA where the
+/// CPU has them (detected once, at run time: the build stays baseline x86-64) and for the
+/// baseline otherwise. The results are the same bits either way (no multiply–add is
+/// contracted). `None`, and nothing written, where the lengths differ.
+pub fn run<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
+    if input.len() != out.len() {
+        return None;
+    }
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has the features `run_avx2` is compiled for.
+        unsafe { run_avx2::<K>(input, out) };
+        return Some(());
+    }
+    map_lanes(input, out, &K::apply);
+    Some(())
+}
+
+/// [`run`]'s loop compiled with AVX2 and FMA enabled.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn run_avx2<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) {
+    // `K::apply` is a function item marked `#[inline(always)]`: inlined, so compiled for AVX2.
+    map_lanes(input, out, &K::apply)
+}
+
+/// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
+/// `out[k] = K(input[k])`; dispatched to AVX2 and FMA the same way. `None`, and nothing
+/// written, where the lengths differ.
+pub fn run_packed<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()> {
+    if input.len() != out.len() {
+        return None;
+    }
+    #[cfg(target_arch = "x86_64")]
+    if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has the features `run_packed_avx2` is compiled for.
+        unsafe { run_packed_avx2::<K>(input, out) };
+        return Some(());
+    }
+    packed_loop::<K>(input, out);
+    Some(())
+}
+
+/// The packed form of a [`Lanes`] type.
+pub type Packed<X> = <X as Lanes>::Packed;
+
+/// [`run_packed`]'s loop compiled with AVX2 and FMA enabled.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn run_packed_avx2<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+    packed_loop::<K>(input, out)
+}
+
+#[inline(always)]
+fn packed_loop<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+    for (o, &x) in out.iter_mut().zip(input) {
+        *o = K::apply(x);
+        not_across_iterations();
+    }
+}
+
+/// An empty instruction sequence LLVM cannot see through: it keeps the loop vectoriser from
+/// vectorising a loop of packet operations a second time, across iterations, which it
+/// otherwise does with per-lane loads and shuffles (2–3× slower than the packets alone).
+#[inline(always)]
+fn not_across_iterations() {
+    #[cfg(any(target_arch = "x86_64", target_arch = "x86", target_arch = "aarch64"))]
+    // SAFETY: an empty sequence: it reads, writes and clobbers nothing.
+    unsafe {
+        core::arch::asm!("", options(nomem, nostack, preserves_flags))
+    };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Circle, Even, Line, Motor, Rotor, Sandwich, Sphere, Translator, Vector, up};
+
+    struct Sandwiched;
+    impl Kernel for Sandwiched {
+        type Input = (Motor, Vector);
+        type Output = Vector;
+        #[inline(always)]
+        fn apply((m, x): (Motor<F64x4>, Vector<F64x4>)) -> Vector<F64x4> {
+            m.sandwich(x)
+        }
+    }
+
+    struct Product;
+    impl Kernel for Product {
+        type Input = (Circle, Circle);
+        type Output = Even;
+        #[inline(always)]
+        fn apply((a, b): (Circle<F64x4>, Circle<F64x4>)) -> Even<F64x4> {
+            a * b
+        }
+    }
+
+    fn point(k: usize, seed: f64) -> Vector {
+        let t = seed + k as f64;
+        up([3.0 * (1.3 * t).sin(), 2.0 * (0.7 * t).cos(), (2.9 * t).sin() - 0.5])
+    }
+
+    fn motor(k: usize) -> Motor {
+        let r = Rotor::from_axis_angle([0.6, -0.48, 0.64], 0.1 * k as f64).unwrap();
+        Motor::from_rotor_translator(r, Translator::from_vector([k as f64, -2.0, 0.5]))
+    }
+
+    #[test]
+    fn every_path_gives_the_bits_of_one_at_a_time() {
+        for n in [0, 1, 3, 4, 5, 8, 11] {
+            let moved: Vec<_> = (0..n).map(|k| (motor(k), point(k, 0.0))).collect();
+            let want: Vec<Vector> = moved.iter().map(|&(m, x)| m.sandwich(x)).collect();
+            let mut got = vec![Vector::zero(); n];
+            run::<Sandwiched>(&moved, &mut got).unwrap();
+            assert_eq!(got, want, "run, n = {n}");
+            got.fill(Vector::zero());
+            map_lanes(&moved, &mut got, &Sandwiched::apply);
+            assert_eq!(got, want, "baseline, n = {n}");
+            got.fill(Vector::zero());
+            map(&moved, &mut got, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)).unwrap();
+            assert_eq!(got, want, "map, n = {n}");
+
+            let circles: Vec<(Circle, Circle)> = (0..n)
+                .map(|k| {
+                    ((point(k, 0.0) ^ point(k, 1.0)) ^ point(k, 2.0), (point(k, 3.0) ^ point(k, 4.0)) ^ point(k, 5.0))
+                })
+                .collect();
+            let packets: Vec<_> =
+                circles.chunks_exact(4).map(|c| <(Circle, Circle)>::pack([c[0], c[1], c[2], c[3]])).collect();
+            let mut out = vec![Even::<F64x4>::zero(); packets.len()];
+            run_packed::<Product>(&packets, &mut out).unwrap();
+            for (k, &(a, b)) in circles.iter().enumerate().take(packets.len() * 4) {
+                assert_eq!(Even::unpack(out[k / 4])[k % 4], a * b, "packets, n = {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn lengths_must_agree() {
+        let input = vec![(motor(1), point(1, 0.0)); 3];
+        let mut out = vec![Vector::zero(); 2];
+        assert_eq!(run::<Sandwiched>(&input, &mut out), None);
+        assert_eq!(map(&input, &mut out, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)), None);
+        assert_eq!(out, vec![Vector::zero(); 2], "nothing written");
+        let mut packed = vec![Vector::<F64x4>::zero(); 1];
+        assert_eq!(run_packed::<Sandwiched>(&[], &mut packed), None);
+    }
+
+    #[test]
+    fn lanes_are_ordered_only_when_all_agree() {
+        let (a, b) = (F64x4::new([1.0, 2.0, 3.0, 4.0]), F64x4::new([2.0, 3.0, 4.0, 5.0]));
+        assert!(a < b);
+        assert!(b > a);
+        assert_ne!(a, b);
+        let mixed = F64x4::new([0.0, 5.0, 3.0, 4.0]);
+        assert_eq!(a.partial_cmp(&mixed), None);
+        assert_eq!(Real::max(a, mixed).to_array(), [1.0, 5.0, 3.0, 4.0]);
+        assert!(F64x4::splat(1.0).is_finite() && !F64x4::new([1.0, f64::NAN, 1.0, 1.0]).is_finite());
+        assert_eq!((-a).to_array(), [-1.0, -2.0, -3.0, -4.0]);
+        assert_eq!(Real::sqrt(F64x4::new([4.0, 9.0, 16.0, 0.25])).to_array(), [2.0, 3.0, 4.0, 0.5]);
+        let (l, s) =
+            (Line::through([0.0; 3], [1.0, 0.0, 0.0]).unwrap(), Sphere::from_centre_radius([0.0; 3], 1.0).unwrap());
+        assert_eq!(crate::PointPair::unpack(Line::pack([l; 4]) & Sphere::pack([s; 4]))[2], l & s);
+    }
+}
