@@ -3,7 +3,8 @@
 //! Kept apart as pbrt keeps them: [`camera`] makes rays (eq. 2), [`shapes`] and [`surface`]
 //! meet them with objects (CGA meets; evolved surfaces by robust root isolation), [`render`]
 //! shades (eq. 12), [`film`] stores and encodes, [`scene`] reads TOML. [`backend`] runs the
-//! same renderer on the sparse types, a dense multivector or plain vectors, to compare them.
+//! same renderer on the sparse types, a dense multivector or plain vectors, to compare them;
+//! [`packet`] traces camera and shadow rays four at a time on the sparse types' SIMD lanes.
 
 pub mod backend;
 pub mod bvh;
@@ -17,6 +18,7 @@ pub mod limits;
 pub mod material;
 #[cfg(feature = "evolved")]
 pub mod mesh;
+pub mod packet;
 pub mod ray;
 pub mod render;
 pub mod scene;

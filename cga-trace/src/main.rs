@@ -97,6 +97,10 @@ struct Render {
     /// Geometry code: generated sparse types, the dense multivector, or plain vectors.
     #[arg(long, value_enum, default_value_t = BackendKind::Sparse)]
     backend: BackendKind,
+    /// Trace one ray at a time: no packets of four camera and shadow rays on SIMD lanes
+    /// (the same image; for comparing their speed).
+    #[arg(long)]
+    no_packets: bool,
 }
 
 /// `x0,x1,y0,y1`: four numbers.
@@ -214,7 +218,9 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
         BackendKind::Plain => render::<Plain>,
     };
     let start = Instant::now();
-    let (film, (primary, shadow, reflection)) = pool.install(|| render(&scene, args.aov, window, &|| bar.inc(1)));
+    let packets = !args.no_packets;
+    let (film, (primary, shadow, reflection)) =
+        pool.install(|| render(&scene, args.aov, window, packets, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     let film = match cga_trace::colour::false_colour(&film, args.aov) {
@@ -254,8 +260,17 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
 }
 
 /// The image and the rays cast `(primary, shadow, reflection)`, on back end `B`.
-fn render<B: Backend>(scene: &Scene, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> (Film, (u64, u64, u64)) {
-    let renderer = Renderer::<B>::with_backend(scene);
+fn render<B: Backend>(
+    scene: &Scene,
+    aov: Aov,
+    window: Window,
+    packets: bool,
+    on_row: &(dyn Fn() + Sync),
+) -> (Film, (u64, u64, u64)) {
+    let mut renderer = Renderer::<B>::with_backend(scene);
+    if !packets {
+        renderer = renderer.without_packets();
+    }
     let film = renderer.render_window(aov, window, on_row);
     (film, renderer.counts.get())
 }

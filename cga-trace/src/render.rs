@@ -8,6 +8,8 @@
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
+use crate::light::Light;
+use crate::packet::PacketShape;
 use crate::ray::{Ray, crosses, leaving_origin};
 use crate::scene::{Object, Scene};
 use crate::shapes::{Crossing, Hit};
@@ -87,10 +89,13 @@ pub struct RayCounts {
 
 /// Rays cast by one thread, added to the shared [`RayCounts`] once per row.
 #[derive(Clone, Copy, Debug, Default)]
-struct Cast {
-    primary: u64,
-    shadow: u64,
-    reflection: u64,
+pub struct Cast {
+    /// From the camera.
+    pub primary: u64,
+    /// Towards lights.
+    pub shadow: u64,
+    /// Mirror bounces.
+    pub reflection: u64,
 }
 
 impl RayCounts {
@@ -108,9 +113,12 @@ impl RayCounts {
 
 /// Renders a scene with the geometry of back end `B` (by default the generated sparse types).
 pub struct Renderer<'a, B: Backend = Sparse> {
-    scene: &'a Scene,
+    pub(crate) scene: &'a Scene,
     /// The objects in `B`'s form, in scene order.
-    shapes: Vec<B::Shape>,
+    pub(crate) shapes: Vec<B::Shape>,
+    /// The objects as ray packets meet them, where `B` has packets (empty otherwise, or
+    /// when switched off).
+    pub(crate) packets: Vec<PacketShape>,
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
     bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
@@ -129,12 +137,19 @@ impl<'a> Renderer<'a> {
 impl<'a, B: Backend> Renderer<'a, B> {
     /// A renderer for `scene` on back end `B`: every object prepared once.
     pub fn with_backend(scene: &'a Scene) -> Self {
-        let shapes = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
+        let shapes: Vec<_> = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
         let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
         let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
         let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
-        Renderer { scene, shapes, bounds, bvh, counts: RayCounts::default() }
+        let packets = B::packet_shapes(&shapes);
+        Renderer { scene, shapes, packets, bounds, bvh, counts: RayCounts::default() }
+    }
+
+    /// The same renderer tracing one ray at a time, without packets (to compare them).
+    pub fn without_packets(mut self) -> Self {
+        self.packets.clear();
+        self
     }
 
     /// The same renderer testing every object for every ray, without the hierarchy (to
@@ -208,24 +223,43 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// stack: each hit's own colour and `k_r` are kept, and summed from the deepest up as
     /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
     /// order, so the same bits).
-    fn trace_counted(&self, ray: &Ray<B::Carrier>, mut depth: u32, cast: &mut Cast) -> [f64; 3] {
+    fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
+        let Some((hit, object)) = self.nearest(ray, T_MIN, f64::INFINITY) else {
+            return self.scene.settings.background;
+        };
+        let local = self.shade(ray, &hit, object, cast);
+        self.reflect_from(ray, &hit, object, local, depth, cast)
+    }
+
+    /// `I = I_local + k_r I_reflected` at a hit of `ray` whose own colour is `local`,
+    /// following the mirror bounces from it (`depth` already made).
+    pub(crate) fn reflect_from(
+        &self,
+        ray: &Ray<B::Carrier>,
+        hit: &Hit,
+        object: &'a Object,
+        local: [f64; 3],
+        depth: u32,
+        cast: &mut Cast,
+    ) -> [f64; 3] {
         let settings = &self.scene.settings;
         let mut layers: SmallVec<[([f64; 3], f64); 8]> = SmallVec::new();
-        let mut ray = *ray;
+        let (mut ray, mut hit, mut object, mut local, mut depth) = (*ray, *hit, object, local, depth);
         let deepest = loop {
-            let Some((hit, object)) = self.nearest(&ray, T_MIN, f64::INFINITY) else {
-                break settings.background;
-            };
-            let (local, n) = (self.shade(&ray, &hit, object, cast), hit.normal);
             let kr = object.material.kr;
             if !(kr > 0.0 && depth < settings.max_depth) {
                 break local;
             }
             // `dir` and `n` are unit, so is `r` (to rounding).
-            let r = reflect(ray.dir, n);
+            let r = reflect(ray.dir, hit.normal);
             cast.reflection += 1;
             layers.push((local, kr));
-            (ray, depth) = (B::ray(leaving_origin(hit.point, n, r), r), depth + 1);
+            (ray, depth) = (B::ray(leaving_origin(hit.point, hit.normal, r), r), depth + 1);
+            let Some((next, next_object)) = self.nearest(&ray, T_MIN, f64::INFINITY) else {
+                break settings.background;
+            };
+            local = self.shade(&ray, &next, next_object, cast);
+            (hit, object) = (next, next_object);
         };
         layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
     }
@@ -234,39 +268,37 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// shadow ray towards each light that could reach it.
     fn shade(&self, ray: &Ray<B::Carrier>, hit: &Hit, object: &Object, cast: &mut Cast) -> [f64; 3] {
         let settings = &self.scene.settings;
-        let m = &object.material;
-        let (n, v) = (hit.normal, ray.dir.map(|x| -x));
-        let mut colour = scale(m.colour, m.ka * settings.ambient);
+        let mut colour = self.ambient(object);
         for light in &self.scene.lights {
-            let to_light = sub(light.position, hit.point);
-            let distance = norm(to_light);
-            // One square root for the distance and the direction (a light at the hit point,
-            // or beyond f64's range, lights nothing).
-            if !(distance > 0.0 && distance.is_finite()) {
-                continue;
-            }
-            let l = scale(to_light, 1.0 / distance);
-            let (diffuse, h) = (dot(n, l), unit([l[0] + v[0], l[1] + v[1], l[2] + v[2]]));
-            let specular = h.map_or(0.0, |h| dot(n, h).max(0.0).powf(m.q));
-            if diffuse <= 0.0 && specular <= 0.0 {
-                continue;
-            }
+            let Some(term) = light_term(ray.dir, hit, &object.material, light) else { continue };
             let mut s = 1.0;
             if settings.shadows {
                 cast.shadow += 1;
-                if self.blocked(&B::ray(leaving_origin(hit.point, n, l), l), distance) {
+                if self.blocked(&B::ray(term.shadow_origin, term.l), term.distance) {
                     s = settings.shadow_transmission;
                 }
             }
-            // Attenuation is in world units; the frame's are `frame.scale` of them.
-            let distance = self.scene.frame.world_length(distance);
-            let [c0, c1, c2] = settings.attenuation;
-            let f_att = (1.0 / (c0 + c1 * distance + c2 * distance * distance)).min(1.0);
-            for ((out, c), l) in colour.iter_mut().zip(m.colour).zip(light.colour) {
-                *out += s * f_att * (c * m.kd * diffuse.max(0.0) + m.ks * specular) * l;
-            }
+            self.add_light(&mut colour, object, light, &term, s);
         }
         colour
+    }
+
+    /// `c k_a A`: the ambient light on an object.
+    pub(crate) fn ambient(&self, object: &Object) -> [f64; 3] {
+        scale(object.material.colour, object.material.ka * self.scene.settings.ambient)
+    }
+
+    /// Adds one light's term to `colour`, `s` the shadow factor.
+    #[inline]
+    pub(crate) fn add_light(&self, colour: &mut [f64; 3], object: &Object, light: &Light, term: &LightTerm, s: f64) {
+        let (settings, m) = (&self.scene.settings, &object.material);
+        // Attenuation is in world units; the frame's are `frame.scale` of them.
+        let distance = self.scene.frame.world_length(term.distance);
+        let [c0, c1, c2] = settings.attenuation;
+        let f_att = (1.0 / (c0 + c1 * distance + c2 * distance * distance)).min(1.0);
+        for ((out, c), l) in colour.iter_mut().zip(m.colour).zip(light.colour) {
+            *out += s * f_att * (c * m.kd * term.diffuse.max(0.0) + m.ks * term.specular) * l;
+        }
     }
 
     /// One pixel: the shaded colour or an AOV.
@@ -339,7 +371,15 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // differ in cost (mirrors, surfaces), so one thread idles at the end.
         pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
             let mut cast = Cast::default();
-            for (pixel, i) in row.iter_mut().zip(window.columns.clone()) {
+            let mut done = 0;
+            if aov == Aov::Shaded && self.scene.settings.spp <= 1 && !self.packets.is_empty() {
+                for (four, i0) in row.chunks_exact_mut(4).zip(window.columns.clone().step_by(4)) {
+                    let Some(colours) = B::pixels4(self, i0, j, &mut cast) else { break };
+                    four.copy_from_slice(&colours);
+                    done += 4;
+                }
+            }
+            for (pixel, i) in row.iter_mut().zip(window.columns.clone()).skip(done) {
                 *pixel = self.pixel_counted(i, j, aov, &mut cast);
             }
             self.counts.add(&cast);
@@ -418,6 +458,40 @@ fn hash(mut x: u32) -> u32 {
     x ^= x >> 15;
     x = x.wrapping_mul(0x846c_a68b);
     x ^ (x >> 16)
+}
+
+/// What one light gives a hit before shadowing.
+pub(crate) struct LightTerm {
+    /// Unit direction to the light.
+    pub l: E3,
+    /// Distance to it (frame units).
+    pub distance: f64,
+    /// `n · l`.
+    pub diffuse: f64,
+    /// `max(n · h, 0)^q`.
+    pub specular: f64,
+    /// Where the shadow ray towards it starts ([`leaving_origin`]).
+    pub shadow_origin: E3,
+}
+
+/// The unshadowed terms of `light` at `hit` seen along `dir`; `None` where it adds nothing
+/// (behind the surface for both terms, at the hit point, or beyond f64's range).
+#[inline]
+pub(crate) fn light_term(dir: E3, hit: &Hit, m: &crate::material::Material, light: &Light) -> Option<LightTerm> {
+    let (n, v) = (hit.normal, dir.map(|x| -x));
+    let to_light = sub(light.position, hit.point);
+    let distance = norm(to_light);
+    if !(distance > 0.0 && distance.is_finite()) {
+        return None;
+    }
+    // One square root for the distance and the direction.
+    let l = scale(to_light, 1.0 / distance);
+    let (diffuse, h) = (dot(n, l), unit([l[0] + v[0], l[1] + v[1], l[2] + v[2]]));
+    let specular = h.map_or(0.0, |h| m.specular(dot(n, h)));
+    if diffuse <= 0.0 && specular <= 0.0 {
+        return None;
+    }
+    Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, l) })
 }
 
 #[cfg(test)]

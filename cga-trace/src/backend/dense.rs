@@ -130,7 +130,7 @@ impl Backend for Dense {
             DenseShape::Sphere { sphere: s.sphere.into(), centre: s.centre }
         } else if let Some(p) = shape.downcast_ref::<PlaneShape>() {
             DenseShape::Plane(p.plane.into())
-        } else if let Some(DiskShape { disk }) = shape.downcast_ref::<DiskShape>() {
+        } else if let Some(DiskShape { disk, .. }) = shape.downcast_ref::<DiskShape>() {
             DenseShape::Disk { plane: disk.plane.into(), centre: disk.centre, radius: disk.radius }
         } else if let Some(t) = shape.downcast_ref::<TriangleShape>() {
             DenseShape::Triangle { plane: t.plane.into(), corners: t.corners }

@@ -19,7 +19,9 @@ mod dense;
 mod plain;
 
 use crate::camera::Camera;
+use crate::packet::PacketShape;
 use crate::ray::Ray;
+use crate::render::{Cast, Renderer};
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 use cga_core::Line;
 use cga_core::euclid::E3;
@@ -46,6 +48,19 @@ pub trait Backend: Send + Sync + 'static {
     fn intersect(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> Option<Crossing>;
     /// The unit normal at a crossing, facing the ray.
     fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
+    /// The objects as ray packets meet them; empty for a back end without packets.
+    fn packet_shapes(_shapes: &[Self::Shape]) -> Vec<PacketShape> {
+        Vec::new()
+    }
+    /// Four neighbouring pixels `(i₀ + k, j)` of a renderer whose packets are on
+    /// ([`crate::packet`]); `None` where the back end has none or a camera ray cannot be
+    /// formed (the scalar path takes over).
+    fn pixels4(_renderer: &Renderer<'_, Self>, _i0: u32, _j: u32, _cast: &mut Cast) -> Option<[[f64; 3]; 4]>
+    where
+        Self: Sized,
+    {
+        None
+    }
 }
 
 /// The generated grade-sparse types (the default back end).
@@ -117,6 +132,14 @@ impl Backend for Sparse {
 
     fn normal(shape: &SparseShape, ray: &Ray, crossing: &Crossing) -> E3 {
         each_kind!(shape, s => s.normal(ray, crossing))
+    }
+
+    fn packet_shapes(shapes: &[SparseShape]) -> Vec<PacketShape> {
+        shapes.iter().map(PacketShape::of).collect()
+    }
+
+    fn pixels4(renderer: &Renderer<'_, Sparse>, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+        renderer.pixels4(i0, j, cast)
     }
 }
 

@@ -77,7 +77,7 @@ impl Backend for Plain {
         } else if let Some(p) = shape.downcast_ref::<PlaneShape>() {
             let (normal, offset) = flat(&p.plane);
             PlainShape::Plane { normal, offset }
-        } else if let Some(DiskShape { disk }) = shape.downcast_ref::<DiskShape>() {
+        } else if let Some(DiskShape { disk, .. }) = shape.downcast_ref::<DiskShape>() {
             let (normal, offset) = flat(&disk.plane);
             PlainShape::Disk { normal, offset, centre: disk.centre.into(), radius: disk.radius }
         } else if let Some(t) = shape.downcast_ref::<TriangleShape>() {

@@ -11,12 +11,15 @@ use cga_core::{Disk, GeometryError};
 pub struct DiskShape {
     /// The disk.
     pub disk: Disk,
+    /// Its plane's unit normal.
+    pub normal: E3,
 }
 
 impl DiskShape {
     /// The disk of `centre`, `normal` and `radius`.
     pub fn new(centre: E3, normal: E3, radius: f64) -> Result<Self, GeometryError> {
-        Ok(DiskShape { disk: Disk::from_centre_normal_radius(centre, normal, radius)? })
+        let disk = Disk::from_centre_normal_radius(centre, normal, radius)?;
+        Ok(DiskShape { normal: super::plane_normal(&disk.plane), disk })
     }
 }
 
@@ -29,7 +32,7 @@ impl Shape for DiskShape {
     }
 
     fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
-        flat_normal(ray, &self.disk.plane)
+        flat_normal(ray, self.normal)
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {

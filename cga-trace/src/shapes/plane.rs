@@ -1,6 +1,6 @@
 //! An infinite plane: met as the flat point `L ∨ Π`.
 
-use super::{Crossing, Shape, crossing_at, mirror_normal, within};
+use super::{Crossing, Shape, crossing_at, facing, plane_normal, within};
 use crate::ray::Ray;
 use cga_core::euclid::E3;
 use cga_core::{GeometryError, Plane};
@@ -10,12 +10,15 @@ use cga_core::{GeometryError, Plane};
 pub struct PlaneShape {
     /// OPNS plane, normalised.
     pub plane: Plane,
+    /// Its unit normal (the direction of every reflected line's `L' − L`).
+    pub normal: E3,
 }
 
 impl PlaneShape {
     /// The plane through `point` with normal `normal`.
     pub fn new(point: E3, normal: E3) -> Result<Self, GeometryError> {
-        Ok(PlaneShape { plane: Plane::from_point_normal(point, normal)? })
+        let plane = Plane::from_point_normal(point, normal)?;
+        Ok(PlaneShape { plane, normal: plane_normal(&plane) })
     }
 }
 
@@ -25,8 +28,8 @@ pub(super) fn cross_plane(ray: &Ray, plane: &Plane) -> Option<E3> {
 }
 
 /// The normal of a flat shape: from the line reflected in its plane.
-pub(super) fn flat_normal(ray: &Ray, plane: &Plane) -> E3 {
-    mirror_normal(ray, Some(*plane), plane.normal_offset().map_or([0.0, 0.0, 1.0], |(n, _)| n))
+pub(super) fn flat_normal(ray: &Ray, normal: E3) -> E3 {
+    facing(normal, ray.dir)
 }
 
 impl Shape for PlaneShape {
@@ -36,7 +39,7 @@ impl Shape for PlaneShape {
     }
 
     fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
-        flat_normal(ray, &self.plane)
+        flat_normal(ray, self.normal)
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {

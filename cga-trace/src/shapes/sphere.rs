@@ -1,9 +1,9 @@
 //! A sphere: met as the point pair `L ∨ S`, classified by its square.
 
-use super::{Crossing, Shape, crossing_at, mirror_normal, within};
+use super::{Crossing, Shape, crossing_at, facing, within};
 use crate::ray::Ray;
-use cga_core::euclid::{E3, sub};
-use cga_core::{GeometryError, Hit as MeetHit, Plane, RoundMeet, Sphere};
+use cga_core::euclid::{E3, scale, sub, unit};
+use cga_core::{GeometryError, Hit as MeetHit, RoundMeet, Sphere};
 
 /// A sphere, with its centre and radius (for bounds and normals).
 #[derive(Clone, Debug)]
@@ -38,8 +38,9 @@ impl Shape for SphereShape {
 
     /// From the line reflected in the tangent plane at the crossing.
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
-        let x = crossing.point;
-        mirror_normal(ray, Plane::from_point_normal(x, sub(x, self.centre)).ok(), sub(x, self.centre))
+        // The tangent plane's normal (see `plane_normal`): `(x − c)/r`.
+        let n = scale(sub(crossing.point, self.centre), 1.0 / self.radius);
+        facing(unit(n).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {

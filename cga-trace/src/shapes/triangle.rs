@@ -13,12 +13,15 @@ pub struct TriangleShape {
     pub plane: Plane,
     /// Corners, counter-clockwise seen from the normal.
     pub corners: [E3; 3],
+    /// Its plane's unit normal.
+    pub normal: E3,
 }
 
 impl TriangleShape {
     /// The triangle with these corners.
     pub fn new(corners: [E3; 3]) -> Result<Self, GeometryError> {
-        Ok(TriangleShape { plane: Plane::through(corners[0], corners[1], corners[2])?, corners })
+        let plane = Plane::through(corners[0], corners[1], corners[2])?;
+        Ok(TriangleShape { normal: super::plane_normal(&plane), plane, corners })
     }
 }
 
@@ -30,7 +33,7 @@ impl Shape for TriangleShape {
     }
 
     fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
-        flat_normal(ray, &self.plane)
+        flat_normal(ray, self.normal)
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {
