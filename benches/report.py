@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Print the benchmarks as markdown tables, from criterion's saved estimates.
 
-Run after `cargo bench --bench products` and/or `cargo bench --bench render`:
+Run after `cargo bench --bench products`, `--bench render` and/or `--bench peers`:
 python3 benches/report.py
 Products: criterion medians per batch divided by the batch size (256), ns per op.
 Render: median ms per frame (one thread), rays/s, and the back ends' ratios.
@@ -85,6 +85,28 @@ def render_table():
         print("\n".join(rows))
 
 
+PEERS = ["line_meet_sphere", "circle_from_3_points", "motor_on_point", "circle_times_circle",
+         "motor_times_motor", "rotor_times_rotor"]
+
+
+def peers_table():
+    """`cargo bench --bench peers`: ns per operation, ours against clifford and hisab."""
+    rows = []
+    for op in PEERS:
+        t = {lib: median_ns(f"peers_{op}", lib) or median_ns(f"peers/{op}", lib)
+             for lib in ("cga", "clifford", "hisab")}
+        if t["cga"] is None:
+            continue
+        ratio = lambda lib: f"{t[lib] / t['cga']:.2f}×" if t[lib] else "–"
+        rows.append(f"| {op} | {fmt(t['cga'])} | {fmt(t['clifford'])} | {fmt(t['hisab'])} | "
+                    f"{ratio('clifford')} | {ratio('hisab')} |")
+    if rows:
+        print("\nPeers, ns per operation (batches of 256):\n")
+        print("| operation | cga | clifford 0.3.0 | hisab 1.4 | clifford / cga | hisab / cga |")
+        print("|---|---|---|---|---|---|")
+        print("\n".join(rows))
+
+
 def main():
     if not os.path.isdir(ROOT):
         sys.exit("no criterion results: run `cargo bench --bench products` (or render) first")
@@ -101,6 +123,7 @@ def main():
             print(f"| {label} | {scalar} | {fmt(sparse)} | {fmt(dense)} | {ratio} | {goal} |")
 
     render_table()
+    peers_table()
 
 
 if __name__ == "__main__":

@@ -97,12 +97,14 @@ impl Film {
 
     /// 8-bit RGB, top row first, encoded.
     pub fn to_rgb8(&self, encoding: Encoding) -> image::RgbImage {
-        self.image(|v| (encode(v, encoding) * 255.0).round() as u8)
+        // `encode` is in [0, 1]: adding ½ and truncating rounds (`f64::round` is a libm call
+        // on the baseline target, 4 % of a frame's instructions).
+        self.image(|v| (encode(v, encoding) * 255.0 + 0.5) as u8)
     }
 
     /// 16-bit RGB, top row first, encoded.
     pub fn to_rgb16(&self, encoding: Encoding) -> ImageBuffer<Rgb<u16>, Vec<u16>> {
-        self.image(|v| (encode(v, encoding) * 65535.0).round() as u16)
+        self.image(|v| (encode(v, encoding) * 65535.0 + 0.5) as u16)
     }
 
     /// Linear 32-bit floats, top row first, unclipped (NaN as 0; infinities as the largest

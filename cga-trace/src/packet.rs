@@ -124,7 +124,7 @@ fn meet_plane(
     let (w, inv) = (flat.eoi.to_array(), inv.to_array());
     let inside = rim.map(|(c, r)| {
         let d = [x[0] - F64x4::splat(c[0]), x[1] - F64x4::splat(c[1]), x[2] - F64x4::splat(c[2])];
-        dot4(d, d).to_array().map(|q| q.sqrt() <= r)
+        dot4(d, d).to_array().map(|q| q <= r * r)
     });
     core::array::from_fn(|l| {
         let ok = w[l].abs() > tolerance(1.0) && inv[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];

@@ -13,7 +13,7 @@
 //!
 //! A back end turns rays into what it meets objects with (its carrier), prepares each
 //! scene object once, and intersects and shades them; the integrator
-//! ([`Renderer`](crate::Renderer)) is shared.
+//! ([`Renderer`]) is shared.
 
 mod dense;
 mod plain;

@@ -111,7 +111,7 @@ impl Backend for Plain {
             }
             PlainShape::Plane { normal, offset } => on_plane(*normal, *offset)?,
             PlainShape::Disk { normal, offset, centre, radius } => {
-                on_plane(*normal, *offset).filter(|&t| (o + t * d).distance(*centre) <= *radius)?
+                on_plane(*normal, *offset).filter(|&t| (o + t * d).distance_squared(*centre) <= radius * radius)?
             }
             PlainShape::Triangle { normal, offset, corners } => {
                 on_plane(*normal, *offset).filter(|&t| inside_triangle((o + t * d).into(), corners))?
