@@ -11,13 +11,14 @@
 //! row) uses the scalar path for the remainder.
 
 use crate::backend::{Backend, Sparse, SparseShape};
-use crate::ray::Ray;
+use crate::ray::{Ray, leaving_origin};
 use crate::render::{Cast, Renderer, T_MIN, light_term};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
-use cga_core::euclid::{E3, tolerance};
+use cga_core::euclid::{E3, reflect, tolerance};
 use cga_core::simd::{F64x4, Lanes};
 use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
+use smallvec::SmallVec;
 
 /// Four rays, lane `k` being ray `k`.
 #[derive(Clone, Copy, Debug)]
@@ -176,21 +177,21 @@ impl<'a> Renderer<'a, Sparse> {
         }
     }
 
-    /// The nearest crossing per lane over all objects, and its object: compiled for AVX2
+    /// The nearest crossing per active lane over all objects, and its object: compiled for AVX2
     /// and FMA where the CPU has them (the lanes' products then run in one register each).
-    fn nearest_packet(&self, p: &Packet) -> [Option<(Crossing, usize)>; 4] {
+    fn nearest_packet(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
         #[cfg(target_arch = "x86_64")]
         if avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.nearest_packet_avx2(p) };
+            return unsafe { self.nearest_packet_avx2(p, active) };
         }
-        self.nearest_packet_lanes(p)
+        self.nearest_packet_lanes(p, active)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn nearest_packet_avx2(&self, p: &Packet) -> [Option<(Crossing, usize)>; 4] {
-        self.nearest_packet_lanes(p)
+    unsafe fn nearest_packet_avx2(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
+        self.nearest_packet_lanes(p, active)
     }
 
     /// Which lanes' rays are blocked before their `t_max` (a lane with `t_max = 0` is
@@ -211,8 +212,10 @@ impl<'a> Renderer<'a, Sparse> {
     }
 
     #[inline(always)]
-    fn nearest_packet_lanes(&self, p: &Packet) -> [Option<(Crossing, usize)>; 4] {
-        let (t_min, mut t_max) = ([T_MIN; 4], [f64::INFINITY; 4]);
+    fn nearest_packet_lanes(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
+        // An inactive lane's range is empty: it finds nothing.
+        let t_min = [T_MIN; 4];
+        let mut t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
         let mut best = [None; 4];
         for k in 0..self.shapes.len() {
             for (l, c) in self.cross(k, p, &t_min, &t_max).into_iter().enumerate() {
@@ -243,31 +246,69 @@ impl<'a> Renderer<'a, Sparse> {
         core::array::from_fn(|l| active[l] && blocked[l])
     }
 
-    /// Four neighbouring pixels of a row, `(i₀ + k, j)`, through packets; `None` where a
-    /// camera ray cannot be formed (the scalar path then says why).
+    /// Four neighbouring pixels of a row, `(i₀ + k, j)`, through packets — the camera rays,
+    /// the mirror bounces of those that hit mirrors (lanes whose ray has ended ride along,
+    /// inactive), and at every hit the shadow rays towards each light; `None` where a
+    /// camera ray cannot be formed (the scalar path then says why). Each lane gets the bits
+    /// [`Renderer::trace`] gives its ray: the same meets, shading and sum from the deepest
+    /// bounce up.
     pub fn pixels4(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
-        let camera = &self.scene.camera;
+        let (camera, settings) = (&self.scene.camera, &self.scene.settings);
         let v = f64::from(j) + 0.5;
         let rays: [Option<Ray>; 4] = core::array::from_fn(|k| camera.ray(f64::from(i0 + k as u32) + 0.5, v));
-        let rays = [rays[0]?, rays[1]?, rays[2]?, rays[3]?];
+        let mut rays = [rays[0]?, rays[1]?, rays[2]?, rays[3]?];
         cast.primary += 4;
-        let packet = Packet::new(rays);
-        let nearest = self.nearest_packet(&packet);
-        let hits: [Option<(Hit, &Object)>; 4] = core::array::from_fn(|l| {
-            nearest[l].map(|(c, k)| {
-                let normal = Sparse::normal(&self.shapes[k], &rays[l], &c);
-                (Hit { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
-            })
-        });
-        let mut colours: [[f64; 3]; 4] =
-            core::array::from_fn(|l| hits[l].map_or(self.scene.settings.background, |(_, o)| self.ambient(o)));
+        let mut active = [true; 4];
+        let mut deepest = [settings.background; 4];
+        let mut layers: [SmallVec<[([f64; 3], f64); 8]>; 4] = Default::default();
+        let mut depth = 0;
+        while active.iter().any(|&a| a) {
+            let nearest = self.nearest_packet(&Packet::new(rays), &active);
+            let hits: [Option<(Hit, &Object)>; 4] = core::array::from_fn(|l| {
+                nearest[l].map(|(c, k)| {
+                    let normal = Sparse::normal(&self.shapes[k], &rays[l], &c);
+                    (Hit { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
+                })
+            });
+            let local = self.shade_packet(&rays, &hits, cast);
+            for l in 0..4 {
+                if !active[l] {
+                    continue;
+                }
+                let Some((hit, object)) = hits[l] else {
+                    (deepest[l], active[l]) = (settings.background, false);
+                    continue;
+                };
+                let kr = object.material.kr;
+                if !(kr > 0.0 && depth < settings.max_depth) {
+                    (deepest[l], active[l]) = (local[l], false);
+                    continue;
+                }
+                // As `Renderer::reflect_from`: `dir` and `n` unit, so `r` is.
+                let r = reflect(rays[l].dir, hit.normal);
+                cast.reflection += 1;
+                layers[l].push((local[l], kr));
+                rays[l] = Sparse::ray(leaving_origin(hit.point, hit.normal, r), r);
+            }
+            depth += 1;
+        }
+        Some(core::array::from_fn(|l| {
+            layers[l].iter().rev().fold(deepest[l], |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
+        }))
+    }
+
+    /// The ambient and direct light at the lanes' hits, the shadow rays towards each light
+    /// cast as one packet; the background where a lane has no hit.
+    fn shade_packet(&self, rays: &[Ray; 4], hits: &[Option<(Hit, &Object)>; 4], cast: &mut Cast) -> [[f64; 3]; 4] {
         let settings = &self.scene.settings;
+        let mut colours: [[f64; 3]; 4] =
+            core::array::from_fn(|l| hits[l].map_or(settings.background, |(_, o)| self.ambient(o)));
         for light in &self.scene.lights {
             let terms: [_; 4] =
                 core::array::from_fn(|l| hits[l].and_then(|(h, o)| light_term(rays[l].dir, &h, &o.material, light)));
             let mut s = [1.0; 4];
             if settings.shadows && terms.iter().any(Option::is_some) {
-                let (mut shadow, mut t_max) = (rays, [0.0; 4]);
+                let (mut shadow, mut t_max) = (*rays, [0.0; 4]);
                 for (l, term) in terms.iter().enumerate() {
                     if let Some(term) = term {
                         cast.shadow += 1;
@@ -284,11 +325,6 @@ impl<'a> Renderer<'a, Sparse> {
                 }
             }
         }
-        for l in 0..4 {
-            if let Some((hit, object)) = hits[l] {
-                colours[l] = self.reflect_from(&rays[l], &hit, object, colours[l], 0, cast);
-            }
-        }
-        Some(colours)
+        colours
     }
 }

@@ -142,7 +142,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
         let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
-        let packets = B::packet_shapes(&shapes);
+        // Packets test every object: for scenes with a hierarchy, single rays through it.
+        let packets = if bvh.is_none() { B::packet_shapes(&shapes) } else { Vec::new() };
         Renderer { scene, shapes, packets, bounds, bvh, counts: RayCounts::default() }
     }
 
