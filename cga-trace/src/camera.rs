@@ -6,7 +6,8 @@
 use crate::limits::{EXTENT_OVER_FOCAL, MAX_PIXELS, MAX_SIDE};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, scale, sub, unit};
-use cga_core::{Line, Motor, Rotor, Sandwich, Translator, Vector, down, ei, up};
+use cga_core::simd::{F64x4, Lanes};
+use cga_core::{Line, Motor, Real, Rotor, Sandwich, Translator, Vector, down, ei, up};
 
 /// Why a camera cannot be built.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
@@ -65,6 +66,8 @@ pub struct Camera {
     /// `cam ∧ (M b M̃) ∧ ei` for the basis vectors `b = e1, e2, e3, eo, ei`: the ray of eq. 2
     /// is linear in `up(x)`, so it is these combined with `up(x)`'s coefficients.
     lines: [Line; 5],
+    /// The same lines in every lane of four, for [`Camera::rays4`].
+    lanes: [Line<F64x4>; 5],
 }
 
 impl Camera {
@@ -98,7 +101,8 @@ impl Camera {
             (cam ^ pose.sandwich(Vector::from_array(c))) ^ ei()
         };
         let lines = [basis(0), basis(1), basis(2), basis(3), basis(4)];
-        Ok(Camera { pose, focal, x_max, y_max, width, height, position, cam, axes, lines })
+        let lanes = lines.map(|l| Line::pack([l; 4]));
+        Ok(Camera { pose, focal, x_max, y_max, width, height, position, cam, axes, lines, lanes })
     }
 
     /// The pose that puts the camera at `position`, looking at `target`, with `up` upwards:
@@ -132,6 +136,24 @@ impl Camera {
         let d = [-line.e1oi, -line.e2oi, -line.e3oi];
         let inv = 1.0 / cga_core::euclid::norm(d);
         inv.is_finite().then(|| Ray { origin: self.position, dir: scale(d, inv), line: line.scale(inv) })
+    }
+
+    /// [`Camera::ray`] for four points `(u_k, v)` of a row at once, on four lanes: the rays,
+    /// and their lines in lanes (for a [`Packet`](crate::packet::Packet)); the same
+    /// operations lane by lane, so the same bits. `None` where a ray cannot be formed.
+    pub fn rays4(&self, u: [f64; 4], v: f64) -> Option<([Ray; 4], Line<F64x4>)> {
+        let points = u.map(|u| up(self.image_point(u, v)).to_array());
+        let x: [F64x4; 5] = core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])));
+        let line = (0..5).fold(Line::zero(), |l, k| l + self.lanes[k].scale(x[k]));
+        let d = [-line.e1oi, -line.e2oi, -line.e3oi];
+        let inv = F64x4::splat(1.0) / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        if !inv.is_finite() {
+            return None;
+        }
+        let (line, dir) = (line.scale(inv), d.map(|c| (c * inv).to_array()));
+        let lines = Line::unpack(line);
+        let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: dir.map(|c| c[l]), line: lines[l] });
+        Some((rays, line))
     }
 
     /// The same ray computed term by term as eq. 2 writes it (`cam ∧ M up(x) M̃ ∧ ei`), to

@@ -57,7 +57,21 @@ impl Material {
             // `max(c, 0)^q`, NaN included (as `f64::max` takes it): `0^0 = 1`.
             return if self.q == 0.0 { 1.0 } else { 0.0 };
         }
-        if self.q.fract() == 0.0 && self.q <= 1024.0 { c.powi(self.q as i32) } else { c.powf(self.q) }
+        if !(self.q.fract() == 0.0 && self.q <= 1024.0) {
+            return c.powf(self.q);
+        }
+        // `powi`'s own algorithm (compiler-rt's `__powidf2`: the same bits), inlined.
+        let (mut r, mut a, mut n) = (1.0, c, self.q as u32);
+        loop {
+            if n & 1 == 1 {
+                r *= a;
+            }
+            n /= 2;
+            if n == 0 {
+                return r;
+            }
+            a *= a;
+        }
     }
 }
 

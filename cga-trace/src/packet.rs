@@ -12,13 +12,12 @@
 
 use crate::backend::{Backend, Sparse, SparseShape};
 use crate::ray::{Ray, leaving_origin};
-use crate::render::{Cast, Renderer, T_MIN, light_term};
+use crate::render::{Cast, Layers, Renderer, T_MIN, light_term};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
 use cga_core::euclid::{E3, reflect, tolerance};
 use cga_core::simd::{F64x4, Lanes};
 use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
-use smallvec::SmallVec;
 
 /// Four rays, lane `k` being ray `k`.
 #[derive(Clone, Copy, Debug)]
@@ -255,15 +254,18 @@ impl<'a> Renderer<'a, Sparse> {
     pub fn pixels4(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
         let (camera, settings) = (&self.scene.camera, &self.scene.settings);
         let v = f64::from(j) + 0.5;
-        let rays: [Option<Ray>; 4] = core::array::from_fn(|k| camera.ray(f64::from(i0 + k as u32) + 0.5, v));
-        let mut rays = [rays[0]?, rays[1]?, rays[2]?, rays[3]?];
+        let (mut rays, line) = camera.rays4([0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
         cast.primary += 4;
+        let mut packet = Packet { line, ..Packet::new(rays) };
         let mut active = [true; 4];
         let mut deepest = [settings.background; 4];
-        let mut layers: [SmallVec<[([f64; 3], f64); 8]>; 4] = Default::default();
+        let mut layers: [Layers; 4] = Default::default();
         let mut depth = 0;
         while active.iter().any(|&a| a) {
-            let nearest = self.nearest_packet(&Packet::new(rays), &active);
+            if depth > 0 {
+                packet = Packet::new(rays);
+            }
+            let nearest = self.nearest_packet(&packet, &active);
             let hits: [Option<(Hit, &Object)>; 4] = core::array::from_fn(|l| {
                 nearest[l].map(|(c, k)| {
                     let normal = Sparse::normal(&self.shapes[k], &rays[l], &c);

@@ -244,7 +244,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         cast: &mut Cast,
     ) -> [f64; 3] {
         let settings = &self.scene.settings;
-        let mut layers: SmallVec<[([f64; 3], f64); 8]> = SmallVec::new();
+        let mut layers = Layers::new();
         let (mut ray, mut hit, mut object, mut local, mut depth) = (*ray, *hit, object, local, depth);
         let deepest = loop {
             let kr = object.material.kr;
@@ -460,6 +460,10 @@ fn hash(mut x: u32) -> u32 {
     x = x.wrapping_mul(0x846c_a68b);
     x ^ (x >> 16)
 }
+
+/// The colours and `k_r` of the hits along a ray's mirror bounces, nearest first, summed
+/// from the deepest up.
+pub(crate) type Layers = SmallVec<[([f64; 3], f64); 8]>;
 
 /// What one light gives a hit before shadowing.
 pub(crate) struct LightTerm {
