@@ -6,8 +6,9 @@
 //!
 //! `cargo run --release -p cga-benches --example batch_timing`
 
-use cga_core::simd::{F64x4, Kernel, Lanes, run, run_packed};
-use cga_core::{Circle, Even, Line, Motor, PointPair, Rotor, Sandwich, Sphere, Vector};
+use cga_benches::kernels::{CircleCircle, MeetSphere, MotorMotor, MotorOnPoint, RotorRotor, ThreePoints};
+use cga_core::simd::{Kernel, Lanes, run, run_packed};
+use cga_core::{Circle, Line, Motor, Rotor, Sandwich, Sphere, Vector};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -64,27 +65,6 @@ where
     println!("{name} batch {batch:.3}");
     println!("{name} packets {packets:.3}");
 }
-
-/// A [`Kernel`] named `$name` from `$input` to `$output` computing `$body` over `$x`.
-macro_rules! kernel {
-    ($name:ident: $input:ty => $output:ident, |$x:pat_param| $body:expr) => {
-        struct $name;
-        impl Kernel for $name {
-            type Input = $input;
-            type Output = $output;
-            #[inline(always)]
-            fn apply($x: <$input as Lanes>::Packed) -> $output<F64x4> {
-                $body
-            }
-        }
-    };
-}
-kernel!(MeetSphere: (Line, Sphere) => PointPair, |(l, s)| l & s);
-kernel!(ThreePoints: (Vector, Vector, Vector) => Circle, |(x, y, z)| (x ^ y) ^ z);
-kernel!(MotorOnPoint: (Motor, Vector) => Vector, |(m, x)| m.sandwich(x));
-kernel!(CircleCircle: (Circle, Circle) => Even, |(x, y)| x * y);
-kernel!(MotorMotor: (Motor, Motor) => Motor, |(x, y)| x * y);
-kernel!(RotorRotor: (Rotor, Rotor) => Rotor, |(x, y)| x * y);
 
 fn main() {
     let (a, b, c): (Vec<_>, Vec<_>, Vec<_>) =

@@ -1,7 +1,48 @@
-//! The benchmarks live beside this file (`products.rs`, `render.rs`); this library only holds
-//! what they share.
+//! The benchmarks live beside this file (`products.rs`, `render.rs`, `peers.rs`,
+//! `batch_timing.rs`); this library only holds what they share.
 
 /// A shipped scene file of cga-trace, by name (`primitives`, `surface`, `combined`).
 pub fn scene_path(name: &str) -> std::path::PathBuf {
     std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cga-trace/scenes").join(format!("{name}.toml"))
+}
+
+/// The six operations of the Versor comparison as [`cga_core::simd::Kernel`]s, for
+/// `peers.rs` and `batch_timing.rs`.
+pub mod kernels {
+    use cga_core::simd::{F64x4, Kernel, Lanes};
+    use cga_core::{Circle, Even, Line, Motor, PointPair, Rotor, Sandwich, Sphere, Vector};
+
+    /// A [`Kernel`] named `$name` from `$input` to `$output` computing `$body` over `$x`.
+    macro_rules! kernel {
+        ($(#[$doc:meta])* $name:ident: $input:ty => $output:ident, |$x:pat_param| $body:expr) => {
+            $(#[$doc])*
+            pub struct $name;
+            impl Kernel for $name {
+                type Input = $input;
+                type Output = $output;
+                #[inline(always)]
+                fn apply($x: <$input as Lanes>::Packed) -> $output<F64x4> {
+                    $body
+                }
+            }
+        };
+    }
+    kernel!(
+        /// `L ∨ S`.
+        MeetSphere: (Line, Sphere) => PointPair, |(l, s)| l & s);
+    kernel!(
+        /// `X₁ ∧ X₂ ∧ X₃`.
+        ThreePoints: (Vector, Vector, Vector) => Circle, |(x, y, z)| (x ^ y) ^ z);
+    kernel!(
+        /// `M X M̃`.
+        MotorOnPoint: (Motor, Vector) => Vector, |(m, x)| m.sandwich(x));
+    kernel!(
+        /// `C₁ C₂`.
+        CircleCircle: (Circle, Circle) => Even, |(x, y)| x * y);
+    kernel!(
+        /// `M₁ M₂`.
+        MotorMotor: (Motor, Motor) => Motor, |(x, y)| x * y);
+    kernel!(
+        /// `R₁ R₂`.
+        RotorRotor: (Rotor, Rotor) => Rotor, |(x, y)| x * y);
 }

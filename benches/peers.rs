@@ -9,6 +9,8 @@
 //!
 //! `cargo bench --bench peers`, then `python3 benches/report.py`.
 
+use cga_benches::kernels::{CircleCircle, MeetSphere, MotorMotor, MotorOnPoint, RotorRotor, ThreePoints};
+use cga_core::simd::{Kernel, Lanes, run_packed};
 use clifford::ops::{Antiwedge, Sandwich as _, Wedge};
 use clifford::specialized::conformal::dim3 as cl;
 use criterion::{BenchmarkGroup, Criterion, Throughput, criterion_group, criterion_main, measurement::WallTime};
@@ -41,6 +43,19 @@ fn run_ref<A, R>(g: &mut BenchmarkGroup<WallTime>, name: &str, a: &[A], op: impl
         bench.iter(|| {
             out.clear();
             out.extend(black_box(a).iter().map(&op));
+            black_box(&out);
+        })
+    });
+}
+
+/// Ours on packets of four ([`cga_core::simd::run_packed`]): the same 256 operations as 64
+/// packets, packed beforehand (the form a packet tracer keeps its data in).
+fn run_packets<K: Kernel>(g: &mut BenchmarkGroup<WallTime>, input: &[K::Input]) {
+    let packed: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
+    let mut out: Vec<_> = packed.iter().map(|&x| K::apply(x)).collect();
+    g.bench_function("cga-packets", |bench| {
+        bench.iter(|| {
+            run_packed::<K>(black_box(&packed), &mut out);
             black_box(&out);
         })
     });
@@ -85,6 +100,7 @@ fn peers(c: &mut Criterion) {
         })
         .collect();
     run(&mut g, "cga", &meets, |(l, s)| l & s);
+    run_packets::<MeetSphere>(&mut g, &meets);
     let cl_meets: Vec<(cl::Line<f64>, cl::Sphere<f64>)> = (0..BATCH)
         .map(|i| {
             let ([x, y, z], [u, v, w]) = (coords(i, 0.0), coords(i, 100.0));
@@ -100,6 +116,7 @@ fn peers(c: &mut Criterion) {
     let mut g = group(c, "circle_from_3_points");
     let triples: Vec<_> = (0..BATCH).map(|i| (a[i], b[i], p[i])).collect();
     run(&mut g, "cga", &triples, |(x, y, z)| (x ^ y) ^ z);
+    run_packets::<ThreePoints>(&mut g, &triples);
     let cl_triples: Vec<_> = (0..BATCH).map(|i| (ca[i], cb[i], cp[i])).collect();
     run(&mut g, "clifford", &cl_triples, |(x, y, z)| x.wedge(&y).wedge(&z));
     let h_triples: Vec<_> = (0..BATCH).map(|i| (ha[i].clone(), hb[i].clone(), hp[i].clone())).collect();
@@ -114,6 +131,7 @@ fn peers(c: &mut Criterion) {
     };
     let moved: Vec<(Motor, Vector)> = (0..BATCH).map(|i| (motor(i), a[i])).collect();
     run(&mut g, "cga", &moved, |(m, x)| m.sandwich(x));
+    run_packets::<MotorOnPoint>(&mut g, &moved);
     let cl_motor = |i: usize| {
         let m = motor(i);
         let z = 0.0;
@@ -133,6 +151,7 @@ fn peers(c: &mut Criterion) {
     let mut g = group(c, "circle_times_circle");
     let circles: Vec<(Circle, Circle)> = (0..BATCH).map(|i| ((a[i] ^ b[i]) ^ p[i], (b[i] ^ p[i]) ^ q[i])).collect();
     run(&mut g, "cga", &circles, |(x, y)| x * y);
+    run_packets::<CircleCircle>(&mut g, &circles);
     let cl_circles: Vec<_> =
         (0..BATCH).map(|i| (ca[i].wedge(&cb[i]).wedge(&cp[i]), cb[i].wedge(&cp[i]).wedge(&cq[i]))).collect();
     run(&mut g, "clifford", &cl_circles, |(x, y)| x * y);
@@ -145,6 +164,7 @@ fn peers(c: &mut Criterion) {
     let mut g = group(c, "motor_times_motor");
     let motors: Vec<_> = (0..BATCH).map(|i| (motor(i), motor(BATCH - i))).collect();
     run(&mut g, "cga", &motors, |(x, y)| x * y);
+    run_packets::<MotorMotor>(&mut g, &motors);
     let cl_motors: Vec<_> = (0..BATCH).map(|i| (cl_motor(i), cl_motor(BATCH - i))).collect();
     run(&mut g, "clifford", &cl_motors, |(x, y)| x * y);
     let h_motors: Vec<_> = (0..BATCH).map(|i| (h_motor(i), h_motor(BATCH - i))).collect();
@@ -156,6 +176,7 @@ fn peers(c: &mut Criterion) {
     let rotor = |i: usize| Rotor::from_axis_angle([0.6, -0.48, 0.64], angle(i)).expect("unit axis");
     let rotors: Vec<_> = (0..BATCH).map(|i| (rotor(i), rotor(BATCH - i))).collect();
     run(&mut g, "cga", &rotors, |(x, y)| x * y);
+    run_packets::<RotorRotor>(&mut g, &rotors);
     let h_rotor = |i: usize| hisab::geo::cga::rotor(0.6, -0.48, 0.64, angle(i));
     let h_rotors: Vec<_> = (0..BATCH).map(|i| (h_rotor(i), h_rotor(BATCH - i))).collect();
     run_ref(&mut g, "hisab", &h_rotors, |(x, y)| x.geo(y));

@@ -94,16 +94,16 @@ def peers_table():
     rows = []
     for op in PEERS:
         t = {lib: median_ns(f"peers_{op}", lib) or median_ns(f"peers/{op}", lib)
-             for lib in ("cga", "clifford", "hisab")}
+             for lib in ("cga", "cga-packets", "clifford", "hisab")}
         if t["cga"] is None:
             continue
         ratio = lambda lib: f"{t[lib] / t['cga']:.2f}×" if t[lib] else "–"
-        rows.append(f"| {op} | {fmt(t['cga'])} | {fmt(t['clifford'])} | {fmt(t['hisab'])} | "
-                    f"{ratio('clifford')} | {ratio('hisab')} |")
+        rows.append(f"| {op} | {fmt(t['cga'])} | {fmt(t['cga-packets'])} | {fmt(t['clifford'])} | "
+                    f"{fmt(t['hisab'])} | {ratio('clifford')} | {ratio('hisab')} |")
     if rows:
         print("\nPeers, ns per operation (batches of 256):\n")
-        print("| operation | cga | clifford 0.3.0 | hisab 1.4 | clifford / cga | hisab / cga |")
-        print("|---|---|---|---|---|---|")
+        print("| operation | cga | cga packets | clifford 0.3.0 | hisab 1.4 | clifford / cga | hisab / cga |")
+        print("|---|---|---|---|---|---|---|")
         print("\n".join(rows))
 
 
