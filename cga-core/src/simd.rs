@@ -295,7 +295,7 @@ pub fn run<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
         return None;
     }
     #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+    if avx2() {
         // SAFETY: the CPU has the features `run_avx2` is compiled for.
         unsafe { run_avx2::<K>(input, out) };
         return Some(());
@@ -320,13 +320,21 @@ pub fn run_packed<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Ou
         return None;
     }
     #[cfg(target_arch = "x86_64")]
-    if std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma") {
+    if avx2() {
         // SAFETY: the CPU has the features `run_packed_avx2` is compiled for.
         unsafe { run_packed_avx2::<K>(input, out) };
         return Some(());
     }
     packed_loop::<K>(input, out);
     Some(())
+}
+
+/// Whether this CPU has AVX2 and FMA, which the dispatched loops here (and callers' own,
+/// such as a ray tracer's packet loops) are compiled for; detected once (`std` caches it).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn avx2() -> bool {
+    std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
 }
 
 /// The packed form of a [`Lanes`] type.

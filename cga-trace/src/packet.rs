@@ -16,6 +16,8 @@ use crate::render::{Cast, Layers, Renderer, T_MIN, light_term};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
 use cga_core::euclid::{E3, reflect, tolerance};
+#[cfg(target_arch = "x86_64")]
+use cga_core::simd::avx2;
 use cga_core::simd::{F64x4, Lanes};
 use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
 
@@ -130,12 +132,6 @@ fn meet_plane(
         let ok = w[l].abs() > tolerance(1.0) && inv[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];
         (ok && inside.is_none_or(|i| i[l])).then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None })
     })
-}
-
-/// Whether the CPU has AVX2 and FMA (detected once; the result is cached by `std`).
-#[cfg(target_arch = "x86_64")]
-fn avx2() -> bool {
-    std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
 }
 
 /// A scene object as the packet path meets it.
