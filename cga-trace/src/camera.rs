@@ -128,14 +128,9 @@ impl Camera {
     /// `(u, v)` (pixel `(i, j)`'s centre is `(i + ½, j + ½)`). `None` only for a pose that
     /// is not a rigid motion.
     pub fn ray(&self, u: f64, v: f64) -> Option<Ray> {
-        // cam ∧ M up(x) M̃ ∧ ei, expanded over up(x)'s coefficients (the sandwich and both
-        // wedges are linear), then normalised.
         let x = up(self.image_point(u, v)).to_array();
-        let line = (0..5).fold(Line::zero(), |l, k| l + self.lines[k].scale(x[k]));
-        // A Euclidean line's norm is that of its direction part: one division normalises both.
-        let d = [-line.e1oi, -line.e2oi, -line.e3oi];
-        let inv = 1.0 / cga_core::euclid::norm(d);
-        inv.is_finite().then(|| Ray { origin: self.position, dir: scale(d, inv), line: line.scale(inv) })
+        let (line, dir) = unit_line(&self.lines, x)?;
+        Some(Ray { origin: self.position, dir, line })
     }
 
     /// [`Camera::ray`] for four points `(u_k, v)` of a row at once, on four lanes: the rays,
@@ -144,14 +139,8 @@ impl Camera {
     pub fn rays4(&self, u: [f64; 4], v: f64) -> Option<([Ray; 4], Line<F64x4>)> {
         let points = u.map(|u| up(self.image_point(u, v)).to_array());
         let x: [F64x4; 5] = core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])));
-        let line = (0..5).fold(Line::zero(), |l, k| l + self.lanes[k].scale(x[k]));
-        let d = [-line.e1oi, -line.e2oi, -line.e3oi];
-        let inv = F64x4::splat(1.0) / (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        if !inv.is_finite() {
-            return None;
-        }
-        let (line, dir) = (line.scale(inv), d.map(|c| (c * inv).to_array()));
-        let lines = Line::unpack(line);
+        let (line, dir) = unit_line(&self.lanes, x)?;
+        let (lines, dir) = (Line::unpack(line), dir.map(F64x4::to_array));
         let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: dir.map(|c| c[l]), line: lines[l] });
         Some((rays, line))
     }
@@ -183,4 +172,15 @@ impl Camera {
     pub fn axes(&self) -> [E3; 3] {
         self.axes
     }
+}
+
+/// `cam ∧ M up(x) M̃ ∧ ei` for `up(x)`'s coefficients `x` and the lines `lines[k]` it takes
+/// for each basis vector (the sandwich and both wedges are linear), normalised, and its unit
+/// direction; `None` where it has none. A Euclidean line's norm is that of its direction
+/// part: one division normalises both. Generic, so one ray and four lanes share it.
+fn unit_line<T: Real>(lines: &[Line<T>; 5], x: [T; 5]) -> Option<(Line<T>, E3<T>)> {
+    let line = (0..5).fold(Line::zero(), |l, k| l + lines[k].scale(x[k]));
+    let d = [-line.e1oi, -line.e2oi, -line.e3oi];
+    let inv = T::one() / cga_core::euclid::norm(d);
+    inv.is_finite().then(|| (line.scale(inv), scale(d, inv)))
 }

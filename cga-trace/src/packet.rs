@@ -11,11 +11,11 @@
 //! row) uses the scalar path for the remainder.
 
 use crate::backend::{Backend, Sparse, SparseShape};
-use crate::ray::{Ray, leaving_origin};
-use crate::render::{Cast, Layers, Renderer, T_MIN, light_term};
+use crate::ray::Ray;
+use crate::render::{Cast, Layers, Renderer, T_MIN, light_term, mirror_ray, sum_layers};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
-use cga_core::euclid::{E3, reflect, tolerance};
+use cga_core::euclid::{E3, tolerance};
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
 use cga_core::simd::{F64x4, Lanes};
@@ -37,11 +37,16 @@ pub struct Packet {
 impl Packet {
     /// Four rays as a packet.
     pub fn new(rays: [Ray; 4]) -> Self {
+        Packet::with_line(rays, Line::pack(rays.map(|r| r.line)))
+    }
+
+    /// Four rays whose lines are already in lanes (the camera builds them so).
+    pub fn with_line(rays: [Ray; 4], line: Line<F64x4>) -> Self {
         let lanes = |f: fn(&Ray) -> E3| {
             let v = rays.each_ref().map(f);
             [0, 1, 2].map(|k| F64x4::new([v[0][k], v[1][k], v[2][k], v[3][k]]))
         };
-        Packet { rays, origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), line: Line::pack(rays.map(|r| r.line)) }
+        Packet { rays, origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), line }
     }
 }
 
@@ -252,7 +257,7 @@ impl<'a> Renderer<'a, Sparse> {
         let v = f64::from(j) + 0.5;
         let (mut rays, line) = camera.rays4([0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
         cast.primary += 4;
-        let mut packet = Packet { line, ..Packet::new(rays) };
+        let mut packet = Packet::with_line(rays, line);
         let mut active = [true; 4];
         let mut deepest = [settings.background; 4];
         let mut layers: [Layers; 4] = Default::default();
@@ -282,17 +287,13 @@ impl<'a> Renderer<'a, Sparse> {
                     (deepest[l], active[l]) = (local[l], false);
                     continue;
                 }
-                // As `Renderer::reflect_from`: `dir` and `n` unit, so `r` is.
-                let r = reflect(rays[l].dir, hit.normal);
                 cast.reflection += 1;
                 layers[l].push((local[l], kr));
-                rays[l] = Sparse::ray(leaving_origin(hit.point, hit.normal, r), r);
+                rays[l] = mirror_ray::<Sparse>(&rays[l], &hit);
             }
             depth += 1;
         }
-        Some(core::array::from_fn(|l| {
-            layers[l].iter().rev().fold(deepest[l], |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
-        }))
+        Some(core::array::from_fn(|l| sum_layers(&layers[l], deepest[l])))
     }
 
     /// The ambient and direct light at the lanes' hits, the shadow rays towards each light

@@ -251,18 +251,16 @@ impl<'a, B: Backend> Renderer<'a, B> {
             if !(kr > 0.0 && depth < settings.max_depth) {
                 break local;
             }
-            // `dir` and `n` are unit, so is `r` (to rounding).
-            let r = reflect(ray.dir, hit.normal);
             cast.reflection += 1;
             layers.push((local, kr));
-            (ray, depth) = (B::ray(leaving_origin(hit.point, hit.normal, r), r), depth + 1);
+            (ray, depth) = (mirror_ray::<B>(&ray, &hit), depth + 1);
             let Some((next, next_object)) = self.nearest(&ray, T_MIN, f64::INFINITY) else {
                 break settings.background;
             };
             local = self.shade(&ray, &next, next_object, cast);
             (hit, object) = (next, next_object);
         };
-        layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
+        sum_layers(&layers, deepest)
     }
 
     /// The ambient and direct light at a hit (eq. 12 without the reflected term), casting a
@@ -464,6 +462,18 @@ fn hash(mut x: u32) -> u32 {
 /// The colours and `k_r` of the hits along a ray's mirror bounces, nearest first, summed
 /// from the deepest up.
 pub(crate) type Layers = SmallVec<[([f64; 3], f64); 8]>;
+
+/// `I = I_local + k_r I_below` from the deepest bounce up, as recursion would sum it.
+pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
+    layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
+}
+
+/// The mirror bounce of `ray` at `hit`: `dir` and the normal are unit, so the reflected
+/// direction is (to rounding), and the ray starts off the surface ([`leaving_origin`]).
+pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &Hit) -> Ray<B::Carrier> {
+    let r = reflect(ray.dir, hit.normal);
+    B::ray(leaving_origin(hit.point, hit.normal, r), r)
+}
 
 /// What one light gives a hit before shadowing.
 pub(crate) struct LightTerm {
