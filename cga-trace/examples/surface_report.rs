@@ -505,6 +505,11 @@ fn main() {
         cases.push(Case { name, surface, rays });
     }
     let total: usize = cases.iter().map(|c| c.rays.len()).sum();
+    let only = std::env::var("SURFACE_REPORT_ONLY").ok();
+    if std::env::args().any(|a| a == "--time") {
+        time_only(&cases[..scene_cases], only.as_deref());
+        return;
+    }
     eprintln!("{} cases, {total} rays; computing the reference", cases.len());
 
     let references: Vec<Vec<Option<Crossing>>> = cases
@@ -515,7 +520,6 @@ fn main() {
         })
         .collect();
 
-    let only = std::env::var("SURFACE_REPORT_ONLY").ok();
     let settings: Vec<Setting> =
         settings().into_iter().filter(|s| only.as_ref().is_none_or(|o| s.label().contains(o.as_str()))).collect();
     // tallies[setting][case], times[setting][case] (ns per ray)
@@ -583,6 +587,33 @@ fn main() {
         .collect();
     plot(&settings, &tallies, &times, scene_cases, &scene_alpha).expect("the plot is written");
     eprintln!("wrote docs/surface-report.md and docs/images/surface_error_time.svg");
+}
+
+/// `--time`: time per ray on the scene cases, all rays and the scenes' own, median of 7 runs,
+/// no reference (for profiling: `SURFACE_REPORT_REPEAT` runs more). The default method, or
+/// the settings `SURFACE_REPORT_ONLY` picks.
+fn time_only(cases: &[Case], only: Option<&str>) {
+    let repeats = std::env::var("SURFACE_REPORT_REPEAT").ok().and_then(|v| v.parse().ok()).unwrap_or(7);
+    let settings: Vec<Setting> = match only {
+        Some(o) => settings().into_iter().filter(|s| s.label().contains(o)).collect(),
+        None => vec![Setting::F64(Method::default())],
+    };
+    for setting in settings {
+        for case in cases {
+            let prepared = Prepared::new(setting, &case.surface);
+            let scene = case.rays.iter().filter(|r| r.kind.starts_with("scene")).copied().collect();
+            let scene = Case { name: String::new(), surface: case.surface.clone(), rays: scene };
+            println!(
+                "{} on {}: {:.0} ns/ray over its {} scene rays, {:.0} over all {}",
+                setting.label(),
+                case.name,
+                time_per_ray(&prepared, &scene, repeats),
+                scene.rays.len(),
+                time_per_ray(&prepared, case, repeats),
+                case.rays.len()
+            );
+        }
+    }
 }
 
 /// Sum of the tallies over the given cases, and the ray-weighted mean time per ray.
