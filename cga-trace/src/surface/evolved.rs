@@ -2,8 +2,8 @@
 //! method that finds its crossings with a ray.
 
 use super::bernstein::Roots;
+use super::cells::{Cells, PAD};
 use super::family::{Circles, TwoCircles};
-use super::tree::{PAD, Tree};
 use super::{Family, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
@@ -24,7 +24,7 @@ pub struct EvolvedSurface<C = TwoCircles<f64>> {
     /// How rays are intersected.
     method: Method,
     /// Bounding spheres over α-intervals, for the methods that cull with them.
-    tree: Option<Tree>,
+    tree: Option<Cells>,
 }
 
 /// Circles whose centres and radii differ by less than this times the radius, and whose
@@ -116,8 +116,8 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     }
 
     /// The bounding-sphere tree, for the methods that cull with one.
-    fn tree(circles: &C, method: Method) -> Result<Option<Tree>, SurfaceError> {
-        method.tree_leaves().map(|leaves| Tree::new(circles, leaves)).transpose()
+    fn tree(circles: &C, method: Method) -> Result<Option<Cells>, SurfaceError> {
+        method.tree_leaves().map(|leaves| Cells::new(circles, leaves)).transpose()
     }
 
     /// The bounding sphere `(centre, radius)` in world coordinates.

@@ -76,14 +76,14 @@ impl<T: Real, const N: usize> RootPolynomial<T> for Bernstein<T, N> {
 pub struct TwoCircles<T: Real> {
     /// Normalised, aligned end circles.
     pub pair: Pair<Circle<T>>,
-    /// The same over dual numbers, for the exact `f'`.
-    lifted: Pair<Circle<Dual<T>>>,
-    /// `S(α) = ⟨−X X̃⟩₀`, degree 2.
-    s: Scaled<T>,
+    /// `S(α) = ⟨−X X̃⟩₀ = S₀ (1 − α)² + S₁ α(1 − α) + S₂ α²`: `[S₀, S₁, S₂]`.
+    s: [T; 3],
     /// `w = W²` for the constant 4-vector `W = ⟨−(C1 C̃2 + C2 C̃1)⟩₄`; `⟨−X X̃⟩₄ = α(1−α) W`.
     w: T,
     /// `⟨W C1⟩₃`, `⟨W C2⟩₃`.
     wc: [Circle<T>; 2],
+    /// `C1, C2, ⟨W C1⟩₃, ⟨W C2⟩₃` over dual numbers, for the exact `f'`.
+    lifted: [Circle<Dual<T>>; 4],
     /// `W = 0`: the circles are co-spherical, `K` is a scalar and `C_α ∝ X_α`.
     cospherical: bool,
 }
@@ -121,17 +121,49 @@ impl Finder {
 impl<T: Real> TwoCircles<T> {
     /// The family between normalised, aligned circles.
     pub fn new(pair: Pair<Circle<T>>) -> Self {
-        let lifted = Pair { c1: pair.c1.lift(), c2: pair.c2.lift() };
         let (c1, c2) = (pair.c1, pair.c2);
         let cross = -ScalarQuadvector::from_storage(&(c1 * c2.reverse() + c2 * c1.reverse()).to_storage());
-        let ends = [c1.neg_square().s, c2.neg_square().s];
-        let s = Scaled::quadratic(ends[0], cross.s, ends[1]);
+        let s = [c1.neg_square().s, cross.s, c2.neg_square().s];
         let w4 = cross.grade4();
         let w = (w4 * w4).s;
         let wc = [Circle::from_storage(&(w4 * c1).to_storage()), Circle::from_storage(&(w4 * c2).to_storage())];
+        let lifted = [c1.lift(), c2.lift(), wc[0].lift(), wc[1].lift()];
         let largest = w4.to_array().iter().fold(T::zero(), |m, x| m.max(x.abs()));
-        TwoCircles { pair, lifted, s, w, wc, cospherical: largest <= T::epsilon() }
+        TwoCircles { pair, s, w, wc, lifted, cospherical: largest <= T::epsilon() }
     }
+}
+
+/// `C_α` in closed form from what [`TwoCircles`] precomputes, in any scalar `U` (dual numbers
+/// for the slope): `−X X̃ = S(α) + g W` with `g = α(1 − α)`, whose principal root is
+/// `K = a + μW`, `2a² = S + √(S² − g² w)`, `μ = g / 2a` ([`ScalarQuadvector::try_sqrt`]'s
+/// branches); then `C_α ∝ K* X = a X − μ ⟨W X⟩₃`, normalised, and `⟨W X⟩₃` is linear in α.
+/// The same circle as the general projector ([`Pair::at`]) to rounding, without its products
+/// — which were a sixth of a surface ray.
+fn circle_at<U: Real>(
+    [c1, c2, w1, w2]: [&Circle<U>; 4],
+    s: [U; 3],
+    w: U,
+    alpha: U,
+) -> Result<Circle<U>, InterpolationError> {
+    let beta = U::one() - alpha;
+    let g = alpha * beta;
+    let big_s = s[0] * beta * beta + s[1] * g + s[2] * alpha * alpha;
+    let q2 = g * g * w;
+    let disc = big_s * big_s - q2;
+    if disc < U::zero() || !disc.is_finite() {
+        return Err(InterpolationError::NoRealRoot { alpha: alpha.to_f64(), s: big_s.to_f64(), q2: q2.to_f64() });
+    }
+    let singular = InterpolationError::Singular { alpha: alpha.to_f64() };
+    let root = disc.sqrt();
+    let plus = if big_s >= U::zero() { big_s + root } else { q2 / (big_s - root) };
+    let a = (plus / U::from_f64(2.0)).sqrt();
+    let mu = g / (a + a);
+    if !(plus > U::zero() && mu.is_finite()) {
+        return Err(singular);
+    }
+    let x = *c1 * beta + *c2 * alpha;
+    let wx = *w1 * beta + *w2 * alpha;
+    (x * a + wx * (-mu)).try_normalise().ok_or(singular)
 }
 
 impl<T: Real> Circles<T> for TwoCircles<T> {
@@ -142,11 +174,13 @@ impl<T: Real> Circles<T> for TwoCircles<T> {
     }
 
     fn at(&self, alpha: T) -> Result<Circle<T>, InterpolationError> {
-        self.pair.at(alpha)
+        let [c1, c2] = [&self.pair.c1, &self.pair.c2];
+        circle_at([c1, c2, &self.wc[0], &self.wc[1]], self.s, self.w, alpha)
     }
 
     fn at_dual(&self, alpha: Dual<T>) -> Result<Circle<Dual<T>>, InterpolationError> {
-        self.lifted.at(alpha)
+        let [c1, c2, w1, w2] = &self.lifted;
+        circle_at([c1, c2, w1, w2], self.s.map(Dual::constant), Dual::constant(self.w), alpha)
     }
 
     /// A polynomial in α whose roots in [0, 1] include every root of `f`.
@@ -176,9 +210,10 @@ impl<T: Real> Circles<T> for TwoCircles<T> {
         let b_end = [line.meet_circle(&self.wc[0]), line.meet_circle(&self.wc[1])];
         let (p, b) = (product(&a_end, &b_end), product(&b_end, &b_end));
         // g = α(1 − α) multiplies by shifting coefficients in the scaled basis.
-        let p1 = self.s.mul(&a).add_scaled(-T::one(), &p.times_g());
+        let big_s = Scaled::quadratic(self.s[0], self.s[1], self.s[2]);
+        let p1 = big_s.mul(&a).add_scaled(-T::one(), &p.times_g());
         let h = b.add_scaled(-self.w, &a);
-        let r = p1.mul(&p1).scale(self.w).add_scaled(T::one(), &self.s.mul(&p1).mul(&h));
+        let r = p1.mul(&p1).scale(self.w).add_scaled(T::one(), &big_s.mul(&p1).mul(&h));
         r.add_scaled(T::from_f64(0.25), &h.mul(&h).times_g().times_g()).bernstein()
     }
 }

@@ -18,6 +18,8 @@
 #[cfg(feature = "evolved")]
 pub mod bernstein;
 #[cfg(feature = "evolved")]
+mod cells;
+#[cfg(feature = "evolved")]
 mod evolved;
 #[cfg(feature = "evolved")]
 pub mod family;
@@ -29,8 +31,6 @@ mod ruled;
 pub mod segment;
 #[cfg(feature = "evolved")]
 mod spline;
-#[cfg(feature = "evolved")]
-mod tree;
 
 use cga_core::{GeometryError, InterpolationError};
 #[cfg(feature = "evolved")]
