@@ -159,7 +159,11 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
 
     /// `p(t)` ([`Bernstein::eval_with_slope`]).
     pub fn eval(&self, t: T) -> T {
-        self.eval_with_slope(t).0
+        match t {
+            t if t == T::zero() => self.c[0],
+            t if t == T::one() => self.c[self.degree],
+            t => self.eval_with_slope(t).0,
+        }
     }
 
     /// `(p(t), p'(t))` by Horner's rule from the nearer end (Schumaker–Volk): for `t ≤ ½`,

@@ -117,8 +117,24 @@ impl Cells {
     }
 
     /// The α-intervals whose cells the ray reaches within `(t_min, t_max)`, in increasing α,
-    /// neighbours merged.
+    /// neighbours merged. Four lanes at once in AVX2 where the CPU has it (chosen at run time).
     pub fn intervals(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
+        #[cfg(target_arch = "x86_64")]
+        if cga_core::simd::avx2() {
+            // SAFETY: the CPU has the features the function is compiled for.
+            return unsafe { self.intervals_avx2(ray, t_min, t_max) };
+        }
+        self.intervals_lanes(ray, t_min, t_max)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn intervals_avx2(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
+        self.intervals_lanes(ray, t_min, t_max)
+    }
+
+    #[inline(always)]
+    fn intervals_lanes(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
         let mut out = Intervals::new();
         let width = 1.0 / self.cells as f64;
         for (g, four) in self.fours.iter().enumerate() {

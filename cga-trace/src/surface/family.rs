@@ -548,11 +548,16 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
     /// The nearest verified crossing `(t, point, α)` with `t_min < t < t_max` of the ray
     /// `origin + t dir` (unit `dir`, carried by `line`) among the candidate α.
     ///
-    /// With `polish`, a candidate that fails verification is moved by up to two Newton steps
-    /// on `f` itself and tried again: a root of the polynomial `R` carries `R`'s conditioning,
-    /// not `f`'s, and near-degenerate circles can put it just outside the verification's
-    /// tolerance. Steps longer than 1e-6 mean `R`'s root is not one of `f`'s (the other
-    /// branch of the square root), and it stays rejected.
+    /// With `polish`, the crossing is placed to rounding on `f` itself: a root of the
+    /// polynomial `R` carries `R`'s conditioning, not `f`'s. Each candidate is then verified on
+    /// `C_α` from one evaluation on dual numbers, which also gives `f`, `f'` and `dC/dα`; the
+    /// kept crossing takes its Newton step `δ = f/f'` from those when `|δ| ≤ 1e-8` (the
+    /// circle moved to `C − δ dC/dα`, exact to `δ²`), and by [`Family::refine`] otherwise. A
+    /// candidate that fails verification is moved by up to two Newton steps on `f` and tried
+    /// again: near-degenerate circles can put `R`'s root just outside the verification's
+    /// tolerance. Steps longer than 1e-6 mean `R`'s root is not one of `f`'s (the other branch
+    /// of the square root), and it stays rejected.
+    #[allow(clippy::type_complexity)]
     pub fn nearest(
         &self,
         ray: (E3<T>, E3<T>, &Line<T>),
@@ -561,44 +566,76 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
         t_max: T,
         polish: bool,
     ) -> Option<(T, E3<T>, T)> {
-        let mut best: Option<(T, E3<T>, T)> = None;
-        let lifted = polish.then(|| ray.2.lift());
+        let in_range = |x: &E3<T>| {
+            let t = dot(sub(*x, ray.0), ray.1);
+            (t > t_min && t < t_max).then_some(t)
+        };
+        if !polish {
+            let mut best: Option<(T, E3<T>, T)> = None;
+            for &alpha in alphas {
+                for x in self.verified(alpha, ray) {
+                    match in_range(&x) {
+                        Some(t) if best.is_none_or(|b| t < b.0) => best = Some((t, x, alpha)),
+                        _ => {}
+                    }
+                }
+            }
+            return best;
+        }
+        let line = ray.2.lift();
+        // (t, point, α, what the evaluation at α gave)
+        let mut best: Option<(T, E3<T>, T, Option<Slope<T>>)> = None;
         for &alpha in alphas {
-            let mut points = self.verified(alpha, ray);
+            let mut slope = self.slope(&line, alpha);
+            let mut points = slope.as_ref().map_or_else(SmallVec::new, |s| hit_points(&s.circle, ray));
             let mut alpha = alpha;
-            if points.is_empty()
-                && let Some(line) = &lifted
-            {
-                let polished = self.polish_near(line, alpha);
+            if points.is_empty() {
+                let polished = self.polish_near(&line, alpha);
                 if polished != alpha {
-                    alpha = polished;
+                    (alpha, slope) = (polished, None);
                     points = self.verified(alpha, ray);
                 }
             }
             for x in points {
-                let t = dot(sub(x, ray.0), ray.1);
-                if t > t_min && t < t_max && best.is_none_or(|b| t < b.0) {
-                    best = Some((t, x, alpha));
+                match in_range(&x) {
+                    Some(t) if best.as_ref().is_none_or(|b| t < b.0) => best = Some((t, x, alpha, slope)),
+                    _ => {}
                 }
             }
         }
-        // The crossing kept is placed to rounding on f itself: a root of the polynomial
-        // carries the polynomial's conditioning, and verification accepts it within 1e-6 r.
-        if let (Some((t, x, alpha)), Some(line)) = (best, &lifted) {
-            let refined = self.refine(line, alpha);
-            let distance = |y: &E3<T>| norm(sub(*y, x));
-            let nearest = self
-                .verified(refined, ray)
-                .into_iter()
-                .min_by(|a, b| distance(a).to_f64().total_cmp(&distance(b).to_f64()));
-            if let Some(y) = nearest {
-                let t2 = dot(sub(y, ray.0), ray.1);
-                if t2 > t_min && t2 < t_max && (t2 - t).abs() <= T::from_f64(1e-6) * (t.abs() + norm(sub(x, ray.0))) {
-                    best = Some((t2, y, refined));
-                }
+        let (t, x, alpha, slope) = best?;
+        let step = slope.as_ref().map(|s| (s.f / s.df, s));
+        let (refined, circle) = match step {
+            Some((delta, s))
+                if delta.abs() <= T::from_f64(TAYLOR_STEP) && (alpha - delta) == clamp_unit(alpha - delta) =>
+            {
+                (alpha - delta, Ok(s.circle + s.circle_slope * (-delta)))
+            }
+            _ => {
+                let refined = self.refine(&line, alpha);
+                (refined, self.circles.at(refined))
+            }
+        };
+        let distance = |y: &E3<T>| norm(sub(*y, x));
+        let nearest = circle
+            .map_or_else(|_| SmallVec::new(), |c| hit_points(&c, ray))
+            .into_iter()
+            .min_by(|a, b| distance(a).to_f64().total_cmp(&distance(b).to_f64()));
+        if let Some(y) = nearest {
+            let t2 = dot(sub(y, ray.0), ray.1);
+            if t2 > t_min && t2 < t_max && (t2 - t).abs() <= T::from_f64(1e-6) * (t.abs() + norm(sub(x, ray.0))) {
+                return Some((t2, y, refined));
             }
         }
-        best
+        Some((t, x, alpha))
+    }
+
+    /// `C_α`, `dC/dα`, `f` and `f'` at α, from one evaluation on dual numbers.
+    fn slope(&self, line: &Line<Dual<T>>, alpha: T) -> Option<Slope<T>> {
+        let c = self.circles.at_dual(Dual::variable(alpha)).ok()?;
+        let f = line.meet_circle(&c).norm_squared();
+        let (circle, circle_slope) = Circle::split(c);
+        Some(Slope { circle, circle_slope, f: f.re, df: f.du })
     }
 
     /// The verified points where the ray meets `C_α`.
@@ -606,6 +643,19 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
         crate::surface::COUNT[7].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         self.circles.at(alpha).map_or_else(|_| SmallVec::new(), |circle| hit_points(&circle, ray))
     }
+}
+
+/// A Newton step on `f` at most this long (in α) is taken from the derivatives already at
+/// hand, the circle moved along its tangent: the error is of order δ², below rounding.
+const TAYLOR_STEP: f64 = 1e-8;
+
+/// What one evaluation on dual numbers gives at α ([`Family::slope`]).
+#[derive(Clone, Copy, Debug)]
+struct Slope<T: Real> {
+    circle: Circle<T>,
+    circle_slope: Circle<T>,
+    f: T,
+    df: T,
 }
 
 /// `x` kept in [0, 1].
