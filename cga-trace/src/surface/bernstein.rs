@@ -301,7 +301,6 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
                 }
                 _ => {
                     let mid = T::from_f64(0.5) * (lo + hi);
-                    crate::surface::COUNT[2].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     let (left, right) = self.split(T::from_f64(0.5));
                     left.isolate(lo, mid, tolerance, floor, depth + 1, out);
                     right.isolate(mid, hi, tolerance, floor, depth + 1, out);
@@ -328,7 +327,6 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
     /// steps with the exact slope, replaced by bisection whenever one leaves the bracket,
     /// until the bracket or the step is below `tolerance` (rounding level at least).
     fn refine(&self, a: T, b: T, tolerance: T) -> T {
-        crate::surface::COUNT[0].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let (pa, pb) = (self.eval(a), self.eval(b));
         let positive_at_a = pa > T::zero();
         // Below this, |p| is rounding noise (de Casteljau is backward stable: the error is a
@@ -343,7 +341,6 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
         let stop = Stop { noise, absolute: tolerance, relative: T::zero(), iterations: 100 };
         safeguarded(
             |t| {
-                crate::surface::COUNT[1].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 Some(self.eval_with_slope(t))
             },
             (a, b),

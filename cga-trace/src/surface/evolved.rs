@@ -157,9 +157,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         let line = &local.line;
         match &self.tree {
             Some(tree) => {
-                super::COUNT[3].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 for (lo, hi, leaves) in tree.intervals(local, t_min, t_max) {
-                    super::COUNT[4].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
                 }
             }
@@ -178,7 +176,6 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// frame, the segments of a spline, build it once).
     pub fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let alphas = self.candidates(local, t_min, t_max);
-        super::COUNT[5].fetch_add(alphas.len(), std::sync::atomic::Ordering::Relaxed);
         let polish = self.method.finder(1).polishes();
         let ray = (local.origin, local.dir, &local.line);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;

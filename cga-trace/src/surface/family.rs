@@ -260,7 +260,6 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
 
     /// `(f, f')` at α, exact: the interpolation and meet run on dual numbers.
     pub fn f_and_slope(&self, line: &Line<Dual<T>>, alpha: T) -> Option<(T, T)> {
-        crate::surface::COUNT[6].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let c = self.circles.at_dual(Dual::variable(alpha)).ok()?;
         let f = line.meet_circle(&c).norm_squared();
         Some((f.re, f.du))
@@ -640,7 +639,6 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
 
     /// The verified points where the ray meets `C_α`.
     fn verified(&self, alpha: T, ray: (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
-        crate::surface::COUNT[7].fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         self.circles.at(alpha).map_or_else(|_| SmallVec::new(), |circle| hit_points(&circle, ray))
     }
 }

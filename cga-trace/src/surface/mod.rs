@@ -167,6 +167,3 @@ impl Method {
         }
     }
 }
-
-/// temp
-pub static COUNT: [std::sync::atomic::AtomicUsize; 8] = [const { std::sync::atomic::AtomicUsize::new(0) }; 8];
