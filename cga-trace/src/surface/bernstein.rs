@@ -339,15 +339,7 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
         let start = if a == T::zero() && b == T::one() { self.polygon_crossing() } else { None };
         let start = start.unwrap_or_else(|| a + (b - a) * pa / (pa - pb));
         let stop = Stop { noise, absolute: tolerance, relative: T::zero(), iterations: 100 };
-        safeguarded(
-            |t| {
-                Some(self.eval_with_slope(t))
-            },
-            (a, b),
-            positive_at_a,
-            start,
-            stop,
-        )
+        safeguarded(|t| Some(self.eval_with_slope(t)), (a, b), positive_at_a, start, stop)
     }
 
     /// Where the control polygon `(k/n, cₖ)` first crosses zero.

@@ -201,21 +201,44 @@ impl<T: Real> Circles<T> for TwoCircles<T> {
         let a_end = [line.meet_circle(&self.pair.c1), line.meet_circle(&self.pair.c2)];
         let product = |u: &[Vector<T>; 2], v: &[Vector<T>; 2]| {
             let dot = |x: &Vector<T>, y: &Vector<T>| (*x | *y).s;
-            Scaled::quadratic(dot(&u[0], &v[0]), dot(&u[0], &v[1]) + dot(&u[1], &v[0]), dot(&u[1], &v[1]))
+            [dot(&u[0], &v[0]), dot(&u[0], &v[1]) + dot(&u[1], &v[0]), dot(&u[1], &v[1])]
         };
         let a = product(&a_end, &a_end);
         if self.cospherical {
-            return a.bernstein();
+            return Scaled::<T>::new(&a).bernstein();
         }
         let b_end = [line.meet_circle(&self.wc[0]), line.meet_circle(&self.wc[1])];
         let (p, b) = (product(&a_end, &b_end), product(&b_end, &b_end));
-        // g = α(1 − α) multiplies by shifting coefficients in the scaled basis.
-        let big_s = Scaled::quadratic(self.s[0], self.s[1], self.s[2]);
-        let p1 = big_s.mul(&a).add_scaled(-T::one(), &p.times_g());
-        let h = b.add_scaled(-self.w, &a);
-        let r = p1.mul(&p1).scale(self.w).add_scaled(T::one(), &big_s.mul(&p1).mul(&h));
-        r.add_scaled(T::from_f64(0.25), &h.mul(&h).times_g().times_g()).bernstein()
+        // Scaled-basis coefficients in arrays of their exact lengths (the products unroll
+        // into registers); g = α(1 − α) multiplies by shifting them one place.
+        let sa: [T; 5] = convolve(&self.s, &a);
+        let p1: [T; 5] = core::array::from_fn(|k| if (1..4).contains(&k) { sa[k] - p[k - 1] } else { sa[k] });
+        let h: [T; 3] = core::array::from_fn(|k| b[k] + -self.w * a[k]);
+        let p1p1: [T; 9] = convolve(&p1, &p1);
+        let sp1: [T; 7] = convolve(&self.s, &p1);
+        let sp1h: [T; 9] = convolve(&sp1, &h);
+        let hh: [T; 5] = convolve(&h, &h);
+        let quarter = T::from_f64(0.25);
+        let r: [T; 9] = core::array::from_fn(|k| {
+            let g2hh = if (2..7).contains(&k) { hh[k - 2] } else { T::zero() };
+            (p1p1[k] * self.w + sp1h[k]) + quarter * g2hh
+        });
+        Scaled::<T>::new(&r).bernstein()
     }
+}
+
+/// `x y` for polynomials in the scaled Bernstein basis: a convolution, `C = A + B − 1`
+/// coefficients.
+#[inline(always)]
+fn convolve<T: Real, const A: usize, const B: usize, const C: usize>(x: &[T; A], y: &[T; B]) -> [T; C] {
+    const { assert!(C + 1 == A + B, "the product has A + B − 1 coefficients") };
+    let mut c = [T::zero(); C];
+    for (i, xi) in x.iter().enumerate() {
+        for (j, yj) in y.iter().enumerate() {
+            c[i + j] = c[i + j] + *xi * *yj;
+        }
+    }
+    c
 }
 
 impl<T: Real> Family<T> {
