@@ -37,6 +37,12 @@ pub trait Circles<T: Real>: Clone + core::fmt::Debug {
     fn at_dual(&self, alpha: Dual<T>) -> Result<Circle<Dual<T>>, InterpolationError>;
     /// A polynomial in α whose roots in [0, 1] include every root of `f(α) = (C_α ∨ L)²`.
     fn polynomial(&self, line: &Line<T>) -> Self::Polynomial;
+    /// [`Circles::polynomial`] on `[lo, hi]`, reparametrised to [0, 1] (by default restricted
+    /// by de Casteljau's algorithm).
+    fn polynomial_on(&self, line: &Line<T>, lo: T, hi: T) -> Self::Polynomial {
+        let poly = self.polynomial(line);
+        if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly }
+    }
     /// The curvature of the surface at `x` on `C_α` ([`cga_core::curvature()`]), where the
     /// family knows it.
     fn curvature(&self, _alpha: T, _x: E3<T>) -> Option<cga_core::Curvature<T>> {
@@ -198,33 +204,52 @@ impl<T: Real> Circles<T> for TwoCircles<T> {
     /// root, and `b = 0` at the ends — are rejected by the caller's verification. For
     /// co-spherical circles (`W = 0`) `R` vanishes identically and `a` (degree 2) is used.
     fn polynomial(&self, line: &Line<T>) -> Bernstein<T> {
+        self.polynomial_on(line, T::zero(), T::one())
+    }
+
+    /// The same polynomial built on `[lo, hi]` directly: its quadratic factors (and
+    /// `g = α(1 − α)`) restricted there by their blossoms, then multiplied out — cheaper than
+    /// two de Casteljau splits of the degree-8 result, and no less accurate.
+    fn polynomial_on(&self, line: &Line<T>, lo: T, hi: T) -> Bernstein<T> {
         let a_end = [line.meet_circle(&self.pair.c1), line.meet_circle(&self.pair.c2)];
         let product = |u: &[Vector<T>; 2], v: &[Vector<T>; 2]| {
             let dot = |x: &Vector<T>, y: &Vector<T>| (*x | *y).s;
             [dot(&u[0], &v[0]), dot(&u[0], &v[1]) + dot(&u[1], &v[0]), dot(&u[1], &v[1])]
         };
-        let a = product(&a_end, &a_end);
+        let whole = lo == T::zero() && hi == T::one();
+        let on = |q: [T; 3]| if whole { q } else { restrict_quadratic(q, lo, hi) };
+        let a = on(product(&a_end, &a_end));
         if self.cospherical {
             return Scaled::<T>::new(&a).bernstein();
         }
         let b_end = [line.meet_circle(&self.wc[0]), line.meet_circle(&self.wc[1])];
-        let (p, b) = (product(&a_end, &b_end), product(&b_end, &b_end));
-        // Scaled-basis coefficients in arrays of their exact lengths (the products unroll
-        // into registers); g = α(1 − α) multiplies by shifting them one place.
-        let sa: [T; 5] = convolve(&self.s, &a);
-        let p1: [T; 5] = core::array::from_fn(|k| if (1..4).contains(&k) { sa[k] - p[k - 1] } else { sa[k] });
+        let (p, b) = (on(product(&a_end, &b_end)), on(product(&b_end, &b_end)));
+        let (s, g) = (on(self.s), on([T::zero(), T::one(), T::zero()]));
+        // Scaled-basis coefficients in arrays of their exact lengths: the products unroll
+        // into registers.
+        let (sa, gp): ([T; 5], [T; 5]) = (convolve(&s, &a), convolve(&g, &p));
+        let p1: [T; 5] = core::array::from_fn(|k| sa[k] - gp[k]);
         let h: [T; 3] = core::array::from_fn(|k| b[k] + -self.w * a[k]);
         let p1p1: [T; 9] = convolve(&p1, &p1);
-        let sp1: [T; 7] = convolve(&self.s, &p1);
+        let sp1: [T; 7] = convolve(&s, &p1);
         let sp1h: [T; 9] = convolve(&sp1, &h);
-        let hh: [T; 5] = convolve(&h, &h);
+        let (gg, hh): ([T; 5], [T; 5]) = (convolve(&g, &g), convolve(&h, &h));
+        let gghh: [T; 9] = convolve(&gg, &hh);
         let quarter = T::from_f64(0.25);
-        let r: [T; 9] = core::array::from_fn(|k| {
-            let g2hh = if (2..7).contains(&k) { hh[k - 2] } else { T::zero() };
-            (p1p1[k] * self.w + sp1h[k]) + quarter * g2hh
-        });
+        let r: [T; 9] = core::array::from_fn(|k| (p1p1[k] * self.w + sp1h[k]) + quarter * gghh[k]);
         Scaled::<T>::new(&r).bernstein()
     }
+}
+
+/// A quadratic in the scaled Bernstein basis (`q₀ (1 − α)² + q₁ α(1 − α) + q₂ α²`) on
+/// `[lo, hi]`, reparametrised to [0, 1]: its blossom at `(lo, lo)`, `(lo, hi)`, `(hi, hi)`.
+fn restrict_quadratic<T: Real>(q: [T; 3], lo: T, hi: T) -> [T; 3] {
+    let half = T::from_f64(0.5);
+    let blossom = |u: T, v: T| {
+        let (u1, v1) = (T::one() - u, T::one() - v);
+        q[0] * u1 * v1 + half * q[1] * (u1 * v + u * v1) + q[2] * u * v
+    };
+    [blossom(lo, lo), T::from_f64(2.0) * blossom(lo, hi), blossom(hi, hi)]
 }
 
 /// `x y` for polynomials in the scaled Bernstein basis: a convolution, `C = A + B − 1`
@@ -295,17 +320,17 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
             Finder::Samples(n) => self.sampled(line, lo, hi, n.max(2), out),
             Finder::Slope(n) => self.sampled_with_slope(&line.lift(), lo, hi, n.max(2), out),
             Finder::Polynomial(tolerance) => {
-                let poly = self.circles.polynomial(line);
+                let restricted = self.circles.polynomial_on(line, lo, hi);
                 // A root within rounding of α = 0 or 1 (a ray through an end circle) can fall
                 // just outside [0, 1] in R; a short Newton step from the end tells, and f
-                // itself then places the root.
-                let c = poly.coefficients();
-                let n = T::from_f64((c.len() - 1) as f64);
+                // itself then places the root. (Slopes in α: the restricted parameter runs
+                // 1/(hi − lo) times faster.)
+                let c = restricted.coefficients();
+                let n = T::from_f64((c.len() - 1) as f64) / (hi - lo);
                 let near = |value: T, slope: T| value.abs() <= T::from_f64(END_STEP) * (n * slope).abs();
                 let (first, last) = (c[0], c[c.len() - 1]);
                 let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
                 let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
-                let restricted = if lo > T::zero() || hi < T::one() { poly.restrict(lo, hi) } else { poly };
                 let first = out.len();
                 restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
                 if C::REFINE {
