@@ -133,23 +133,30 @@ impl Cells {
         self.intervals_lanes(ray, t_min, t_max)
     }
 
+    /// The cells reached as bits, 64 cells to a word, then read off run by run (a branch
+    /// per interval, not per cell).
     #[inline(always)]
     fn intervals_lanes(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
         let mut out = Intervals::new();
         let width = 1.0 / self.cells as f64;
-        for (g, four) in self.fours.iter().enumerate() {
-            for (l, reached) in four.reached(ray, t_min, t_max).into_iter().enumerate() {
-                let cell = 4 * g + l;
-                if !reached {
-                    continue;
-                }
-                let (lo, hi) = (cell as f64 * width, (cell + 1) as f64 * width);
+        for (b, block) in self.fours.chunks(16).enumerate() {
+            let mut mask = 0u64;
+            for (g, four) in block.iter().enumerate() {
+                let bits = four.reached(ray, t_min, t_max).iter().rev().fold(0u64, |m, &r| (m << 1) | u64::from(r));
+                mask |= bits << (4 * g);
+            }
+            while mask != 0 {
+                let start = mask.trailing_zeros() as usize;
+                let run = (!(mask >> start)).trailing_zeros() as usize;
+                mask = if start + run >= 64 { 0 } else { mask & (!0u64 << (start + run)) };
+                let first = 64 * b + start;
+                let (lo, hi) = (first as f64 * width, (first + run) as f64 * width);
                 match out.last_mut() {
                     Some(last) if last.1 == lo => {
                         last.1 = hi;
-                        last.2 += 1;
+                        last.2 += run;
                     }
-                    _ => out.push((lo, hi, 1)),
+                    _ => out.push((lo, hi, run)),
                 }
             }
         }
