@@ -217,6 +217,26 @@ mod tests {
     #[test]
     fn every_ray_through_a_circle_reaches_its_cell() {
         let circles = twisted();
+        // Fewer cells than lanes, and more than one 64-cell word.
+        for count in [2, 256] {
+            let cells = Cells::new(&circles, count).unwrap();
+            let mut next = stream(7);
+            for _ in 0..2000 {
+                let (alpha, angle) = (next(), next() * std::f64::consts::TAU);
+                let (c, n, r) = circles.at(alpha).unwrap().centre_normal_radius().unwrap();
+                let (u, v) = (perpendicular(n), cross(n, perpendicular(n)));
+                let x = add(c, add(scale(u, r * angle.cos()), scale(v, r * angle.sin())));
+                let dir = unit([next() - 0.5, next() - 0.5, next() - 0.5]).unwrap();
+                let ray = Ray::new(sub(x, scale(dir, 3.0)), dir).unwrap();
+                let found = cells.intervals(&ray, 0.0, f64::INFINITY);
+                assert!(found.iter().any(|&(lo, hi, _)| lo <= alpha && alpha <= hi), "{count} cells, α = {alpha}");
+                // Intervals are disjoint, increasing, and count their cells.
+                for w in found.windows(2) {
+                    assert!(w[0].1 < w[1].0, "{found:?}");
+                }
+                assert!(found.iter().all(|&(lo, hi, k)| ((hi - lo) * count as f64 - k as f64).abs() < 1e-9));
+            }
+        }
         let cells = Cells::new(&circles, 16).unwrap();
         let mut next = stream(0x2545_f491_4f6c_dd1d);
         let mut reached = 0;
