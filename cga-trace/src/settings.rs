@@ -46,7 +46,7 @@ pub struct Settings {
     /// PNG encoding.
     #[serde(default)]
     pub encoding: Encoding,
-    /// How rays meet evolved surfaces (default: hybrid — the α-tree culls, the degree-8
+    /// How rays meet evolved surfaces (default: hybrid — α-cells cull, the degree-8
     /// polynomial finds the roots; docs/SURFACE.md).
     #[serde(default)]
     pub surface_method: Method,

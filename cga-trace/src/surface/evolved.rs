@@ -1,4 +1,4 @@
-//! The evolved surface as a scene object: its local frame, bounds, culling tree and the
+//! The evolved surface as a scene object: its local frame, bounds, culling cells and the
 //! method that finds its crossings with a ray.
 
 use super::bernstein::Roots;
@@ -23,8 +23,8 @@ pub struct EvolvedSurface<C = TwoCircles<f64>> {
     radius: f64,
     /// How rays are intersected.
     method: Method,
-    /// Bounding spheres over α-intervals, for the methods that cull with them.
-    tree: Option<Cells>,
+    /// Bounding spheres and tubes over α-intervals, for the methods that cull with them.
+    cells: Option<Cells>,
 }
 
 /// Circles whose centres and radii differ by less than this times the radius, and whose
@@ -69,7 +69,7 @@ impl EvolvedSurface {
 
     /// The surface between circles given in a frame whose origin is `origin` (world
     /// coordinates). Building them there, rather than far out in world coordinates, keeps
-    /// their precision. All per-surface work (bounds, tree, polynomial constants) is done here.
+    /// their precision. All per-surface work (bounds, cells, polynomial constants) is done here.
     ///
     /// The circles are rebuilt from their centre, normal and radius: a trivector typed with
     /// rounded coefficients is not exactly a blade (`C C̃` then has a 4-vector part), and the
@@ -95,7 +95,7 @@ impl EvolvedSurface {
 
 impl<C: Circles<f64>> EvolvedSurface<C> {
     /// The surface swept by `circles`, given in a frame whose origin is `origin` (world
-    /// coordinates): bounding sphere (sampled, padded), and the method's tree. Refused where a
+    /// coordinates): bounding sphere (sampled, padded), and the method's cells. Refused where a
     /// sampled `C_α` is a line (`Unbounded`) or has no real root.
     pub fn of(origin: E3, circles: C, method: Method) -> Result<Self, SurfaceError> {
         let mut radius = 0.0f64;
@@ -104,20 +104,20 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
             let (c, _, r) = circles.at(alpha)?.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })?;
             radius = radius.max(norm(c) + r);
         }
-        let tree = Self::tree(&circles, method)?;
-        Ok(EvolvedSurface { family: Family::of(circles), origin, radius: radius * PAD, method, tree })
+        let cells = Self::cells(&circles, method)?;
+        Ok(EvolvedSurface { family: Family::of(circles), origin, radius: radius * PAD, method, cells })
     }
 
     /// The same surface (the same circles, oriented as they are) intersected by another
     /// method.
     pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
-        let tree = Self::tree(&self.family.circles, method)?;
-        Ok(EvolvedSurface { family: self.family.clone(), method, tree, ..*self })
+        let cells = Self::cells(&self.family.circles, method)?;
+        Ok(EvolvedSurface { family: self.family.clone(), method, cells, ..*self })
     }
 
-    /// The bounding-sphere tree, for the methods that cull with one.
-    fn tree(circles: &C, method: Method) -> Result<Option<Cells>, SurfaceError> {
-        method.tree_leaves().map(|leaves| Cells::new(circles, leaves)).transpose()
+    /// The culling cells, for the methods that cull with them.
+    fn cells(circles: &C, method: Method) -> Result<Option<Cells>, SurfaceError> {
+        method.cells().map(|count| Cells::new(circles, count)).transpose()
     }
 
     /// The bounding sphere `(centre, radius)` in world coordinates.
@@ -155,9 +155,9 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     pub fn candidates(&self, local: &Ray, t_min: f64, t_max: f64) -> Roots<f64> {
         let mut out = Roots::new();
         let line = &local.line;
-        match &self.tree {
-            Some(tree) => {
-                for (lo, hi, leaves) in tree.intervals(local, t_min, t_max) {
+        match &self.cells {
+            Some(cells) => {
+                for (lo, hi, leaves) in cells.intervals(local, t_min, t_max) {
                     self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
                 }
             }

@@ -4,8 +4,8 @@
 //! then the touching point). Every method:
 //! 1. rejects rays that miss the surface's bounding sphere;
 //! 2. finds candidate α in [0, 1] (the ends included, so hits at α = 0 and 1 count) — by
-//!    sampling `f`, by the roots of a degree-8 polynomial, or through a tree of bounding
-//!    spheres over α-intervals ([`Method`]);
+//!    sampling `f`, by the roots of a degree-8 polynomial, or through cells (bounding
+//!    spheres and tubes over α-intervals) that pick the intervals a ray reaches ([`Method`]);
 //! 3. verifies every candidate geometrically: the point must lie on the circle and on the
 //!    line. Where the meet degenerates — the line lies in the circle's plane, so
 //!    `C ∨ L = 0` for every point — the points come from the line–circle intersection
@@ -95,19 +95,20 @@ pub enum Method {
         /// Refinement tolerance in α (0: to rounding level).
         tolerance: f64,
     },
-    /// Bounding spheres over `leaves` α-intervals (a binary tree, built once per surface)
-    /// reject rays and isolate the intervals a ray can hit; each is sampled `per_leaf`
-    /// times and roots are refined by safeguarded Newton with the exact `f'`.
+    /// Bounding spheres and tubes over `leaves` equal α-intervals (cells, built once per
+    /// surface, tested four at a time) reject rays and isolate the intervals a ray can hit;
+    /// each is sampled `per_leaf` times and roots are refined by safeguarded Newton with the
+    /// exact `f'`.
     Hierarchy {
-        /// α-intervals at the bottom of the tree (a power of two).
+        /// α-cells (a power of two).
         leaves: usize,
         /// Samples per interval a ray reaches.
         per_leaf: usize,
     },
-    /// The tree of [`Method::Hierarchy`] to cull, and the polynomial of
-    /// [`Method::Polynomial`], restricted to the intervals reached, to find the roots.
+    /// The cells of [`Method::Hierarchy`] to cull, and the polynomial of
+    /// [`Method::Polynomial`], built on each interval reached, to find the roots.
     Hybrid {
-        /// α-intervals at the bottom of the tree (a power of two).
+        /// α-cells (a power of two).
         leaves: usize,
         /// Refinement tolerance in α.
         tolerance: f64,
@@ -121,20 +122,20 @@ impl Default for Method {
 }
 
 /// The one place where a [`Method`] becomes the two things it decides: how rays are culled
-/// (an α-tree of bounding spheres, or none) and how roots are found over each α-interval a
+/// (α-cells of bounding spheres and tubes, or none) and how roots are found over each α-interval a
 /// ray reaches ([`Finder`]).
 #[cfg(feature = "evolved")]
 impl Method {
-    /// The leaves of the α-tree the method culls with (a power of two), `None` for no tree.
-    pub fn tree_leaves(&self) -> Option<usize> {
+    /// The α-cells the method culls with (a power of two), `None` for none.
+    pub fn cells(&self) -> Option<usize> {
         match *self {
             Method::Hierarchy { leaves, .. } | Method::Hybrid { leaves, .. } => Some(leaves.next_power_of_two().max(1)),
             Method::Sampling { .. } | Method::Polynomial { .. } => None,
         }
     }
 
-    /// The root finder over an interval spanning `leaves` leaves of the tree (the whole of
-    /// `[0, 1]` for methods without one).
+    /// The root finder over an interval spanning `leaves` cells (the whole of `[0, 1]` for
+    /// methods without cells).
     pub fn finder(&self, leaves: usize) -> Finder {
         match *self {
             Method::Sampling { samples } => Finder::Samples(samples),
