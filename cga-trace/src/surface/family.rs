@@ -599,7 +599,7 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
     /// polynomial `R` carries `R`'s conditioning, not `f`'s. Each candidate is then verified on
     /// `C_α` from one evaluation on dual numbers, which also gives `f`, `f'` and `dC/dα`; the
     /// kept crossing takes its Newton step `δ = f/f'` from those when `|δ| ≤ 1e-8` (the
-    /// circle moved to `C − δ dC/dα`, exact to `δ²`), and by [`Family::refine`] otherwise. A
+    /// circle moved to `C − δ dC/dα`, exact to `δ²`), and by Newton on `f` otherwise. A
     /// candidate that fails verification is moved by up to two Newton steps on `f` and tried
     /// again: near-degenerate circles can put `R`'s root just outside the verification's
     /// tolerance. Steps longer than 1e-6 mean `R`'s root is not one of `f`'s (the other branch
