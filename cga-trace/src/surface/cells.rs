@@ -201,6 +201,13 @@ mod tests {
         TwoCircles::new(Pair::new(c1, c2).unwrap())
     }
 
+    /// The point of `C_α` at `angle`, and the circle's normal.
+    fn on_circle(circles: &TwoCircles<f64>, alpha: f64, angle: f64) -> (E3, E3) {
+        let (c, n, r) = circles.at(alpha).unwrap().centre_normal_radius().unwrap();
+        let (u, v) = (perpendicular(n), cross(n, perpendicular(n)));
+        (add(c, add(scale(u, r * angle.cos()), scale(v, r * angle.sin()))), n)
+    }
+
     /// A seeded stream in [0, 1) (xorshift64).
     fn stream(mut state: u64) -> impl FnMut() -> f64 {
         move || {
@@ -223,9 +230,7 @@ mod tests {
             let mut next = stream(7);
             for _ in 0..2000 {
                 let (alpha, angle) = (next(), next() * std::f64::consts::TAU);
-                let (c, n, r) = circles.at(alpha).unwrap().centre_normal_radius().unwrap();
-                let (u, v) = (perpendicular(n), cross(n, perpendicular(n)));
-                let x = add(c, add(scale(u, r * angle.cos()), scale(v, r * angle.sin())));
+                let (x, _) = on_circle(&circles, alpha, angle);
                 let dir = unit([next() - 0.5, next() - 0.5, next() - 0.5]).unwrap();
                 let ray = Ray::new(sub(x, scale(dir, 3.0)), dir).unwrap();
                 let found = cells.intervals(&ray, 0.0, f64::INFINITY);
@@ -242,9 +247,7 @@ mod tests {
         let mut reached = 0;
         for k in 0..20_000 {
             let (alpha, angle) = (next(), next() * std::f64::consts::TAU);
-            let (c, n, r) = circles.at(alpha).unwrap().centre_normal_radius().unwrap();
-            let (u, v) = (perpendicular(n), cross(n, perpendicular(n)));
-            let x = add(c, add(scale(u, r * angle.cos()), scale(v, r * angle.sin())));
+            let (x, n) = on_circle(&circles, alpha, angle);
             let random = unit([next() - 0.5, next() - 0.5, next() - 0.5]).unwrap();
             // Every fourth ray lies in the circle's plane.
             let dir = if k % 4 == 0 { unit(sub(random, scale(n, dot(random, n)))).unwrap() } else { random };
