@@ -4,7 +4,7 @@
 use super::bernstein::Roots;
 use super::cells::{Cells, PAD};
 use super::family::{Circles, TwoCircles};
-use super::{Family, Method, SurfaceError};
+use super::{Family, Finder, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
 use cga_core::euclid::{E3, add, cross, dot, norm, sub};
@@ -157,8 +157,19 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         let line = &local.line;
         match &self.cells {
             Some(cells) => {
-                for (lo, hi, leaves) in cells.intervals(local, t_min, t_max) {
-                    self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
+                let intervals = cells.intervals(local, t_min, t_max);
+                if C::REFINE && matches!(self.method.finder(1), Finder::Polynomial(_)) && !intervals.is_empty() {
+                    // A high-degree polynomial (a spline segment's) is isolated over the whole
+                    // of [0, 1] and its roots kept where the cells reach: restricted to a cell
+                    // at a segment's end, a root on the knot circle came out 5e-10 off in α,
+                    // beyond what refinement on f recovers.
+                    self.family.roots(line, self.method.finder(1), 0.0, 1.0, &mut out);
+                    let slack = 1e-9;
+                    out.retain(|a| intervals.iter().any(|&(lo, hi, _)| lo - slack <= *a && *a <= hi + slack));
+                } else {
+                    for (lo, hi, leaves) in intervals {
+                        self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
+                    }
                 }
             }
             None => self.family.roots(line, self.method.finder(1), 0.0, 1.0, &mut out),
