@@ -35,6 +35,14 @@ struct Case {
     rays: Vec<TestRay>,
 }
 
+impl Case {
+    /// The same surface with only the rays the scenes' renders cast.
+    fn scene_rays(&self) -> Case {
+        let rays = self.rays.iter().filter(|r| r.kind.starts_with("scene")).copied().collect();
+        Case { name: self.name.clone(), surface: self.surface.clone(), rays }
+    }
+}
+
 /// A method at one setting of its knobs, in one scalar type.
 #[derive(Clone, Copy)]
 enum Setting {
@@ -577,8 +585,7 @@ fn main() {
             }
             times[s][c] = time_per_ray(&prepared, case, 3);
             if c < scene_cases {
-                let own = case.rays.iter().filter(|r| r.kind.starts_with("scene")).copied().collect();
-                let own = Case { name: String::new(), surface: case.surface.clone(), rays: own };
+                let own = case.scene_rays();
                 scene_rays[s].0 += time_per_ray(&prepared, &own, 3) * own.rays.len() as f64;
                 scene_rays[s].1 += own.rays.len();
             }
@@ -611,8 +618,7 @@ fn time_only(cases: &[Case], only: Option<&str>) {
     for setting in settings {
         for case in cases {
             let prepared = Prepared::new(setting, &case.surface);
-            let scene = case.rays.iter().filter(|r| r.kind.starts_with("scene")).copied().collect();
-            let scene = Case { name: String::new(), surface: case.surface.clone(), rays: scene };
+            let scene = case.scene_rays();
             println!(
                 "{} on {}: {:.0} ns/ray over its {} scene rays, {:.0} over all {}",
                 setting.label(),
