@@ -83,7 +83,7 @@ impl Four {
             let ring = (q2 <= (a + b) * (a + b)) & ((a <= b) | (q2 >= (a - b) * (a - b)));
             // `t₀ = −on / |d·n|` within `δ / |d·n|` of (t_min, t_max), times |d·n|.
             let near = ring & (delta - on > t_min * adn) & (-on - delta < t_max * adn);
-            *slot = sphere & ((dn.abs() < PARALLEL) | near);
+            *slot = sphere & ((adn < PARALLEL) | near);
         }
         out
     }
