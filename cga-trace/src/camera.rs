@@ -136,9 +136,10 @@ impl Camera {
     /// [`Camera::ray`] for four points `(u_k, v)` of a row at once, on four lanes: the rays,
     /// and their lines in lanes (for a [`Packet`](crate::packet::Packet)); the same
     /// operations lane by lane, so the same bits. `None` where a ray cannot be formed.
+    #[inline(always)]
     pub fn rays4(&self, u: [f64; 4], v: f64) -> Option<([Ray; 4], Line<F64x4>)> {
-        let points = u.map(|u| up(self.image_point(u, v)).to_array());
-        let x: [F64x4; 5] = core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])));
+        let points = u.map(|u| self.image_point(u, v));
+        let x = up(core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])))).to_array();
         let (line, dir) = unit_line(&self.lanes, x)?;
         let (lines, dir) = (Line::unpack(line), dir.map(F64x4::to_array));
         let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: dir.map(|c| c[l]), line: lines[l] });
@@ -178,6 +179,7 @@ impl Camera {
 /// for each basis vector (the sandwich and both wedges are linear), normalised, and its unit
 /// direction; `None` where it has none. A Euclidean line's norm is that of its direction
 /// part: one division normalises both. Generic, so one ray and four lanes share it.
+#[inline(always)]
 fn unit_line<T: Real>(lines: &[Line<T>; 5], x: [T; 5]) -> Option<(Line<T>, E3<T>)> {
     let line = (0..5).fold(Line::zero(), |l, k| l + lines[k].scale(x[k]));
     let d = [-line.e1oi, -line.e2oi, -line.e3oi];

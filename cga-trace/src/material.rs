@@ -2,6 +2,7 @@
 
 use crate::format::{number, numbers};
 use crate::scene::Invalid;
+use cga_core::Real;
 use serde::Deserialize;
 
 /// Surface colour and Blinn–Phong coefficients.
@@ -48,30 +49,43 @@ impl Material {
         Ok(())
     }
 
-    /// The specular term `max(c, 0)^q` for `c = n·h`: by repeated squaring where `q` is a
-    /// whole number up to 1,024 (as it nearly always is: a seventh of the time of `powf`,
-    /// which was an eighth of a frame; within a few ulps of it), by `powf` otherwise.
+    /// The specular term `max(c, 0)^q` for `c = n·h`: by repeated squaring ([`power`]) where
+    /// `q` is a whole number up to 1,024 (as it nearly always is: a seventh of the time of
+    /// `powf`, which was an eighth of a frame; within a few ulps of it), by `powf` otherwise.
     #[inline]
     pub fn specular(&self, c: f64) -> f64 {
         if c.is_nan() || c <= 0.0 {
             // `max(c, 0)^q`, NaN included (as `f64::max` takes it): `0^0 = 1`.
             return if self.q == 0.0 { 1.0 } else { 0.0 };
         }
-        if !(self.q.fract() == 0.0 && self.q <= 1024.0) {
-            return c.powf(self.q);
+        match self.whole_exponent() {
+            Some(n) => power(c, n),
+            None => c.powf(self.q),
         }
-        // `powi`'s own algorithm (compiler-rt's `__powidf2`: the same bits), inlined.
-        let (mut r, mut a, mut n) = (1.0, c, self.q as u32);
-        loop {
-            if n & 1 == 1 {
-                r *= a;
-            }
-            n /= 2;
-            if n == 0 {
-                return r;
-            }
-            a *= a;
+    }
+
+    /// `q` as a whole number up to 1,024, where it is one (then [`Material::specular`] is
+    /// [`power`]`(c, q)` for `c > 0`).
+    #[inline]
+    pub fn whole_exponent(&self) -> Option<u32> {
+        (self.q.fract() == 0.0 && self.q <= 1024.0).then_some(self.q as u32)
+    }
+}
+
+/// `c^n` by repeated squaring: `powi`'s own algorithm (compiler-rt's `__powidf2`, the same
+/// bits), inlined, and generic so that four lanes take the same steps as one value.
+#[inline(always)]
+pub fn power<T: Real>(c: T, mut n: u32) -> T {
+    let (mut r, mut a) = (T::one(), c);
+    loop {
+        if n & 1 == 1 {
+            r = r * a;
         }
+        n /= 2;
+        if n == 0 {
+            return r;
+        }
+        a = a * a;
     }
 }
 

@@ -11,15 +11,19 @@
 //! row) uses the scalar path for the remainder.
 
 use crate::backend::{Backend, Sparse, SparseShape};
+use crate::light::Light;
+use crate::material::{Material, power};
 use crate::ray::Ray;
-use crate::render::{Cast, Layers, Renderer, T_MIN, light_term, mirror_ray, sum_layers};
+#[cfg(doc)]
+use crate::render::light_term;
+use crate::render::{Cast, Layers, Renderer, T_MIN, sum_layers};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
-use cga_core::euclid::{E3, tolerance};
+use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, tolerance, unit};
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
 use cga_core::simd::{F64x4, Lanes};
-use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
+use cga_core::{InnerProduct, LeftContraction, Line, Plane, Real, Sphere, Vector, ei};
 
 /// Four rays, lane `k` being ray `k`.
 #[derive(Clone, Copy, Debug)]
@@ -48,6 +52,79 @@ impl Packet {
         };
         Packet { rays, origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), line }
     }
+}
+
+impl Packet {
+    /// Four rays from origins along unit directions given in lanes (secondary rays), as
+    /// [`Ray::unit`] makes each.
+    #[inline(always)]
+    pub fn from_lanes(origin: [F64x4; 3], dir: [F64x4; 3]) -> Self {
+        let line = Line::from_point_unit_direction(origin, dir);
+        let lines = Line::unpack(line);
+        let rays = core::array::from_fn(|l| Ray { origin: lane(&origin, l), dir: lane(&dir, l), line: lines[l] });
+        Packet { rays, origin, dir, line }
+    }
+}
+
+/// Four points (or vectors) as three coordinates in lanes.
+#[inline(always)]
+fn lanes3(v: [E3; 4]) -> [F64x4; 3] {
+    core::array::from_fn(|k| F64x4::new([v[0][k], v[1][k], v[2][k], v[3][k]]))
+}
+
+/// `x` in the lanes where `keep`, `other` elsewhere.
+#[inline(always)]
+fn select(keep: &[bool; 4], x: [F64x4; 3], other: E3) -> [F64x4; 3] {
+    core::array::from_fn(|k| {
+        let x = x[k].to_array();
+        F64x4::new(core::array::from_fn(|l| if keep[l] { x[l] } else { other[k] }))
+    })
+}
+
+/// [`leaving_origin`](crate::ray::leaving_origin) in lanes: `x ± 1e-6 (1 + |x|∞) n`, on
+/// the side of the ray's direction, `n_dir` being `n · dir`.
+#[inline(always)]
+fn leaving_origin4(x: [F64x4; 3], n: [F64x4; 3], n_dir: F64x4) -> [F64x4; 3] {
+    let side = F64x4::new(n_dir.to_array().map(|c| if c >= 0.0 { 1.0 } else { -1.0 }));
+    let largest = x.iter().fold(F64x4::splat(1.0), |m, v| m.max(v.abs()));
+    add(x, scale(n, side * (F64x4::splat(1e-6) * largest)))
+}
+
+/// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane); the other
+/// lanes keep their ray (a zero normal reflects nothing).
+#[inline(always)]
+fn mirror_packet(p: &Packet, hits: &[Option<(Hit, &Object)>; 4], bounce: &[bool; 4]) -> Packet {
+    let at = |l: usize| match hits[l] {
+        Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
+        _ => (p.rays[l].origin, [0.0; 3]),
+    };
+    let (x, n) = (lanes3(core::array::from_fn(|l| at(l).0)), lanes3(core::array::from_fn(|l| at(l).1)));
+    let r = reflect(p.dir, n);
+    Packet::from_lanes(leaving_origin4(x, n, dot(n, r)), r)
+}
+
+/// A material for lanes without a hit (their terms are not used).
+const NO_MATERIAL: Material = Material { colour: [0.0; 3], ka: 0.0, kd: 0.0, ks: 0.0, q: 0.0, kr: 0.0 };
+
+/// `max(n·h, 0)^q` per lane, `h = unit(l + v)`, as [`light_term`] computes it lane by lane:
+/// the power in lanes where all four share a whole `q`, the scalar path for the rest.
+#[inline(always)]
+fn specular4(m: &[&Material; 4], n: [F64x4; 3], lv: [F64x4; 3]) -> [f64; 4] {
+    let inv = F64x4::splat(1.0) / norm(lv);
+    let c = dot(n, scale(lv, inv));
+    let q = m[0].whole_exponent().filter(|_| m.iter().all(|x| x.q == m[0].q));
+    let powers = q.map(|q| power(c, q).to_array());
+    let (c, inv) = (c.to_array(), inv.to_array());
+    core::array::from_fn(|l| {
+        if !(inv[l].is_finite() && inv[l] > 0.0) {
+            // `unit` rescales, or there is no `h`.
+            return unit(lane(&lv, l)).map_or(0.0, |h| m[l].specular(dot(lane(&n, l), h)));
+        }
+        match powers {
+            Some(p) if c[l] > 0.0 => p[l],
+            _ => m[l].specular(c[l]),
+        }
+    })
 }
 
 /// A crossing per lane, `None` where the lane's ray misses.
@@ -177,42 +254,9 @@ impl<'a> Renderer<'a, Sparse> {
         }
     }
 
-    /// The nearest crossing per active lane over all objects, and its object: compiled for AVX2
-    /// and FMA where the CPU has them (the lanes' products then run in one register each).
-    fn nearest_packet(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
-        #[cfg(target_arch = "x86_64")]
-        if avx2() {
-            // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.nearest_packet_avx2(p, active) };
-        }
-        self.nearest_packet_lanes(p, active)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn nearest_packet_avx2(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
-        self.nearest_packet_lanes(p, active)
-    }
-
-    /// Which lanes' rays are blocked before their `t_max` (a lane with `t_max = 0` is
-    /// inactive and never blocked); dispatched as [`Renderer::nearest_packet`].
-    fn blocked_packet(&self, p: &Packet, t_max: &[f64; 4]) -> [bool; 4] {
-        #[cfg(target_arch = "x86_64")]
-        if avx2() {
-            // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.blocked_packet_avx2(p, t_max) };
-        }
-        self.blocked_packet_lanes(p, t_max)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn blocked_packet_avx2(&self, p: &Packet, t_max: &[f64; 4]) -> [bool; 4] {
-        self.blocked_packet_lanes(p, t_max)
-    }
-
+    /// The nearest crossing per active lane over all objects, and its object.
     #[inline(always)]
-    fn nearest_packet_lanes(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
+    fn nearest_packet(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
         // An inactive lane's range is empty: it finds nothing.
         let t_min = [T_MIN; 4];
         let mut t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
@@ -228,9 +272,11 @@ impl<'a> Renderer<'a, Sparse> {
         best
     }
 
-    /// [`Renderer::blocked_packet`]'s loop: stops once every active lane is blocked.
+    /// Which lanes' rays are blocked before their `t_max` by an object other than the lane's
+    /// `skip` (a lane with `t_max = 0` is inactive and never blocked): stops once every
+    /// active lane is blocked, and skips an object no lane tests.
     #[inline(always)]
-    fn blocked_packet_lanes(&self, p: &Packet, t_max: &[f64; 4]) -> [bool; 4] {
+    fn blocked_packet(&self, p: &Packet, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
         let mut blocked = t_max.map(|t| t.is_nan() || t <= 0.0);
         let active = blocked.map(|b| !b);
         let t_min = [0.0; 4];
@@ -238,7 +284,11 @@ impl<'a> Renderer<'a, Sparse> {
             if blocked.iter().all(|&b| b) {
                 break;
             }
-            let limit: [f64; 4] = core::array::from_fn(|l| if blocked[l] { f64::NEG_INFINITY } else { t_max[l] });
+            let tests: [bool; 4] = core::array::from_fn(|l| !blocked[l] && skip[l] != Some(k));
+            if !tests.iter().any(|&b| b) {
+                continue;
+            }
+            let limit: [f64; 4] = core::array::from_fn(|l| if tests[l] { t_max[l] } else { f64::NEG_INFINITY });
             for (l, c) in self.cross(k, p, &t_min, &limit).into_iter().enumerate() {
                 blocked[l] |= c.is_some();
             }
@@ -251,11 +301,28 @@ impl<'a> Renderer<'a, Sparse> {
     /// inactive), and at every hit the shadow rays towards each light; `None` where a
     /// camera ray cannot be formed (the scalar path then says why). Each lane gets the bits
     /// [`Renderer::trace`] gives its ray: the same meets, shading and sum from the deepest
-    /// bounce up.
+    /// bounce up. Compiled for AVX2 and FMA where the CPU has them (the lanes then run in
+    /// one register each).
     pub fn pixels4(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+        #[cfg(target_arch = "x86_64")]
+        if avx2() {
+            // SAFETY: the CPU has the features the function is compiled for.
+            return unsafe { self.pixels4_avx2(i0, j, cast) };
+        }
+        self.pixels4_lanes(i0, j, cast)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn pixels4_avx2(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+        self.pixels4_lanes(i0, j, cast)
+    }
+
+    #[inline(always)]
+    fn pixels4_lanes(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
         let (camera, settings) = (&self.scene.camera, &self.scene.settings);
         let v = f64::from(j) + 0.5;
-        let (mut rays, line) = camera.rays4([0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
+        let (rays, line) = camera.rays4([0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
         cast.primary += 4;
         let mut packet = Packet::with_line(rays, line);
         let mut active = [true; 4];
@@ -263,22 +330,21 @@ impl<'a> Renderer<'a, Sparse> {
         let mut layers: [Layers; 4] = Default::default();
         let mut depth = 0;
         while active.iter().any(|&a| a) {
-            if depth > 0 {
-                packet = Packet::new(rays);
-            }
             let nearest = self.nearest_packet(&packet, &active);
+            let own = nearest.map(|n| n.and_then(|(_, k)| self.skip_own(k)));
             let hits: [Option<(Hit, &Object)>; 4] = core::array::from_fn(|l| {
                 nearest[l].map(|(c, k)| {
-                    let normal = Sparse::normal(&self.shapes[k], &rays[l], &c);
+                    let normal = Sparse::normal(&self.shapes[k], &packet.rays[l], &c);
                     (Hit { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
                 })
             });
-            let local = self.shade_packet(&rays, &hits, cast);
+            let local = self.shade_packet(&packet, &hits, &own, cast);
+            let mut bounce = [false; 4];
             for l in 0..4 {
                 if !active[l] {
                     continue;
                 }
-                let Some((hit, object)) = hits[l] else {
+                let Some((_, object)) = hits[l] else {
                     (deepest[l], active[l]) = (settings.background, false);
                     continue;
                 };
@@ -289,41 +355,94 @@ impl<'a> Renderer<'a, Sparse> {
                 }
                 cast.reflection += 1;
                 layers[l].push((local[l], kr));
-                rays[l] = mirror_ray::<Sparse>(&rays[l], &hit);
+                bounce[l] = true;
+            }
+            if bounce.iter().any(|&b| b) {
+                packet = mirror_packet(&packet, &hits, &bounce);
             }
             depth += 1;
         }
         Some(core::array::from_fn(|l| sum_layers(&layers[l], deepest[l])))
     }
 
-    /// The ambient and direct light at the lanes' hits, the shadow rays towards each light
-    /// cast as one packet; the background where a lane has no hit.
-    fn shade_packet(&self, rays: &[Ray; 4], hits: &[Option<(Hit, &Object)>; 4], cast: &mut Cast) -> [[f64; 3]; 4] {
+    /// The ambient and direct light at the lanes' hits, in lanes ([`light_term`] and
+    /// [`Renderer::add_light`] lane by lane, the same bits), the shadow rays towards each
+    /// light cast as one packet (skipping each lane's `own` object); the background where a
+    /// lane has no hit.
+    #[inline(always)]
+    fn shade_packet(
+        &self,
+        p: &Packet,
+        hits: &[Option<(Hit, &Object)>; 4],
+        own: &[Option<usize>; 4],
+        cast: &mut Cast,
+    ) -> [[f64; 3]; 4] {
         let settings = &self.scene.settings;
         let mut colours: [[f64; 3]; 4] =
             core::array::from_fn(|l| hits[l].map_or(settings.background, |(_, o)| self.ambient(o)));
+        if !hits.iter().any(Option::is_some) {
+            return colours;
+        }
+        let x = lanes3(hits.map(|h| h.map_or([0.0; 3], |(h, _)| h.point)));
+        let n = lanes3(hits.map(|h| h.map_or([0.0; 3], |(h, _)| h.normal)));
+        let v = p.dir.map(|d| -d);
+        let m = hits.map(|h| h.map_or(&NO_MATERIAL, |(_, o)| &o.material));
         for light in &self.scene.lights {
-            let terms: [_; 4] =
-                core::array::from_fn(|l| hits[l].and_then(|(h, o)| light_term(rays[l].dir, &h, &o.material, light)));
+            let to_light = sub(light.position.map(F64x4::splat), x);
+            let distance = norm(to_light);
+            let l = scale(to_light, F64x4::splat(1.0) / distance);
+            let diffuse = dot(n, l);
+            let specular = specular4(&m, n, add(l, v));
+            let (d, c) = (distance.to_array(), diffuse.to_array());
+            // Where `light_term` gives a term.
+            let lit: [bool; 4] = core::array::from_fn(|k| {
+                hits[k].is_some() && d[k] > 0.0 && d[k].is_finite() && !(c[k] <= 0.0 && specular[k] <= 0.0)
+            });
+            if !lit.iter().any(|&b| b) {
+                continue;
+            }
             let mut s = [1.0; 4];
-            if settings.shadows && terms.iter().any(Option::is_some) {
-                let (mut shadow, mut t_max) = (*rays, [0.0; 4]);
-                for (l, term) in terms.iter().enumerate() {
-                    if let Some(term) = term {
-                        cast.shadow += 1;
-                        shadow[l] = Sparse::ray(term.shadow_origin, term.l);
-                        t_max[l] = term.distance;
-                    }
-                }
-                let blocked = self.blocked_packet(&Packet::new(shadow), &t_max);
+            if settings.shadows {
+                cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
+                // Unlit lanes cast a harmless ray with an empty range.
+                let origin = select(&lit, leaving_origin4(x, n, diffuse), [0.0; 3]);
+                let shadow = Packet::from_lanes(origin, select(&lit, l, [0.0, 0.0, 1.0]));
+                let t_max = core::array::from_fn(|k| if lit[k] { d[k] } else { 0.0 });
+                let blocked = self.blocked_packet(&shadow, &t_max, own);
                 s = blocked.map(|b| if b { settings.shadow_transmission } else { 1.0 });
             }
-            for l in 0..4 {
-                if let (Some(term), Some((_, object))) = (&terms[l], hits[l]) {
-                    self.add_light(&mut colours[l], object, light, term, s[l]);
+            let term = self.light4(&m, light, distance, diffuse, &specular, s);
+            for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
+                for (out, t) in colour.iter_mut().zip(&term) {
+                    *out += t.to_array()[k];
                 }
             }
         }
         colours
+    }
+
+    /// One light's term per lane, as [`Renderer::add_light`] adds it:
+    /// `s f_att (c k_d max(n·l, 0) + k_s spec) L`.
+    #[inline(always)]
+    fn light4(
+        &self,
+        m: &[&Material; 4],
+        light: &Light,
+        distance: F64x4,
+        diffuse: F64x4,
+        specular: &[f64; 4],
+        s: [f64; 4],
+    ) -> [F64x4; 3] {
+        let [c0, c1, c2] = self.scene.settings.attenuation.map(F64x4::splat);
+        let distance = distance * F64x4::splat(self.scene.frame.scale);
+        let f_att =
+            (F64x4::splat(1.0) / (c0 + c1 * distance + c2 * distance * distance)).to_array().map(|f| f.min(1.0));
+        let sf = F64x4::new(s) * F64x4::new(f_att);
+        let (kd, ks) = (F64x4::new(m.map(|m| m.kd)), F64x4::new(m.map(|m| m.ks)));
+        let (facing, shine) = (diffuse.max(F64x4::splat(0.0)), ks * F64x4::new(*specular));
+        core::array::from_fn(|k| {
+            let c = F64x4::new(m.map(|m| m.colour[k]));
+            sf * (c * kd * facing + shine) * F64x4::splat(light.colour[k])
+        })
     }
 }

@@ -123,6 +123,8 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
     bvh: Option<Bvh>,
+    /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
+    pub(crate) flat: Vec<bool>,
     /// Rays cast so far.
     pub counts: RayCounts,
 }
@@ -144,7 +146,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = if bvh.is_none() { B::packet_shapes(&shapes) } else { Vec::new() };
-        Renderer { scene, shapes, packets, bounds, bvh, counts: RayCounts::default() }
+        let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
+        Renderer { scene, shapes, packets, bounds, bvh, flat, counts: RayCounts::default() }
     }
 
     /// The same renderer tracing one ray at a time, without packets (to compare them).
@@ -188,24 +191,36 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// The nearest hit with `t_min < t < t_max`, and its object: the nearest crossing over
     /// all objects, then its normal, once.
     pub fn nearest(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Hit, &'a Object)> {
-        let (c, k) = self.crossing(ray, t_min, t_max)?;
-        let hit = Hit { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
-        Some((hit, &self.scene.objects[k]))
+        self.hit(ray, t_min, t_max).map(|(hit, k)| (hit, &self.scene.objects[k]))
     }
 
-    /// Whether anything lies on the ray before `t_max`: stops at the first blocker, and
-    /// computes no normals.
-    fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64) -> bool {
+    /// [`Renderer::nearest`] with the object's index.
+    fn hit(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Hit, usize)> {
+        let (c, k) = self.crossing(ray, t_min, t_max)?;
+        let hit = Hit { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
+        Some((hit, k))
+    }
+
+    /// Object `k` if its shape is flat (its own shadow rays need not test it).
+    pub(crate) fn skip_own(&self, k: usize) -> Option<usize> {
+        self.flat[k].then_some(k)
+    }
+
+    /// Whether anything but object `skip` lies on the ray before `t_max`: stops at the first
+    /// blocker, and computes no normals.
+    fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64, skip: Option<usize>) -> bool {
         if let Some(bvh) = &self.bvh {
             let mut blocked = false;
             bvh.traverse(ray.origin, ray.dir, 0.0, t_max, |k, t| {
-                blocked = B::intersect(&self.shapes[k], ray, 0.0, t).is_some();
+                blocked = Some(k) != skip && B::intersect(&self.shapes[k], ray, 0.0, t).is_some();
                 (!blocked).then_some(t)
             });
             return blocked;
         }
-        self.shapes.iter().zip(&self.bounds).any(|(shape, bound)| {
-            bound.is_none_or(|(c, r)| crosses(ray, c, r, 0.0, t_max)) && B::intersect(shape, ray, 0.0, t_max).is_some()
+        self.shapes.iter().zip(&self.bounds).enumerate().any(|(k, (shape, bound))| {
+            Some(k) != skip
+                && bound.is_none_or(|(c, r)| crosses(ray, c, r, 0.0, t_max))
+                && B::intersect(shape, ray, 0.0, t_max).is_some()
         })
     }
 
@@ -225,11 +240,11 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
     /// order, so the same bits).
     fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
-        let Some((hit, object)) = self.nearest(ray, T_MIN, f64::INFINITY) else {
+        let Some((hit, k)) = self.hit(ray, T_MIN, f64::INFINITY) else {
             return self.scene.settings.background;
         };
-        let local = self.shade(ray, &hit, object, cast);
-        self.reflect_from(ray, &hit, object, local, depth, cast)
+        let local = self.shade(ray, &hit, k, cast);
+        self.reflect_from(ray, &hit, &self.scene.objects[k], local, depth, cast)
     }
 
     /// `I = I_local + k_r I_reflected` at a hit of `ray` whose own colour is `local`,
@@ -254,26 +269,26 @@ impl<'a, B: Backend> Renderer<'a, B> {
             cast.reflection += 1;
             layers.push((local, kr));
             (ray, depth) = (mirror_ray::<B>(&ray, &hit), depth + 1);
-            let Some((next, next_object)) = self.nearest(&ray, T_MIN, f64::INFINITY) else {
+            let Some((next, k)) = self.hit(&ray, T_MIN, f64::INFINITY) else {
                 break settings.background;
             };
-            local = self.shade(&ray, &next, next_object, cast);
-            (hit, object) = (next, next_object);
+            local = self.shade(&ray, &next, k, cast);
+            (hit, object) = (next, &self.scene.objects[k]);
         };
         sum_layers(&layers, deepest)
     }
 
     /// The ambient and direct light at a hit (eq. 12 without the reflected term), casting a
     /// shadow ray towards each light that could reach it.
-    fn shade(&self, ray: &Ray<B::Carrier>, hit: &Hit, object: &Object, cast: &mut Cast) -> [f64; 3] {
-        let settings = &self.scene.settings;
+    fn shade(&self, ray: &Ray<B::Carrier>, hit: &Hit, k: usize, cast: &mut Cast) -> [f64; 3] {
+        let (settings, object) = (&self.scene.settings, &self.scene.objects[k]);
         let mut colour = self.ambient(object);
         for light in &self.scene.lights {
             let Some(term) = light_term(ray.dir, hit, &object.material, light) else { continue };
             let mut s = 1.0;
             if settings.shadows {
                 cast.shadow += 1;
-                if self.blocked(&B::ray(term.shadow_origin, term.l), term.distance) {
+                if self.blocked(&B::ray(term.shadow_origin, term.l), term.distance, self.skip_own(k)) {
                     s = settings.shadow_transmission;
                 }
             }

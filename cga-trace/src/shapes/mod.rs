@@ -69,6 +69,13 @@ pub trait Shape: Send + Sync + Debug + Any {
         false
     }
 
+    /// Whether the shape lies in a plane, so that no ray leaving it meets it again
+    /// (secondary rays start off the surface on the side they leave to): its own shadow
+    /// rays skip it.
+    fn flat(&self) -> bool {
+        false
+    }
+
     /// The shape as `Any`, for back ends that specialise some kinds (the comparison
     /// baselines) and for inspection.
     fn as_any(&self) -> &dyn Any;

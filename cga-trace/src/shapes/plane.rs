@@ -46,6 +46,10 @@ impl Shape for PlaneShape {
         None
     }
 
+    fn flat(&self) -> bool {
+        true
+    }
+
     fn as_any(&self) -> &dyn std::any::Any {
         self
     }

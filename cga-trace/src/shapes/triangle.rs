@@ -46,6 +46,10 @@ impl Shape for TriangleShape {
         true
     }
 
+    fn flat(&self) -> bool {
+        true
+    }
+
     fn as_any(&self) -> &dyn std::any::Any {
         self
     }
