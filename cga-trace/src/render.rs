@@ -9,7 +9,6 @@ use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
 use crate::light::Light;
-use crate::packet::PacketShape;
 use crate::ray::{Ray, crosses, leaving_origin};
 use crate::scene::{Object, Scene};
 use crate::shapes::{Crossing, Hit};
@@ -116,9 +115,9 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     pub(crate) scene: &'a Scene,
     /// The objects in `B`'s form, in scene order.
     pub(crate) shapes: Vec<B::Shape>,
-    /// The objects as ray packets meet them, where `B` has packets (empty otherwise, or
-    /// when switched off).
-    pub(crate) packets: Vec<PacketShape>,
+    /// Whether rays go four at a time through packets: where `B` has them, unless switched
+    /// off or the scene has a hierarchy.
+    pub(crate) packets: bool,
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
     bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
@@ -145,14 +144,14 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
         // Packets test every object: for scenes with a hierarchy, single rays through it.
-        let packets = if bvh.is_none() { B::packet_shapes(&shapes) } else { Vec::new() };
+        let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
         Renderer { scene, shapes, packets, bounds, bvh, flat, counts: RayCounts::default() }
     }
 
     /// The same renderer tracing one ray at a time, without packets (to compare them).
     pub fn without_packets(mut self) -> Self {
-        self.packets.clear();
+        self.packets = false;
         self
     }
 
@@ -386,7 +385,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
             let mut cast = Cast::default();
             let mut done = 0;
-            if aov == Aov::Shaded && self.scene.settings.spp <= 1 && !self.packets.is_empty() {
+            if aov == Aov::Shaded && self.scene.settings.spp <= 1 && self.packets {
                 for (four, i0) in row.chunks_exact_mut(4).zip(window.columns.clone().step_by(4)) {
                     let Some(colours) = B::pixels4(self, i0, j, &mut cast) else { break };
                     four.copy_from_slice(&colours);

@@ -2,6 +2,7 @@
 //! NaN in shipped scenes, and the original renderer's reference image.
 
 use cga_core::euclid::{E3, norm, sub};
+use cga_trace::backend::Plain;
 use cga_trace::ray::Ray;
 use cga_trace::scene::Scene;
 use cga_trace::surface::EvolvedSurface;
@@ -414,6 +415,10 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         a.render(Aov::Shaded, &|| {});
         b.render(Aov::Shaded, &|| {});
         assert_eq!(a.counts.get(), b.counts.get(), "{name}: the same rays are cast");
+        // The plain back end's packets, against its own single rays.
+        let plain = Renderer::<Plain>::with_backend(&scene).render(Aov::Shaded, &|| {});
+        let single = Renderer::<Plain>::with_backend(&scene).without_packets().render(Aov::Shaded, &|| {});
+        assert!(plain.pixels == single.pixels, "{name}: plain packets and single rays differ");
     }
 }
 

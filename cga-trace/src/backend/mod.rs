@@ -19,7 +19,6 @@ mod dense;
 mod plain;
 
 use crate::camera::Camera;
-use crate::packet::PacketShape;
 use crate::ray::Ray;
 use crate::render::{Cast, Renderer};
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
@@ -48,10 +47,8 @@ pub trait Backend: Send + Sync + 'static {
     fn intersect(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> Option<Crossing>;
     /// The unit normal at a crossing, facing the ray.
     fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
-    /// The objects as ray packets meet them; empty for a back end without packets.
-    fn packet_shapes(_shapes: &[Self::Shape]) -> Vec<PacketShape> {
-        Vec::new()
-    }
+    /// Whether the back end traces ray packets ([`crate::packet::Packets`]).
+    const PACKETS: bool = false;
     /// Four neighbouring pixels `(i₀ + k, j)` of a renderer whose packets are on
     /// ([`crate::packet`]); `None` where the back end has none or a camera ray cannot be
     /// formed (the scalar path takes over).
@@ -101,6 +98,7 @@ impl Backend for Sparse {
     type Carrier = Line;
     type Shape = SparseShape;
     const NAME: &'static str = "sparse";
+    const PACKETS: bool = true;
 
     fn ray(origin: E3, dir: E3) -> Ray {
         Ray::unit(origin, dir)
@@ -132,10 +130,6 @@ impl Backend for Sparse {
 
     fn normal(shape: &SparseShape, ray: &Ray, crossing: &Crossing) -> E3 {
         each_kind!(shape, s => s.normal(ray, crossing))
-    }
-
-    fn packet_shapes(shapes: &[SparseShape]) -> Vec<PacketShape> {
-        shapes.iter().map(PacketShape::of).collect()
     }
 
     fn pixels4(renderer: &Renderer<'_, Sparse>, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {

@@ -5,6 +5,7 @@
 use super::Backend;
 use crate::camera::Camera;
 use crate::ray::Ray;
+use crate::render::{Cast, Renderer};
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
 use cga_core::euclid::{E3, cross, unit};
 use glam::DVec3;
@@ -59,6 +60,7 @@ impl Backend for Plain {
     type Carrier = ();
     type Shape = PlainShape;
     const NAME: &'static str = "plain";
+    const PACKETS: bool = true;
 
     fn ray(origin: E3, dir: E3) -> Ray<()> {
         Ray { origin, dir, line: () }
@@ -119,6 +121,10 @@ impl Backend for Plain {
             PlainShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
         Some(Crossing { t, point: (o + t * d).into(), alpha: None })
+    }
+
+    fn pixels4(renderer: &Renderer<'_, Plain>, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+        renderer.pixels4(i0, j, cast)
     }
 
     fn normal(shape: &PlainShape, ray: &Ray<()>, crossing: &Crossing) -> E3 {

@@ -1,16 +1,20 @@
-//! Ray packets: four neighbouring camera rays, and the four shadow rays from their hits
-//! towards one light, met with the scene's spheres, planes and disks on the generated types
-//! instantiated on four f64 lanes ([`F64x4`]) — the same meets as the scalar path
-//! ([`crate::shapes`]), operation for operation, so the same bits.
+//! Ray packets: four neighbouring camera rays, the four shadow rays from their hits towards
+//! one light, and their mirror bounces, on four f64 lanes ([`F64x4`]). A back end with
+//! packets ([`Packets`]) meets its primitives in lanes — the sparse back end on the
+//! generated types instantiated on lanes (`packet/sparse.rs`), the plain one by the textbook
+//! formulas (`packet/plain.rs`) — with the same operations as its scalar path, so the same
+//! bits; other shapes are met one lane at a time through their own code.
 //!
-//! Only the CGA products run in lanes: classifying a meet, reading its points and keeping
-//! the nearest crossing stay per lane (they branch). Other shapes (triangles, evolved and
-//! ruled surfaces) are met one lane at a time through their own code, normals and shading
-//! are per lane, and mirror bounces continue one ray at a time (they scatter). A scene
+//! Shading (light directions, Blinn–Phong terms, attenuation) and the secondary rays run in
+//! lanes too; normals and keeping the nearest crossing stay per lane (they branch). A scene
 //! whose rays do not come four to a row (a crop narrower than four, the last pixels of a
 //! row) uses the scalar path for the remainder.
 
-use crate::backend::{Backend, Sparse, SparseShape};
+mod plain;
+mod sparse;
+
+use crate::backend::Backend;
+use crate::camera::Camera;
 use crate::light::Light;
 use crate::material::{Material, power};
 use crate::ray::Ray;
@@ -19,51 +23,67 @@ use crate::render::light_term;
 use crate::render::{Cast, Layers, Renderer, T_MIN, sum_layers};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
-use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, tolerance, unit};
+use cga_core::Real;
+use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, unit};
+use cga_core::simd::F64x4;
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
-use cga_core::simd::{F64x4, Lanes};
-use cga_core::{InnerProduct, LeftContraction, Line, Plane, Real, Sphere, Vector, ei};
+
+/// A back end's geometry for packets: its rays four at a time and its meets in lanes.
+pub trait Packets: Backend {
+    /// What four rays carry in lanes (the sparse back end: their CGA lines).
+    type Lanes: Copy;
+    /// Four rays from origins along unit directions given in lanes (secondary rays), as
+    /// [`Backend::ray`] makes each.
+    fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Self>
+    where
+        Self: Sized;
+    /// The camera rays through `(u_k, v)`, as [`Backend::camera_ray`] makes each; `None`
+    /// where one cannot be formed (the scalar path then says why).
+    fn camera_packet(camera: &Camera, u: [f64; 4], v: f64) -> Option<Packet<Self>>
+    where
+        Self: Sized;
+    /// The crossings of the packet's rays with a shape within their ranges, as
+    /// [`Backend::intersect`] finds each.
+    fn cross4(shape: &Self::Shape, p: &Packet<Self>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings
+    where
+        Self: Sized;
+}
+
+/// A crossing per lane, `None` where the lane's ray misses.
+pub type Crossings = [Option<Crossing>; 4];
 
 /// Four rays, lane `k` being ray `k`.
-#[derive(Clone, Copy, Debug)]
-pub struct Packet {
+pub struct Packet<B: Packets> {
     /// The scalar rays (for the per-lane steps).
-    pub rays: [Ray; 4],
+    pub rays: [Ray<B::Carrier>; 4],
     /// Their origins in lanes.
     pub origin: [F64x4; 3],
     /// Their unit directions in lanes.
     pub dir: [F64x4; 3],
-    /// Their lines in lanes.
-    pub line: Line<F64x4>,
+    /// Their carriers in lanes (the sparse back end: their lines).
+    pub line: B::Lanes,
 }
 
-impl Packet {
-    /// Four rays as a packet.
-    pub fn new(rays: [Ray; 4]) -> Self {
-        Packet::with_line(rays, Line::pack(rays.map(|r| r.line)))
-    }
-
-    /// Four rays whose lines are already in lanes (the camera builds them so).
-    pub fn with_line(rays: [Ray; 4], line: Line<F64x4>) -> Self {
-        let lanes = |f: fn(&Ray) -> E3| {
-            let v = rays.each_ref().map(f);
-            [0, 1, 2].map(|k| F64x4::new([v[0][k], v[1][k], v[2][k], v[3][k]]))
-        };
-        Packet { rays, origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), line }
-    }
-}
-
-impl Packet {
-    /// Four rays from origins along unit directions given in lanes (secondary rays), as
-    /// [`Ray::unit`] makes each.
+impl<B: Packets> Packet<B> {
+    /// Four rays whose carriers are already in lanes.
     #[inline(always)]
-    pub fn from_lanes(origin: [F64x4; 3], dir: [F64x4; 3]) -> Self {
-        let line = Line::from_point_unit_direction(origin, dir);
-        let lines = Line::unpack(line);
-        let rays = core::array::from_fn(|l| Ray { origin: lane(&origin, l), dir: lane(&dir, l), line: lines[l] });
-        Packet { rays, origin, dir, line }
+    pub fn with_line(rays: [Ray<B::Carrier>; 4], line: B::Lanes) -> Self {
+        let lanes = |f: fn(&Ray<B::Carrier>) -> E3| lanes3(rays.each_ref().map(f));
+        Packet { origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), rays, line }
     }
+}
+
+/// Lane-wise `a · b`.
+#[inline(always)]
+fn dot4(a: [F64x4; 3], b: [F64x4; 3]) -> F64x4 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Lane `l` of a point in lanes.
+#[inline(always)]
+fn lane(x: &[F64x4; 3], l: usize) -> E3 {
+    [x[0].to_array()[l], x[1].to_array()[l], x[2].to_array()[l]]
 }
 
 /// Four points (or vectors) as three coordinates in lanes.
@@ -93,14 +113,14 @@ fn leaving_origin4(x: [F64x4; 3], n: [F64x4; 3], n_dir: F64x4) -> [F64x4; 3] {
 /// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane); the other
 /// lanes keep their ray (a zero normal reflects nothing).
 #[inline(always)]
-fn mirror_packet(p: &Packet, hits: &[Option<(Hit, &Object)>; 4], bounce: &[bool; 4]) -> Packet {
+fn mirror_packet<B: Packets>(p: &Packet<B>, hits: &[Option<(Hit, &Object)>; 4], bounce: &[bool; 4]) -> Packet<B> {
     let at = |l: usize| match hits[l] {
         Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
         _ => (p.rays[l].origin, [0.0; 3]),
     };
     let (x, n) = (lanes3(core::array::from_fn(|l| at(l).0)), lanes3(core::array::from_fn(|l| at(l).1)));
     let r = reflect(p.dir, n);
-    Packet::from_lanes(leaving_origin4(x, n, dot(n, r)), r)
+    B::packet(leaving_origin4(x, n, dot(n, r)), r)
 }
 
 /// A material for lanes without a hit (their terms are not used).
@@ -127,136 +147,16 @@ fn specular4(m: &[&Material; 4], n: [F64x4; 3], lv: [F64x4; 3]) -> [f64; 4] {
     })
 }
 
-/// A crossing per lane, `None` where the lane's ray misses.
-type Crossings = [Option<Crossing>; 4];
-
-/// Lane-wise `a − b` and `a · b` for points in lanes.
-fn dot4(a: [F64x4; 3], b: [F64x4; 3]) -> F64x4 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// `(x − o) · d` per lane, as [`Ray::t_of`] computes it.
-fn t_of4(p: &Packet, x: [F64x4; 3]) -> F64x4 {
-    dot4([x[0] - p.origin[0], x[1] - p.origin[1], x[2] - p.origin[2]], p.dir)
-}
-
-/// `down(X)` in lanes: the Euclidean point and whether it is finite, as [`cga_core::down`]
-/// decides it lane by lane.
-fn down4(x: Vector<F64x4>) -> ([F64x4; 3], [bool; 4]) {
-    let inv = F64x4::splat(1.0) / x.eo;
-    let point = [x.e1 * inv, x.e2 * inv, x.e3 * inv];
-    let (w, inv) = (x.eo.to_array(), inv.to_array());
-    let e = [x.e1.to_array(), x.e2.to_array(), x.e3.to_array()];
-    let finite = core::array::from_fn(|l| {
-        let m = e.iter().fold(1.0f64, |m, c| if c[l].abs() > m { c[l].abs() } else { m });
-        w[l].abs() > tolerance(m) * f64::EPSILON.sqrt() && inv[l].is_finite()
-    });
-    (point, finite)
-}
-
-/// Lane `l` of a point in lanes.
-fn lane(x: &[F64x4; 3], l: usize) -> E3 {
-    [x[0].to_array()[l], x[1].to_array()[l], x[2].to_array()[l]]
-}
-
-/// `L ∨ S` in lanes, as [`SphereShape::intersect`](crate::shapes::SphereShape) meets it:
-/// classified by the pair's square (rays and spheres normalised: weight 1), its points
-/// `P·e ∓ √(P²) e` with `e = ei ⌋ P`, ordered along the ray, the first within range kept.
-#[inline(always)]
-fn meet_sphere(p: &Packet, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
-    let pair = p.line & *sphere;
-    let square = pair.inner(pair).s.to_array();
-    let tol = tolerance(1.0);
-    let hit = square.map(|q| q.abs() <= tol || q > 0.0);
-    if !hit.iter().any(|&h| h) {
-        return [None; 4];
-    }
-    let e = ei::<F64x4>().lc(pair);
-    let pe = pair | e;
-    // The double point of a tangent meet: `√P² = 0` in the same formula.
-    let s = F64x4::new(square.map(|q| if q.abs() <= tol { 0.0 } else { q.sqrt() }));
-    let ((a, a_ok), (b, b_ok)) = (down4(pe - e.scale(s)), down4(pe + e.scale(s)));
-    let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
-    let ab = dot4([b[0] - a[0], b[1] - a[1], b[2] - a[2]], p.dir).to_array();
-    core::array::from_fn(|l| {
-        if !(hit[l] && a_ok[l] && b_ok[l]) {
-            return None;
-        }
-        let (first, second) = if ab[l] < 0.0 { ((tb[l], &b), (ta[l], &a)) } else { ((ta[l], &a), (tb[l], &b)) };
-        [first, second].into_iter().find(|(t, _)| *t > t_min[l] && *t < t_max[l]).map(|(t, x)| Crossing {
-            t,
-            point: lane(x, l),
-            alpha: None,
-        })
-    })
-}
-
-/// `L ∨ Π` in lanes, as the plane and disk shapes meet it: the flat point's point where
-/// its weight is not zero to rounding, within range, and for a disk within the rim.
-#[inline(always)]
-fn meet_plane(
-    p: &Packet,
-    plane: &Plane<F64x4>,
-    rim: Option<(E3, f64)>,
-    t_min: &[f64; 4],
-    t_max: &[f64; 4],
-) -> Crossings {
-    let flat = p.line & *plane;
-    let inv = F64x4::splat(1.0) / flat.eoi;
-    let x = [flat.e1i * inv, flat.e2i * inv, flat.e3i * inv];
-    let t = t_of4(p, x).to_array();
-    let (w, inv) = (flat.eoi.to_array(), inv.to_array());
-    let inside = rim.map(|(c, r)| {
-        let d = [x[0] - F64x4::splat(c[0]), x[1] - F64x4::splat(c[1]), x[2] - F64x4::splat(c[2])];
-        dot4(d, d).to_array().map(|q| q <= r * r)
-    });
-    core::array::from_fn(|l| {
-        let ok = w[l].abs() > tolerance(1.0) && inv[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];
-        (ok && inside.is_none_or(|i| i[l])).then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None })
-    })
-}
-
-/// A scene object as the packet path meets it.
-#[derive(Clone, Debug)]
-pub enum PacketShape {
-    /// A sphere, the same in every lane.
-    Sphere(Sphere<F64x4>),
-    /// A plane, and a disk's rim.
-    Plane(Plane<F64x4>, Option<(E3, f64)>),
-    /// Met one lane at a time.
-    PerLane,
-}
-
-impl PacketShape {
-    /// The packet form of a prepared sparse shape.
-    pub fn of(shape: &SparseShape) -> Self {
-        match shape {
-            SparseShape::Sphere(s) => PacketShape::Sphere(Sphere::pack([s.sphere; 4])),
-            SparseShape::Plane(p) => PacketShape::Plane(Plane::pack([p.plane; 4]), None),
-            SparseShape::Disk(d) => {
-                PacketShape::Plane(Plane::pack([d.disk.plane; 4]), Some((d.disk.centre, d.disk.radius)))
-            }
-            _ => PacketShape::PerLane,
-        }
-    }
-}
-
-impl<'a> Renderer<'a, Sparse> {
+impl<'a, B: Packets> Renderer<'a, B> {
     /// The crossings of the packet's rays with object `k`.
     #[inline(always)]
-    fn cross(&self, k: usize, p: &Packet, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
-        match &self.packets[k] {
-            PacketShape::Sphere(s) => meet_sphere(p, s, t_min, t_max),
-            PacketShape::Plane(plane, rim) => meet_plane(p, plane, *rim, t_min, t_max),
-            PacketShape::PerLane => {
-                core::array::from_fn(|l| Sparse::intersect(&self.shapes[k], &p.rays[l], t_min[l], t_max[l]))
-            }
-        }
+    fn cross(&self, k: usize, p: &Packet<B>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+        B::cross4(&self.shapes[k], p, t_min, t_max)
     }
 
     /// The nearest crossing per active lane over all objects, and its object.
     #[inline(always)]
-    fn nearest_packet(&self, p: &Packet, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
+    fn nearest_packet(&self, p: &Packet<B>, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
         // An inactive lane's range is empty: it finds nothing.
         let t_min = [T_MIN; 4];
         let mut t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
@@ -276,7 +176,7 @@ impl<'a> Renderer<'a, Sparse> {
     /// `skip` (a lane with `t_max = 0` is inactive and never blocked): stops once every
     /// active lane is blocked, and skips an object no lane tests.
     #[inline(always)]
-    fn blocked_packet(&self, p: &Packet, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
+    fn blocked_packet(&self, p: &Packet<B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
         let mut blocked = t_max.map(|t| t.is_nan() || t <= 0.0);
         let active = blocked.map(|b| !b);
         let t_min = [0.0; 4];
@@ -322,9 +222,8 @@ impl<'a> Renderer<'a, Sparse> {
     fn pixels4_lanes(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
         let (camera, settings) = (&self.scene.camera, &self.scene.settings);
         let v = f64::from(j) + 0.5;
-        let (rays, line) = camera.rays4([0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
+        let mut packet = B::camera_packet(camera, [0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
         cast.primary += 4;
-        let mut packet = Packet::with_line(rays, line);
         let mut active = [true; 4];
         let mut deepest = [settings.background; 4];
         let mut layers: [Layers; 4] = Default::default();
@@ -334,7 +233,7 @@ impl<'a> Renderer<'a, Sparse> {
             let own = nearest.map(|n| n.and_then(|(_, k)| self.skip_own(k)));
             let hits: [Option<(Hit, &Object)>; 4] = core::array::from_fn(|l| {
                 nearest[l].map(|(c, k)| {
-                    let normal = Sparse::normal(&self.shapes[k], &packet.rays[l], &c);
+                    let normal = B::normal(&self.shapes[k], &packet.rays[l], &c);
                     (Hit { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
                 })
             });
@@ -372,7 +271,7 @@ impl<'a> Renderer<'a, Sparse> {
     #[inline(always)]
     fn shade_packet(
         &self,
-        p: &Packet,
+        p: &Packet<B>,
         hits: &[Option<(Hit, &Object)>; 4],
         own: &[Option<usize>; 4],
         cast: &mut Cast,
@@ -406,7 +305,7 @@ impl<'a> Renderer<'a, Sparse> {
                 cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
                 // Unlit lanes cast a harmless ray with an empty range.
                 let origin = select(&lit, leaving_origin4(x, n, diffuse), [0.0; 3]);
-                let shadow = Packet::from_lanes(origin, select(&lit, l, [0.0, 0.0, 1.0]));
+                let shadow = B::packet(origin, select(&lit, l, [0.0, 0.0, 1.0]));
                 let t_max = core::array::from_fn(|k| if lit[k] { d[k] } else { 0.0 });
                 let blocked = self.blocked_packet(&shadow, &t_max, own);
                 s = blocked.map(|b| if b { settings.shadow_transmission } else { 1.0 });

@@ -1,0 +1,115 @@
+//! The plain back end's packets: spheres, planes and disks met by the textbook formulas of
+//! [`Plain`] in lanes — the same operations in the same order as glam's, so the same bits;
+//! other shapes one lane at a time.
+
+use super::{Crossings, Packet, Packets, dot4, lane, lanes3};
+use crate::backend::{Backend, Plain, PlainShape};
+use crate::camera::Camera;
+use crate::shapes::Crossing;
+use cga_core::euclid::{E3, norm, scale};
+use cga_core::simd::F64x4;
+use glam::DVec3;
+
+impl Packets for Plain {
+    type Lanes = ();
+
+    #[inline(always)]
+    fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Plain> {
+        let rays = core::array::from_fn(|l| Plain::ray(lane(&origin, l), lane(&dir, l)));
+        Packet { rays, origin, dir, line: () }
+    }
+
+    /// `unit(x a + y b + z c)` from the camera's position, `(x, y, z)` the image-plane point
+    /// and `(a, b, c)` the camera's axes, as [`Plain::camera_ray`] computes it.
+    #[inline(always)]
+    fn camera_packet(camera: &Camera, u: [f64; 4], v: f64) -> Option<Packet<Plain>> {
+        let points = lanes3(u.map(|u| camera.image_point(u, v)));
+        let [a, b, c] = camera.axes();
+        let d: [F64x4; 3] = core::array::from_fn(|k| {
+            let axis = |e: E3| F64x4::splat(e[k]);
+            points[0] * axis(a) + points[1] * axis(b) + points[2] * axis(c)
+        });
+        let inv = F64x4::splat(1.0) / norm(d);
+        if !inv.to_array().iter().all(|i| i.is_finite() && *i > 0.0) {
+            return None;
+        }
+        let dir = scale(d, inv);
+        let origin = camera.position().map(F64x4::splat);
+        Some(Self::packet(origin, dir))
+    }
+
+    #[inline(always)]
+    fn cross4(shape: &PlainShape, p: &Packet<Plain>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+        match shape {
+            PlainShape::Sphere { centre, radius } => sphere4(p, *centre, *radius, t_min, t_max),
+            PlainShape::Plane { normal, offset } => plane4(p, *normal, *offset, None, t_min, t_max),
+            PlainShape::Disk { normal, offset, centre, radius } => {
+                plane4(p, *normal, *offset, Some((*centre, *radius)), t_min, t_max)
+            }
+            _ => core::array::from_fn(|l| Plain::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
+        }
+    }
+}
+
+/// `v` in lanes.
+#[inline(always)]
+fn splat3(v: DVec3) -> [F64x4; 3] {
+    v.to_array().map(F64x4::splat)
+}
+
+/// `o + t d` per lane.
+#[inline(always)]
+fn along(p: &Packet<Plain>, t: F64x4) -> [F64x4; 3] {
+    core::array::from_fn(|k| p.origin[k] + t * p.dir[k])
+}
+
+/// The nearer root within range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
+/// `b = (o − c)·d`.
+#[inline(always)]
+fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+    let c = splat3(centre);
+    let oc = [p.origin[0] - c[0], p.origin[1] - c[1], p.origin[2] - c[2]];
+    let b = dot4(oc, p.dir);
+    let disc = b * b - (dot4(oc, oc) - F64x4::splat(radius * radius));
+    let d = disc.to_array();
+    if d.iter().all(|&x| x < 0.0) {
+        return [None; 4];
+    }
+    let s = F64x4::new(d.map(f64::sqrt));
+    let (near, far) = ((-b - s).to_array(), (-b + s).to_array());
+    core::array::from_fn(|l| {
+        let within = |t: f64| t > t_min[l] && t < t_max[l];
+        if d[l] < 0.0 {
+            return None;
+        }
+        let t = [near[l], far[l]].into_iter().find(|&t| within(t))?;
+        let point = core::array::from_fn(|k| p.origin[k].to_array()[l] + t * p.dir[k].to_array()[l]);
+        Some(Crossing { t, point, alpha: None })
+    })
+}
+
+/// `t = (δ − n·o)/(n·d)` on the plane `n·x = δ`, within range, and for a disk within the rim.
+#[inline(always)]
+fn plane4(
+    p: &Packet<Plain>,
+    normal: DVec3,
+    offset: f64,
+    rim: Option<(DVec3, f64)>,
+    t_min: &[f64; 4],
+    t_max: &[f64; 4],
+) -> Crossings {
+    let n = splat3(normal);
+    let denom = dot4(n, p.dir);
+    let t = (F64x4::splat(offset) - dot4(n, p.origin)) / denom;
+    let x = along(p, t);
+    let inside = rim.map(|(c, r)| {
+        let c = splat3(c);
+        let d = [x[0] - c[0], x[1] - c[1], x[2] - c[2]];
+        dot4(d, d).to_array().map(|q| q <= r * r)
+    });
+    let (denom, t) = (denom.to_array(), t.to_array());
+    core::array::from_fn(|l| {
+        let ok = denom[l] != 0.0 && t[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];
+        (ok && inside.is_none_or(|i| i[l])).then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None })
+    })
+}

@@ -1,0 +1,120 @@
+//! The sparse back end's packets: spheres, planes and disks met on the generated types
+//! instantiated on four f64 lanes — [`SphereShape`](crate::shapes::SphereShape)'s and
+//! [`PlaneShape`](crate::shapes::PlaneShape)'s meets operation for operation, so the same
+//! bits; other shapes one lane at a time through their own code.
+
+use super::{Crossings, Packet, Packets, dot4, lane};
+use crate::backend::{Backend, Sparse, SparseShape};
+use crate::camera::Camera;
+use crate::ray::Ray;
+use crate::shapes::Crossing;
+use cga_core::euclid::{E3, tolerance};
+use cga_core::simd::{F64x4, Lanes};
+use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
+
+impl Packets for Sparse {
+    type Lanes = Line<F64x4>;
+
+    #[inline(always)]
+    fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Sparse> {
+        let line = Line::from_point_unit_direction(origin, dir);
+        let lines = Line::unpack(line);
+        let rays = core::array::from_fn(|l| Ray { origin: lane(&origin, l), dir: lane(&dir, l), line: lines[l] });
+        Packet { rays, origin, dir, line }
+    }
+
+    #[inline(always)]
+    fn camera_packet(camera: &Camera, u: [f64; 4], v: f64) -> Option<Packet<Sparse>> {
+        let (rays, line) = camera.rays4(u, v)?;
+        Some(Packet::with_line(rays, line))
+    }
+
+    #[inline(always)]
+    fn cross4(shape: &SparseShape, p: &Packet<Sparse>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+        match shape {
+            SparseShape::Sphere(s) => meet_sphere(p, &Sphere::pack([s.sphere; 4]), t_min, t_max),
+            SparseShape::Plane(s) => meet_plane(p, &Plane::pack([s.plane; 4]), None, t_min, t_max),
+            SparseShape::Disk(d) => {
+                let rim = Some((d.disk.centre, d.disk.radius));
+                meet_plane(p, &Plane::pack([d.disk.plane; 4]), rim, t_min, t_max)
+            }
+            _ => core::array::from_fn(|l| Sparse::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
+        }
+    }
+}
+
+/// `(x − o) · d` per lane, as [`Ray::t_of`] computes it.
+fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
+    dot4([x[0] - p.origin[0], x[1] - p.origin[1], x[2] - p.origin[2]], p.dir)
+}
+
+/// `down(X)` in lanes: the Euclidean point and whether it is finite, as [`cga_core::down`]
+/// decides it lane by lane.
+fn down4(x: Vector<F64x4>) -> ([F64x4; 3], [bool; 4]) {
+    let inv = F64x4::splat(1.0) / x.eo;
+    let point = [x.e1 * inv, x.e2 * inv, x.e3 * inv];
+    let (w, inv) = (x.eo.to_array(), inv.to_array());
+    let e = [x.e1.to_array(), x.e2.to_array(), x.e3.to_array()];
+    let finite = core::array::from_fn(|l| {
+        let m = e.iter().fold(1.0f64, |m, c| if c[l].abs() > m { c[l].abs() } else { m });
+        w[l].abs() > tolerance(m) * f64::EPSILON.sqrt() && inv[l].is_finite()
+    });
+    (point, finite)
+}
+
+/// `L ∨ S` in lanes, as [`SphereShape::intersect`](crate::shapes::SphereShape) meets it:
+/// classified by the pair's square (rays and spheres normalised: weight 1), its points
+/// `P·e ∓ √(P²) e` with `e = ei ⌋ P`, ordered along the ray, the first within range kept.
+#[inline(always)]
+fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+    let pair = p.line & *sphere;
+    let square = pair.inner(pair).s.to_array();
+    let tol = tolerance(1.0);
+    let hit = square.map(|q| q.abs() <= tol || q > 0.0);
+    if !hit.iter().any(|&h| h) {
+        return [None; 4];
+    }
+    let e = ei::<F64x4>().lc(pair);
+    let pe = pair | e;
+    // The double point of a tangent meet: `√P² = 0` in the same formula.
+    let s = F64x4::new(square.map(|q| if q.abs() <= tol { 0.0 } else { q.sqrt() }));
+    let ((a, a_ok), (b, b_ok)) = (down4(pe - e.scale(s)), down4(pe + e.scale(s)));
+    let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
+    let ab = dot4([b[0] - a[0], b[1] - a[1], b[2] - a[2]], p.dir).to_array();
+    core::array::from_fn(|l| {
+        if !(hit[l] && a_ok[l] && b_ok[l]) {
+            return None;
+        }
+        let (first, second) = if ab[l] < 0.0 { ((tb[l], &b), (ta[l], &a)) } else { ((ta[l], &a), (tb[l], &b)) };
+        [first, second].into_iter().find(|(t, _)| *t > t_min[l] && *t < t_max[l]).map(|(t, x)| Crossing {
+            t,
+            point: lane(x, l),
+            alpha: None,
+        })
+    })
+}
+
+/// `L ∨ Π` in lanes, as the plane and disk shapes meet it: the flat point's point where
+/// its weight is not zero to rounding, within range, and for a disk within the rim.
+#[inline(always)]
+fn meet_plane(
+    p: &Packet<Sparse>,
+    plane: &Plane<F64x4>,
+    rim: Option<(E3, f64)>,
+    t_min: &[f64; 4],
+    t_max: &[f64; 4],
+) -> Crossings {
+    let flat = p.line & *plane;
+    let inv = F64x4::splat(1.0) / flat.eoi;
+    let x = [flat.e1i * inv, flat.e2i * inv, flat.e3i * inv];
+    let t = t_of4(p, x).to_array();
+    let (w, inv) = (flat.eoi.to_array(), inv.to_array());
+    let inside = rim.map(|(c, r)| {
+        let d = [x[0] - F64x4::splat(c[0]), x[1] - F64x4::splat(c[1]), x[2] - F64x4::splat(c[2])];
+        dot4(d, d).to_array().map(|q| q <= r * r)
+    });
+    core::array::from_fn(|l| {
+        let ok = w[l].abs() > tolerance(1.0) && inv[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];
+        (ok && inside.is_none_or(|i| i[l])).then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None })
+    })
+}
