@@ -77,14 +77,19 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     }
     let s = F64x4::new(d.map(f64::sqrt));
     let (near, far) = ((-b - s).to_array(), (-b + s).to_array());
+    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
+    let within = |t: [f64; 4]| -> [bool; 4] { core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l])) };
+    let (near_in, far_in) = (within(near), within(far));
+    let ok: [bool; 4] = core::array::from_fn(|l| !(d[l] < 0.0) & (near_in[l] | far_in[l]));
+    if !ok.iter().any(|&o| o) {
+        return [None; 4];
+    }
     core::array::from_fn(|l| {
-        let within = |t: f64| t > t_min[l] && t < t_max[l];
-        if d[l] < 0.0 {
-            return None;
-        }
-        let t = [near[l], far[l]].into_iter().find(|&t| within(t))?;
-        let point = core::array::from_fn(|k| p.origin[k].to_array()[l] + t * p.dir[k].to_array()[l]);
-        Some(Crossing { t, point, alpha: None })
+        ok[l].then(|| {
+            let t = if near_in[l] { near[l] } else { far[l] };
+            let point = core::array::from_fn(|k| p.origin[k].to_array()[l] + t * p.dir[k].to_array()[l]);
+            Crossing { t, point, alpha: None }
+        })
     })
 }
 
@@ -102,14 +107,18 @@ fn plane4(
     let denom = dot4(n, p.dir);
     let t = (F64x4::splat(offset) - dot4(n, p.origin)) / denom;
     let x = along(p, t);
-    let inside = rim.map(|(c, r)| {
+    let inside = rim.map_or([true; 4], |(c, r)| {
         let c = splat3(c);
         let d = [x[0] - c[0], x[1] - c[1], x[2] - c[2]];
         dot4(d, d).to_array().map(|q| q <= r * r)
     });
     let (denom, t) = (denom.to_array(), t.to_array());
-    core::array::from_fn(|l| {
-        let ok = denom[l] != 0.0 && t[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];
-        (ok && inside.is_none_or(|i| i[l])).then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None })
-    })
+    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
+    let ok: [bool; 4] = core::array::from_fn(|l| {
+        (denom[l] != 0.0) & t[l].is_finite() & (t[l] > t_min[l]) & (t[l] < t_max[l]) & inside[l]
+    });
+    if !ok.iter().any(|&b| b) {
+        return [None; 4];
+    }
+    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None }))
 }

@@ -81,15 +81,19 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
     let ((a, a_ok), (b, b_ok)) = (down4(pe - e.scale(s)), down4(pe + e.scale(s)));
     let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
     let ab = dot4([b[0] - a[0], b[1] - a[1], b[2] - a[2]], p.dir).to_array();
+    // Along the ray `b` comes first where `ab < 0`; the first point within range is kept.
+    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
+    let within = |t: [f64; 4]| -> [bool; 4] { core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l])) };
+    let (a_in, b_in) = (within(ta), within(tb));
+    let ok: [bool; 4] = core::array::from_fn(|l| hit[l] & a_ok[l] & b_ok[l] & (a_in[l] | b_in[l]));
+    if !ok.iter().any(|&o| o) {
+        return [None; 4];
+    }
     core::array::from_fn(|l| {
-        if !(hit[l] && a_ok[l] && b_ok[l]) {
-            return None;
-        }
-        let (first, second) = if ab[l] < 0.0 { ((tb[l], &b), (ta[l], &a)) } else { ((ta[l], &a), (tb[l], &b)) };
-        [first, second].into_iter().find(|(t, _)| *t > t_min[l] && *t < t_max[l]).map(|(t, x)| Crossing {
-            t,
-            point: lane(x, l),
-            alpha: None,
+        let take_b = if ab[l] < 0.0 { b_in[l] } else { !a_in[l] };
+        ok[l].then(|| {
+            let (t, x) = if take_b { (tb[l], &b) } else { (ta[l], &a) };
+            Crossing { t, point: lane(x, l), alpha: None }
         })
     })
 }
@@ -109,12 +113,17 @@ fn meet_plane(
     let x = [flat.e1i * inv, flat.e2i * inv, flat.e3i * inv];
     let t = t_of4(p, x).to_array();
     let (w, inv) = (flat.eoi.to_array(), inv.to_array());
-    let inside = rim.map(|(c, r)| {
+    let inside = rim.map_or([true; 4], |(c, r)| {
         let d = [x[0] - F64x4::splat(c[0]), x[1] - F64x4::splat(c[1]), x[2] - F64x4::splat(c[2])];
         dot4(d, d).to_array().map(|q| q <= r * r)
     });
-    core::array::from_fn(|l| {
-        let ok = w[l].abs() > tolerance(1.0) && inv[l].is_finite() && t[l] > t_min[l] && t[l] < t_max[l];
-        (ok && inside.is_none_or(|i| i[l])).then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None })
-    })
+    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
+    let tol = tolerance(1.0);
+    let ok: [bool; 4] = core::array::from_fn(|l| {
+        (w[l].abs() > tol) & inv[l].is_finite() & (t[l] > t_min[l]) & (t[l] < t_max[l]) & inside[l]
+    });
+    if !ok.iter().any(|&b| b) {
+        return [None; 4];
+    }
+    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None }))
 }
