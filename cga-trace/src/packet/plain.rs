@@ -80,7 +80,7 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
     let within = |t: [f64; 4]| -> [bool; 4] { core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l])) };
     let (near_in, far_in) = (within(near), within(far));
-    let ok: [bool; 4] = core::array::from_fn(|l| !(d[l] < 0.0) & (near_in[l] | far_in[l]));
+    let ok: [bool; 4] = core::array::from_fn(|l| (d[l] >= 0.0) & (near_in[l] | far_in[l]));
     if !ok.iter().any(|&o| o) {
         return [None; 4];
     }
