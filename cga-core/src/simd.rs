@@ -169,6 +169,145 @@ pub trait Lanes: Copy {
     fn pack(x: [Self; 4]) -> Self::Packed;
     /// The inverse of [`Lanes::pack`].
     fn unpack(p: Self::Packed) -> [Self; 4];
+    /// [`Lanes::pack`] of the values at `rows`, read in place by AVX shuffles where the
+    /// type allows (the same values).
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `rows` must point to four values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn pack_rows(rows: [*const Self; 4]) -> Self::Packed {
+        // SAFETY: the caller's pointers are valid.
+        Self::pack(rows.map(|r| unsafe { *r }))
+    }
+    /// [`Lanes::unpack`] into the values at `rows`, written in place by AVX shuffles where
+    /// the type allows.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `rows` must point to four writable values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn unpack_rows(p: Self::Packed, rows: [*mut Self; 4]) {
+        for (r, v) in rows.into_iter().zip(Self::unpack(p)) {
+            // SAFETY: the caller's pointers are valid.
+            unsafe { *r = v };
+        }
+    }
+}
+
+/// 4 × 4 transposes with AVX, between four values' coefficients in memory (rows) and one
+/// lane per value (columns), without lane-crossing shuffles: a block of four coefficients
+/// is read as 128-bit halves joined by `vinsertf128` and paired by `vunpcklpd`/`vunpckhpd`
+/// (and written back the same way in reverse); a pair left over takes 128-bit halves, a
+/// single one is gathered.
+#[cfg(target_arch = "x86_64")]
+mod transpose {
+    use super::F64x4;
+    use core::arch::x86_64::*;
+
+    /// `v`, which LLVM may not look into: given the lanes of a transpose, it otherwise folds
+    /// the shuffles into scalar loads and stores and computes the whole operation in scalar
+    /// code.
+    #[inline]
+    #[target_feature(enable = "avx")]
+    fn opaque(mut v: __m256d) -> __m256d {
+        // SAFETY: an empty sequence: it reads, writes and clobbers nothing but `v`'s register.
+        unsafe { core::arch::asm!("/* {0} */", inout(ymm_reg) v, options(pure, nomem, nostack, preserves_flags)) };
+        v
+    }
+
+    /// `out[k]` holds coefficient `k` of the four rows of `N` values each.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, each row must hold `N` values and `out` must be writable.
+    #[inline]
+    #[target_feature(enable = "avx")]
+    pub unsafe fn pack<const N: usize>(rows: [*const f64; 4], out: *mut [F64x4; N]) {
+        let out = out.cast::<f64>();
+        let mut c = 0;
+        // SAFETY: every load reads within a row, every store within `out` (unaligned
+        // accesses throughout).
+        unsafe {
+            while c + 4 <= N {
+                // Halves of rows 0 and 2, 1 and 3 joined by 128-bit inserts (loads), then
+                // paired by unpacks: no lane-crossing shuffle.
+                let join = |a: usize, k: usize| {
+                    let lo = _mm256_castpd128_pd256(_mm_loadu_pd(rows[a].add(c + k)));
+                    _mm256_insertf128_pd::<1>(lo, _mm_loadu_pd(rows[a + 2].add(c + k)))
+                };
+                let (x, y, z, w) = (join(0, 0), join(1, 0), join(0, 2), join(1, 2));
+                let lanes = [
+                    _mm256_unpacklo_pd(x, y),
+                    _mm256_unpackhi_pd(x, y),
+                    _mm256_unpacklo_pd(z, w),
+                    _mm256_unpackhi_pd(z, w),
+                ];
+                for (k, v) in lanes.into_iter().enumerate() {
+                    _mm256_storeu_pd(out.add(4 * (c + k)), opaque(v));
+                }
+                c += 4;
+            }
+            if c + 2 <= N {
+                let half = |i: usize| _mm_loadu_pd(rows[i].add(c));
+                let x = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(half(0)), half(2));
+                let y = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(half(1)), half(3));
+                _mm256_storeu_pd(out.add(4 * c), opaque(_mm256_unpacklo_pd(x, y)));
+                _mm256_storeu_pd(out.add(4 * c + 4), opaque(_mm256_unpackhi_pd(x, y)));
+                c += 2;
+            }
+            if c < N {
+                let v = _mm256_set_pd(*rows[3].add(c), *rows[2].add(c), *rows[1].add(c), *rows[0].add(c));
+                _mm256_storeu_pd(out.add(4 * c), opaque(v));
+            }
+        }
+    }
+
+    /// The inverse of [`pack`]: row `i` gets lane `i` of every `p[k]`.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, each row must hold `N` writable values.
+    #[inline]
+    #[target_feature(enable = "avx")]
+    pub unsafe fn unpack<const N: usize>(p: *const [F64x4; N], rows: [*mut f64; 4]) {
+        let p = p.cast::<f64>();
+        let mut c = 0;
+        // SAFETY: as in `pack`, with loads and stores exchanged.
+        unsafe {
+            while c + 4 <= N {
+                // Unpacks pair coefficients `c, c + 1` and `c + 2, c + 3` per lane; each
+                // 128-bit half is one row's pair: no lane-crossing shuffle.
+                let [p0, p1, p2, p3] = [0, 1, 2, 3].map(|k| opaque(_mm256_loadu_pd(p.add(4 * (c + k)))));
+                let (a, b) = (_mm256_unpacklo_pd(p0, p1), _mm256_unpackhi_pd(p0, p1));
+                let (x, y) = (_mm256_unpacklo_pd(p2, p3), _mm256_unpackhi_pd(p2, p3));
+                _mm_storeu_pd(rows[0].add(c), _mm256_castpd256_pd128(a));
+                _mm_storeu_pd(rows[0].add(c + 2), _mm256_castpd256_pd128(x));
+                _mm_storeu_pd(rows[1].add(c), _mm256_castpd256_pd128(b));
+                _mm_storeu_pd(rows[1].add(c + 2), _mm256_castpd256_pd128(y));
+                _mm_storeu_pd(rows[2].add(c), _mm256_extractf128_pd::<1>(a));
+                _mm_storeu_pd(rows[2].add(c + 2), _mm256_extractf128_pd::<1>(x));
+                _mm_storeu_pd(rows[3].add(c), _mm256_extractf128_pd::<1>(b));
+                _mm_storeu_pd(rows[3].add(c + 2), _mm256_extractf128_pd::<1>(y));
+                c += 4;
+            }
+            if c + 2 <= N {
+                let (x, y) = (opaque(_mm256_loadu_pd(p.add(4 * c))), opaque(_mm256_loadu_pd(p.add(4 * c + 4))));
+                let (u, v) = (_mm256_unpacklo_pd(x, y), _mm256_unpackhi_pd(x, y));
+                _mm_storeu_pd(rows[0].add(c), _mm256_castpd256_pd128(u));
+                _mm_storeu_pd(rows[1].add(c), _mm256_castpd256_pd128(v));
+                _mm_storeu_pd(rows[2].add(c), _mm256_extractf128_pd::<1>(u));
+                _mm_storeu_pd(rows[3].add(c), _mm256_extractf128_pd::<1>(v));
+                c += 2;
+            }
+            if c < N {
+                let v = opaque(_mm256_loadu_pd(p.add(4 * c)));
+                let (lo, hi) = (_mm256_castpd256_pd128(v), _mm256_extractf128_pd::<1>(v));
+                _mm_storel_pd(rows[0].add(c), lo);
+                _mm_storeh_pd(rows[1].add(c), lo);
+                _mm_storel_pd(rows[2].add(c), hi);
+                _mm_storeh_pd(rows[3].add(c), hi);
+            }
+        }
+    }
 }
 
 macro_rules! lanes {
@@ -184,6 +323,27 @@ macro_rules! lanes {
             fn unpack(p: Self::Packed) -> [Self; 4] {
                 let a = p.to_array().map(F64x4::to_array);
                 core::array::from_fn(|lane| crate::$t::from_array(core::array::from_fn(|k| a[k][lane])))
+            }
+            // The generated types are `#[repr(C)]` structs of their coefficients in field
+            // order: a value is `[T; N]` in memory, a packed one `[F64x4; N]`.
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows(rows: [*const Self; 4]) -> Self::Packed {
+                let mut out = core::mem::MaybeUninit::<Self::Packed>::uninit();
+                // SAFETY: the caller's CPU has AVX and its rows are valid; `pack` writes
+                // every coefficient of `out`.
+                unsafe {
+                    transpose::pack::<{ crate::$t::<f64>::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    out.assume_init()
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows(p: Self::Packed, rows: [*mut Self; 4]) {
+                // SAFETY: as in `pack_rows`.
+                unsafe {
+                    transpose::unpack::<{ crate::$t::<f64>::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast()))
+                }
             }
         }
     )*};
@@ -220,6 +380,18 @@ macro_rules! tuple_lanes {
             fn unpack(p: Self::Packed) -> [Self; 4] {
                 let parts = ($($x::unpack(p.$k),)*);
                 core::array::from_fn(|lane| ($(parts.$k[lane],)*))
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows(rows: [*const Self; 4]) -> Self::Packed {
+                // SAFETY: the caller's CPU has AVX and its pointers are valid.
+                unsafe { ($($x::pack_rows(rows.map(|r| &raw const (*r).$k)),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows(p: Self::Packed, rows: [*mut Self; 4]) {
+                // SAFETY: as in `pack_rows`.
+                unsafe { $($x::unpack_rows(p.$k, rows.map(|r| &raw mut (*r).$k));)* }
             }
         }
     };
@@ -308,8 +480,19 @@ pub fn run<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn run_avx2<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) {
-    // `K::apply` is a function item marked `#[inline(always)]`: inlined, so compiled for AVX2.
-    map_lanes(input, out, &K::apply)
+    // `K::apply` is a function item marked `#[inline(always)]`: inlined, so compiled for AVX2;
+    // the values go into and out of lanes by AVX transposes, in place.
+    let whole = input.len() / 4 * 4;
+    for (x, y) in input[..whole].chunks_exact(4).zip(out[..whole].chunks_exact_mut(4)) {
+        let rows = y.as_mut_ptr();
+        // SAFETY: the CPU has AVX2 (so AVX); the rows are the chunks' four values.
+        unsafe {
+            let lanes = K::Input::pack_rows([0, 1, 2, 3].map(|i| &raw const x[i]));
+            K::Output::unpack_rows(K::apply(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
+        }
+        not_across_iterations();
+    }
+    map_lanes(&input[whole..], &mut out[whole..], &K::apply)
 }
 
 /// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
@@ -400,6 +583,45 @@ mod tests {
     fn motor(k: usize) -> Motor {
         let r = Rotor::from_axis_angle([0.6, -0.48, 0.64], 0.1 * k as f64).unwrap();
         Motor::from_rotor_translator(r, Translator::from_vector([k as f64, -2.0, 0.5]))
+    }
+
+    /// `pack_rows`/`unpack_rows` (AVX transposes in place) against `pack`/`unpack`, for
+    /// types of every size of block and remainder (1, 4, 5, 6, 8, 10 and 16 coefficients).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn transposes_in_place_agree_with_packing() {
+        fn check<X: Lanes + PartialEq + core::fmt::Debug>(values: [X; 4], blank: X)
+        where
+            X::Packed: PartialEq + core::fmt::Debug,
+        {
+            // SAFETY: run only where the CPU has AVX; the pointers are to `values` and `back`.
+            unsafe {
+                let packed = X::pack_rows(values.each_ref().map(|v| v as *const X));
+                assert_eq!(packed, X::pack(values));
+                let mut back = [blank; 4];
+                X::unpack_rows(packed, back.each_mut().map(|v| v as *mut X));
+                assert_eq!(back, values);
+            }
+        }
+        if !std::is_x86_feature_detected!("avx") {
+            return;
+        }
+        // Distinct values in every coefficient of every lane.
+        macro_rules! values {
+            ($t:ident, $seed:expr) => {
+                core::array::from_fn::<crate::$t, 4, _>(|l| {
+                    crate::$t::from_array(core::array::from_fn(|k| (100 * l + k) as f64 + $seed))
+                })
+            };
+        }
+        macro_rules! each {
+            ($($t:ident),*) => {$(
+                check(values!($t, 0.5), crate::$t::zero());
+            )*};
+        }
+        each!(Scalar, Plane, Vector, Line, Motor, Circle, Even);
+        let (rotors, points) = (values!(Rotor, 0.25), values!(Vector, 0.75));
+        check(core::array::from_fn(|l| (rotors[l], points[l])), (crate::Rotor::zero(), Vector::zero()));
     }
 
     #[test]

@@ -74,6 +74,9 @@ impl Gen<'_> {
             #[doc = ""]
             #[doc = #summary]
             #[derive(Clone, Copy, PartialEq, Default)]
+            // `repr(C)`: a value is its coefficients in field order (`[T; N]` in memory), which
+            // `cga_core::simd` transposes in place into and out of lanes.
+            #[repr(C)]
             pub struct #ident<T = f64> {
                 #( #[doc = #field_docs] pub #fields: T, )*
             }
