@@ -444,3 +444,36 @@ fn primitive_normals_are_the_reflected_lines_direction() {
         }
     }
 }
+
+#[test]
+fn flat_shapes_never_meet_rays_leaving_them() {
+    // Why their own shadow rays may skip them: a ray leaving a point of a plane, disk or
+    // triangle (started off the surface on the side it leaves to, as secondary rays are)
+    // never meets it, at any angle down to grazing, on either side, near and far from the
+    // origin.
+    use cga_trace::shapes::{DiskShape, PlaneShape, Shape, TriangleShape};
+    for offset in [0.0, 1e3, 1e6] {
+        let c = [offset + 0.3, -0.2 * offset, 1.5];
+        let n = cga_core::euclid::unit([0.2, -0.4, 0.9]).unwrap();
+        let (u, v) =
+            (cga_core::euclid::perpendicular(n), cga_core::euclid::cross(n, cga_core::euclid::perpendicular(n)));
+        let at = |a: f64, b: f64| [0, 1, 2].map(|k| c[k] + a * u[k] + b * v[k]);
+        let shapes: [Box<dyn Shape>; 3] = [
+            Box::new(PlaneShape::new(c, n).unwrap()),
+            Box::new(DiskShape::new(c, n, 2.0).unwrap()),
+            Box::new(TriangleShape::new([at(-2.0, -2.0), at(2.0, -1.0), at(0.0, 2.0)]).unwrap()),
+        ];
+        for shape in &shapes {
+            assert!(shape.flat());
+            for k in 0..200 {
+                let a = 0.37 * k as f64;
+                let x = at(0.5 * a.sin(), 0.5 * (1.3 * a).cos());
+                // Directions from grazing (1e-9 off the plane) to along the normal, both sides.
+                let tilt = [1e-9, 1e-6, 1e-3, 0.1, 1.0][k % 5] * if k % 2 == 0 { 1.0 } else { -1.0 };
+                let along = [0, 1, 2].map(|j| (0.7 * a).cos() * u[j] + (0.7 * a).sin() * v[j] + tilt * n[j]);
+                let Some(ray) = Ray::leaving(x, n, along) else { continue };
+                assert!(shape.intersect(&ray, 0.0, f64::INFINITY).is_none(), "{shape:?} at {offset}, ray {k}");
+            }
+        }
+    }
+}
