@@ -42,7 +42,7 @@ fn median_ns(mut f: impl FnMut()) -> f64 {
 /// where the CPU has it), printing both.
 fn both<K: Kernel>(name: &str, input: &[K::Input], op: impl Fn(K::Input) -> K::Output)
 where
-    K::Output: Default,
+    K::Output: Default + PartialEq + std::fmt::Debug,
 {
     let mut out = vec![K::Output::default(); input.len()];
     let scalar = median_ns(|| {
@@ -51,10 +51,13 @@ where
         }
         black_box(&out);
     });
+    let one_at_a_time = out.clone();
     let batch = median_ns(|| {
         run::<K>(black_box(input), &mut out);
         black_box(&out);
     });
+    // What was timed gives the bits of one at a time.
+    assert_eq!(out, one_at_a_time, "{name}: run differs from one at a time");
     let packed_in: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
     let mut packed_out: Vec<_> = packed_in.iter().map(|&x| K::apply(x)).collect();
     let packets = median_ns(|| {

@@ -197,10 +197,10 @@ pub trait Lanes: Copy {
 }
 
 /// 4 × 4 transposes with AVX, between four values' coefficients in memory (rows) and one
-/// lane per value (columns), without lane-crossing shuffles: a block of four coefficients
-/// is read as 128-bit halves joined by `vinsertf128` and paired by `vunpcklpd`/`vunpckhpd`
-/// (and written back the same way in reverse); a pair left over takes 128-bit halves, a
-/// single one is gathered.
+/// lane per value (columns): a block of four coefficients is read as 128-bit halves joined
+/// by `vinsertf128` and paired by `vunpcklpd`/`vunpckhpd` (full-width loads and `vperm2f128`
+/// were slower), and written back by the same unpacks and `vperm2f128`; a pair left over
+/// takes 128-bit halves, a single one is gathered.
 #[cfg(target_arch = "x86_64")]
 mod transpose {
     use super::F64x4;
@@ -275,19 +275,17 @@ mod transpose {
         // SAFETY: as in `pack`, with loads and stores exchanged.
         unsafe {
             while c + 4 <= N {
-                // Unpacks pair coefficients `c, c + 1` and `c + 2, c + 3` per lane; each
-                // 128-bit half is one row's pair: no lane-crossing shuffle.
+                // Unpacks pair coefficients `c, c + 1` and `c + 2, c + 3` per lane (each
+                // 128-bit half one row's pair), `vperm2f128` joins a row's two pairs: a
+                // 256-bit store per row (faster than two 128-bit halves for 10-coefficient
+                // results, the same for 4).
                 let [p0, p1, p2, p3] = [0, 1, 2, 3].map(|k| opaque(_mm256_loadu_pd(p.add(4 * (c + k)))));
                 let (a, b) = (_mm256_unpacklo_pd(p0, p1), _mm256_unpackhi_pd(p0, p1));
                 let (x, y) = (_mm256_unpacklo_pd(p2, p3), _mm256_unpackhi_pd(p2, p3));
-                _mm_storeu_pd(rows[0].add(c), _mm256_castpd256_pd128(a));
-                _mm_storeu_pd(rows[0].add(c + 2), _mm256_castpd256_pd128(x));
-                _mm_storeu_pd(rows[1].add(c), _mm256_castpd256_pd128(b));
-                _mm_storeu_pd(rows[1].add(c + 2), _mm256_castpd256_pd128(y));
-                _mm_storeu_pd(rows[2].add(c), _mm256_extractf128_pd::<1>(a));
-                _mm_storeu_pd(rows[2].add(c + 2), _mm256_extractf128_pd::<1>(x));
-                _mm_storeu_pd(rows[3].add(c), _mm256_extractf128_pd::<1>(b));
-                _mm_storeu_pd(rows[3].add(c + 2), _mm256_extractf128_pd::<1>(y));
+                _mm256_storeu_pd(rows[0].add(c), _mm256_permute2f128_pd::<0x20>(a, x));
+                _mm256_storeu_pd(rows[1].add(c), _mm256_permute2f128_pd::<0x20>(b, y));
+                _mm256_storeu_pd(rows[2].add(c), _mm256_permute2f128_pd::<0x31>(a, x));
+                _mm256_storeu_pd(rows[3].add(c), _mm256_permute2f128_pd::<0x31>(b, y));
                 c += 4;
             }
             if c + 2 <= N {
