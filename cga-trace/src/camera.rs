@@ -133,12 +133,12 @@ impl Camera {
         Some(Ray { origin: self.position, dir, line })
     }
 
-    /// [`Camera::ray`] for four points `(u_k, v)` of a row at once, on four lanes: the rays,
-    /// and their lines in lanes (for a [`Packet`](crate::packet::Packet)); the same
-    /// operations lane by lane, so the same bits. `None` where a ray cannot be formed.
+    /// [`Camera::ray`] for four points `(u_k, v_k)` at once, on four lanes: the rays, and
+    /// their lines in lanes (for a [`Packet`](crate::packet::Packet)); the same operations
+    /// lane by lane, so the same bits. `None` where a ray cannot be formed.
     #[inline(always)]
-    pub fn rays4(&self, u: [f64; 4], v: f64) -> Option<([Ray; 4], Line<F64x4>)> {
-        let points = u.map(|u| self.image_point(u, v));
+    pub fn rays4(&self, u: [f64; 4], v: [f64; 4]) -> Option<([Ray; 4], Line<F64x4>)> {
+        let points: [E3; 4] = core::array::from_fn(|k| self.image_point(u[k], v[k]));
         let x = up(core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])))).to_array();
         let (line, dir) = unit_line(&self.lanes, x)?;
         let (lines, dir) = (Line::unpack(line), dir.map(F64x4::to_array));

@@ -97,6 +97,15 @@ pub struct Cast {
     pub reflection: u64,
 }
 
+impl Cast {
+    /// Adds `other`'s counts.
+    pub(crate) fn add(&mut self, other: &Cast) {
+        self.primary += other.primary;
+        self.shadow += other.shadow;
+        self.reflection += other.reflection;
+    }
+}
+
 impl RayCounts {
     fn add(&self, cast: &Cast) {
         self.primary.fetch_add(cast.primary, Relaxed);
@@ -385,7 +394,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
             let mut cast = Cast::default();
             let mut done = 0;
-            if aov == Aov::Shaded && self.scene.settings.spp <= 1 && self.packets {
+            if aov == Aov::Shaded && self.packets {
                 for (four, i0) in row.chunks_exact_mut(4).zip(window.columns.clone().step_by(4)) {
                     let Some(colours) = B::pixels4(self, i0, j, &mut cast) else { break };
                     four.copy_from_slice(&colours);

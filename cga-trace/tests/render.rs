@@ -419,6 +419,13 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         let plain = Renderer::<Plain>::with_backend(&scene).render(Aov::Shaded, &|| {});
         let single = Renderer::<Plain>::with_backend(&scene).without_packets().render(Aov::Shaded, &|| {});
         assert!(plain.pixels == single.pixels, "{name}: plain packets and single rays differ");
+        // Several samples per pixel: a packet per sample of four pixels.
+        let mut sampled = load_sized(name, 13, 5);
+        sampled.settings.spp = 5;
+        let (a, b) = (Renderer::new(&sampled), Renderer::new(&sampled).without_packets());
+        let (pa, pb) = (a.render(Aov::Shaded, &|| {}), b.render(Aov::Shaded, &|| {}));
+        assert!(pa.pixels == pb.pixels, "{name}: packets and single rays differ at 5 samples per pixel");
+        assert_eq!(a.counts.get(), b.counts.get(), "{name}: the same rays are cast at 5 samples per pixel");
     }
 }
 

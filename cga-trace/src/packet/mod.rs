@@ -20,7 +20,7 @@ use crate::material::{Material, power};
 use crate::ray::Ray;
 #[cfg(doc)]
 use crate::render::light_term;
-use crate::render::{Cast, Layers, Renderer, T_MIN, sum_layers};
+use crate::render::{Cast, Layers, Renderer, T_MIN, sample_offset, sum_layers};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
 use cga_core::Real;
@@ -38,9 +38,9 @@ pub trait Packets: Backend {
     fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Self>
     where
         Self: Sized;
-    /// The camera rays through `(u_k, v)`, as [`Backend::camera_ray`] makes each; `None`
+    /// The camera rays through `(u_k, v_k)`, as [`Backend::camera_ray`] makes each; `None`
     /// where one cannot be formed (the scalar path then says why).
-    fn camera_packet(camera: &Camera, u: [f64; 4], v: f64) -> Option<Packet<Self>>
+    fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Self>>
     where
         Self: Sized;
     /// The crossings of the packet's rays with a shape within their ranges, as
@@ -196,13 +196,14 @@ impl<'a, B: Packets> Renderer<'a, B> {
         core::array::from_fn(|l| active[l] && blocked[l])
     }
 
-    /// Four neighbouring pixels of a row, `(i₀ + k, j)`, through packets — the camera rays,
-    /// the mirror bounces of those that hit mirrors (lanes whose ray has ended ride along,
-    /// inactive), and at every hit the shadow rays towards each light; `None` where a
-    /// camera ray cannot be formed (the scalar path then says why). Each lane gets the bits
-    /// [`Renderer::trace`] gives its ray: the same meets, shading and sum from the deepest
-    /// bounce up. Compiled for AVX2 and FMA where the CPU has them (the lanes then run in
-    /// one register each).
+    /// Four neighbouring pixels of a row, `(i₀ + k, j)`, through packets, sample by sample
+    /// (sample `s` of the four pixels is one packet) — the camera rays, the mirror bounces of
+    /// those that hit mirrors (lanes whose ray has ended ride along, inactive), and at every
+    /// hit the shadow rays towards each light; `None` where a camera ray cannot be formed
+    /// (the scalar path then says why; nothing is counted). Each lane gets the bits
+    /// [`Renderer::pixel`] gives its pixel: the same samples, meets, shading, sum from the
+    /// deepest bounce up and mean over samples. Compiled for AVX2 and FMA where the CPU has
+    /// them (the lanes then run in one register each).
     pub fn pixels4(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
         #[cfg(target_arch = "x86_64")]
         if avx2() {
@@ -220,9 +221,35 @@ impl<'a, B: Packets> Renderer<'a, B> {
 
     #[inline(always)]
     fn pixels4_lanes(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+        let spp = self.scene.settings.spp.max(1);
+        let pixels = [0, 1, 2, 3].map(|k| i0 + k);
+        let mut counted = Cast::default();
+        if spp == 1 {
+            let centre = |i: u32| f64::from(i) + 0.5;
+            let colours = self.samples4(pixels.map(centre), [centre(j); 4], &mut counted)?;
+            cast.add(&counted);
+            return Some(colours);
+        }
+        // As `Renderer::pixel` sums them: sample by sample, then divided by their number.
+        let mut sum = [[0.0; 3]; 4];
+        for s in 0..spp {
+            let offsets = pixels.map(|i| sample_offset(i, j, s));
+            let u = core::array::from_fn(|k| f64::from(pixels[k]) + offsets[k].0);
+            let v = offsets.map(|o| f64::from(j) + o.1);
+            let colours = self.samples4(u, v, &mut counted)?;
+            for (sum, c) in sum.iter_mut().zip(colours) {
+                *sum = [0, 1, 2].map(|k| sum[k] + c[k]);
+            }
+        }
+        cast.add(&counted);
+        Some(sum.map(|c| c.map(|x| x / f64::from(spp))))
+    }
+
+    /// The colours seen at continuous pixel coordinates `(u_k, v_k)`, one packet.
+    #[inline(always)]
+    fn samples4(&self, u: [f64; 4], v: [f64; 4], cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
         let (camera, settings) = (&self.scene.camera, &self.scene.settings);
-        let v = f64::from(j) + 0.5;
-        let mut packet = B::camera_packet(camera, [0, 1, 2, 3].map(|k| f64::from(i0 + k) + 0.5), v)?;
+        let mut packet = B::camera_packet(camera, u, v)?;
         cast.primary += 4;
         let mut active = [true; 4];
         let mut deepest = [settings.background; 4];

@@ -22,8 +22,8 @@ impl Packets for Plain {
     /// `unit(x a + y b + z c)` from the camera's position, `(x, y, z)` the image-plane point
     /// and `(a, b, c)` the camera's axes, as [`Plain::camera_ray`] computes it.
     #[inline(always)]
-    fn camera_packet(camera: &Camera, u: [f64; 4], v: f64) -> Option<Packet<Plain>> {
-        let points = lanes3(u.map(|u| camera.image_point(u, v)));
+    fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Plain>> {
+        let points = lanes3(core::array::from_fn(|k| camera.image_point(u[k], v[k])));
         let [a, b, c] = camera.axes();
         let d: [F64x4; 3] = core::array::from_fn(|k| {
             let axis = |e: E3| F64x4::splat(e[k]);

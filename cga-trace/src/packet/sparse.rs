@@ -24,7 +24,7 @@ impl Packets for Sparse {
     }
 
     #[inline(always)]
-    fn camera_packet(camera: &Camera, u: [f64; 4], v: f64) -> Option<Packet<Sparse>> {
+    fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Sparse>> {
         let (rays, line) = camera.rays4(u, v)?;
         Some(Packet::with_line(rays, line))
     }
