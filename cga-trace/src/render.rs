@@ -125,12 +125,12 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// The objects in `B`'s form, in scene order.
     pub(crate) shapes: Vec<B::Shape>,
     /// Whether rays go four at a time through packets: where `B` has them, unless switched
-    /// off.
+    /// off or the scene has a hierarchy.
     pub(crate) packets: bool,
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
     bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
-    pub(crate) bvh: Option<Bvh>,
+    bvh: Option<Bvh>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
     pub(crate) flat: Vec<bool>,
     /// Rays cast so far.
@@ -152,7 +152,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
         let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
-        let packets = B::PACKETS;
+        // Packets test every object: for scenes with a hierarchy, single rays through it.
+        let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
         Renderer { scene, shapes, packets, bounds, bvh, flat, counts: RayCounts::default() }
     }
@@ -171,7 +172,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     }
 
     /// The nearest crossing with `t_min < t < t_max` over all objects, and the object's index.
-    pub(crate) fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, mut t_max: f64) -> Option<(Crossing, usize)> {
+    fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, mut t_max: f64) -> Option<(Crossing, usize)> {
         let mut best = None;
         if let Some(bvh) = &self.bvh {
             bvh.traverse(ray.origin, ray.dir, t_min, t_max, |k, t_max| {
@@ -215,7 +216,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// Whether anything but object `skip` lies on the ray before `t_max`: stops at the first
     /// blocker, and computes no normals.
-    pub(crate) fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64, skip: Option<usize>) -> bool {
+    fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64, skip: Option<usize>) -> bool {
         if let Some(bvh) = &self.bvh {
             let mut blocked = false;
             bvh.traverse(ray.origin, ray.dir, 0.0, t_max, |k, t| {

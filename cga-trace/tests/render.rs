@@ -427,24 +427,6 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         assert!(pa.pixels == pb.pixels, "{name}: packets and single rays differ at 5 samples per pixel");
         assert_eq!(a.counts.get(), b.counts.get(), "{name}: the same rays are cast at 5 samples per pixel");
     }
-    // A scene of many objects, traversed through its hierarchy lane by lane.
-    let mut text = String::from(
-        "[camera]\nposition = [0.0, -30.0, 8.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 61\nheight = 23\n\
-         [[lights]]\nposition = [10.0, -20.0, 30.0]\n[[lights]]\nposition = [-10.0, -25.0, 20.0]\n\
-         [[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, -1.0]\nnormal = [0.0, 0.0, 1.0]\n\
-         material = { colour = [0.6, 0.6, 0.6], kr = 0.3 }\n",
-    );
-    for k in 0..40 {
-        let (x, y, z) = ((k % 10) as f64 - 4.5, ((k / 10) % 4) as f64 - 1.5, 0.3 * (k % 3) as f64);
-        text += &format!(
-            "[[objects]]\ntype = \"sphere\"\ncentre = [{x}, {y}, {z}]\nradius = 0.4\nmaterial = {{ colour = [0.8, 0.3, 0.2], kr = 0.4 }}\n"
-        );
-    }
-    let many = Scene::parse(&text, "spheres.toml").unwrap();
-    let (a, b) = (Renderer::new(&many), Renderer::new(&many).without_packets());
-    let (pa, pb) = (a.render(Aov::Shaded, &|| {}), b.render(Aov::Shaded, &|| {}));
-    assert!(pa.pixels == pb.pixels, "many spheres: packets and single rays differ");
-    assert_eq!(a.counts.get(), b.counts.get(), "many spheres: the same rays are cast");
 }
 
 #[test]

@@ -154,16 +154,9 @@ impl<'a, B: Packets> Renderer<'a, B> {
         B::cross4(&self.shapes[k], p, t_min, t_max)
     }
 
-    /// The nearest crossing per active lane over all objects, and its object; in a scene
-    /// with a hierarchy, each lane's ray through it as the scalar path goes (the order in
-    /// which objects are met decides exact ties, so the lanes keep the scalar order).
+    /// The nearest crossing per active lane over all objects, and its object.
     #[inline(always)]
     fn nearest_packet(&self, p: &Packet<B>, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
-        if self.bvh.is_some() {
-            return core::array::from_fn(|l| {
-                if active[l] { self.crossing(&p.rays[l], T_MIN, f64::INFINITY) } else { None }
-            });
-        }
         // An inactive lane's range is empty: it finds nothing.
         let t_min = [T_MIN; 4];
         let mut t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
@@ -186,12 +179,6 @@ impl<'a, B: Packets> Renderer<'a, B> {
     fn blocked_packet(&self, p: &Packet<B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
         let mut blocked = t_max.map(|t| t.is_nan() || t <= 0.0);
         let active = blocked.map(|b| !b);
-        if self.bvh.is_some() {
-            // Each lane's ray through the hierarchy (four rays led through it together, each
-            // testing the objects its own ray would reach, were slower: 0.32 → 0.36 s on 1,000
-            // spheres).
-            return core::array::from_fn(|l| active[l] && self.blocked(&p.rays[l], t_max[l], skip[l]));
-        }
         let t_min = [0.0; 4];
         for k in 0..self.shapes.len() {
             if blocked.iter().all(|&b| b) {
