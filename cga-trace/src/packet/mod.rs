@@ -74,12 +74,6 @@ impl<B: Packets> Packet<B> {
     }
 }
 
-/// Lane-wise `a · b`.
-#[inline(always)]
-fn dot4(a: [F64x4; 3], b: [F64x4; 3]) -> F64x4 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
 /// Lane `l` of a point in lanes.
 #[inline(always)]
 fn lane(x: &[F64x4; 3], l: usize) -> E3 {

@@ -2,11 +2,11 @@
 //! [`Plain`] in lanes — the same operations in the same order as glam's, so the same bits;
 //! other shapes one lane at a time.
 
-use super::{Crossings, Packet, Packets, dot4, lane, lanes3};
+use super::{Crossings, Packet, Packets, lane, lanes3};
 use crate::backend::{Backend, Plain, PlainShape};
 use crate::camera::Camera;
 use crate::shapes::Crossing;
-use cga_core::euclid::{E3, norm, scale};
+use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::F64x4;
 use glam::DVec3;
 
@@ -57,20 +57,14 @@ fn splat3(v: DVec3) -> [F64x4; 3] {
     v.to_array().map(F64x4::splat)
 }
 
-/// `o + t d` per lane.
-#[inline(always)]
-fn along(p: &Packet<Plain>, t: F64x4) -> [F64x4; 3] {
-    core::array::from_fn(|k| p.origin[k] + t * p.dir[k])
-}
-
 /// The nearer root within range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
 /// `b = (o − c)·d`.
 #[inline(always)]
 fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
     let c = splat3(centre);
-    let oc = [p.origin[0] - c[0], p.origin[1] - c[1], p.origin[2] - c[2]];
-    let b = dot4(oc, p.dir);
-    let disc = b * b - (dot4(oc, oc) - F64x4::splat(radius * radius));
+    let oc = sub(p.origin, c);
+    let b = dot(oc, p.dir);
+    let disc = b * b - (dot(oc, oc) - F64x4::splat(radius * radius));
     let d = disc.to_array();
     if d.iter().all(|&x| x < 0.0) {
         return [None; 4];
@@ -104,13 +98,14 @@ fn plane4(
     t_max: &[f64; 4],
 ) -> Crossings {
     let n = splat3(normal);
-    let denom = dot4(n, p.dir);
-    let t = (F64x4::splat(offset) - dot4(n, p.origin)) / denom;
-    let x = along(p, t);
+    let denom = dot(n, p.dir);
+    let t = (F64x4::splat(offset) - dot(n, p.origin)) / denom;
+    // `o + t d` (glam's `t * d` per coordinate: the same products).
+    let x = add(p.origin, scale(p.dir, t));
     let inside = rim.map_or([true; 4], |(c, r)| {
         let c = splat3(c);
-        let d = [x[0] - c[0], x[1] - c[1], x[2] - c[2]];
-        dot4(d, d).to_array().map(|q| q <= r * r)
+        let d = sub(x, c);
+        dot(d, d).to_array().map(|q| q <= r * r)
     });
     let (denom, t) = (denom.to_array(), t.to_array());
     // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.

@@ -3,12 +3,12 @@
 //! [`PlaneShape`](crate::shapes::PlaneShape)'s meets operation for operation, so the same
 //! bits; other shapes one lane at a time through their own code.
 
-use super::{Crossings, Packet, Packets, dot4, lane};
+use super::{Crossings, Packet, Packets, lane};
 use crate::backend::{Backend, Sparse, SparseShape};
 use crate::camera::Camera;
 use crate::ray::Ray;
 use crate::shapes::Crossing;
-use cga_core::euclid::{E3, tolerance};
+use cga_core::euclid::{E3, dot, sub, tolerance};
 use cga_core::simd::{F64x4, Lanes};
 use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
 
@@ -45,7 +45,7 @@ impl Packets for Sparse {
 
 /// `(x − o) · d` per lane, as [`Ray::t_of`] computes it.
 fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
-    dot4([x[0] - p.origin[0], x[1] - p.origin[1], x[2] - p.origin[2]], p.dir)
+    dot(sub(x, p.origin), p.dir)
 }
 
 /// `down(X)` in lanes: the Euclidean point and whether it is finite, as [`cga_core::down`]
@@ -80,7 +80,7 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
     let s = F64x4::new(square.map(|q| if q.abs() <= tol { 0.0 } else { q.sqrt() }));
     let ((a, a_ok), (b, b_ok)) = (down4(pe - e.scale(s)), down4(pe + e.scale(s)));
     let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
-    let ab = dot4([b[0] - a[0], b[1] - a[1], b[2] - a[2]], p.dir).to_array();
+    let ab = dot(sub(b, a), p.dir).to_array();
     // Along the ray `b` comes first where `ab < 0`; the first point within range is kept.
     // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
     let within = |t: [f64; 4]| -> [bool; 4] { core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l])) };
@@ -114,8 +114,8 @@ fn meet_plane(
     let t = t_of4(p, x).to_array();
     let (w, inv) = (flat.eoi.to_array(), inv.to_array());
     let inside = rim.map_or([true; 4], |(c, r)| {
-        let d = [x[0] - F64x4::splat(c[0]), x[1] - F64x4::splat(c[1]), x[2] - F64x4::splat(c[2])];
-        dot4(d, d).to_array().map(|q| q <= r * r)
+        let d = sub(x, c.map(F64x4::splat));
+        dot(d, d).to_array().map(|q| q <= r * r)
     });
     // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
     let tol = tolerance(1.0);
