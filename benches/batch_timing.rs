@@ -4,11 +4,17 @@
 //! benches/peers/versor.cpp times Versor: batches of 256 operands, `REPS` passes per round,
 //! the median over rounds, in ns per operation. Prints `operation form ns` lines.
 //!
+//! It also prints each operation's `floor`: its multiplications (the generated code does one
+//! per nonzero term of the Cayley table, `cga_core::product_table`) at this core's peak rate
+//! of f64 multiplications, measured here with the widest vectors the CPU has. No code doing
+//! those multiplications, vectorised any way, is faster than its floor, so the floor bounds
+//! what any ratio against a peer can be on this machine.
+//!
 //! `cargo run --release -p cga-benches --example batch_timing`
 
 use cga_benches::kernels::{CircleCircle, MeetSphere, MotorMotor, MotorOnPoint, RotorRotor, ThreePoints};
 use cga_core::simd::{Kernel, Lanes, run, run_packed};
-use cga_core::{Circle, Line, Motor, Rotor, Sandwich, Sphere, Vector};
+use cga_core::{Circle, Line, Motor, ProductKind, Rotor, Sandwich, Sphere, Vector, product_table};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -69,6 +75,78 @@ where
     println!("{name} packets {packets:.3}");
 }
 
+/// The multiplications of the generated products `(kind, lhs, rhs)` the operation chains.
+fn multiplications(products: &[(ProductKind, &str, &str)]) -> usize {
+    let table = product_table::<f64>();
+    let terms = |&(kind, lhs, rhs): &(ProductKind, &str, &str)| {
+        let e = table.iter().find(|e| e.kind == kind && e.lhs == lhs && e.rhs == rhs);
+        e.unwrap_or_else(|| panic!("no generated {kind:?} of {lhs} and {rhs}")).terms
+    };
+    products.iter().map(terms).sum()
+}
+
+/// ns per f64 multiplication at this core's peak: twelve independent chains of vector
+/// multiplications (more than latency × ports on current x86-64 cores), 4 lanes with AVX
+/// and 8 with AVX-512 where the CPU has them; the faster, median over rounds.
+#[cfg(target_arch = "x86_64")]
+fn peak_multiplication_ns() -> f64 {
+    use std::arch::x86_64::*;
+    const STEPS: usize = 1 << 20;
+    const CHAINS: usize = 12;
+    #[target_feature(enable = "avx")]
+    fn avx(c: f64) -> f64 {
+        let c = _mm256_set1_pd(c);
+        let mut acc = [_mm256_set1_pd(1.0); CHAINS];
+        for _ in 0..STEPS {
+            for a in &mut acc {
+                *a = _mm256_mul_pd(*a, c);
+            }
+        }
+        let mut lanes = [0.0; 4];
+        // SAFETY: `lanes` holds four f64.
+        unsafe {
+            _mm256_storeu_pd(lanes.as_mut_ptr(), acc.iter().fold(_mm256_set1_pd(0.0), |s, &a| _mm256_add_pd(s, a)))
+        };
+        lanes.iter().sum()
+    }
+    #[target_feature(enable = "avx512f")]
+    fn avx512(c: f64) -> f64 {
+        let c = _mm512_set1_pd(c);
+        let mut acc = [_mm512_set1_pd(1.0); CHAINS];
+        for _ in 0..STEPS {
+            for a in &mut acc {
+                *a = _mm512_mul_pd(*a, c);
+            }
+        }
+        _mm512_reduce_add_pd(acc.iter().fold(_mm512_set1_pd(0.0), |s, &a| _mm512_add_pd(s, a)))
+    }
+    let time = |lanes: usize, f: &dyn Fn(f64) -> f64| {
+        let mut r: Vec<f64> = (0..ROUNDS)
+            .map(|_| {
+                let t = Instant::now();
+                black_box(f(black_box(1.0)));
+                t.elapsed().as_nanos() as f64 / (STEPS * CHAINS * lanes) as f64
+            })
+            .collect();
+        r.sort_by(f64::total_cmp);
+        r[ROUNDS / 2]
+    };
+    let mut best = f64::INFINITY;
+    if std::is_x86_feature_detected!("avx") {
+        // SAFETY: the CPU has AVX.
+        let ns = time(4, &|c| unsafe { avx(c) });
+        println!("multiply avx {ns:.4}");
+        best = best.min(ns);
+    }
+    if std::is_x86_feature_detected!("avx512f") {
+        // SAFETY: the CPU has AVX-512F.
+        let ns = time(8, &|c| unsafe { avx512(c) });
+        println!("multiply avx512 {ns:.4}");
+        best = best.min(ns);
+    }
+    best
+}
+
 fn main() {
     let (a, b, c): (Vec<_>, Vec<_>, Vec<_>) =
         (0..N).map(|i| (point(i, 0.0), point(i, 100.0), point(i, 200.0))).collect();
@@ -107,4 +185,23 @@ fn main() {
     both::<CircleCircle>("circle_times_circle", &circles, |(x, y)| x * y);
     both::<MotorMotor>("motor_times_motor", &motors, |(x, y)| x * y);
     both::<RotorRotor>("rotor_times_rotor", &rotors, |(x, y)| x * y);
+
+    #[cfg(target_arch = "x86_64")]
+    {
+        use ProductKind::{Geometric, Outer, Regressive, Sandwich};
+        let peak = peak_multiplication_ns();
+        println!("multiply peak {peak:.4}");
+        for (name, products) in [
+            ("line_meet_sphere", &[(Regressive, "Line", "Sphere")][..]),
+            ("circle_from_3_points", &[(Outer, "Vector", "Vector"), (Outer, "Bivector", "Vector")]),
+            ("motor_on_point", &[(Sandwich, "Motor", "Vector")]),
+            ("circle_times_circle", &[(Geometric, "Circle", "Circle")]),
+            ("motor_times_motor", &[(Geometric, "Motor", "Motor")]),
+            ("rotor_times_rotor", &[(Geometric, "Rotor", "Rotor")]),
+        ] {
+            let n = multiplications(products);
+            println!("{name} multiplications {n}");
+            println!("{name} floor {:.3}", n as f64 * peak);
+        }
+    }
 }

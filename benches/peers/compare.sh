@@ -2,7 +2,9 @@
 # Ours against Versor (github.com/wolftype/versor) on six operations, interleaved: the
 # harness versor.cpp built for baseline x86-64 and with -march=native, and our
 # examples/batch_timing (baseline build; the packets dispatch to AVX2 at run time), each run
-# ROUNDS times in turn; prints the table of medians for benches/README.md.
+# ROUNDS times in turn; prints the table of medians for benches/README.md, with each
+# operation's floor (its multiplications at the core's peak rate, from batch_timing) and the
+# ratio to Versor native that the floor allows at most.
 #
 #   VERSOR_DIR=/path/to/versor benches/peers/compare.sh
 #
@@ -35,11 +37,14 @@ for line in open(sys.argv[1]):
     op, form, ns = line.split()
     t[(op, form)].append(float(ns))
 m = {k: statistics.median(v) for k, v in t.items()}
-ops = list(dict.fromkeys(op for op, _ in t))
-print("| operation | ours scalar | ours batch | ours packets | Versor x86-64 | Versor native | native / packets | native / batch |")
-print("|---|---|---|---|---|---|---|---|")
+ops = [op for op in dict.fromkeys(op for op, _ in t) if op != "multiply"]
+print("| operation | ours scalar | ours batch | ours packets | Versor x86-64 | Versor native | native / packets | native / batch | multiplications | floor | native / floor |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for op in ops:
     g = lambda f: m[(op, f)]
     print(f"| {op} | {g('scalar'):.2f} | {g('batch'):.2f} | {g('packets'):.2f} | {g('versor-baseline'):.2f} | "
-          f"{g('versor-native'):.2f} | {g('versor-native') / g('packets'):.2f}× | {g('versor-native') / g('batch'):.2f}× |")
+          f"{g('versor-native'):.2f} | {g('versor-native') / g('packets'):.2f}× | {g('versor-native') / g('batch'):.2f}× | "
+          f"{g('multiplications'):.0f} | {g('floor'):.2f} | {g('versor-native') / g('floor'):.2f}× |")
+print(f"\nfloor: the multiplications at this core's peak rate, {m[('multiply', 'peak')]:.4f} ns each "
+      "(batch_timing); native / floor is the most any code doing those multiplications can reach against Versor native")
 PY
