@@ -93,32 +93,31 @@ fn peak_multiplication_ns() -> f64 {
     use std::arch::x86_64::*;
     const STEPS: usize = 1 << 20;
     const CHAINS: usize = 12;
-    #[target_feature(enable = "avx")]
-    fn avx(c: f64) -> f64 {
-        let c = _mm256_set1_pd(c);
-        let mut acc = [_mm256_set1_pd(1.0); CHAINS];
+    /// The chains: `STEPS` multiplications by `c` of each of `CHAINS` vectors of ones.
+    #[inline(always)]
+    fn chains<V: Copy>(one: V, c: V, mul: impl Fn(V, V) -> V) -> [V; CHAINS] {
+        let mut acc = [one; CHAINS];
         for _ in 0..STEPS {
             for a in &mut acc {
-                *a = _mm256_mul_pd(*a, c);
+                *a = mul(*a, c);
             }
         }
+        acc
+    }
+    #[target_feature(enable = "avx")]
+    fn avx(c: f64) -> f64 {
+        let acc = chains(_mm256_set1_pd(1.0), _mm256_set1_pd(c), |a, c| _mm256_mul_pd(a, c));
         let mut lanes = [0.0; 4];
         // SAFETY: `lanes` holds four f64.
         unsafe {
-            _mm256_storeu_pd(lanes.as_mut_ptr(), acc.iter().fold(_mm256_set1_pd(0.0), |s, &a| _mm256_add_pd(s, a)))
+            _mm256_storeu_pd(lanes.as_mut_ptr(), acc.into_iter().fold(_mm256_setzero_pd(), |s, a| _mm256_add_pd(s, a)))
         };
         lanes.iter().sum()
     }
     #[target_feature(enable = "avx512f")]
     fn avx512(c: f64) -> f64 {
-        let c = _mm512_set1_pd(c);
-        let mut acc = [_mm512_set1_pd(1.0); CHAINS];
-        for _ in 0..STEPS {
-            for a in &mut acc {
-                *a = _mm512_mul_pd(*a, c);
-            }
-        }
-        _mm512_reduce_add_pd(acc.iter().fold(_mm512_set1_pd(0.0), |s, &a| _mm512_add_pd(s, a)))
+        let acc = chains(_mm512_set1_pd(1.0), _mm512_set1_pd(c), |a, c| _mm512_mul_pd(a, c));
+        _mm512_reduce_add_pd(acc.into_iter().fold(_mm512_setzero_pd(), |s, a| _mm512_add_pd(s, a)))
     }
     let time = |lanes: usize, f: &dyn Fn(f64) -> f64| {
         let mut r: Vec<f64> = (0..ROUNDS)
