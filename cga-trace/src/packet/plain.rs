@@ -2,7 +2,7 @@
 //! [`Plain`] in lanes — the same operations in the same order as glam's, so the same bits;
 //! other shapes one lane at a time.
 
-use super::{Crossings, Packet, Packets, lane, lanes3};
+use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes3, within};
 use crate::backend::{Backend, Plain, PlainShape};
 use crate::camera::Camera;
 use crate::shapes::Crossing;
@@ -71,9 +71,7 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     }
     let s = F64x4::new(d.map(f64::sqrt));
     let (near, far) = ((-b - s).to_array(), (-b + s).to_array());
-    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
-    let within = |t: [f64; 4]| -> [bool; 4] { core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l])) };
-    let (near_in, far_in) = (within(near), within(far));
+    let (near_in, far_in) = (within(near, t_min, t_max), within(far, t_min, t_max));
     let ok: [bool; 4] = core::array::from_fn(|l| (d[l] >= 0.0) & (near_in[l] | far_in[l]));
     if !ok.iter().any(|&o| o) {
         return [None; 4];
@@ -102,18 +100,10 @@ fn plane4(
     let t = (F64x4::splat(offset) - dot(n, p.origin)) / denom;
     // `o + t d` (glam's `t * d` per coordinate: the same products).
     let x = add(p.origin, scale(p.dir, t));
-    let inside = rim.map_or([true; 4], |(c, r)| {
-        let c = splat3(c);
-        let d = sub(x, c);
-        dot(d, d).to_array().map(|q| q <= r * r)
-    });
+    let inside = inside_rim(&x, rim.map(|(c, r)| (c.to_array(), r)));
     let (denom, t) = (denom.to_array(), t.to_array());
-    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
-    let ok: [bool; 4] = core::array::from_fn(|l| {
+    let ok = core::array::from_fn(|l| {
         (denom[l] != 0.0) & t[l].is_finite() & (t[l] > t_min[l]) & (t[l] < t_max[l]) & inside[l]
     });
-    if !ok.iter().any(|&b| b) {
-        return [None; 4];
-    }
-    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None }))
+    crossings(ok, t, &x)
 }

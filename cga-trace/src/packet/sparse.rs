@@ -3,7 +3,7 @@
 //! [`PlaneShape`](crate::shapes::PlaneShape)'s meets operation for operation, so the same
 //! bits; other shapes one lane at a time through their own code.
 
-use super::{Crossings, Packet, Packets, lane};
+use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, within};
 use crate::backend::{Backend, Sparse, SparseShape};
 use crate::camera::Camera;
 use crate::ray::Ray;
@@ -82,9 +82,7 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
     let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
     let ab = dot(sub(b, a), p.dir).to_array();
     // Along the ray `b` comes first where `ab < 0`; the first point within range is kept.
-    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
-    let within = |t: [f64; 4]| -> [bool; 4] { core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l])) };
-    let (a_in, b_in) = (within(ta), within(tb));
+    let (a_in, b_in) = (within(ta, t_min, t_max), within(tb, t_min, t_max));
     let ok: [bool; 4] = core::array::from_fn(|l| hit[l] & a_ok[l] & b_ok[l] & (a_in[l] | b_in[l]));
     if !ok.iter().any(|&o| o) {
         return [None; 4];
@@ -113,17 +111,9 @@ fn meet_plane(
     let x = [flat.e1i * inv, flat.e2i * inv, flat.e3i * inv];
     let t = t_of4(p, x).to_array();
     let (w, inv) = (flat.eoi.to_array(), inv.to_array());
-    let inside = rim.map_or([true; 4], |(c, r)| {
-        let d = sub(x, c.map(F64x4::splat));
-        dot(d, d).to_array().map(|q| q <= r * r)
-    });
-    // All four lanes' tests at once (no short circuit: they vectorise), the crossings after.
-    let tol = tolerance(1.0);
-    let ok: [bool; 4] = core::array::from_fn(|l| {
+    let (inside, tol) = (inside_rim(&x, rim), tolerance(1.0));
+    let ok = core::array::from_fn(|l| {
         (w[l].abs() > tol) & inv[l].is_finite() & (t[l] > t_min[l]) & (t[l] < t_max[l]) & inside[l]
     });
-    if !ok.iter().any(|&b| b) {
-        return [None; 4];
-    }
-    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(&x, l), alpha: None }))
+    crossings(ok, t, &x)
 }
