@@ -38,6 +38,9 @@ pub enum CameraError {
         /// `y_max / f`.
         y: f64,
     },
+    /// A horizontal field of view outside (0°, 180°).
+    #[error("the field of view must lie strictly between 0 and 180 degrees, not {0}")]
+    FovDegrees(f64),
     /// The pose is not a rigid motion (its sandwich does not map points to points).
     #[error("the pose is not a rigid motion")]
     NotRigid,
@@ -117,6 +120,15 @@ impl Camera {
         // cos θ/2 − sin θ/2 a I3 = w − z e12 + y e13 − x e23.
         let rotor = Rotor { s: q.w, e12: -q.z, e13: q.y, e23: -q.x };
         Ok(Motor::from_rotor_translator(rotor, Translator::from_vector(position)))
+    }
+
+    /// The image-plane width `x_max = 2 f tan(θ/2)` for a horizontal field of view of
+    /// `degrees` (strictly between 0 and 180) at focal length `focal`.
+    pub fn x_max_for_fov(focal: f64, degrees: f64) -> Result<f64, CameraError> {
+        if !(degrees > 0.0 && degrees < 180.0) {
+            return Err(CameraError::FovDegrees(degrees));
+        }
+        Ok(2.0 * focal * (degrees.to_radians() / 2.0).tan())
     }
 
     /// Where the camera is.

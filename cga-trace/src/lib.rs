@@ -18,6 +18,7 @@ pub mod limits;
 pub mod material;
 #[cfg(feature = "evolved")]
 pub mod mesh;
+pub mod output;
 pub mod packet;
 pub mod ray;
 pub mod render;

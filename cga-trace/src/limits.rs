@@ -32,6 +32,20 @@ pub const MAX_LIGHTS: usize = 1024;
 /// after reading this much.
 pub const MAX_FILE_BYTES: u64 = 64 << 20;
 
+/// Vertices of an exported mesh, `(rings + 1)(segments + 1)`: 2²² (4.2 million, a 2048 × 2048
+/// grid). A vertex costs 88 bytes while the mesh is built (position, normal, texture
+/// coordinates and its share of the triangles) and 56 more while a glb is encoded, so the
+/// largest mesh needs about 0.6 GB; it is checked before anything is allocated.
+pub const MAX_MESH_VERTICES: usize = 1 << 22;
+
+/// Rings and segments of an exported mesh, each.
+pub const MAX_MESH_SIDE: usize = 1 << 16;
+
+/// Worker threads (`--threads`). Rendering gains nothing beyond the machine's cores; this
+/// bounds what asking for more costs (1,024 threads start in about 1.4 s on two cores,
+/// 4,096 in 10 s).
+pub const MAX_THREADS: usize = 1024;
+
 /// Root-finding samples per ray of an evolved surface (`samples`, `leaves × per_leaf`).
 pub const MAX_SURFACE_SAMPLES: usize = 1 << 16;
 

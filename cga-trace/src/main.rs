@@ -3,11 +3,12 @@
 use anyhow::Context;
 use cga_trace::backend::{Backend, Dense, Plain, Sparse};
 use cga_trace::film::Output;
-use cga_trace::limits::MAX_SPP;
+use cga_trace::limits::MAX_THREADS;
+use cga_trace::output::OutputFile;
 use cga_trace::render::Window;
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
-use std::io::{BufWriter, IsTerminal};
+use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
@@ -110,17 +111,30 @@ fn parse_crop(s: &str) -> Result<[f64; 4], String> {
     numbers.try_into().map_err(|v: Vec<f64>| format!("four numbers x0,x1,y0,y1, not {}", v.len()))
 }
 
+/// Writes one line to stderr, ignoring failure: a closed or full stderr must not turn a
+/// finished render (or its error) into a panic.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        let _ = writeln!(std::io::stderr().lock(), $($arg)*);
+    }};
+}
+
 /// User errors print one line (every cause once, no backtrace, whatever `RUST_BACKTRACE`
 /// says) and exit with status 1; a command line clap cannot read, its first line (status 2).
+/// Nothing here panics when stderr cannot be written: the status still says what happened.
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
             let text = e.render().to_string();
-            eprintln!("{} (see --help)", text.lines().next().unwrap_or("error: bad arguments"));
+            say!("{} (see --help)", text.lines().next().unwrap_or("error: bad arguments"));
             return ExitCode::from(2);
         }
-        Err(e) => e.exit(),
+        Err(e) => {
+            // --help and --version: print them, whether or not stdout can take them.
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
     };
     let result = match cli.command {
         Command::Render(args) => render_command(args),
@@ -130,7 +144,7 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {}", one_line(&e));
+            say!("error: {}", one_line(&e));
             ExitCode::FAILURE
         }
     }
@@ -155,40 +169,59 @@ fn one_line(e: &anyhow::Error) -> String {
 #[cfg(feature = "evolved")]
 fn mesh_command(args: MeshArgs) -> anyhow::Result<()> {
     let format = cga_trace::mesh::MeshFormat::of(&args.output)?;
-    let triangles = write_or_remove(&args.output, |file| {
-        let scene = Scene::load(&args.scene)?;
-        let mesh = scene.mesh(&args.object, args.rings, args.segments)?;
-        mesh.save(file, format).with_context(|| format!("writing {}", args.output.display()))?;
-        Ok(mesh.triangles.len())
-    })?;
-    eprintln!("{triangles} triangles -> {}", args.output.display());
+    // The size before the scene is read (each kind checks its own least number of segments).
+    cga_trace::mesh::check_resolution(args.rings, args.segments, 1)?;
+    let mut file = OutputFile::create(&args.output, &[("scene", &args.scene)])?;
+    let scene = Scene::load(&args.scene)?;
+    let mesh = scene.mesh(&args.object, args.rings, args.segments)?;
+    mesh.save(&mut file, format).with_context(|| format!("writing {}", args.output.display()))?;
+    file.commit()?;
+    say!("{} triangles -> {}", mesh.triangles.len(), args.output.display());
     Ok(())
 }
 
-/// Create `path` (so that a path that cannot be written fails before any work), hand it to
-/// `work`, and remove it again if `work` fails.
-fn write_or_remove<T>(path: &Path, work: impl FnOnce(std::fs::File) -> anyhow::Result<T>) -> anyhow::Result<T> {
-    let file = std::fs::File::create(path).with_context(|| format!("cannot write {}", path.display()))?;
-    let result = work(file);
-    if result.is_err() {
-        let _ = std::fs::remove_file(path);
+/// The worker pool `--threads` asks for (all cores when not given), refused outside
+/// `1 ..= MAX_THREADS`; a note when it asks for more threads than there are cores.
+fn thread_pool(threads: Option<usize>) -> anyhow::Result<rayon::ThreadPool> {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if let Some(n) = threads {
+        if !(1..=MAX_THREADS).contains(&n) {
+            anyhow::bail!(
+                "--threads {n}: give 1 to {MAX_THREADS} (or leave it out for one per core; this machine has {cores})"
+            );
+        }
+        if n > cores {
+            say!("note: {n} threads on {cores} cores: threads beyond the cores only add overhead");
+        }
     }
-    result
+    Ok(rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(cores)).build()?)
+}
+
+/// The file beside a false-colour image that holds its scale: `OUTPUT.scale.json`.
+fn scale_path(output: &Path) -> PathBuf {
+    let mut beside = output.as_os_str().to_owned();
+    beside.push(".scale.json");
+    beside.into()
 }
 
 fn render_command(args: Render) -> anyhow::Result<()> {
-    // Everything that can be wrong with the output is found before any rendering.
+    // Everything that can be wrong with the command line and the outputs is found before the
+    // scene is read; nothing is written over until the render has succeeded.
+    let pool = thread_pool(args.threads)?;
     let output = Output::for_path(&args.output, args.bit_depth)?;
-    write_or_remove(&args.output, |file| render_to(&args, output, file))
-}
+    let mut image = OutputFile::create(&args.output, &[("scene", &args.scene)])?;
+    let beside = scale_path(&args.output);
+    let mut scale_file = match args.aov.is_scalar() {
+        true => Some(OutputFile::create(&beside, &[("scene", &args.scene), ("image", &args.output)])?),
+        false => None,
+    };
 
-fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Result<()> {
     let mut scene = Scene::load(&args.scene)?;
     if let Some(degrees) = args.fov {
         scene.set_fov(degrees).context("--fov")?;
     }
     if let Some(note) = scene.resize(args.width, args.height).context("--width/--height")? {
-        eprintln!("note: {note}");
+        say!("note: {note}");
     }
     if let Some(d) = args.max_depth {
         scene.settings.max_depth = d;
@@ -197,16 +230,12 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
         scene.settings.spp = spp;
     }
     scene.settings.check().context("--max-depth/--spp")?;
-    if !(1..=MAX_SPP).contains(&scene.settings.spp) {
-        anyhow::bail!("--spp must be 1 to {MAX_SPP}");
-    }
     let (w, h) = (scene.camera.width, scene.camera.height);
     let window = match &args.crop {
         Some(c) => Window::crop(w, h, *c).map_err(anyhow::Error::msg).context("--crop")?,
         None => Window::full(w, h),
     };
     let encoding = args.encoding.unwrap_or(scene.settings.encoding);
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(args.threads.unwrap_or(0)).build()?;
 
     let bar = indicatif::ProgressBar::new(window.rows.len() as u64);
     if !std::io::stderr().is_terminal() {
@@ -223,15 +252,11 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
         pool.install(|| render(&scene, args.aov, window, packets, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    let film = match cga_trace::colour::false_colour(&film, args.aov) {
-        Some((coloured, scale)) => {
-            // The scale beside the image: OUTPUT.scale.json.
-            let mut beside = args.output.clone().into_os_string();
-            beside.push(".scale.json");
-            let json = serde_json::to_string_pretty(&scale)?;
-            std::fs::write(&beside, json + "\n")
-                .with_context(|| format!("writing {}", Path::new(&beside).display()))?;
-            eprintln!(
+    let film = match (cga_trace::colour::false_colour(&film, args.aov), scale_file.as_mut()) {
+        (Some((coloured, scale)), Some(file)) => {
+            let json = serde_json::to_string_pretty(&scale)? + "\n";
+            file.write_all(json.as_bytes()).with_context(|| format!("writing {}", beside.display()))?;
+            say!(
                 "{}: {} ({}) from {:.4e} (left of the bar) to {:.4e} (right), {} pixels -> {}",
                 scale.map,
                 scale.quantity,
@@ -239,18 +264,23 @@ fn render_to(args: &Render, output: Output, file: std::fs::File) -> anyhow::Resu
                 scale.low,
                 scale.high,
                 scale.pixels,
-                Path::new(&beside).display()
+                beside.display()
             );
             coloured
         }
-        None => film,
+        _ => film,
     };
     let writing = Instant::now();
-    pool.install(|| write(&film, &args.output, output, encoding, file))?;
+    pool.install(|| film.write(&mut image, output, encoding))
+        .with_context(|| format!("writing {}", args.output.display()))?;
+    if let Some(file) = scale_file {
+        file.commit()?;
+    }
+    image.commit()?;
     let written = writing.elapsed().as_secs_f64();
 
     let total = primary + shadow + reflection;
-    eprintln!(
+    say!(
         "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s, written in {written:.3} s -> {}",
         u64::from(film.width) * u64::from(film.height),
         total as f64 / seconds.max(1e-9),
@@ -273,11 +303,4 @@ fn render<B: Backend>(
     }
     let film = renderer.render_window(aov, window, on_row);
     (film, renderer.counts.get())
-}
-
-fn write(film: &Film, path: &Path, output: Output, encoding: Encoding, file: std::fs::File) -> anyhow::Result<()> {
-    let mut w = BufWriter::new(file);
-    film.write(&mut w, output, encoding).with_context(|| format!("writing {}", path.display()))?;
-    w.into_inner().map_err(|e| e.into_error()).with_context(|| format!("writing {}", path.display()))?;
-    Ok(())
 }

@@ -10,6 +10,7 @@
 //! textures wrap and the geometry is closed around.
 
 use crate::frame::Frame;
+use crate::limits::{MAX_MESH_SIDE, MAX_MESH_VERTICES};
 use crate::scene::Scene;
 use crate::shapes::Shape;
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
@@ -50,13 +51,15 @@ impl Swept for SplineSurface {
     }
 }
 
-/// `Resolution` unless `1 ≤ rings ≤ 65536`, `least ≤ segments ≤ 65536` and every vertex has
-/// a `u32` index.
-fn check_resolution(rings: usize, segments: usize, least: usize) -> Result<(), MeshError> {
-    let ok = (1..=1 << 16).contains(&rings)
-        && (least..=1 << 16).contains(&segments)
-        && (rings + 1) * (segments + 1) <= u32::MAX as usize;
-    ok.then_some(()).ok_or(MeshError::Resolution)
+/// `Resolution` unless `1 ≤ rings ≤ 65536`, `least ≤ segments ≤ 65536` and the grid has at
+/// most [`MAX_MESH_VERTICES`] vertices: checked before anything is allocated (`least` is 3 for
+/// surfaces swept by circles, 1 for ruled ones).
+pub fn check_resolution(rings: usize, segments: usize, least: usize) -> Result<(), MeshError> {
+    let vertices = (rings as u128 + 1) * (segments as u128 + 1);
+    let ok = (1..=MAX_MESH_SIDE).contains(&rings)
+        && (least..=MAX_MESH_SIDE).contains(&segments)
+        && vertices <= MAX_MESH_VERTICES as u128;
+    ok.then_some(()).ok_or(MeshError::Resolution { rings, segments, least })
 }
 
 /// A swept surface of a shape, if it is one.
@@ -76,9 +79,19 @@ pub enum MeshError {
     /// The object is not a swept surface.
     #[error("`{0}` is not an evolved, spline or ruled surface")]
     NotSwept(String),
-    /// Fewer than 1 ring or 3 segments, or more vertices than a u32 index holds.
-    #[error("a mesh takes 1 to 65536 rings and 3 to 65536 segments")]
-    Resolution,
+    /// Fewer than 1 ring or too few segments, more than [`MAX_MESH_SIDE`] of either, or more
+    /// than [`MAX_MESH_VERTICES`] vertices.
+    #[error(
+        "{rings} rings × {segments} segments: a mesh takes 1 to {MAX_MESH_SIDE} rings, {least} to {MAX_MESH_SIDE} segments and at most {MAX_MESH_VERTICES} vertices, (rings + 1)(segments + 1)"
+    )]
+    Resolution {
+        /// Asked for.
+        rings: usize,
+        /// Asked for.
+        segments: usize,
+        /// The fewest segments this kind of surface takes.
+        least: usize,
+    },
     /// A circle or normal could not be computed at this α.
     #[error("no circle at α = {0}")]
     NoCircle(f64),
@@ -186,13 +199,12 @@ impl Mesh {
         }
     }
 
-    /// Write to `file` in `format`.
-    pub fn save(&self, file: std::fs::File, format: MeshFormat) -> Result<(), MeshError> {
-        let mut out = std::io::BufWriter::new(file);
+    /// Write to `out` in `format` (buffer it: OBJ is many small writes).
+    pub fn save(&self, out: &mut dyn Write, format: MeshFormat) -> Result<(), MeshError> {
         match format {
-            MeshFormat::Obj => self.write_obj(&mut out)?,
-            MeshFormat::Ply => self.write_ply(&mut out)?,
-            MeshFormat::Glb => self.write_glb(&mut out)?,
+            MeshFormat::Obj => self.write_obj(out)?,
+            MeshFormat::Ply => self.write_ply(out)?,
+            MeshFormat::Glb => self.write_glb(out)?,
         }
         out.flush()?;
         Ok(())

@@ -202,6 +202,10 @@ impl Scene {
                 && let Some(key) = e.span().and_then(|s| text.get(s))
             {
                 message = format!("duplicate key `{}`", key.trim().escape_debug());
+            } else if let Some(better) =
+                header_mistake(text, e.span().map_or(0, |s| s.start)).filter(|_| message.starts_with("invalid type"))
+            {
+                message = better;
             } else if let Some(key) =
                 key_at(text, e.span().map_or(0, |s| s.start)).filter(|k| !message.contains(k.as_str()))
             {
@@ -247,6 +251,26 @@ impl Scene {
     }
 }
 
+/// What is wrong when the table header at `offset` writes a single table as a list of tables
+/// (`[[render]]`) or a list as a single table (`[lights]`): serde only sees a value of the
+/// wrong type (and, for `[[render]]`, reports the type of the table's first field).
+fn header_mistake(text: &str, offset: usize) -> Option<String> {
+    let line = text.get(offset..)?.lines().next()?.trim();
+    let (list, name) = match line.strip_prefix("[[") {
+        Some(rest) => (true, rest.split("]]").next()?.trim()),
+        None => (false, line.strip_prefix('[')?.split(']').next()?.trim()),
+    };
+    match (list, name) {
+        (true, "camera" | "render") => {
+            Some(format!("`[[{name}]]` starts a list of tables, but `{name}` is one table: write `[{name}]`"))
+        }
+        (false, "lights" | "objects") => {
+            Some(format!("`[{name}]` is one table, but `{name}` is a list: write `[[{name}]]` before each entry"))
+        }
+        _ => None,
+    }
+}
+
 /// The key assigned at or just before `offset` (`max_depth` in `max_depth = "deep"`),
 /// for errors whose message does not name the field.
 fn key_at(text: &str, offset: usize) -> Option<String> {
@@ -288,10 +312,7 @@ impl Scene {
     /// `x_max = 2 f tan(θ/2)`, and `y_max` follows for square pixels.
     pub fn set_fov(&mut self, degrees: f64) -> Result<(), CameraError> {
         let c = self.camera;
-        if !(degrees > 0.0 && degrees < 180.0) {
-            return Err(CameraError::FieldOfView { x: f64::NAN, y: f64::NAN });
-        }
-        let x_max = 2.0 * c.focal * (degrees.to_radians() / 2.0).tan();
+        let x_max = Camera::x_max_for_fov(c.focal, degrees)?;
         let y_max = x_max * f64::from(c.height) / f64::from(c.width);
         self.camera = Camera::new(c.pose, c.focal, x_max, y_max, c.width, c.height)?;
         self.pinned = false;

@@ -11,6 +11,12 @@ fn with_object(body: &str) -> String {
     format!("{CAMERA}[[objects]]\nname = \"thing\"\n{MATERIAL}{body}")
 }
 
+/// A circle of radius `r` about the z axis at height `z`, as scene files write it.
+#[cfg(feature = "evolved")]
+fn circle_at(z: f64, r: f64) -> String {
+    format!("{{ centre = [0.0, 0.0, {z:?}], normal = [0.0, 0.0, 1.0], radius = {r:?} }}")
+}
+
 /// (what is wrong, scene text, fragments the message must contain)
 #[cfg(feature = "evolved")]
 fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
@@ -292,6 +298,42 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
                 "type = \"evolved\"\nc1 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }\nc2 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, -1.0], radius = 1.0 }\n",
             ),
             vec!["`thing`", "opposite orientations"],
+        ),
+        // Tables written as lists and lists as tables: the mistake, not serde's field types.
+        ("[[render]]", format!("{CAMERA}[[render]]\nmax_depth = 2\n"), vec!["bad.toml:6:", "write `[render]`"]),
+        ("[[camera]]", CAMERA.replace("[camera]", "[[camera]]"), vec!["bad.toml:1:", "write `[camera]`"]),
+        (
+            "[lights]",
+            format!("{CAMERA}[lights]\nposition = [0.0, 0.0, 9.0]\n"),
+            vec!["bad.toml:6:", "write `[[lights]]`"],
+        ),
+        ("[objects]", format!("{CAMERA}[objects]\ntype = \"sphere\"\n"), vec!["bad.toml:6:", "write `[[objects]]`"]),
+        // Fields of view out of range say so, with the value.
+        ("fov of 0", format!("{CAMERA}fov = 0.0\n"), vec!["bad.toml:6:", "fov", "between 0 and 180 degrees, not 0"]),
+        ("fov of -5", format!("{CAMERA}fov = -5.0\n"), vec!["bad.toml:6:", "not -5"]),
+        ("fov of 200", format!("{CAMERA}fov = 200.0\n"), vec!["bad.toml:6:", "not 200"]),
+        // Spline circles: the circle that is wrong, by its place.
+        (
+            "a spline's fourth circle of radius 0",
+            with_object(&format!(
+                "type = \"spline\"\ncircles = [{}, {}, {}, {}]\n",
+                circle_at(0.0, 1.0),
+                circle_at(1.0, 1.0),
+                circle_at(2.0, 1.0),
+                circle_at(3.0, 0.0)
+            )),
+            vec!["bad.toml:10:", "`circles`", "circle 4", "radius is not positive"],
+        ),
+        (
+            "a spline's repeated circle",
+            with_object(&format!(
+                "type = \"spline\"\ncircles = [{}, {}, {}, {}]\n",
+                circle_at(0.0, 1.0),
+                circle_at(1.0, 1.5),
+                circle_at(1.0, 1.5),
+                circle_at(3.0, 1.0)
+            )),
+            vec!["`thing`", "circles 2 and 3 are the same circle"],
         ),
         (
             "control characters in a name",

@@ -26,7 +26,7 @@ use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
 #[cfg(feature = "evolved")]
 use cga_core::Joining;
 use cga_core::euclid::E3;
-use cga_core::{Circle, Motor, Plane, Rotor, Sandwich, Sphere, down, up};
+use cga_core::{Circle, GeometryError, Motor, Plane, Rotor, Sandwich, Sphere, down, up};
 use numbers::{Num, Nums, V3};
 use serde::Deserialize;
 use std::ops::Range;
@@ -82,14 +82,9 @@ impl CameraSpec {
             (Some(_), Some(fov)) => {
                 return Err(Invalid::at("fov", fov.span(), Invalid::Value("give `x_max` or `fov`, not both")));
             }
-            (None, Some(fov)) if !(fov.get_ref().0 > 0.0 && fov.get_ref().0 < 180.0) => {
-                return Err(Invalid::at(
-                    "fov",
-                    fov.span(),
-                    Invalid::Value("the field of view must lie strictly between 0 and 180 degrees"),
-                ));
+            (None, Some(fov)) => {
+                Camera::x_max_for_fov(focal, fov.get_ref().0).map_err(|e| Invalid::at("fov", fov.span(), e.into()))?
             }
-            (None, Some(fov)) => 2.0 * focal * (fov.get_ref().0.to_radians() / 2.0).tan(),
             (x_max, None) => value(x_max).unwrap_or(2.0),
         };
         let pinned = self.y_max.is_some() && (self.x_max.is_some() || self.fov.is_some());
@@ -565,7 +560,15 @@ fn circle(spec: &CircleSpec, outer: Option<Motor>, frame: &Frame) -> Result<(E3,
             let (c, n, r) = c.centre_normal_radius()?;
             (frame.point(c), n, frame.length(r))
         }
-        (None, Some(c), Some(n), Some(r), None) => (frame.point(c.0), n.0, frame.length(r.0)),
+        (None, Some(c), Some(n), Some(r), None) => {
+            // A zero radius or normal (numbers are finite) is named here, before the frame or a
+            // motor acts on it.
+            if r.0 <= 0.0 {
+                return Err(GeometryError::ZeroRadius.into());
+            }
+            cga_core::euclid::unit(n.0).ok_or(GeometryError::ZeroVector)?;
+            (frame.point(c.0), n.0, frame.length(r.0))
+        }
         (None, None, None, None, Some(p)) => {
             let [a, b, c] = points("points", p, frame)?;
             Circle::through(a, b, c)?.centre_normal_radius()?

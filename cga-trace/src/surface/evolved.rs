@@ -33,10 +33,14 @@ const SAME_CIRCLE: f64 = 1e-12;
 
 /// `Err(SameCircle)` if two circles `(centre, unit normal, radius)` are one circle, the same
 /// way round or reversed: a family between them sweeps nothing.
-pub(super) fn distinct((p1, n1, r1): (E3, E3, f64), (p2, n2, r2): (E3, E3, f64)) -> Result<(), SurfaceError> {
+pub(super) fn distinct(
+    (p1, n1, r1): (E3, E3, f64),
+    (p2, n2, r2): (E3, E3, f64),
+    between: Option<(usize, usize)>,
+) -> Result<(), SurfaceError> {
     let close = SAME_CIRCLE * r1.max(r2);
     if norm(sub(p1, p2)) <= close && (r1 - r2).abs() <= close && norm(cross(n1, n2)) <= SAME_CIRCLE {
-        return Err(SurfaceError::SameCircle { reversed: dot(n1, n2) < 0.0 });
+        return Err(SurfaceError::SameCircle { between, reversed: dot(n1, n2) < 0.0 });
     }
     Ok(())
 }
@@ -78,7 +82,7 @@ impl EvolvedSurface {
         let parts =
             |c: Circle, which| c.centre_normal_radius().map_err(|reason| SurfaceError::NotACircle { which, reason });
         let ((p1, n1, r1), (p2, n2, r2)) = (parts(c1, 1)?, parts(c2, 2)?);
-        distinct((p1, n1, r1), (p2, n2, r2))?;
+        distinct((p1, n1, r1), (p2, n2, r2), None)?;
         let blade = |(centre, normal, radius), which| {
             Circle::from_centre_normal_radius(centre, normal, radius)
                 .map_err(|reason| SurfaceError::NotACircle { which, reason })

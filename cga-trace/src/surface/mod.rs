@@ -50,15 +50,21 @@ pub enum SurfaceError {
     /// An end circle is not a real circle (a line, imaginary, degenerate).
     #[error("circle {which} is not a real circle: {reason}")]
     NotACircle {
-        /// 1 or 2.
-        which: u8,
+        /// 1-based: 1 or 2, or the control circle's place in a spline.
+        which: usize,
         /// What it is instead.
         reason: GeometryError,
     },
     /// The two circles are one circle (to 1e-12 of its radius), the same way round or
     /// reversed: the family is that circle alone, which bounds nothing.
-    #[error("c1 and c2 are the same circle{}: they sweep no surface", if *reversed { " with opposite orientations" } else { "" })]
+    #[error(
+        "{} are the same circle{}: they sweep no surface",
+        between.map_or("c1 and c2".into(), |(a, b)| format!("circles {a} and {b}")),
+        if *reversed { " with opposite orientations" } else { "" }
+    )]
     SameCircle {
+        /// Which two control circles of a spline (1-based); `None` for `c1` and `c2`.
+        between: Option<(usize, usize)>,
         /// Whether the normals are opposite.
         reversed: bool,
     },

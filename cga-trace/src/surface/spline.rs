@@ -68,20 +68,24 @@ impl SplineSurface {
     /// The surface through `circles` (centre, normal, radius, in the scene's frame), joined as
     /// `joining` says, built in the frame of [`SplineSurface::frame_origin`].
     pub fn new(circles: &[(E3, E3, f64)], joining: Joining, method: Method) -> Result<Self, SurfaceError> {
+        // Each circle checked where it is given, before any of them sets the frame.
+        for (k, &(c, n, r)) in circles.iter().enumerate() {
+            Circle::from_centre_normal_radius(c, n, r)
+                .map_err(|reason| SurfaceError::NotACircle { which: k + 1, reason })?;
+        }
         let origin = Self::frame_origin(&circles.iter().map(|&(c, _, r)| (c, r)).collect::<Vec<_>>());
         let mut local = Vec::with_capacity(circles.len());
         for (k, &(c, n, r)) in circles.iter().enumerate() {
-            let which = (k + 1).min(255) as u8;
             local.push(
                 Circle::from_centre_normal_radius(sub(c, origin), n, r)
-                    .map_err(|reason| SurfaceError::NotACircle { which, reason })?,
+                    .map_err(|reason| SurfaceError::NotACircle { which: k + 1, reason })?,
             );
         }
         if joining == Joining::Linear {
             // Two consecutive circles that are one make a span that sweeps nothing.
             let unit_normal = |&(c, n, r): &(E3, E3, f64)| (c, cga_core::euclid::unit(n).unwrap_or(n), r);
-            for pair in circles.windows(2) {
-                distinct(unit_normal(&pair[0]), unit_normal(&pair[1]))?;
+            for (k, pair) in circles.windows(2).enumerate() {
+                distinct(unit_normal(&pair[0]), unit_normal(&pair[1]), Some((k + 1, k + 2)))?;
             }
         }
         let spline = Spline::new(&local, joining)?;

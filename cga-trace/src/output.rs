@@ -1,0 +1,299 @@
+//! Output files that cannot cost the user a file.
+//!
+//! An output is written to a temporary file beside its target and renamed over the target
+//! only once everything has been written and synced, so an existing file survives every
+//! failure (a bad scene, a refused option, a full disk, an interrupted render). Before
+//! anything is created, the target is resolved through its symbolic links and compared,
+//! by device and inode, with every input: an output that *is* an input — by the same path,
+//! a symbolic link or a hard link — is refused. A character device (`/dev/null`,
+//! `/dev/full`) is written to directly and never removed; directories, pipes, sockets and
+//! block devices are refused.
+
+use std::fs;
+use std::io::{self, BufWriter, Cursor, Seek, SeekFrom, Write};
+use std::path::{Path, PathBuf};
+use tempfile::NamedTempFile;
+
+/// Symbolic links followed to find an output's target before giving up (Linux's own limit).
+const MAX_LINKS: usize = 40;
+
+/// Why an output cannot be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputFileError {
+    /// The output is one of the inputs.
+    #[error("`{output}` is the same file as the {role} `{input}`: refusing to write over it")]
+    SameFile {
+        /// The output, as given.
+        output: String,
+        /// What the input is (`scene`, `image`).
+        role: &'static str,
+        /// The input, as given.
+        input: String,
+    },
+    /// The target is a directory, a pipe, a socket or a block device.
+    #[error("cannot write `{path}`: it is {kind}")]
+    NotAFile {
+        /// The output, as given.
+        path: String,
+        /// What it is.
+        kind: &'static str,
+    },
+    /// The target exists and is read-only.
+    #[error("cannot write `{0}`: it is read-only")]
+    ReadOnly(String),
+    /// Creating, writing, syncing or renaming failed.
+    #[error("cannot write `{path}`: {source}")]
+    Io {
+        /// The output, as given.
+        path: String,
+        /// Why.
+        source: io::Error,
+    },
+}
+
+/// An output being written: bytes go to a temporary file beside the target (or, for a
+/// character device, to memory), and [`OutputFile::commit`] puts them in place.
+#[derive(Debug)]
+pub struct OutputFile {
+    /// The path as the user gave it, for messages.
+    shown: PathBuf,
+    /// Where the bytes end up: `shown` with its symbolic links resolved.
+    target: PathBuf,
+    sink: Sink,
+}
+
+#[derive(Debug)]
+enum Sink {
+    /// A regular file: a temporary file in the target's directory.
+    Temporary(BufWriter<NamedTempFile>),
+    /// A character device: written once, whole, on commit.
+    Device(Cursor<Vec<u8>>),
+}
+
+impl OutputFile {
+    /// Prepare to write `path`: refused if it is the same file as any of `inputs` (each with
+    /// what it is, for the message), a directory or another file that is not a regular file
+    /// or a character device, or read-only; otherwise a temporary file is created beside it
+    /// (so that a directory that cannot be written fails now, before any work).
+    pub fn create(path: &Path, inputs: &[(&'static str, &Path)]) -> Result<Self, OutputFileError> {
+        let shown = path.to_path_buf();
+        let io = |source| OutputFileError::Io { path: path.display().to_string(), source };
+        let target = resolve(path).map_err(io)?;
+        for &(role, input) in inputs {
+            if same_file(&target, input) || path == input {
+                let (output, input) = (path.display().to_string(), input.display().to_string());
+                return Err(OutputFileError::SameFile { output, role, input });
+            }
+        }
+        let existing = match fs::metadata(&target) {
+            Ok(m) => Some(m),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => None,
+            Err(e) => return Err(io(e)),
+        };
+        let not_a_file = |kind| OutputFileError::NotAFile { path: path.display().to_string(), kind };
+        let permissions = match &existing {
+            Some(m) if m.is_dir() => return Err(not_a_file("a directory")),
+            Some(m) if m.is_file() && m.permissions().readonly() => {
+                return Err(OutputFileError::ReadOnly(path.display().to_string()));
+            }
+            Some(m) if m.is_file() => Some(m.permissions()),
+            Some(m) => {
+                return match special_kind(m) {
+                    None => Ok(OutputFile { shown, target, sink: Sink::Device(Cursor::new(Vec::new())) }),
+                    Some(kind) => Err(not_a_file(kind)),
+                };
+            }
+            None => new_file_permissions(),
+        };
+        let dir = match target.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        let name = target.file_name().map_or_else(|| "output".into(), |n| n.to_string_lossy().into_owned());
+        let prefix = format!(".{name}.");
+        let mut builder = tempfile::Builder::new();
+        builder.prefix(&prefix).suffix(".tmp");
+        if let Some(p) = &permissions {
+            builder.permissions(p.clone());
+        }
+        let temporary = builder.tempfile_in(dir).map_err(io)?;
+        // The mode asked for at creation is cut by the umask; an existing file's is kept.
+        if let (Some(p), Some(_)) = (permissions, &existing) {
+            temporary.as_file().set_permissions(p).map_err(io)?;
+        }
+        Ok(OutputFile { shown, target, sink: Sink::Temporary(BufWriter::new(temporary)) })
+    }
+
+    /// The path as given.
+    pub fn path(&self) -> &Path {
+        &self.shown
+    }
+
+    /// Put what was written in place: flush and sync the temporary file, then rename it over
+    /// the target (or write the bytes to the device). On failure the target is as it was.
+    pub fn commit(self) -> Result<(), OutputFileError> {
+        let io = |source| OutputFileError::Io { path: self.shown.display().to_string(), source };
+        match self.sink {
+            Sink::Temporary(writer) => {
+                let temporary = writer.into_inner().map_err(|e| io(e.into_error()))?;
+                temporary.as_file().sync_all().map_err(io)?;
+                temporary.persist(&self.target).map_err(|e| io(e.error))?;
+            }
+            Sink::Device(bytes) => {
+                let mut device = fs::OpenOptions::new().write(true).open(&self.target).map_err(io)?;
+                device.write_all(bytes.get_ref()).and_then(|()| device.flush()).map_err(io)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Write for OutputFile {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        match &mut self.sink {
+            Sink::Temporary(w) => w.write(buf),
+            Sink::Device(w) => w.write(buf),
+        }
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        match &mut self.sink {
+            Sink::Temporary(w) => w.flush(),
+            Sink::Device(w) => w.flush(),
+        }
+    }
+}
+
+impl Seek for OutputFile {
+    fn seek(&mut self, to: SeekFrom) -> io::Result<u64> {
+        match &mut self.sink {
+            Sink::Temporary(w) => w.seek(to),
+            Sink::Device(w) => w.seek(to),
+        }
+    }
+}
+
+/// `path` with its symbolic links followed to the file they name (which need not exist).
+fn resolve(path: &Path) -> io::Result<PathBuf> {
+    let mut p = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        match fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let link = fs::read_link(&p)?;
+                p = match p.parent() {
+                    Some(dir) if link.is_relative() => dir.join(link),
+                    _ => link,
+                };
+            }
+            Ok(_) => return Ok(p),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(p),
+            Err(e) => return Err(e),
+        }
+    }
+    Err(io::Error::other("too many levels of symbolic links"))
+}
+
+/// Whether `a` and `b` name one file (device and inode; canonical paths where there are
+/// none): through any links, without opening either (opening a pipe could block).
+fn same_file(a: &Path, b: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        matches!((fs::metadata(a), fs::metadata(b)), (Ok(x), Ok(y)) if (x.dev(), x.ino()) == (y.dev(), y.ino()))
+    }
+    #[cfg(not(unix))]
+    {
+        matches!((fs::canonicalize(a), fs::canonicalize(b)), (Ok(x), Ok(y)) if x == y)
+    }
+}
+
+/// What a file that is neither a regular file nor a directory is, if it cannot take an
+/// output; `None` for a character device, which can.
+fn special_kind(m: &fs::Metadata) -> Option<&'static str> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        let t = m.file_type();
+        if t.is_char_device() {
+            None
+        } else if t.is_fifo() {
+            Some("a named pipe")
+        } else if t.is_socket() {
+            Some("a socket")
+        } else if t.is_block_device() {
+            Some("a block device")
+        } else {
+            Some("not a regular file")
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = m;
+        Some("not a regular file")
+    }
+}
+
+/// A new file's mode, where the system has modes: `rw-rw-rw-` less the umask, as
+/// `File::create` gives (the temporary file's own default is `rw-------`).
+fn new_file_permissions() -> Option<fs::Permissions> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        Some(fs::Permissions::from_mode(0o666))
+    }
+    #[cfg(not(unix))]
+    {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("cga-trace-output-{}-{name}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn an_existing_file_is_replaced_only_on_commit() {
+        let dir = scratch("commit");
+        let out = dir.join("out.png");
+        fs::write(&out, b"old").unwrap();
+        let mut file = OutputFile::create(&out, &[]).unwrap();
+        file.write_all(b"new").unwrap();
+        assert_eq!(fs::read(&out).unwrap(), b"old", "untouched while writing");
+        drop(file);
+        assert_eq!(fs::read(&out).unwrap(), b"old", "untouched when dropped");
+        assert_eq!(fs::read_dir(&dir).unwrap().count(), 1, "no temporary file left");
+        let mut file = OutputFile::create(&out, &[]).unwrap();
+        file.write_all(b"new").unwrap();
+        file.commit().unwrap();
+        assert_eq!(fs::read(&out).unwrap(), b"new");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn links_to_an_input_are_refused_and_links_elsewhere_followed() {
+        let dir = scratch("links");
+        let (scene, other) = (dir.join("scene.toml"), dir.join("v3.png"));
+        fs::write(&scene, b"scene").unwrap();
+        fs::write(&other, b"v3").unwrap();
+        let (sym, hard, latest) = (dir.join("sym.png"), dir.join("hard.png"), dir.join("latest.png"));
+        std::os::unix::fs::symlink("scene.toml", &sym).unwrap();
+        fs::hard_link(&scene, &hard).unwrap();
+        std::os::unix::fs::symlink("v3.png", &latest).unwrap();
+        for path in [&scene, &sym, &hard] {
+            let e = OutputFile::create(path, &[("scene", &scene)]).unwrap_err();
+            assert!(matches!(e, OutputFileError::SameFile { .. }), "{e}");
+        }
+        let mut file = OutputFile::create(&latest, &[("scene", &scene)]).unwrap();
+        file.write_all(b"v4").unwrap();
+        file.commit().unwrap();
+        assert!(fs::symlink_metadata(&latest).unwrap().file_type().is_symlink(), "the link is kept");
+        assert_eq!((fs::read(&other).unwrap(), fs::read(&scene).unwrap()), (b"v4".to_vec(), b"scene".to_vec()));
+    }
+}
