@@ -6,7 +6,7 @@
 //! (a, b)` points from `a` to `b`; `Plane::through(a, b, c)` has normal `(b−a)×(c−a)`);
 //! objects built from parameters take the orientation of the same construction from points.
 
-use crate::euclid::{E3, add, cross, dot, magnitude, norm, scale, sub, tolerance, unit};
+use crate::euclid::{E3, add, cross, dot, norm, rescaled_differences, scale, sub, tolerance, unit};
 use crate::{Bivector, Circle, Infinity, LeftContraction, Line, Plane, Real, Sphere, Vector};
 
 /// Why an object cannot be built or read back.
@@ -55,15 +55,19 @@ pub fn up<T: Real>(x: E3<T>) -> Vector<T> {
     Vector { e1: x[0], e2: x[1], e3: x[2], eo: T::one(), ei: half * dot(x, x) }
 }
 
-/// `down(X) = x / (−X · ei)`: the Euclidean point of a (finite) point of any weight,
-/// `AtInfinity` at infinity (`X · ei ≈ 0`). Only the `e1, e2, e3, eo` parts are read.
+/// `down(X) = x / (−X · ei)`: the Euclidean point of a (finite) point of any weight, at any
+/// distance and any size f64 holds; `AtInfinity` only for the point at infinity (`X · ei = 0`
+/// exactly) or a point too far for f64 (the quotient overflows). Only the `e1, e2, e3, eo`
+/// parts are read. A weight that is the rounding of a zero (a meet that should have
+/// been at infinity) gives a distant point: callers that know their scales test the weight
+/// themselves ([`FlatPoint::point_with_weight`](crate::FlatPoint::point_with_weight)).
 #[inline]
 pub fn down<T: Real>(p: Vector<T>) -> Result<E3<T>> {
     let x = [p.e1, p.e2, p.e3];
     let weight = p.eo; // −X · ei
     let inv = T::one() / weight;
-    let finite = weight.abs() > tolerance(magnitude(&[x])) * T::epsilon().sqrt() && inv.is_finite();
-    if finite { Ok(scale(x, inv)) } else { Err(GeometryError::AtInfinity) }
+    let point = if inv.is_finite() { scale(x, inv) } else { x.map(|v| v / weight) };
+    if weight != T::zero() && point.iter().all(|v| v.is_finite()) { Ok(point) } else { Err(GeometryError::AtInfinity) }
 }
 
 /// The point at infinity `ei`.
@@ -76,9 +80,10 @@ fn finite<T: Real>(points: &[E3<T>]) -> Result<()> {
     if points.iter().flatten().all(|x| x.is_finite()) { Ok(()) } else { Err(GeometryError::NonFinite) }
 }
 
+/// Coincident points: within rounding (`64 ε`) of the largest coordinate, at any scale.
 fn distinct<T: Real>(points: &[E3<T>]) -> Result<()> {
     finite(points)?;
-    let tol = tolerance(magnitude(points));
+    let tol = tolerance(points.iter().flatten().fold(T::zero(), |m, x| m.max(x.abs())));
     for (i, a) in points.iter().enumerate() {
         for b in &points[i + 1..] {
             if norm(sub(*a, *b)) <= tol {
@@ -153,7 +158,8 @@ impl<T: Real> Plane<T> {
     /// `up(a) ∧ up(b) ∧ up(c) ∧ ei`, normalised: normal `(b − a) × (c − a)`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
         distinct(&[a, b, c])?;
-        let (u, v) = (sub(b, a), sub(c, a));
+        // The differences scaled near 1 (exactly): the test below is scale-free, its products not.
+        let ([_, u, v], _) = rescaled_differences([a, b, c]);
         let n = cross(u, v);
         if !n.iter().all(|x| x.is_finite()) {
             return Err(GeometryError::Overflow);
@@ -203,19 +209,9 @@ impl<T: Real> Sphere<T> {
     /// (`|u · (v × w)|` below rounding of `|u| |v| |w|`) span no sphere. Accurate to `ε ρ²`
     /// where the wedge loses `ε ρ³`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>, d: E3<T>) -> Result<Self> {
-        distinct(&[a, b, c, d])?;
-        let (u, v, w) = (sub(b, a), sub(c, a), sub(d, a));
-        let volume = dot(u, cross(v, w));
-        if volume.abs() <= tolerance(norm(u) * norm(v) * norm(w)) {
-            return Err(GeometryError::CoplanarPoints);
-        }
-        let sum = add(add(scale(cross(v, w), dot(u, u)), scale(cross(w, u), dot(v, v))), scale(cross(u, v), dot(w, w)));
-        let offset = scale(sum, T::one() / (T::from_f64(2.0) * volume));
-        if !offset.iter().all(|x| x.is_finite()) {
-            return Err(GeometryError::Overflow);
-        }
-        let sphere = Self::from_centre_radius(add(a, offset), norm(offset))?;
-        Ok(if volume > T::zero() { -sphere } else { sphere })
+        let (centre, radius, positive) = circumsphere(a, b, c, d)?;
+        let sphere = Self::from_centre_radius(centre, radius)?;
+        Ok(if positive { -sphere } else { sphere })
     }
 
     /// [`Sphere::from_centre_radius`]: the constructor a user looks for first.
@@ -262,6 +258,45 @@ fn round_centre_radius<T: Real>(sigma: Vector<T>) -> Result<(E3<T>, T)> {
     Ok((centre, r2.sqrt()))
 }
 
+/// The sphere through four points in Euclidean terms: its centre, its radius, and whether
+/// `u · (v × w) > 0` for the differences `u = b − a`, `v = c − a`, `w = d − a` (the wedge
+/// `up(a) ∧ up(b) ∧ up(c) ∧ up(d)` is then the negative of the sphere built from centre and
+/// radius). Centre `a + (|u|² v × w + |v|² w × u + |w|² u × v) / (2 u · (v × w))`, computed on
+/// the differences scaled near 1 by a power of two, so for points of any size; coplanar
+/// points (`|u · (v × w)|` below rounding of `|u| |v| |w|`) span no sphere.
+pub fn circumsphere<T: Real>(a: E3<T>, b: E3<T>, c: E3<T>, d: E3<T>) -> Result<(E3<T>, T, bool)> {
+    distinct(&[a, b, c, d])?;
+    let ([_, u, v, w], k) = rescaled_differences([a, b, c, d]);
+    let volume = dot(u, cross(v, w));
+    if volume.abs() <= tolerance(norm(u) * norm(v) * norm(w)) {
+        return Err(GeometryError::CoplanarPoints);
+    }
+    let sum = add(add(scale(cross(v, w), dot(u, u)), scale(cross(w, u), dot(v, v))), scale(cross(u, v), dot(w, w)));
+    let offset = scale(sum, k / (T::from_f64(2.0) * volume));
+    let centre = add(a, offset);
+    if !centre.iter().chain(&offset).all(|x| x.is_finite()) {
+        return Err(GeometryError::Overflow);
+    }
+    Ok((centre, norm(offset), volume > T::zero()))
+}
+
+/// The circle through three points in Euclidean terms: centre
+/// `a + (|u|² v × w + |v|² w × u) / (2|w|²)` for `u = b − a`, `v = c − a`, `w = u × v`, unit
+/// normal along `w`, radius; on the differences scaled near 1 by a power of two, so for
+/// points of any size. Coincident and collinear points are refused.
+pub fn circumcircle<T: Real>(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<(E3<T>, E3<T>, T)> {
+    Plane::through(a, b, c)?; // rejects coincident and collinear points
+    let ([_, u, v], k) = rescaled_differences([a, b, c]);
+    let w = cross(u, v);
+    let two_w2 = T::from_f64(2.0) * dot(w, w);
+    let offset = scale(add(scale(cross(v, w), dot(u, u)), scale(cross(w, u), dot(v, v))), k / two_w2);
+    let centre = add(a, offset);
+    if !centre.iter().chain(&offset).all(|x| x.is_finite()) {
+        return Err(GeometryError::Overflow);
+    }
+    Ok((centre, unit(w).ok_or(GeometryError::CollinearPoints)?, norm(offset)))
+}
+
 impl<T: Real> Circle<T> {
     /// `up(a) ∧ up(b) ∧ up(c)`, normalised: the circle through three points, its plane's
     /// normal `(b − a) × (c − a)`.
@@ -272,15 +307,8 @@ impl<T: Real> Circle<T> {
     /// The same blade as the wedge, without the wedge's `ε ρ³` (it multiplies `½|a|²`-sized
     /// terms that cancel back to the circle's size): `ε ρ²`, `ρ = |centre|/radius`.
     pub fn through(a: E3<T>, b: E3<T>, c: E3<T>) -> Result<Self> {
-        Plane::through(a, b, c)?; // rejects coincident and collinear points
-        let (u, v) = (sub(b, a), sub(c, a));
-        let w = cross(u, v);
-        let two_w2 = T::from_f64(2.0) * dot(w, w);
-        let offset = scale(add(scale(cross(v, w), dot(u, u)), scale(cross(w, u), dot(v, v))), T::one() / two_w2);
-        if !offset.iter().all(|x| x.is_finite()) {
-            return Err(GeometryError::Overflow);
-        }
-        Self::from_centre_normal_radius(add(a, offset), w, norm(offset))
+        let (centre, normal, radius) = circumcircle(a, b, c)?;
+        Self::from_centre_normal_radius(centre, normal, radius)
     }
 
     /// [`Circle::from_centre_normal_radius`]: the constructor a user looks for first.

@@ -109,6 +109,13 @@ impl<T: Real> Real for Dual<T> {
     fn cos(self) -> Self {
         Dual { re: self.re.cos(), du: -(self.du * self.re.sin()) }
     }
+    fn min_positive() -> Self {
+        Self::constant(T::min_positive())
+    }
+    /// The value's binade, as a constant: scaling by it scales both parts exactly.
+    fn binade(self) -> Self {
+        Self::constant(self.re.binade())
+    }
     /// `d atan2(y, x) = (x dy − y dx) / (x² + y²)`.
     fn atan2(self, x: Self) -> Self {
         let r2 = x.re * x.re + self.re * self.re;

@@ -36,13 +36,29 @@ pub fn reflect<T: Real>(d: E3<T>, n: E3<T>) -> E3<T> {
     sub(d, scale(n, T::from_f64(2.0) * dot(d, n)))
 }
 
-/// `|a|`.
+/// `|a|`, without overflow or underflow: `√(a·a)` where the squares keep every digit (`a·a`
+/// finite and at least the smallest normal number over ε), otherwise `2^e √((a/2^e)·(a/2^e))`
+/// with `2^e` the binade of the largest component (exact scalings, so the two agree bit for
+/// bit wherever both apply: lanes of a packet take either path alike).
+#[inline(always)]
 pub fn norm<T: Real>(a: E3<T>) -> T {
-    dot(a, a).sqrt()
+    let s = dot(a, a);
+    if s.is_finite() && s >= T::min_positive() / T::epsilon() { s.sqrt() } else { norm_rescaled(a) }
 }
 
-/// `a / |a|`, or `None` for a zero or non-finite vector. Vectors whose squared length
-/// overflows or underflows (components beyond about 1e154 or below 1e-154 in f64) are
+/// [`norm`] of a vector whose squares leave the normal range: out of line, so that the
+/// common case stays a dot product and a square root wherever it is inlined.
+#[cold]
+#[inline(never)]
+fn norm_rescaled<T: Real>(a: E3<T>) -> T {
+    let largest = a.iter().fold(T::zero(), |m, x| m.max(x.abs()));
+    let k = largest.binade();
+    let b = a.map(|x| x / k);
+    dot(b, b).sqrt() * k
+}
+
+/// `a / |a|`, or `None` for a zero or non-finite vector. Vectors whose length overflows or
+/// underflows its reciprocal (components beyond about 1e308 or below 1e-308 in f64) are
 /// rescaled by their largest component first.
 pub fn unit<T: Real>(a: E3<T>) -> Option<E3<T>> {
     let inv = T::one() / norm(a);
@@ -53,6 +69,17 @@ pub fn unit<T: Real>(a: E3<T>) -> Option<E3<T>> {
     let b = scale(a, T::one() / largest);
     let inv = T::one() / norm(b);
     (largest.is_finite() && largest > T::zero() && inv.is_finite() && inv > T::zero()).then(|| scale(b, inv))
+}
+
+/// The differences `points[k] − points[0]` scaled by a power of two that brings the largest
+/// near 1, and that power: Euclidean constructions of degree three and four in the
+/// differences (circumcentres, volumes) then neither overflow nor underflow for points of
+/// any size f64 holds, and scaling back is exact.
+pub fn rescaled_differences<T: Real, const N: usize>(points: [E3<T>; N]) -> ([E3<T>; N], T) {
+    let d = points.map(|p| sub(p, points[0]));
+    let largest = d.iter().flatten().fold(T::zero(), |m, x| m.max(x.abs()));
+    let k = largest.binade();
+    (d.map(|v| v.map(|x| x / k)), k)
 }
 
 /// The largest `|a_i|` over several vectors, at least 1: the scale tolerances are relative to.

@@ -114,7 +114,7 @@ pub mod spline;
 pub mod versor;
 
 pub use algebra::*;
-pub use conformal::{Disk, GeometryError, down, ei, up};
+pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, ei, up};
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};

@@ -45,6 +45,33 @@ pub trait Real:
     fn cos(self) -> Self;
     /// The angle of the point `(x, self)`, in `(−π, π]`.
     fn atan2(self, x: Self) -> Self;
+    /// The smallest positive normal number of the type's precision (below it, products lose
+    /// digits to underflow).
+    #[inline]
+    fn min_positive() -> Self {
+        Self::from_f64(f64::MIN_POSITIVE)
+    }
+    /// `2^e` for the binary exponent `e` of `self` (`|self| = m 2^e`, `1 ≤ m < 2`), or 1 for
+    /// zero and non-finite values: a scale that brings `self` near 1 exactly, since dividing
+    /// by a power of two only changes the exponent. The default is 1 (no rescaling), which
+    /// is always correct but leaves types without it the range of their squares.
+    #[inline]
+    fn binade(self) -> Self {
+        Self::one()
+    }
+}
+
+/// `2^e` for the exponent of a finite nonzero `x` (subnormals included), 1 otherwise.
+fn binade_f64(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return 1.0;
+    }
+    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if exponent == 0 {
+        // Subnormal: scale up by 2^54 first (exactly), then back.
+        return binade_f64(x * 2f64.powi(54)) * 2f64.powi(-54);
+    }
+    f64::from_bits(((exponent as u64) << 52) & 0x7ff0_0000_0000_0000)
 }
 
 macro_rules! impl_real {
@@ -72,8 +99,30 @@ macro_rules! impl_real {
             fn cos(self) -> Self { <$t>::cos(self) }
             #[inline]
             fn atan2(self, x: Self) -> Self { <$t>::atan2(self, x) }
+            #[inline]
+            fn min_positive() -> Self { <$t>::MIN_POSITIVE }
+            #[inline]
+            // f32 exponents are those of the f64 it widens to (exact both ways).
+            fn binade(self) -> Self { binade_f64(self as f64) as $t }
         }
     )*};
 }
 
 impl_real!(f32, f64);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn binades_are_the_powers_of_two_below() {
+        for x in [1.0, 1.5, 3.0, 1e-300, 5e-324, 1e300, -6.0, f64::MAX] {
+            let b = Real::binade(x);
+            assert!(b.is_finite() && b > 0.0 && b.log2().fract() == 0.0, "{x:e}: {b:e}");
+            assert!((1.0..2.0).contains(&(x.abs() / b)), "{x:e}: {b:e}");
+        }
+        assert_eq!((Real::binade(0.0f64), Real::binade(f64::NAN)), (1.0, 1.0));
+        assert_eq!(Real::binade(12.0f32), 8.0);
+        assert_eq!(<f32 as Real>::min_positive(), f32::MIN_POSITIVE);
+    }
+}

@@ -35,6 +35,36 @@ impl<T: Real> Motor<T> {
         t * r
     }
 
+    /// The rotation part `R` of a rigid motor `M = T R`: its scalar and `e_jk` parts.
+    #[inline]
+    pub fn rotor(&self) -> Rotor<T> {
+        Rotor { s: self.s, e12: self.e12, e13: self.e13, e23: self.e23 }
+    }
+
+    /// The translation `t` of a rigid motor `M = T R` with unit `R`: `M R̃ = T = 1 − ½ t ei`,
+    /// so `t = −2 ⟨M R̃⟩_{e_k i}`. Exact in the coefficients: no conformal point is formed.
+    pub fn translation(&self) -> E3<T> {
+        let t = *self * self.rotor().reverse();
+        let m = T::from_f64(-2.0);
+        [m * t.e1i, m * t.e2i, m * t.e3i]
+    }
+
+    /// A direction moved by a rigid motor `M = T R` (unit `R`): `R d R̃` (translations do not
+    /// move directions).
+    pub fn move_direction(&self, d: E3<T>) -> E3<T> {
+        use crate::Sandwich;
+        let v = self.rotor().sandwich(crate::Vector { e1: d[0], e2: d[1], e3: d[2], eo: T::zero(), ei: T::zero() });
+        [v.e1, v.e2, v.e3]
+    }
+
+    /// A point moved by a rigid motor `M = T R` (unit `R`): `R x R̃ + t`, the Euclidean part
+    /// of `down(M up(x) M̃)` computed without `up(x)`, whose `½|x|²` would cost `ε |x|²` of
+    /// the result (an object moved by 1e8 would lose its size) and overflow near 1e154.
+    pub fn move_point(&self, x: E3<T>) -> E3<T> {
+        let (r, t) = (self.move_direction(x), self.translation());
+        [r[0] + t[0], r[1] + t[1], r[2] + t[2]]
+    }
+
     /// `log M`: the generator `B` (rotation and translation parts only) with `exp(B) = M`,
     /// for a normalised motor whose rotation angle is below 2π (half-angle `φ < π`).
     /// Inverts the closed form of [`exp`]: `φ = atan2(|⟨M⟩_rot|, ⟨M⟩₀)`, the rotation part

@@ -10,9 +10,9 @@
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use cga_core::{Circle, Interpolable, Line, Real};
 use cga_trace::Renderer;
-use cga_trace::ray::Ray;
+use cga_trace::ray::{Ray, offset};
 use cga_trace::scene::Scene;
-use cga_trace::shapes::Crossing;
+use cga_trace::shapes::{Crossing, Shape};
 use cga_trace::surface::bernstein::Roots;
 use cga_trace::surface::{EvolvedSurface, Family, Finder, Method};
 use plotters::prelude::*;
@@ -257,15 +257,16 @@ fn scene_rays(scene: &Scene, surface: &EvolvedSurface) -> Vec<TestRay> {
                         continue;
                     }
                     let Some((hit, object)) = renderer.nearest(&ray, 0.0, f64::INFINITY) else { continue };
+                    let off = offset(hit.point, ray.origin, object.shape.crossing_error());
                     for light in &scene.lights {
-                        let to = sub(light.position, hit.point);
-                        if let Some(shadow) = Ray::leaving(hit.point, hit.normal, to) {
-                            todo.push((shadow, norm(to), "scene: shadow", depth));
+                        let (to, distance) = light.toward(hit.point);
+                        if let Some(shadow) = Ray::leaving(hit.point, hit.normal, to, off) {
+                            todo.push((shadow, distance, "scene: shadow", depth));
                         }
                     }
                     if object.material.kr > 0.0 && depth < scene.settings.max_depth {
                         let d = cga_core::euclid::reflect(ray.dir, hit.normal);
-                        if let Some(r) = Ray::leaving(hit.point, hit.normal, d) {
+                        if let Some(r) = Ray::leaving(hit.point, hit.normal, d, off) {
                             todo.push((r, f64::INFINITY, "scene: reflection", depth + 1));
                         }
                     }
@@ -350,11 +351,12 @@ fn adversarial(surface: &EvolvedSurface, per_kind: usize, seed: u64) -> Vec<Test
         // Leaving the surface as a shadow ray (to a light) and a reflection ray.
         let light = scale(rng.unit(), 5.0 * size);
         let to = sub(light, x);
-        push(&mut out, Ray::leaving(world(x), normal, to), norm(to), "leaving: shadow");
+        let off = offset(world(x), world(x), surface.crossing_error());
+        push(&mut out, Ray::leaving(world(x), normal, to, off), norm(to), "leaving: shadow");
         let side = if dot(normal, to) >= 0.0 { 1.0 } else { -1.0 };
         let bounce = cga_core::euclid::reflect(scale(rng.unit(), 1.0), normal);
         let bounce = if dot(bounce, normal) * side < 0.0 { bounce.map(|x| -x) } else { bounce };
-        push(&mut out, Ray::leaving(world(x), scale(normal, side), bounce), f64::INFINITY, "leaving: reflection");
+        push(&mut out, Ray::leaving(world(x), scale(normal, side), bounce, off), f64::INFINITY, "leaving: reflection");
     }
     out
 }

@@ -1,32 +1,49 @@
-//! Point lights.
+//! Lights: points, and directional lights at infinity (a sun), which light every point from
+//! one direction and cast shadows without end.
 
-use crate::format::numbers;
-use crate::scene::Invalid;
-use cga_core::euclid::E3;
-use serde::Deserialize;
+use cga_core::Real;
+use cga_core::euclid::{E3, norm, scale, sub};
 
-/// A point light.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
+/// A light in a scene's frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
-    /// Where it is.
-    #[serde(deserialize_with = "numbers")]
-    pub position: E3,
+    /// Where its light comes from.
+    pub source: Source,
     /// Linear RGB intensity.
-    #[serde(default = "white", deserialize_with = "numbers")]
     pub colour: [f64; 3],
 }
 
-fn white() -> [f64; 3] {
-    [1.0; 3]
+/// Where a light's light comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Source {
+    /// A point light at this position.
+    Point(E3),
+    /// A directional light: its light travels along this unit direction.
+    Directional(E3),
 }
 
 impl Light {
-    /// Position and colour finite, colour non-negative.
-    pub fn check(&self) -> Result<(), Invalid> {
-        if !self.position.iter().chain(&self.colour).all(|x| x.is_finite()) || self.colour.iter().any(|&c| c < 0.0) {
-            return Err(Invalid::Value("position and colour must be finite, colour ≥ 0"));
+    /// The unit direction `l` from `x` towards the light and the distance to it (∞ for a
+    /// directional light): `(p − x)/|p − x|` and `|p − x|`, or `−d` and ∞. Generic, so that a
+    /// point and a packet's four points (lanes) take the same operations.
+    #[inline(always)]
+    pub fn toward<T: Real>(&self, x: E3<T>) -> (E3<T>, T) {
+        match self.source {
+            Source::Point(p) => {
+                let to_light = sub(p.map(T::from_f64), x);
+                let distance = norm(to_light);
+                (scale(to_light, T::one() / distance), distance)
+            }
+            Source::Directional(d) => (d.map(|c| T::from_f64(-c)), T::from_f64(f64::INFINITY)),
         }
-        Ok(())
     }
+}
+
+/// `min(1, 1/(c₀ + c₁ d + c₂ d²))` for the attenuation coefficients `c` at distance `d` (world
+/// units); `min(1, 1/c₀)` at infinity, where a directional light's light comes from.
+#[inline(always)]
+pub fn attenuation(c: [f64; 3], d: f64) -> f64 {
+    let [c0, c1, c2] = c;
+    let f = if d.is_finite() { 1.0 / (c0 + c1 * d + c2 * d * d) } else { 1.0 / c0 };
+    f.min(1.0)
 }

@@ -1,7 +1,7 @@
 //! `cga-trace render SCENE.toml -o out.png`: render a scene file to an image.
 
 use anyhow::Context;
-use cga_trace::backend::{Backend, Dense, Plain, Sparse};
+use cga_trace::backend::{Backend, Dense, Plain, Sparse, holds};
 use cga_trace::film::Output;
 use cga_trace::limits::MAX_THREADS;
 use cga_trace::output::OutputFile;
@@ -217,6 +217,9 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     };
 
     let mut scene = Scene::load(&args.scene)?;
+    for note in scene.notes() {
+        say!("note: {note}");
+    }
     if let Some(degrees) = args.fov {
         scene.set_fov(degrees).context("--fov")?;
     }
@@ -241,11 +244,12 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     if !std::io::stderr().is_terminal() {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let render = match args.backend {
-        BackendKind::Sparse => render::<Sparse>,
-        BackendKind::Dense => render::<Dense>,
-        BackendKind::Plain => render::<Plain>,
+    let (render, holds): (RenderFn, Holds) = match args.backend {
+        BackendKind::Sparse => (render::<Sparse>, holds::<Sparse>),
+        BackendKind::Dense => (render::<Dense>, holds::<Dense>),
+        BackendKind::Plain => (render::<Plain>, holds::<Plain>),
     };
+    holds(&scene).map_err(anyhow::Error::msg).context("--backend")?;
     let start = Instant::now();
     let packets = !args.no_packets;
     let (film, (primary, shadow, reflection)) =
@@ -288,6 +292,11 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     );
     Ok(())
 }
+
+/// A back end's render, as [`render`] gives it.
+type RenderFn = fn(&Scene, Aov, Window, bool, &(dyn Fn() + Sync)) -> (Film, (u64, u64, u64));
+/// A back end's [`holds`].
+type Holds = fn(&Scene) -> Result<(), String>;
 
 /// The image and the rays cast `(primary, shadow, reflection)`, on back end `B`.
 fn render<B: Backend>(

@@ -2,7 +2,8 @@
 //! objects with — the CGA line they lie on for the CGA back ends.
 
 use cga_core::Line;
-use cga_core::euclid::{E3, add, dot, scale, sub, unit};
+use cga_core::Real;
+use cga_core::euclid::{E3, add, dot, scale, sub, tolerance, unit};
 
 /// A ray `o + t d`, `t > 0`, carried by `line`: by default the normalised CGA line from `o`
 /// along `d` (the dense back end carries a dense multivector, the plain one nothing).
@@ -33,10 +34,10 @@ impl Ray {
         Ray { origin, dir, line: Line::from_point_unit_direction(origin, dir) }
     }
 
-    /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir` (see
-    /// [`leaving_origin`]).
-    pub fn leaving(x: E3, n: E3, dir: E3) -> Option<Self> {
-        Ray::new(leaving_origin(x, n, dir), dir)
+    /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir`, starting
+    /// `offset` off the surface ([`leaving_origin`], [`offset`]).
+    pub fn leaving(x: E3, n: E3, dir: E3, offset: f64) -> Option<Self> {
+        Ray::new(leaving_origin(x, n, dir, offset), dir)
     }
 
     /// The ray from `origin` along the normalised line `line` (which must pass through it).
@@ -57,12 +58,24 @@ impl<C> Ray<C> {
     }
 }
 
+/// How far off a surface a secondary ray starts when it leaves the crossing `x` of a ray from
+/// `origin` with a shape whose crossings lie within `error` of it
+/// ([`Shape::crossing_error`](crate::shapes::Shape::crossing_error)): four times that error and
+/// the rounding of the coordinates that located the crossing, `64 ε (|x|∞ + |o|∞)`. Every
+/// term is the hit's own size, so the same picture comes out at any scale and anywhere in
+/// the frame; no global unit enters. Generic, so that a point and a packet's four points
+/// (lanes) take the same operations.
+#[inline(always)]
+pub fn offset<T: Real>(x: E3<T>, origin: E3<T>, error: T) -> T {
+    let largest = |v: E3<T>| v.iter().fold(T::zero(), |m, c| m.max(c.abs()));
+    T::from_f64(4.0) * (error + tolerance(largest(x) + largest(origin)))
+}
+
 /// Where a secondary ray leaving a surface point `x` (unit normal `n`) along `dir` starts:
-/// `1e-6 (1 + |x|∞)` off the surface on the side it leaves to, so that rounding in the hit
-/// point cannot make it meet the surface it starts on.
-pub fn leaving_origin(x: E3, n: E3, dir: E3) -> E3 {
+/// `offset` off the surface on the side it leaves to ([`offset`]), so that rounding in the
+/// hit point cannot make it meet the surface it starts on.
+pub fn leaving_origin(x: E3, n: E3, dir: E3, offset: f64) -> E3 {
     let side = if dot(n, dir) >= 0.0 { 1.0 } else { -1.0 };
-    let offset = 1e-6 * x.iter().fold(1.0f64, |m, v| m.max(v.abs()));
     add(x, scale(n, side * offset))
 }
 

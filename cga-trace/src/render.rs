@@ -8,11 +8,11 @@
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
-use crate::light::Light;
-use crate::ray::{Ray, crosses, leaving_origin};
+use crate::light::{Light, attenuation};
+use crate::ray::{Ray, crosses, leaving_origin, offset};
 use crate::scene::{Object, Scene};
 use crate::shapes::{Crossing, Hit};
-use cga_core::euclid::{E3, dot, norm, reflect, scale, sub, unit};
+use cga_core::euclid::{E3, dot, reflect, scale, unit};
 use rayon::prelude::*;
 use smallvec::SmallVec;
 use std::ops::Range;
@@ -65,11 +65,6 @@ impl Aov {
         }
     }
 }
-
-/// Crossings nearer than this (in the frame's units, about the scene's size) are the ray's
-/// own origin: a camera standing on a plane or sphere, whose crossing at `t ≈ 0` rounds to
-/// either side. Secondary rays start off their surface by more than this.
-pub const T_MIN: f64 = 1e-9;
 
 /// Scenes with at least this many bounded objects are traversed through a [`Bvh`]; fewer
 /// are tested one by one (cheaper than any traversal).
@@ -133,6 +128,9 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     bvh: Option<Bvh>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
     pub(crate) flat: Vec<bool>,
+    /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
+    /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
+    pub(crate) errors: Vec<f64>,
     /// Rays cast so far.
     pub counts: RayCounts,
 }
@@ -155,7 +153,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
-        Renderer { scene, shapes, packets, bounds, bvh, flat, counts: RayCounts::default() }
+        let errors = scene.objects.iter().map(|o| o.shape.crossing_error()).collect();
+        Renderer { scene, shapes, packets, bounds, bvh, flat, errors, counts: RayCounts::default() }
     }
 
     /// The same renderer tracing one ray at a time, without packets (to compare them).
@@ -171,12 +170,22 @@ impl<'a, B: Backend> Renderer<'a, B> {
         self
     }
 
-    /// The nearest crossing with `t_min < t < t_max` over all objects, and the object's index.
+    /// Where object `k`'s crossings start to count on a ray whose range starts at `t_min`:
+    /// beyond the object's own crossing error (a ray leaving it, or a camera standing on it,
+    /// meets it there only by rounding).
+    #[inline(always)]
+    pub(crate) fn t_min(&self, k: usize, t_min: f64) -> f64 {
+        let e = self.errors[k];
+        if e > t_min { e } else { t_min }
+    }
+
+    /// The nearest crossing with `t_min < t < t_max` over all objects (each beyond its own
+    /// [crossing error](Renderer::t_min)), and the object's index.
     fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, mut t_max: f64) -> Option<(Crossing, usize)> {
         let mut best = None;
         if let Some(bvh) = &self.bvh {
             bvh.traverse(ray.origin, ray.dir, t_min, t_max, |k, t_max| {
-                let c = B::intersect(&self.shapes[k], ray, t_min, t_max);
+                let c = B::intersect(&self.shapes[k], ray, self.t_min(k, t_min), t_max);
                 Some(c.map_or(t_max, |c| {
                     best = Some((c, k));
                     c.t
@@ -188,7 +197,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             if self.bounds[k].is_some_and(|(c, r)| !crosses(ray, c, r, t_min, t_max)) {
                 continue;
             }
-            if let Some(c) = B::intersect(shape, ray, t_min, t_max) {
+            if let Some(c) = B::intersect(shape, ray, self.t_min(k, t_min), t_max) {
                 t_max = c.t;
                 best = Some((c, k));
             }
@@ -220,7 +229,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         if let Some(bvh) = &self.bvh {
             let mut blocked = false;
             bvh.traverse(ray.origin, ray.dir, 0.0, t_max, |k, t| {
-                blocked = Some(k) != skip && B::intersect(&self.shapes[k], ray, 0.0, t).is_some();
+                blocked = Some(k) != skip && B::intersect(&self.shapes[k], ray, self.t_min(k, 0.0), t).is_some();
                 (!blocked).then_some(t)
             });
             return blocked;
@@ -228,7 +237,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         self.shapes.iter().zip(&self.bounds).enumerate().any(|(k, (shape, bound))| {
             Some(k) != skip
                 && bound.is_none_or(|(c, r)| crosses(ray, c, r, 0.0, t_max))
-                && B::intersect(shape, ray, 0.0, t_max).is_some()
+                && B::intersect(shape, ray, self.t_min(k, 0.0), t_max).is_some()
         })
     }
 
@@ -248,11 +257,11 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
     /// order, so the same bits).
     fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
-        let Some((hit, k)) = self.hit(ray, T_MIN, f64::INFINITY) else {
+        let Some((hit, k)) = self.hit(ray, 0.0, f64::INFINITY) else {
             return self.scene.settings.background;
         };
         let local = self.shade(ray, &hit, k, cast);
-        self.reflect_from(ray, &hit, &self.scene.objects[k], local, depth, cast)
+        self.reflect_from(ray, &hit, k, local, depth, cast)
     }
 
     /// `I = I_local + k_r I_reflected` at a hit of `ray` whose own colour is `local`,
@@ -261,14 +270,15 @@ impl<'a, B: Backend> Renderer<'a, B> {
         &self,
         ray: &Ray<B::Carrier>,
         hit: &Hit,
-        object: &'a Object,
+        k: usize,
         local: [f64; 3],
         depth: u32,
         cast: &mut Cast,
     ) -> [f64; 3] {
         let settings = &self.scene.settings;
         let mut layers = Layers::new();
-        let (mut ray, mut hit, mut object, mut local, mut depth) = (*ray, *hit, object, local, depth);
+        let (mut ray, mut hit, mut k, mut local, mut depth) = (*ray, *hit, k, local, depth);
+        let mut object = &self.scene.objects[k];
         let deepest = loop {
             let kr = object.material.kr;
             if !(kr > 0.0 && depth < settings.max_depth) {
@@ -276,12 +286,12 @@ impl<'a, B: Backend> Renderer<'a, B> {
             }
             cast.reflection += 1;
             layers.push((local, kr));
-            (ray, depth) = (mirror_ray::<B>(&ray, &hit), depth + 1);
-            let Some((next, k)) = self.hit(&ray, T_MIN, f64::INFINITY) else {
+            (ray, depth) = (mirror_ray::<B>(&ray, &hit, self.errors[k]), depth + 1);
+            let Some((next, next_k)) = self.hit(&ray, 0.0, f64::INFINITY) else {
                 break settings.background;
             };
-            local = self.shade(&ray, &next, k, cast);
-            (hit, object) = (next, &self.scene.objects[k]);
+            local = self.shade(&ray, &next, next_k, cast);
+            (hit, object, k) = (next, &self.scene.objects[next_k], next_k);
         };
         sum_layers(&layers, deepest)
     }
@@ -291,8 +301,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
     fn shade(&self, ray: &Ray<B::Carrier>, hit: &Hit, k: usize, cast: &mut Cast) -> [f64; 3] {
         let (settings, object) = (&self.scene.settings, &self.scene.objects[k]);
         let mut colour = self.ambient(object);
+        let offset = offset(hit.point, ray.origin, self.errors[k]);
         for light in &self.scene.lights {
-            let Some(term) = light_term(ray.dir, hit, &object.material, light) else { continue };
+            let Some(term) = light_term(ray.dir, hit, &object.material, light, offset) else { continue };
             let mut s = 1.0;
             if settings.shadows {
                 cast.shadow += 1;
@@ -315,9 +326,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     pub(crate) fn add_light(&self, colour: &mut [f64; 3], object: &Object, light: &Light, term: &LightTerm, s: f64) {
         let (settings, m) = (&self.scene.settings, &object.material);
         // Attenuation is in world units; the frame's are `frame.scale` of them.
-        let distance = self.scene.frame.world_length(term.distance);
-        let [c0, c1, c2] = settings.attenuation;
-        let f_att = (1.0 / (c0 + c1 * distance + c2 * distance * distance)).min(1.0);
+        let f_att = attenuation(settings.attenuation, self.scene.frame.world_length(term.distance));
         for ((out, c), l) in colour.iter_mut().zip(m.colour).zip(light.colour) {
             *out += s * f_att * (c * m.kd * term.diffuse.max(0.0) + m.ks * term.specular) * l;
         }
@@ -356,15 +365,15 @@ impl<'a, B: Backend> Renderer<'a, B> {
         match aov {
             Aov::Shaded => self.trace_counted(&ray, 0, cast),
             Aov::Normal => {
-                self.nearest(&ray, T_MIN, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
+                self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
             }
-            Aov::Alpha => match self.nearest(&ray, T_MIN, f64::INFINITY) {
+            Aov::Alpha => match self.nearest(&ray, 0.0, f64::INFINITY) {
                 Some((Hit { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
                 _ => [0.0; 3],
             },
             // (value, 1) where the surface has a curvature, (0, 0) elsewhere: averaged over
             // samples, value / weight is the mean over the samples that had one.
-            _ => match self.nearest(&ray, T_MIN, f64::INFINITY) {
+            _ => match self.nearest(&ray, 0.0, f64::INFINITY) {
                 Some((hit, object)) => {
                     let crossing = Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
                     let scale = self.scene.frame.scale;
@@ -491,18 +500,19 @@ pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
     layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
 }
 
-/// The mirror bounce of `ray` at `hit`: `dir` and the normal are unit, so the reflected
-/// direction is (to rounding), and the ray starts off the surface ([`leaving_origin`]).
-pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &Hit) -> Ray<B::Carrier> {
+/// The mirror bounce of `ray` at `hit` on a shape whose crossings lie within `error` of it:
+/// `dir` and the normal are unit, so the reflected direction is (to rounding), and the ray
+/// starts off the surface ([`leaving_origin`]).
+pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &Hit, error: f64) -> Ray<B::Carrier> {
     let r = reflect(ray.dir, hit.normal);
-    B::ray(leaving_origin(hit.point, hit.normal, r), r)
+    B::ray(leaving_origin(hit.point, hit.normal, r, offset(hit.point, ray.origin, error)), r)
 }
 
 /// What one light gives a hit before shadowing.
 pub(crate) struct LightTerm {
     /// Unit direction to the light.
     pub l: E3,
-    /// Distance to it (frame units).
+    /// Distance to it (frame units; ∞ for a directional light).
     pub distance: f64,
     /// `n · l`.
     pub diffuse: f64,
@@ -512,24 +522,29 @@ pub(crate) struct LightTerm {
     pub shadow_origin: E3,
 }
 
-/// The unshadowed terms of `light` at `hit` seen along `dir`; `None` where it adds nothing
-/// (behind the surface for both terms, at the hit point, or beyond f64's range).
+/// The unshadowed terms of `light` at `hit` seen along `dir`, the shadow ray starting
+/// `offset` off the surface; `None` where it adds nothing (behind the surface for both
+/// terms, or a point light at the hit point).
 #[inline]
-pub(crate) fn light_term(dir: E3, hit: &Hit, m: &crate::material::Material, light: &Light) -> Option<LightTerm> {
+pub(crate) fn light_term(
+    dir: E3,
+    hit: &Hit,
+    m: &crate::material::Material,
+    light: &Light,
+    offset: f64,
+) -> Option<LightTerm> {
     let (n, v) = (hit.normal, dir.map(|x| -x));
-    let to_light = sub(light.position, hit.point);
-    let distance = norm(to_light);
-    if !(distance > 0.0 && distance.is_finite()) {
+    // One square root for the distance and the direction.
+    let (l, distance) = light.toward(hit.point);
+    if distance.is_nan() || distance <= 0.0 {
         return None;
     }
-    // One square root for the distance and the direction.
-    let l = scale(to_light, 1.0 / distance);
     let (diffuse, h) = (dot(n, l), unit([l[0] + v[0], l[1] + v[1], l[2] + v[2]]));
     let specular = h.map_or(0.0, |h| m.specular(dot(n, h)));
     if diffuse <= 0.0 && specular <= 0.0 {
         return None;
     }
-    Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, l) })
+    Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, l, offset) })
 }
 
 #[cfg(test)]

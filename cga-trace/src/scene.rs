@@ -4,7 +4,7 @@
 //! geometry, the table or object and a typed reason.
 
 use crate::camera::{Camera, CameraError};
-use crate::format::{SceneFile, build_camera, build_object};
+use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
 use crate::light::Light;
 use crate::limits::{MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
@@ -14,7 +14,8 @@ use crate::shapes::Shape;
 #[cfg(feature = "evolved")]
 use crate::surface::SurfaceError;
 use cga_core::GeometryError;
-use cga_core::euclid::E3;
+use serde::Deserialize;
+use serde::de::IntoDeserializer;
 use std::ops::Range;
 use std::path::Path;
 use std::sync::Arc;
@@ -152,6 +153,10 @@ pub enum Invalid {
     #[cfg(feature = "evolved")]
     #[error(transparent)]
     Surface(#[from] SurfaceError),
+    /// Numbers the frame cannot hold beside the rest of the scene (the message says which
+    /// and how far).
+    #[error("{0}")]
+    Range(String),
     /// An evolved surface in a build without them.
     #[error("this build leaves out evolved surfaces (cargo feature `evolved`)")]
     NoEvolved,
@@ -193,62 +198,118 @@ impl Scene {
     }
 
     /// Check a scene given as text; `file` names it in errors.
+    ///
+    /// Memory is bounded per object: the file is cut at its table headers, each
+    /// `[[objects]]` section parsed, placed and built alone and dropped before the next
+    /// ([`crate::format::sections`]), so loading holds the file, one object's parsed form and
+    /// the scene built so far (about 225 bytes an object).
     pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
-        let at = |span: Option<Range<usize>>| line_column(text, span.map_or(0, |s| s.start));
-        let spec: SceneFile = toml::from_str(text).map_err(|e| {
-            let (line, column) = at(e.span());
-            let mut message = e.message().trim().to_string();
-            if message == "duplicate key"
-                && let Some(key) = e.span().and_then(|s| text.get(s))
-            {
-                message = format!("duplicate key `{}`", key.trim().escape_debug());
-            } else if let Some(better) =
-                header_mistake(text, e.span().map_or(0, |s| s.start)).filter(|_| message.starts_with("invalid type"))
-            {
-                message = better;
-            } else if let Some(key) =
-                key_at(text, e.span().map_or(0, |s| s.start)).filter(|k| !message.contains(k.as_str()))
-            {
-                message = format!("field `{key}`: {message}");
-            }
-            SceneError::Syntax { file: file.into(), line, column, message: printable(&message) }
-        })?;
-        let invalid = |span: Range<usize>, what: String, reason: Invalid| {
-            let (line, column) = at(Some(reason.span().unwrap_or(span)));
+        let at = |offset: usize| line_column(text, offset);
+        let syntax = |base: usize| move |e: toml::de::Error| syntax_error(text, file, &e, base);
+        let invalid = |base: usize, span: Range<usize>, what: String, reason: Invalid| {
+            let (line, column) = at(base + reason.span().unwrap_or(span).start);
             SceneError::Invalid { file: file.into(), line, column, what, reason }
         };
+        let sections = sections::split(text);
+        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(syntax(0))?;
+        // `objects = [ … ]` written as one array in the root, instead of `[[objects]]` tables.
+        let inline = match document.get_mut().remove_entry("objects") {
+            None => toml::de::DeArray::new(),
+            Some((_, value)) if matches!(value.get_ref(), toml::de::DeValue::Array(_)) => match value.into_inner() {
+                toml::de::DeValue::Array(objects) => objects,
+                _ => unreachable!("an array"),
+            },
+            // Not a list: put back, for the scene's own fields to say what is wrong with it.
+            Some((key, value)) => {
+                document.get_mut().insert(key, value);
+                toml::de::DeArray::new()
+            }
+        };
+        if let (Some(first), false) = (sections.objects.first(), inline.is_empty()) {
+            let (line, column) = at(first.start);
+            let message = "duplicate key `objects`: given as an array and as `[[objects]]` tables".into();
+            return Err(SceneError::Syntax { file: file.into(), line, column, message });
+        }
+        let spec: SceneFile = SceneFile::deserialize(toml::de::Deserializer::from(document)).map_err(syntax(0))?;
         let (settings, render_span) = spec.render.map_or((Settings::default(), 0..0), |r| (*r.get_ref(), r.span()));
-        settings.check().map_err(|reason| invalid(render_span, "render".into(), reason))?;
+        settings.check().map_err(|reason| invalid(0, render_span, "render".into(), reason))?;
+        let count = inline.len().max(sections.objects.len());
         let limit = |what, found: usize, limit: usize| {
             (found > limit).then_some(Invalid::Limit { what, found: found as u64, limit: limit as u64 })
         };
-        if let Some(e) =
-            limit("objects", spec.objects.len(), MAX_OBJECTS).or(limit("lights", spec.lights.len(), MAX_LIGHTS))
-        {
-            return Err(invalid(0..0, "scene".into(), e));
+        if let Some(e) = limit("objects", count, MAX_OBJECTS).or(limit("lights", spec.lights.len(), MAX_LIGHTS)) {
+            return Err(invalid(0, 0..0, "scene".into(), e));
         }
         let camera_span = spec.camera.span();
-        let anchors: Vec<E3> = (spec.objects.iter().filter_map(|o| o.get_ref().anchor()))
-            .chain(spec.lights.iter().map(|l| l.get_ref().position))
-            .collect();
-        let in_camera = |reason| invalid(camera_span.clone(), "camera".into(), reason);
-        let (world, pinned) = spec.camera.into_inner().world().map_err(in_camera)?;
-        let (camera, frame) = build_camera(&world, anchors).map_err(in_camera)?;
-        for (k, light) in spec.lights.iter().enumerate() {
-            light.get_ref().check().map_err(|reason| invalid(light.span(), format!("light {}", k + 1), reason))?;
+        let in_camera = |reason| invalid(0, camera_span.clone(), "camera".into(), reason);
+        let (camera, position, pinned) = spec.camera.into_inner().build().map_err(in_camera)?;
+        // Objects size the frame; lights do not (a light far away is only a direction). Each
+        // object's placement is read first (a few of its fields), before any is built.
+        let mut sizes = Vec::with_capacity(count);
+        for k in 0..count {
+            sizes.extend(match sections.objects.get(k) {
+                Some(range) => {
+                    let value = section_object(&text[range.clone()]).map_err(syntax(range.start))?;
+                    ObjectSpec::extent_of(&value).map_err(syntax(range.start))?
+                }
+                None => ObjectSpec::extent_of(&inline[k]).map_err(syntax(0))?,
+            });
         }
-        let lights = (spec.lights.into_iter().map(Spanned::into_inner))
-            .map(|l| Light { position: frame.point(l.position), ..l })
-            .collect();
-        let mut objects = Vec::new();
-        for (k, spanned) in spec.objects.into_iter().enumerate() {
-            let span = spanned.span();
-            let (object, name) = build_object(spanned.into_inner(), k, settings.surface_method, &frame);
+        let pixel = camera.x_max / camera.focal / f64::from(camera.width);
+        let frame = Frame::around(position, sizes, pixel)
+            .map_err(|span| invalid(0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
+        let mut lights = Vec::with_capacity(spec.lights.len());
+        for (k, light) in spec.lights.into_iter().enumerate() {
+            let span = light.span();
+            let what = format!("light {}", k + 1);
+            lights.push(light.into_inner().build(&frame).map_err(|reason| invalid(0, span, what, reason))?);
+        }
+        // Object `k` as parsed, and the offset its spans count from.
+        let mut inline = inline.into_iter().map(Some).collect::<Vec<_>>();
+        let mut object = |k: usize| -> Result<(Spanned<toml::de::DeValue<'_>>, usize), SceneError> {
+            match sections.objects.get(k) {
+                Some(range) => Ok((section_object(&text[range.clone()]).map_err(syntax(range.start))?, range.start)),
+                None => Ok((inline[k].take().expect("each object once"), 0)),
+            }
+        };
+        let mut built = Vec::with_capacity(count);
+        for k in 0..count {
+            let (value, base) = object(k)?;
+            let span = value.span();
+            let spec = ObjectSpec::deserialize(value.into_deserializer()).map_err(syntax(base))?;
+            let (object, name) = build_object(spec, k, settings.surface_method, &frame);
             let what = format!("object `{name}`");
-            objects.push(object.map_err(|reason| invalid(span, what, reason))?);
+            built.push(object.map_err(|reason| invalid(base, span, what, reason))?);
         }
-        Ok(Scene { frame, camera, objects, lights, settings, pinned })
+        Ok(Scene { frame, camera, objects: built, lights, settings, pinned })
     }
+}
+
+/// The one object of an `[[objects]]` section (its header and sub-tables), parsed alone.
+fn section_object(section: &str) -> Result<Spanned<toml::de::DeValue<'_>>, toml::de::Error> {
+    let mut table = toml::de::DeTable::parse(section)?;
+    let span = table.span();
+    match table.get_mut().remove("objects").map(Spanned::into_inner) {
+        Some(toml::de::DeValue::Array(a)) if a.len() == 1 => Ok(a.into_iter().next().expect("one")),
+        _ => Err(serde::de::Error::custom(format!("an `[[objects]]` section holds one object table ({span:?})"))),
+    }
+}
+
+/// A TOML or field error as a located one-line message, its span counted from `base`.
+fn syntax_error(text: &str, file: &str, e: &toml::de::Error, base: usize) -> SceneError {
+    let offset = base + e.span().map_or(0, |s| s.start);
+    let (line, column) = line_column(text, offset);
+    let mut message = e.message().trim().to_string();
+    if message == "duplicate key"
+        && let Some(key) = e.span().and_then(|s| text.get(base + s.start..base + s.end))
+    {
+        message = format!("duplicate key `{}`", key.trim().escape_debug());
+    } else if let Some(better) = header_mistake(text, offset).filter(|_| message.starts_with("invalid type")) {
+        message = better;
+    } else if let Some(key) = key_at(text, offset).filter(|k| !message.contains(k.as_str())) {
+        message = format!("field `{key}`: {message}");
+    }
+    SceneError::Syntax { file: file.into(), line, column, message: printable(&message) }
 }
 
 /// What is wrong when the table header at `offset` writes a single table as a list of tables
@@ -281,7 +342,39 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
         .then(|| key.to_string())
 }
 
+/// More objects than this sharing one bounding sphere get a note: the hierarchy (four to a
+/// leaf) cannot separate them, so every ray that reaches them tests each.
+const CROWD: usize = 64;
+
 impl Scene {
+    /// What a user should know about the scene that is not an error: objects that share one
+    /// bounding sphere in crowds (the same object repeated), which no hierarchy can separate,
+    /// so that rendering costs a test of each per ray there.
+    pub fn notes(&self) -> Vec<String> {
+        let mut groups: std::collections::HashMap<[u64; 4], (usize, usize)> = std::collections::HashMap::new();
+        for (k, object) in self.objects.iter().enumerate() {
+            if let Some((c, r)) = object.shape.bounds() {
+                groups.entry([c[0].to_bits(), c[1].to_bits(), c[2].to_bits(), r.to_bits()]).or_insert((k, 0)).1 += 1;
+            }
+        }
+        let largest = groups.values().max_by_key(|(_, n)| *n);
+        largest
+            .filter(|(_, n)| *n > CROWD)
+            .map(|&(first, n)| {
+                let (c, r) = self.objects[first].shape.bounds().expect("bounded");
+                let (c, r) = (self.frame.world_point(c), self.frame.world_length(r));
+                format!(
+                    "{n} objects share one bounding sphere (centre [{:.6e}, {:.6e}, {:.6e}], radius {r:.6e}; the first is `{}`): no hierarchy separates them, so each ray that reaches them tests all {n}",
+                    c[0],
+                    c[1],
+                    c[2],
+                    self.objects[first].name.escape_debug()
+                )
+            })
+            .into_iter()
+            .collect()
+    }
+
     /// The image resized to `width × height`; given one, the other follows at the image's
     /// present aspect (`h = round(w h₀ / w₀)`). Pixels stay square — `y_max = x_max h / w` —
     /// unless the file pins both extents ([`Scene::pinned`]): then both are kept, and the

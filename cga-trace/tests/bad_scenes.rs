@@ -107,7 +107,7 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
         (
             "negative light",
             format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 0.0]\ncolour = [-1.0, 1.0, 1.0]\n"),
-            vec!["bad.toml:6:", "light 1"],
+            vec!["bad.toml:8:", "light 1", "`colour`", "≥ 0"],
         ),
         ("bad encoding", format!("{CAMERA}[render]\nencoding = \"gamma\"\n"), vec!["bad.toml:7:", "gamma"]),
         // Counts and sizes beyond crate::limits.

@@ -4,15 +4,25 @@
 //! characters) or a scene that renders without a NaN, in bounded time, without a panic or
 //! an abort; the image sizes it can ask for are bounded by `limits` before allocation.
 //!
-//! `cargo test` runs 3,000 mutants (a few seconds in a debug build). More:
+//! Four more families stress what the file format allows rather than what it refuses:
+//! whole scenes moved and scaled to far and tiny scales (1e-300 … 1e98, shifts to 1e90),
+//! lights moved far away or made directional, and objects or lights repeated into huge
+//! counts; a last test, through the binary, aliases outputs with inputs and with each other
+//! by paths, symbolic and hard links and devices, and checks that no file is ever lost.
+//!
+//! `cargo test` runs 3,000 mutants, 200 of the extreme families and 60 aliasing runs (about
+//! 25 s in a debug build). More:
 //! `CGA_FUZZ_CASES=20000 cargo test --release -p cga-trace --test fuzz -- --nocapture`
 //! (`CGA_FUZZ_SEED` picks another stream).
+
+mod common;
 
 use cga_trace::limits::MAX_PIXELS;
 use cga_trace::{Aov, Renderer, Scene};
 use rand::{RngExt, SeedableRng};
 use rand_xorshift::XorShiftRng;
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::process::Command;
 use std::time::{Duration, Instant};
 
 /// What a number may become.
@@ -138,6 +148,58 @@ fn mutate(text: &str, rng: &mut XorShiftRng) -> String {
     }
 }
 
+/// One mutant of the extreme families: the scene `table` moved and scaled as a whole (a
+/// similarity: the same picture, or a refusal that says it is the scale), its lights moved
+/// far or made directional, or an object or light repeated into the thousands.
+fn extreme(table: &toml::Table, rng: &mut XorShiftRng) -> (String, bool) {
+    use toml::Value;
+    let mut t = table.clone();
+    let similarity = match rng.random_range(0..4) {
+        0 => {
+            // Shifts up to a million times the scene's size (further, its own coordinates
+            // round away: a different scene), attenuation off (its coefficients would leave
+            // the range a file may give).
+            let scale = 10f64.powi(rng.random_range(-300..=98));
+            let shift = if rng.random_range(0..2) == 0 { 0.0 } else { scale * 10f64.powi(rng.random_range(0..=6)) };
+            if let Some(Value::Table(render)) = t.get_mut("render") {
+                render.remove("attenuation");
+            }
+            common::Similarity { scale, shift }.apply(&mut t);
+            true
+        }
+        1 => {
+            let d = 10f64.powi(rng.random_range(4..=100));
+            for light in t.get_mut("lights").and_then(Value::as_array_mut).into_iter().flatten() {
+                let light = light.as_table_mut().expect("a light table");
+                let p = common::triple(&light["position"]);
+                let n = p.iter().map(|x| x * x).sum::<f64>().sqrt().max(1e-300);
+                if rng.random_range(0..3) == 0 {
+                    light.remove("position");
+                    light.insert("direction".into(), common::floats(&p.map(|x| -x / n)));
+                } else {
+                    light.insert("position".into(), common::floats(&p.map(|x| x / n * d)));
+                }
+            }
+            false
+        }
+        k => {
+            // Primitives repeated past a thousand (a swept surface costs too much to build
+            // that often in a debug build), lights past their limit.
+            let primitive =
+                |o: &Value| matches!(o.get("type").and_then(Value::as_str), Some("sphere" | "plane" | "disk"));
+            let key = if k == 2 { "objects" } else { "lights" };
+            let n = [10usize, 100, 1025][rng.random_range(0..3)];
+            if let Some(list) = t.get_mut(key).and_then(Value::as_array_mut)
+                && let Some(first) = list.iter().find(|o| key == "lights" || primitive(o)).cloned()
+            {
+                list.extend(std::iter::repeat_n(first, n));
+            }
+            false
+        }
+    };
+    (toml::to_string(&t).expect("a table"), similarity)
+}
+
 /// Parse and, if accepted, render a shrunken copy; `Err` says what went wrong.
 fn check(text: &str) -> Result<&'static str, String> {
     let scene = match catch_unwind(|| Scene::parse(text, "fuzz.toml")) {
@@ -210,6 +272,156 @@ fn mutated_scenes_error_or_render_cleanly() {
     }
     // Both outcomes are exercised, so the test cannot pass vacuously.
     assert!(errors > cases / 10 && rendered > cases / 10, "{errors} errors, {rendered} renders");
+}
+
+#[test]
+fn scenes_at_any_scale_with_far_lights_and_huge_counts_error_or_render_cleanly() {
+    let cases: usize = std::env::var("CGA_FUZZ_CASES").ok().and_then(|n| n.parse().ok()).map_or(200, |n: usize| n / 8);
+    let seed: u64 = std::env::var("CGA_FUZZ_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(12);
+    let mut rng = XorShiftRng::seed_from_u64(seed ^ 0x5eed);
+    let names = ["primitives.toml", "combined.toml", "surface.toml", "ruled.toml"];
+    let tables: Vec<_> = names.iter().map(|n| common::table(n)).collect();
+    let (mut errors, mut rendered, mut failures) = (0, 0, Vec::new());
+    let hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    for case in 0..cases {
+        let k = case % names.len();
+        let (text, similarity) = extreme(&tables[k], &mut rng);
+        match check(&text) {
+            Ok("error") => {
+                errors += 1;
+                // A whole scene moved or scaled is the same scene: refused only for its scale
+                // (a number the file cannot hold, or a range f64 cannot), never as something
+                // it is not.
+                let e = Scene::parse(&text, "fuzz.toml").err().map(|e| e.to_string()).unwrap_or_default();
+                let about_scale = ["out of range", "f64", "1e100"].iter().any(|w| e.contains(w));
+                if similarity && !about_scale {
+                    failures.push(format!("case {case} (from {}): a similarity refused as `{e}`", names[k]));
+                }
+            }
+            Ok(_) => rendered += 1,
+            Err(why) => failures.push(format!("case {case} (from {}): {why}", names[k])),
+        }
+    }
+    std::panic::set_hook(hook);
+    println!(
+        "{cases} extreme mutants: {errors} located errors, {rendered} rendered cleanly, {} failures",
+        failures.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n----\n"));
+    assert!(rendered > cases / 2, "{errors} errors, {rendered} renders");
+}
+
+/// Random layouts of inputs, existing outputs and links (to the scene, to other files, to
+/// each other, dangling, to devices and directories) and random command lines, run through
+/// the binary: a failed run leaves every file as it was; a successful one changes only the
+/// file its output names (through its links), which then holds an image; no temporary file
+/// is left behind.
+#[cfg(unix)]
+#[test]
+fn outputs_never_lose_a_file_whatever_they_alias() {
+    use std::os::unix::fs::symlink;
+    let runs: usize = std::env::var("CGA_FUZZ_CASES").ok().and_then(|n| n.parse().ok()).map_or(60, |n: usize| n / 50);
+    let seed: u64 = std::env::var("CGA_FUZZ_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(12);
+    let mut rng = XorShiftRng::seed_from_u64(seed ^ 0xa11a5);
+    let scene =
+        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/primitives.toml"))
+            .unwrap()
+            .replace("width = 320", "width = 8")
+            .replace("height = 240", "height = 6");
+    let (mut failures, mut succeeded) = (Vec::new(), 0);
+    for run in 0..runs {
+        let dir = std::env::temp_dir().join(format!("cga-trace-fuzz-outputs-{}-{run}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("sub")).unwrap();
+        let p = |name: &str| dir.join(name);
+        std::fs::write(p("scene.toml"), &scene).unwrap();
+        std::fs::write(p("broken.toml"), "[camera\n").unwrap();
+        std::fs::write(p("old.png"), b"an earlier render").unwrap();
+        std::fs::write(p("sub/v3.png"), b"version 3").unwrap();
+        let names = ["a.png", "b.exr", "c.hdr", "d.png.scale.json", "e.png", "f.obj"];
+        let targets =
+            ["scene.toml", "broken.toml", "old.png", "sub/v3.png", "missing.png", "/dev/null", "/dev/full", "sub"];
+        for name in names {
+            match rng.random_range(0..4) {
+                0 => symlink(targets[rng.random_range(0..targets.len())], p(name)).unwrap(),
+                1 => std::fs::hard_link(p(["scene.toml", "old.png"][rng.random_range(0..2)]), p(name)).unwrap(),
+                2 => std::fs::write(p(name), b"bystander").unwrap(),
+                _ => {}
+            }
+        }
+        let before = snapshot(&dir);
+        let input = ["scene.toml", "scene.toml", "scene.toml", "broken.toml", "old.png", "a.png", "missing.toml"]
+            [rng.random_range(0..7)];
+        let output = [names[rng.random_range(0..names.len())], "old.png", "scene.toml", "sub", "sub/v3.png"]
+            [rng.random_range(0..5)];
+        let mut args = vec!["render", input, "-o", output];
+        let extra: &[&[&str]] =
+            &[&[], &["--aov", "gaussian"], &["--spp", "0"], &["--threads", "3"], &["--bit-depth", "16"]];
+        args.extend(extra[rng.random_range(0..extra.len())]);
+        if output.ends_with(".obj") {
+            args = vec!["mesh", input, "--object", "floor", "-o", output];
+        }
+        let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(&dir).args(&args).output().unwrap();
+        let after = snapshot(&dir);
+        let what = format!("run {run}: {args:?} ({})", String::from_utf8_lossy(&out.stderr).trim());
+        if out.status.code() == Some(101) {
+            failures.push(format!("{what}: panicked"));
+        }
+        if after.iter().any(|(n, _)| n.ends_with(".tmp")) {
+            failures.push(format!("{what}: a temporary file is left"));
+        }
+        // What changed: only the file the output names, and only on success.
+        let written = std::fs::canonicalize(p(output)).ok();
+        for (name, state) in &before {
+            let now = after.iter().find(|(n, _)| n == name).map(|(_, s)| s);
+            let is_target = written.as_ref().is_some_and(|w| std::fs::canonicalize(p(name)).ok().as_ref() == Some(w));
+            let link = std::fs::symlink_metadata(p(name)).is_ok_and(|m| m.file_type().is_symlink());
+            if now != Some(state) && !(out.status.success() && (is_target || link)) {
+                failures.push(format!("{what}: `{name}` changed from {state} to {now:?}"));
+            }
+        }
+        if out.status.success() && !output.ends_with(".obj") && !output.ends_with(".json") {
+            let target = written.unwrap_or_else(|| p(output));
+            if target.is_file() && image::open(&target).is_err() {
+                failures.push(format!("{what}: the output is not an image"));
+            }
+        }
+        succeeded += usize::from(out.status.success());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+    println!("{runs} aliasing runs: {succeeded} wrote their output, {} refused or failed", runs - succeeded);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(succeeded > 0 && succeeded < runs, "both outcomes are exercised");
+}
+
+/// Each entry of a directory (recursively) with what it is: a link's target, or a file's
+/// content hash.
+#[cfg(unix)]
+fn snapshot(dir: &std::path::Path) -> Vec<(String, String)> {
+    use std::hash::{Hash, Hasher};
+    let mut out = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for entry in std::fs::read_dir(&d).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.strip_prefix(dir).unwrap().to_string_lossy().into_owned();
+            let meta = std::fs::symlink_metadata(&path).unwrap();
+            let state = if meta.file_type().is_symlink() {
+                format!("link to {}", std::fs::read_link(&path).unwrap().display())
+            } else if meta.is_dir() {
+                todo.push(path);
+                "directory".into()
+            } else {
+                let mut h = std::collections::hash_map::DefaultHasher::new();
+                std::fs::read(&path).unwrap().hash(&mut h);
+                format!("file {:x}", h.finish())
+            };
+            out.push((name, state));
+        }
+    }
+    out.sort();
+    out
 }
 
 /// The process's peak resident set in KiB (`VmHWM`), where the system reports it.

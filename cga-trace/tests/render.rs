@@ -286,10 +286,11 @@ fn fast_methods_agree_with_dense_sampling() {
         for i in 0..40 {
             let primary = scene.camera.ray(f64::from(i) + 0.5, f64::from(j) + 0.5).unwrap();
             let mut todo = vec![primary];
-            if let Some((hit, _)) = renderer.nearest(&primary, 0.0, f64::INFINITY) {
+            if let Some((hit, object)) = renderer.nearest(&primary, 0.0, f64::INFINITY) {
                 let r = cga_core::euclid::reflect(primary.dir, hit.normal);
-                todo.extend(Ray::leaving(hit.point, hit.normal, r));
-                todo.extend(Ray::leaving(hit.point, hit.normal, sub(scene.lights[0].position, hit.point)));
+                let off = cga_trace::ray::offset(hit.point, primary.origin, object.shape.crossing_error());
+                todo.extend(Ray::leaving(hit.point, hit.normal, r, off));
+                todo.extend(Ray::leaving(hit.point, hit.normal, scene.lights[0].toward(hit.point).0, off));
             }
             for (ray, method) in todo.iter().flat_map(|r| methods.iter().map(move |m| (r, m))) {
                 let m = method.method();
@@ -478,7 +479,8 @@ fn flat_shapes_never_meet_rays_leaving_them() {
                 // Directions from grazing (1e-9 off the plane) to along the normal, both sides.
                 let tilt = [1e-9, 1e-6, 1e-3, 0.1, 1.0][k % 5] * if k % 2 == 0 { 1.0 } else { -1.0 };
                 let along = [0, 1, 2].map(|j| (0.7 * a).cos() * u[j] + (0.7 * a).sin() * v[j] + tilt * n[j]);
-                let Some(ray) = Ray::leaving(x, n, along) else { continue };
+                let off = cga_trace::ray::offset(x, [0.0; 3], shape.crossing_error());
+                let Some(ray) = Ray::leaving(x, n, along, off) else { continue };
                 assert!(shape.intersect(&ray, 0.0, f64::INFINITY).is_none(), "{shape:?} at {offset}, ray {k}");
             }
         }

@@ -72,7 +72,8 @@ fn render_rays(surface: &SplineSurface) -> Vec<Ray> {
         for i in 0..64 {
             let ray = camera.ray(f64::from(i) + 0.5, f64::from(j) + 0.5).unwrap();
             if let Some(hit) = surface.hit(&ray, 0.0, f64::INFINITY) {
-                rays.extend(Ray::leaving(hit.point, hit.normal, sub([-8.0, -10.0, 14.0], hit.point)));
+                let off = cga_trace::ray::offset(hit.point, ray.origin, surface.crossing_error());
+                rays.extend(Ray::leaving(hit.point, hit.normal, sub([-8.0, -10.0, 14.0], hit.point), off));
             }
             rays.push(ray);
         }

@@ -108,6 +108,10 @@ impl Backend for Dense {
     type Carrier = Multivector;
     type Shape = DenseShape;
     const NAME: &'static str = "dense";
+    /// In the orthonormal basis a point's `eo` and `½|x|² ei` share the `e4`, `e5`
+    /// coefficients (`½(|x|² ∓ 1)`), so objects of frame size `s` keep only `ε s²` (large)
+    /// or `ε / s²` (small) of their geometry: 2²⁰ either way keeps it to about 2e-4.
+    const SPAN: i32 = 20;
 
     fn ray(origin: E3, dir: E3) -> Ray<Multivector> {
         // Through `o` and `o + |o|∞ d`: two points as far apart as the origin is large, so

@@ -19,11 +19,13 @@ mod dense;
 mod plain;
 
 use crate::camera::Camera;
+use crate::frame::RANGE;
 use crate::ray::Ray;
 use crate::render::{Cast, Renderer};
+use crate::scene::Scene;
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 use cga_core::Line;
-use cga_core::euclid::E3;
+use cga_core::euclid::{E3, norm};
 pub use dense::{Dense, DenseShape};
 pub use plain::{Plain, PlainShape};
 use std::sync::Arc;
@@ -49,6 +51,10 @@ pub trait Backend: Send + Sync + 'static {
     fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
     /// Whether the back end traces ray packets ([`crate::packet::Packets`]).
     const PACKETS: bool = false;
+    /// How many binary orders of magnitude an object's size may lie from the frame's unit
+    /// for this back end to render it as it is ([`holds`]): the frame's own [`RANGE`] where
+    /// the arithmetic is scale-free (the null basis, plain vectors).
+    const SPAN: i32 = RANGE;
     /// Four neighbouring pixels `(i₀ + k, j)` of a renderer whose packets are on
     /// ([`crate::packet`]); `None` where the back end has none or a camera ray cannot be
     /// formed (the scalar path takes over).
@@ -58,6 +64,24 @@ pub trait Backend: Send + Sync + 'static {
     {
         None
     }
+}
+
+/// Whether back end `B` renders every object of `scene` as it is ([`Backend::SPAN`]): `Err`
+/// says how far the objects' sizes (frame units: the larger of the distance from the camera
+/// and the extent) spread from the frame's unit, where they are beyond it.
+pub fn holds<B: Backend>(scene: &Scene) -> Result<(), String> {
+    let sizes = scene.objects.iter().filter_map(|o| o.shape.bounds()).map(|(c, r)| norm(c).max(r));
+    let (lo, hi) = sizes.fold((f64::INFINITY, 0.0f64), |(lo, hi), s| (lo.min(s), hi.max(s)));
+    let limit = 2f64.powi(B::SPAN);
+    if hi <= limit && (hi == 0.0 || lo >= 1.0 / limit) {
+        return Ok(());
+    }
+    Err(format!(
+        "the {} back end holds objects within 2^{} (about {:.0e}) of the scene's size either way; this scene's run from {lo:.1e} to {hi:.1e} of it (render it with --backend sparse)",
+        B::NAME,
+        B::SPAN,
+        limit
+    ))
 }
 
 /// The generated grade-sparse types (the default back end).

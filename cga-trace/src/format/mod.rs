@@ -8,13 +8,14 @@
 //! `motor` or `transform` (`transform.rs`).
 
 mod numbers;
+pub(crate) mod sections;
 mod transform;
 
 pub(crate) use numbers::{number, numbers};
 
 use crate::camera::{Camera, CameraError};
 use crate::frame::Frame;
-use crate::light::Light;
+use crate::light::{Light, Source};
 use crate::limits::MAX_SIDE;
 use crate::material::Material;
 use crate::scene::{Invalid, Object};
@@ -26,13 +27,14 @@ use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
 #[cfg(feature = "evolved")]
 use cga_core::Joining;
 use cga_core::euclid::E3;
-use cga_core::{Circle, GeometryError, Motor, Plane, Rotor, Sandwich, Sphere, down, up};
+use cga_core::euclid::{norm, sub};
+use cga_core::{Circle, GeometryError, Motor, Plane, Real, circumcircle, circumsphere};
 use numbers::{Num, Nums, V3};
 use serde::Deserialize;
 use std::ops::Range;
 use std::sync::Arc;
 use toml::Spanned;
-use transform::{Step, in_frame, rigid, world_motor};
+use transform::{Placement, Step, rigid, world_motor};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -40,9 +42,57 @@ pub(crate) struct SceneFile {
     pub camera: Spanned<CameraSpec>,
     pub render: Option<Spanned<Settings>>,
     #[serde(default)]
-    pub lights: Vec<Spanned<Light>>,
-    #[serde(default)]
-    pub objects: Vec<Spanned<ObjectSpec>>,
+    pub lights: Vec<Spanned<LightSpec>>,
+    /// Read one at a time by [`Scene::parse`](crate::Scene::parse), which takes the list out
+    /// first; here only to report an `objects` that is not a list.
+    #[serde(default, rename = "objects")]
+    pub _objects: Vec<serde::de::IgnoredAny>,
+}
+
+/// A `[[lights]]` table: `position` (a point light) or `direction` (a directional light: the
+/// way its light travels), and a colour.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct LightSpec {
+    position: Option<Spanned<V3>>,
+    direction: Option<Spanned<V3>>,
+    colour: Option<Spanned<V3>>,
+}
+
+impl LightSpec {
+    /// The light in `frame`: colour non-negative; a point light's position one the frame
+    /// holds; a directional light's direction not zero.
+    pub(crate) fn build(self, frame: &Frame) -> Result<Light, Invalid> {
+        let colour = self.colour.as_ref().map_or([1.0; 3], |c| c.get_ref().0);
+        if let Some(c) = self.colour.as_ref().filter(|_| colour.iter().any(|&c| c < 0.0)) {
+            return Err(Invalid::at("colour", c.span(), Invalid::Value("a light's colour must be ≥ 0")));
+        }
+        let source = match (self.position, self.direction) {
+            (Some(p), None) => {
+                // A light forms no conformal products: any distance the frame holds will do.
+                let x = frame.point(p.get_ref().0);
+                if !x.iter().all(|c| c.is_finite()) {
+                    let why = format!(
+                        "the light is {:.1e} from the camera, more than f64 holds in units of the scene's size ({:.1e}): give it as `direction` (a light that far is a directional light)",
+                        norm(sub(p.get_ref().0, frame.origin)),
+                        frame.scale
+                    );
+                    return Err(Invalid::at("position", p.span(), Invalid::Range(why)));
+                }
+                Source::Point(x)
+            }
+            (None, Some(d)) => {
+                let unit = cga_core::euclid::unit(d.get_ref().0);
+                Source::Directional(unit.ok_or(Invalid::at("direction", d.span(), GeometryError::ZeroVector.into()))?)
+            }
+            _ => {
+                return Err(Invalid::Form(
+                    "a light takes `position` (a point light) or `direction` (a directional light), not both",
+                ));
+            }
+        };
+        Ok(Light { source, colour })
+    }
 }
 
 /// The camera: a pose (`position`, `look_at`, `up`, or a `motor`), focal length, image-plane
@@ -67,14 +117,21 @@ pub(crate) struct CameraSpec {
 }
 
 impl CameraSpec {
-    /// The camera in world coordinates, checked, and whether the file gives both image-plane
-    /// extents (pixels then need not be square).
-    pub(crate) fn world(self) -> Result<(Camera, bool), Invalid> {
+    /// The camera in its own frame (it only turns there), checked; where it is in the world;
+    /// and whether the file gives both image-plane extents (pixels then need not be square).
+    /// The position is read from the pose's coefficients, never through a conformal point,
+    /// so it is exact wherever the camera is.
+    pub(crate) fn build(self) -> Result<(Camera, E3, bool), Invalid> {
         let pose = match (self.motor, self.position, self.look_at) {
             (Some(m), None, None) => rigid(m.get_ref().0).map_err(|e| Invalid::at("motor", m.span(), e))?,
             (None, Some(p), Some(t)) => Camera::pose_look_at(p.0, t.0, self.up.map_or([0.0, 0.0, 1.0], |u| u.0))?,
             _ => return Err(Invalid::Value("give either `motor`, or `position` and `look_at`")),
         };
+        let position = match self.position {
+            Some(p) => p.0,
+            None => pose.translation(),
+        };
+        let pose = Motor::from(pose.rotor());
         let (width, height) = (*self.width.get_ref(), *self.height.get_ref());
         let value = |x: &Option<Spanned<Num>>| x.as_ref().map(|x| x.get_ref().0);
         let focal = value(&self.focal_length).unwrap_or(1.0);
@@ -97,17 +154,8 @@ impl CameraSpec {
             CameraError::TooLarge { .. } => Invalid::at("width", self.width.span(), e.into()),
             e => e.into(),
         })?;
-        Ok((camera, pinned))
+        Ok((camera, position, pinned))
     }
-}
-
-/// The camera in the frame centred on it (sized by `anchors`), and that frame.
-pub(crate) fn build_camera(c: &Camera, anchors: Vec<E3>) -> Result<(Camera, Frame), Invalid> {
-    let frame = Frame::around(c.position(), anchors);
-    // In its own frame the camera only turns: M = T R, and R is M's scalar and e_jk parts.
-    let turn = Motor::from(Rotor { s: c.pose.s, e12: c.pose.e12, e13: c.pose.e13, e23: c.pose.e23 });
-    let camera = Camera::new(turn, c.focal, c.x_max, c.y_max, c.width, c.height)?;
-    Ok((camera, frame))
 }
 
 /// What an object is.
@@ -232,29 +280,75 @@ pub(crate) struct CircleSpec {
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
 }
 
-/// `N` points from a `points` or `corners` field, in `frame`.
-fn points<const N: usize>(field: &'static str, p: &Spanned<Vec<V3>>, frame: &Frame) -> Result<[E3; N], Invalid> {
+/// `N` points from a `points` or `corners` field, in world coordinates.
+fn points<const N: usize>(field: &'static str, p: &Spanned<Vec<V3>>) -> Result<[E3; N], Invalid> {
     let given = p.get_ref();
     if given.len() != N {
         let reason = Invalid::Count { what: "points", expected: N, found: given.len() };
         return Err(Invalid::at(field, p.span(), reason));
     }
-    Ok(std::array::from_fn(|k| frame.point(given[k].0)))
+    Ok(std::array::from_fn(|k| given[k].0))
 }
 
 impl ObjectSpec {
-    /// A point that places the object (for sizing the scene's frame), if it has one.
-    pub(crate) fn anchor(&self) -> Option<E3> {
-        let first = |p: &Option<Spanned<Vec<V3>>>| p.as_ref().and_then(|p| p.get_ref().first()).map(|x| x.0);
-        (self.centre.as_ref().or(self.point.as_ref()).map(|c| c.get_ref().0))
-            .or_else(|| first(&self.points))
-            .or_else(|| first(&self.corners))
-            .or_else(|| first(&self.p1))
-            .or_else(|| self.l1.as_ref().map(|l| l.get_ref().point.0))
-            .or_else(|| self.c1.as_ref().and_then(|c| c.get_ref().centre.map(|c| c.0)))
-            .or_else(|| {
-                self.circles.as_ref().and_then(|c| c.get_ref().first()).and_then(|c| c.get_ref().centre.map(|c| c.0))
-            })
+    /// Where the object is and how large, in world coordinates, for sizing the scene's frame:
+    /// a point of it (moved by its motor) and its extent (a radius, or the spread of its
+    /// points; 0 for a plane), if the file says; `None` for what only a blade gives.
+    pub(crate) fn extent(&self) -> Option<(E3, f64)> {
+        let spread = |p: &[V3]| p.iter().map(|x| norm(sub(x.0, p[0].0))).fold(0.0, f64::max);
+        let radius = self.radius.as_ref().map_or(0.0, |r| r.get_ref().0);
+        let circle = |c: &CircleSpec| c.centre.map(|x| (x.0, c.radius.map_or(0.0, |r| r.0)));
+        let (point, extent) = if self.kind == Kind::Plane {
+            let p =
+                self.point.as_ref().map(|p| p.get_ref().0).or_else(|| Some(self.points.as_ref()?.get_ref().first()?.0));
+            (p?, f64::INFINITY)
+        } else if let Some(c) = self.centre.as_ref().or(self.point.as_ref()) {
+            (c.get_ref().0, radius)
+        } else if let Some(p) = self.points.as_ref().or(self.corners.as_ref()).or(self.p1.as_ref()) {
+            (p.get_ref().first()?.0, spread(p.get_ref()))
+        } else if let Some(b) = &self.bound {
+            (b.get_ref().centre.0, b.get_ref().radius.0)
+        } else if let Some(c) = &self.c1 {
+            let (x, r) = circle(c.get_ref())?;
+            let r2 = self.c2.as_ref().and_then(|c| circle(c.get_ref())).map_or(0.0, |(y, r2)| r2 + norm(sub(x, y)));
+            (x, r.max(r2))
+        } else {
+            let circles = self.circles.as_ref()?.get_ref();
+            let (x, r) = circle(circles.first()?.get_ref())?;
+            let far = circles.iter().filter_map(|c| circle(c.get_ref())).map(|(y, r)| r + norm(sub(x, y)));
+            (x, far.fold(r, f64::max))
+        };
+        let motor = world_motor(self.motor.as_ref(), self.transform.as_ref()).ok().flatten();
+        Some((motor.map_or(point, |m| m.move_point(point)), extent))
+    }
+
+    /// [`ObjectSpec::extent`] of an object as parsed, read from its placement fields alone
+    /// (what else it holds is checked when it is built).
+    pub(crate) fn extent_of(value: &Spanned<toml::de::DeValue<'_>>) -> Result<Option<(E3, f64)>, toml::de::Error> {
+        use serde::de::IntoDeserializer;
+        const READ: [&str; 14] = [
+            "type",
+            "material",
+            "centre",
+            "point",
+            "radius",
+            "points",
+            "corners",
+            "p1",
+            "bound",
+            "c1",
+            "c2",
+            "circles",
+            "motor",
+            "transform",
+        ];
+        let toml::de::DeValue::Table(table) = value.get_ref() else { return Ok(None) };
+        let mut placement = toml::de::DeTable::new();
+        for (key, v) in table.iter().filter(|(k, _)| READ.contains(&k.get_ref().as_ref())) {
+            placement.insert(key.clone(), v.clone());
+        }
+        let table = Spanned::new(value.span(), toml::de::DeValue::Table(placement));
+        Ok(ObjectSpec::deserialize(table.into_deserializer())?.extent())
     }
 
     /// The geometry fields given, with their spans.
@@ -310,83 +404,72 @@ impl ObjectSpec {
         self.build(method, frame).map_err(|e| self.locate(e))
     }
 
-    /// The shape, in `frame`: fields checked against the kind, built, then moved.
+    /// The shape, in `frame`: fields checked against the kind, its Euclidean data (made from
+    /// points, if given so, in world coordinates) moved by its motor into the frame, built.
     fn build(&self, method: Method, frame: &Frame) -> Result<Arc<dyn Shape>, Invalid> {
         let (takes, says) = self.kind.takes();
         if let Some((field, span)) = self.given().into_iter().find(|(f, _)| !takes.contains(f)) {
             return Err(Invalid::at(field, span, Invalid::Form(says)));
         }
-        let motor = world_motor(self.motor.as_ref(), self.transform.as_ref())?.map(|m| in_frame(m, frame));
+        let place = Placement::new(world_motor(self.motor.as_ref(), self.transform.as_ref())?, frame);
         let v = |x: &Option<Spanned<V3>>| x.as_ref().map(|x| x.get_ref().0);
-        let (centre, normal, point) = (v(&self.centre).map(|c| frame.point(c)), v(&self.normal), v(&self.point));
-        let radius = self.radius.as_ref().map(|r| frame.length(r.get_ref().0));
+        let (centre, normal, point) = (v(&self.centre), v(&self.normal), v(&self.point));
+        let radius = self.radius.as_ref().map(|r| r.get_ref().0);
         let form = || Invalid::Form(says);
         Ok(match self.kind {
             Kind::Sphere => {
                 let (c, r) = match (centre, radius, &self.points) {
                     (Some(c), Some(r), None) => (c, r),
                     (None, None, Some(p)) => {
-                        let [a, b, c, d] = points("points", p, frame)?;
-                        Sphere::through(a, b, c, d)?.centre_radius()?
+                        let [a, b, c, d] = points("points", p)?;
+                        let (c, r, _) = circumsphere(a, b, c, d)?;
+                        (c, r)
                     }
                     _ => return Err(form()),
                 };
-                let (c, r) = match motor {
-                    Some(m) => m.sandwich(Sphere::from_centre_radius(c, r)?).centre_radius()?,
-                    None => (c, r),
-                };
-                Arc::new(SphereShape::new(c, r)?)
+                Arc::new(SphereShape::new(place.point(c)?, place.length(r))?)
             }
             Kind::Plane => {
                 let (p, n) = match (point, normal, &self.points) {
-                    (Some(p), Some(n), None) => (frame.point(p), n),
+                    (Some(p), Some(n), None) => (p, n),
                     (None, None, Some(p)) => {
-                        let [a, b, c] = points("points", p, frame)?;
+                        let [a, b, c] = points("points", p)?;
                         let (n, _) = Plane::through(a, b, c)?.normal_offset()?;
                         (a, n)
                     }
                     _ => return Err(form()),
                 };
-                let (p, n) = match motor {
-                    Some(m) => {
-                        let (n, d) = m.sandwich(Plane::from_point_normal(p, n)?).normal_offset()?;
-                        (n.map(|x| x * d), n)
-                    }
-                    None => (p, n),
-                };
-                Arc::new(PlaneShape::new(p, n)?)
+                Arc::new(PlaneShape::new(place.point(p)?, place.direction(n))?)
             }
             Kind::Disk => {
                 let (c, n, r) = match (centre, normal, radius, &self.points) {
                     (Some(c), Some(n), Some(r), None) => (c, n, r),
                     (None, None, None, Some(p)) => {
-                        let [a, b, c] = points("points", p, frame)?;
-                        Circle::through(a, b, c)?.centre_normal_radius()?
+                        let [a, b, c] = points("points", p)?;
+                        circumcircle(a, b, c)?
                     }
                     _ => return Err(form()),
                 };
-                let (c, n, r) = moved_circle(motor, (c, n, r))?;
-                Arc::new(DiskShape::new(c, n, r)?)
+                Arc::new(DiskShape::new(place.point(c)?, place.direction(n), place.length(r))?)
             }
             Kind::Triangle => {
                 let corners = self.corners.as_ref().ok_or_else(form)?;
-                let mut corners: [E3; 3] = points("corners", corners, frame)?;
-                if let Some(m) = motor {
-                    for x in &mut corners {
-                        *x = down(m.sandwich(up(*x)))?;
-                    }
-                }
-                Arc::new(TriangleShape::new(corners)?)
+                let corners: [E3; 3] = points("corners", corners)?;
+                // Checked as given: corners that coincide only after the move are a scale
+                // problem (`Range`), not the user's.
+                TriangleShape::new(corners)?;
+                let [a, b, c] = corners;
+                Arc::new(TriangleShape::new([place.point(a)?, place.point(b)?, place.point(c)?])?)
             }
             #[cfg(feature = "evolved")]
             Kind::Evolved => match (&self.c1, &self.c2) {
-                (Some(c1), Some(c2)) => Arc::new(evolved(c1, c2, motor, method, frame)?),
+                (Some(c1), Some(c2)) => Arc::new(evolved(c1, c2, &place, method)?),
                 _ => return Err(form()),
             },
             #[cfg(feature = "evolved")]
-            Kind::Spline => Arc::new(self.spline(motor, method, frame)?),
+            Kind::Spline => Arc::new(self.spline(&place, method)?),
             #[cfg(feature = "evolved")]
-            Kind::Ruled => Arc::new(self.ruled(motor, frame)?),
+            Kind::Ruled => Arc::new(self.ruled(&place)?),
             #[cfg(not(feature = "evolved"))]
             Kind::Evolved | Kind::Spline | Kind::Ruled => {
                 let _ = method;
@@ -399,8 +482,8 @@ impl ObjectSpec {
 #[cfg(feature = "evolved")]
 impl ObjectSpec {
     /// A spline surface through `circles`, each moved by its own transform and then by the
-    /// object's `motor` (already in `frame`).
-    fn spline(&self, motor: Option<Motor>, method: Method, frame: &Frame) -> Result<SplineSurface, Invalid> {
+    /// object's (`place`).
+    fn spline(&self, place: &Placement, method: Method) -> Result<SplineSurface, Invalid> {
         let form = || Invalid::Form(Kind::Spline.takes().1);
         let circles = self.circles.as_ref().ok_or_else(form)?;
         let joining = self.joining.as_ref().map_or(JoiningSpec::Linear, |j| *j.get_ref());
@@ -433,7 +516,7 @@ impl ObjectSpec {
             let reason = |e| {
                 Invalid::at("circles", c.span(), Invalid::Indexed { what: "circle", index: k + 1, reason: Box::new(e) })
             };
-            built.push(circle(c.get_ref(), motor, frame).map_err(reason)?);
+            built.push(circle(c.get_ref(), place).map_err(reason)?);
         }
         Ok(SplineSurface::new(&built, joining, method)?)
     }
@@ -441,42 +524,25 @@ impl ObjectSpec {
 
 #[cfg(feature = "evolved")]
 impl ObjectSpec {
-    /// A ruled surface of point pairs or of lines, moved by the object's `motor` (in
-    /// `frame`), in a local frame at the mean of its defining points.
-    fn ruled(&self, motor: Option<Motor>, frame: &Frame) -> Result<RuledSurface, Invalid> {
+    /// A ruled surface of point pairs or of lines, moved into the frame by `place`, in a local
+    /// frame at the mean of its defining points.
+    fn ruled(&self, place: &Placement) -> Result<RuledSurface, Invalid> {
         let form = || Invalid::Form(Kind::Ruled.takes().1);
-        let moved = |x: E3| -> Result<E3, Invalid> {
-            Ok(match motor {
-                Some(m) => down(m.sandwich(up(frame.point(x))))?,
-                None => frame.point(x),
-            })
-        };
-        let turned = |d: E3| -> Result<E3, Invalid> {
-            Ok(match motor {
-                Some(m) => {
-                    let r = Rotor { s: m.s, e12: m.e12, e13: m.e13, e23: m.e23 };
-                    let v = r.sandwich(cga_core::Vector::from_array([d[0], d[1], d[2], 0.0, 0.0])).to_array();
-                    [v[0], v[1], v[2]]
-                }
-                None => d,
-            })
-        };
         let surface = match (&self.p1, &self.p2, &self.l1, &self.l2, &self.bound) {
             (Some(p1), Some(p2), None, None, None) => {
-                let (p1, p2): ([E3; 2], [E3; 2]) =
-                    (points("p1", p1, &Frame::default())?, points("p2", p2, &Frame::default())?);
-                let (p1, p2) = ([moved(p1[0])?, moved(p1[1])?], [moved(p2[0])?, moved(p2[1])?]);
+                let (p1, p2): ([E3; 2], [E3; 2]) = (points("p1", p1)?, points("p2", p2)?);
+                let (p1, p2) = ([place.point(p1[0])?, place.point(p1[1])?], [place.point(p2[0])?, place.point(p2[1])?]);
                 let origin = [0, 1, 2].map(|k| (p1[0][k] + p1[1][k] + p2[0][k] + p2[1][k]) / 4.0);
-                let local = |x: E3| cga_core::euclid::sub(x, origin);
+                let local = |x: E3| sub(x, origin);
                 RuledSurface::point_pairs(origin, p1.map(local), p2.map(local))?
             }
             (None, None, Some(l1), Some(l2), Some(bound)) => {
                 let (l1, l2, b) = (l1.get_ref(), l2.get_ref(), bound.get_ref());
-                let origin = moved(b.centre.0)?;
-                let local = |x: E3| -> Result<E3, Invalid> { Ok(cga_core::euclid::sub(moved(x)?, origin)) };
-                let line =
-                    |l: &LineSpec| -> Result<(E3, E3), Invalid> { Ok((local(l.point.0)?, turned(l.direction.0)?)) };
-                let radius = frame.length(b.radius.0);
+                let origin = place.point(b.centre.0)?;
+                let line = |l: &LineSpec| -> Result<(E3, E3), Invalid> {
+                    Ok((sub(place.point(l.point.0)?, origin), place.direction(l.direction.0)))
+                };
+                let radius = place.length(b.radius.0);
                 if radius <= 0.0 {
                     return Err(Invalid::at(
                         "bound",
@@ -490,14 +556,6 @@ impl ObjectSpec {
         };
         Ok(surface)
     }
-}
-
-/// A circle's centre, normal and radius after the sandwich `M C M̃`, if there is a motor.
-fn moved_circle(motor: Option<Motor>, (c, n, r): (E3, E3, f64)) -> Result<(E3, E3, f64), Invalid> {
-    Ok(match motor {
-        Some(m) => m.sandwich(Circle::from_centre_normal_radius(c, n, r)?).centre_normal_radius()?,
-        None => (c, n, r),
-    })
 }
 
 /// The object, built in `frame`, and its name (for errors, control characters escaped).
@@ -515,21 +573,20 @@ pub(crate) fn build_object(
 }
 
 /// An evolved surface, its circles built in the frame of [`EvolvedSurface::frame_origin`]
-/// (inside `frame`), each moved by its own transform and then by the object's.
+/// (inside the scene's frame), each moved by its own transform and then by the object's.
 #[cfg(feature = "evolved")]
 fn evolved(
     c1: &Spanned<CircleSpec>,
     c2: &Spanned<CircleSpec>,
-    motor: Option<Motor>,
+    place: &Placement,
     method: Method,
-    frame: &Frame,
 ) -> Result<EvolvedSurface, Invalid> {
     let on = |which, span: Range<usize>| move |e| Invalid::at(which, span.clone(), e);
     let (s1, s2) = (c1.span(), c2.span());
-    let (c1, n1, r1) = circle(c1.get_ref(), motor, frame).map_err(on("c1", s1.clone()))?;
-    let (c2, n2, r2) = circle(c2.get_ref(), motor, frame).map_err(on("c2", s2.clone()))?;
+    let (c1, n1, r1) = circle(c1.get_ref(), place).map_err(on("c1", s1.clone()))?;
+    let (c2, n2, r2) = circle(c2.get_ref(), place).map_err(on("c2", s2.clone()))?;
     let origin = EvolvedSurface::frame_origin((c1, r1), (c2, r2));
-    let local = |c: E3, n, r| Circle::from_centre_normal_radius(cga_core::euclid::sub(c, origin), n, r);
+    let local = |c: E3, n, r| Circle::from_centre_normal_radius(sub(c, origin), n, r);
     let c1 = local(c1, n1, r1).map_err(|e| on("c1", s1)(e.into()))?;
     let c2 = local(c2, n2, r2).map_err(|e| on("c2", s2)(e.into()))?;
     Ok(EvolvedSurface::in_frame(origin, c1, c2, method)?)
@@ -539,26 +596,28 @@ fn evolved(
 #[cfg(feature = "evolved")]
 const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
 
-/// The centre, normal and radius of a circle spec in `frame`, moved by its own transform and
-/// then by `outer` (the object's, already in `frame`). A blade is read in world coordinates
-/// (where the file gives it) and then moved: its coefficients carry the circle no better
-/// than `ε (|c|/r)²` there, which is what the file holds.
+/// The centre, normal and radius of a circle spec, moved by its own transform and then by
+/// the object's `place` (its motor and the frame). A blade is read in world coordinates
+/// (where the file gives it): its coefficients carry the circle no better than
+/// `ε (|c|/r)²` there, which is what the file holds.
 #[cfg(feature = "evolved")]
-fn circle(spec: &CircleSpec, outer: Option<Motor>, frame: &Frame) -> Result<(E3, E3, f64), Invalid> {
-    let own = world_motor(spec.motor.as_ref(), spec.transform.as_ref())?.map(|m| in_frame(m, frame));
-    let circle = match (spec.blade, spec.centre, spec.normal, spec.radius, &spec.points) {
+fn circle(spec: &CircleSpec, place: &Placement) -> Result<(E3, E3, f64), Invalid> {
+    let (c, n, r) = match (spec.blade, spec.centre, spec.normal, spec.radius, &spec.points) {
         (Some(b), None, None, None, None) => {
             let mut dense = cga_core::Multivector::zero();
+            // A blade and its multiples are one circle: scaled near 1 before normalising,
+            // so that coefficients of any size f64 holds square without underflow.
+            let largest = b.0.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            let unit = Real::binade(largest);
             for (name, value) in BLADE_ORDER.iter().zip(b.0) {
                 let k = cga_core::Multivector::<f64>::BLADES
                     .iter()
                     .position(|x| x == name)
                     .ok_or(Invalid::Value("blade order"))?;
-                dense.coeffs[k] = value;
+                dense.coeffs[k] = value / unit;
             }
             let c = Circle::from_dense(&dense).try_normalise().ok_or(Invalid::Value("the blade is zero or null"))?;
-            let (c, n, r) = c.centre_normal_radius()?;
-            (frame.point(c), n, frame.length(r))
+            c.centre_normal_radius()?
         }
         (None, Some(c), Some(n), Some(r), None) => {
             // A zero radius or normal (numbers are finite) is named here, before the frame or a
@@ -567,17 +626,19 @@ fn circle(spec: &CircleSpec, outer: Option<Motor>, frame: &Frame) -> Result<(E3,
                 return Err(GeometryError::ZeroRadius.into());
             }
             cga_core::euclid::unit(n.0).ok_or(GeometryError::ZeroVector)?;
-            (frame.point(c.0), n.0, frame.length(r.0))
+            (c.0, n.0, r.0)
         }
         (None, None, None, None, Some(p)) => {
-            let [a, b, c] = points("points", p, frame)?;
-            Circle::through(a, b, c)?.centre_normal_radius()?
+            let [a, b, c] = points("points", p)?;
+            circumcircle(a, b, c)?
         }
         _ => return Err(Invalid::Form("give `blade`, or `centre`, `normal` and `radius`, or `points` (three)")),
     };
-    let motor = match (own, outer) {
-        (Some(a), Some(b)) => Some(b * a),
-        (a, b) => a.or(b),
+    // Its own transform, then the object's placement.
+    let own = world_motor(spec.motor.as_ref(), spec.transform.as_ref())?;
+    let (c, n) = match own {
+        Some(m) => (m.move_point(c), m.move_direction(n)),
+        None => (c, n),
     };
-    moved_circle(motor, circle)
+    Ok((place.point(c)?, place.direction(n), place.length(r)))
 }

@@ -110,13 +110,60 @@ pub(crate) fn world_motor(
     }
 }
 
-/// A world motor as it acts in `frame`: `T_t R ↦ T_t' R`, `t' = (R o + t − o) / s`.
-pub(crate) fn in_frame(m: Motor, frame: &Frame) -> Motor {
-    let rotor = Rotor { s: m.s, e12: m.e12, e13: m.e13, e23: m.e23 };
-    let p = m * rotor.reverse();
-    let t = [p.e1i, p.e2i, p.e3i].map(|x| -2.0 * x);
-    let o = frame.origin;
-    let ro = rotor.sandwich(Vector::from_array([o[0], o[1], o[2], 0.0, 0.0])).to_array();
-    let shift: E3 = [0, 1, 2].map(|k| (ro[k] + t[k] - o[k]) / frame.scale);
-    Motor::from_rotor_translator(rotor, Translator::from_vector(shift))
+/// Where an object's world coordinates go: its rigid world motor (if any) `x ↦ R x + t`,
+/// then the frame's `x ↦ (x − o) / s`, in one step `x ↦ (R x + (t − o)) / s`. The translation
+/// is taken relative to the camera first, so a motor that carries an object next to a
+/// distant camera loses nothing to the distance, and no conformal point `up(x)` (whose `½|x|²`
+/// costs `ε |x|²`) is formed: Euclidean data moves with `ε |x|` of rounding, as given.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Placement {
+    rotor: Option<Rotor>,
+    shift: E3,
+    scale: f64,
+}
+
+impl Placement {
+    /// The world motor `m` (if any) followed by the change to `frame`.
+    pub(crate) fn new(m: Option<Motor>, frame: &Frame) -> Self {
+        let (rotor, t) = match m {
+            Some(m) => (Some(m.rotor()), m.translation()),
+            None => (None, [0.0; 3]),
+        };
+        let o = frame.origin;
+        Placement { rotor, shift: [0, 1, 2].map(|k| t[k] - o[k]), scale: frame.scale }
+    }
+
+    /// A world point in the frame, moved; refused where the frame cannot hold it beside the
+    /// rest of the scene ([`Frame::holds`]: a motor that carries the object too far, or an
+    /// object too far from the others).
+    pub(crate) fn point(&self, x: E3) -> Result<E3, Invalid> {
+        let r = self.direction(x);
+        let moved: E3 = [0, 1, 2].map(|k| (r[k] + self.shift[k]) / self.scale);
+        let distance = moved.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        if Frame::holds(distance) {
+            return Ok(moved);
+        }
+        let moves = if self.rotor.is_some() { "its motor carries it to" } else { "it lies" };
+        Err(Invalid::Range(format!(
+            "{moves} {:.1e} from the camera, {distance:.1e} times the scene's size ({:.1e}): beyond the 2^200 f64 renders beside the rest of the scene",
+            distance * self.scale,
+            self.scale
+        )))
+    }
+
+    /// A world direction, turned.
+    pub(crate) fn direction(&self, d: E3) -> E3 {
+        match self.rotor {
+            Some(r) => {
+                let v = r.sandwich(Vector::from_array([d[0], d[1], d[2], 0.0, 0.0])).to_array();
+                [v[0], v[1], v[2]]
+            }
+            None => d,
+        }
+    }
+
+    /// A world length in the frame.
+    pub(crate) fn length(&self, l: f64) -> f64 {
+        l / self.scale
+    }
 }

@@ -15,12 +15,13 @@ mod sparse;
 
 use crate::backend::Backend;
 use crate::camera::Camera;
-use crate::light::Light;
+use crate::light::{self, Light};
 use crate::material::{Material, power};
 use crate::ray::Ray;
+use crate::ray::offset;
 #[cfg(doc)]
 use crate::render::light_term;
-use crate::render::{Cast, Layers, Renderer, T_MIN, sample_offset, sum_layers};
+use crate::render::{Cast, Layers, Renderer, sample_offset, sum_layers};
 use crate::scene::Object;
 use crate::shapes::{Crossing, Hit};
 use cga_core::Real;
@@ -122,26 +123,32 @@ fn select(keep: &[bool; 4], x: [F64x4; 3], other: E3) -> [F64x4; 3] {
     })
 }
 
-/// [`leaving_origin`](crate::ray::leaving_origin) in lanes: `x ± 1e-6 (1 + |x|∞) n`, on
-/// the side of the ray's direction, `n_dir` being `n · dir`.
+/// [`leaving_origin`](crate::ray::leaving_origin) in lanes: `x ± offset n`, on the side of
+/// the ray's direction, `n_dir` being `n · dir`.
 #[inline(always)]
-fn leaving_origin4(x: [F64x4; 3], n: [F64x4; 3], n_dir: F64x4) -> [F64x4; 3] {
+fn leaving_origin4(x: [F64x4; 3], n: [F64x4; 3], n_dir: F64x4, offset: F64x4) -> [F64x4; 3] {
     let side = F64x4::new(n_dir.to_array().map(|c| if c >= 0.0 { 1.0 } else { -1.0 }));
-    let largest = x.iter().fold(F64x4::splat(1.0), |m, v| m.max(v.abs()));
-    add(x, scale(n, side * (F64x4::splat(1e-6) * largest)))
+    add(x, scale(n, side * offset))
 }
 
-/// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane); the other
-/// lanes keep their ray (a zero normal reflects nothing).
+/// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane, each off its
+/// object's crossing error `errors`); the other lanes keep their ray (a zero normal reflects
+/// nothing).
 #[inline(always)]
-fn mirror_packet<B: Packets>(p: &Packet<B>, hits: &[Option<(Hit, &Object)>; 4], bounce: &[bool; 4]) -> Packet<B> {
+fn mirror_packet<B: Packets>(
+    p: &Packet<B>,
+    hits: &[Option<(Hit, &Object)>; 4],
+    errors: &[f64; 4],
+    bounce: &[bool; 4],
+) -> Packet<B> {
     let at = |l: usize| match hits[l] {
         Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
         _ => (p.rays[l].origin, [0.0; 3]),
     };
     let (x, n) = (lanes3(core::array::from_fn(|l| at(l).0)), lanes3(core::array::from_fn(|l| at(l).1)));
     let r = reflect(p.dir, n);
-    B::packet(leaving_origin4(x, n, dot(n, r)), r)
+    let offset = offset(x, p.origin, F64x4::new(*errors));
+    B::packet(leaving_origin4(x, n, dot(n, r), offset), r)
 }
 
 /// A material for lanes without a hit (their terms are not used).
@@ -175,14 +182,15 @@ impl<'a, B: Packets> Renderer<'a, B> {
         B::cross4(&self.shapes[k], p, t_min, t_max)
     }
 
-    /// The nearest crossing per active lane over all objects, and its object.
+    /// The nearest crossing per active lane over all objects (each beyond its crossing error,
+    /// [`Renderer::t_min`]), and its object.
     #[inline(always)]
     fn nearest_packet(&self, p: &Packet<B>, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
         // An inactive lane's range is empty: it finds nothing.
-        let t_min = [T_MIN; 4];
         let mut t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
         let mut best = [None; 4];
         for k in 0..self.shapes.len() {
+            let t_min = [self.t_min(k, 0.0); 4];
             for (l, c) in self.cross(k, p, &t_min, &t_max).into_iter().enumerate() {
                 if let Some(c) = c {
                     t_max[l] = c.t;
@@ -200,8 +208,8 @@ impl<'a, B: Packets> Renderer<'a, B> {
     fn blocked_packet(&self, p: &Packet<B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
         let mut blocked = t_max.map(|t| t.is_nan() || t <= 0.0);
         let active = blocked.map(|b| !b);
-        let t_min = [0.0; 4];
         for k in 0..self.shapes.len() {
+            let t_min = [self.t_min(k, 0.0); 4];
             if blocked.iter().all(|&b| b) {
                 break;
             }
@@ -285,7 +293,8 @@ impl<'a, B: Packets> Renderer<'a, B> {
                     (Hit { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
                 })
             });
-            let local = self.shade_packet(&packet, &hits, &own, cast);
+            let errors = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
+            let local = self.shade_packet(&packet, &hits, &own, &errors, cast);
             let mut bounce = [false; 4];
             for l in 0..4 {
                 if !active[l] {
@@ -305,7 +314,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
                 bounce[l] = true;
             }
             if bounce.iter().any(|&b| b) {
-                packet = mirror_packet(&packet, &hits, &bounce);
+                packet = mirror_packet(&packet, &hits, &errors, &bounce);
             }
             depth += 1;
         }
@@ -314,14 +323,15 @@ impl<'a, B: Packets> Renderer<'a, B> {
 
     /// The ambient and direct light at the lanes' hits, in lanes ([`light_term`] and
     /// [`Renderer::add_light`] lane by lane, the same bits), the shadow rays towards each
-    /// light cast as one packet (skipping each lane's `own` object); the background where a
-    /// lane has no hit.
+    /// light cast as one packet (skipping each lane's `own` object, starting off each hit by
+    /// its object's crossing error `errors`); the background where a lane has no hit.
     #[inline(always)]
     fn shade_packet(
         &self,
         p: &Packet<B>,
         hits: &[Option<(Hit, &Object)>; 4],
         own: &[Option<usize>; 4],
+        errors: &[f64; 4],
         cast: &mut Cast,
     ) -> [[f64; 3]; 4] {
         let settings = &self.scene.settings;
@@ -334,17 +344,15 @@ impl<'a, B: Packets> Renderer<'a, B> {
         let n = lanes3(hits.map(|h| h.map_or([0.0; 3], |(h, _)| h.normal)));
         let v = p.dir.map(|d| -d);
         let m = hits.map(|h| h.map_or(&NO_MATERIAL, |(_, o)| &o.material));
+        let offset = offset(x, p.origin, F64x4::new(*errors));
         for light in &self.scene.lights {
-            let to_light = sub(light.position.map(F64x4::splat), x);
-            let distance = norm(to_light);
-            let l = scale(to_light, F64x4::splat(1.0) / distance);
+            let (l, distance) = light.toward(x);
             let diffuse = dot(n, l);
             let specular = specular4(&m, n, add(l, v));
             let (d, c) = (distance.to_array(), diffuse.to_array());
             // Where `light_term` gives a term.
-            let lit: [bool; 4] = core::array::from_fn(|k| {
-                hits[k].is_some() && d[k] > 0.0 && d[k].is_finite() && !(c[k] <= 0.0 && specular[k] <= 0.0)
-            });
+            let lit: [bool; 4] =
+                core::array::from_fn(|k| hits[k].is_some() && d[k] > 0.0 && !(c[k] <= 0.0 && specular[k] <= 0.0));
             if !lit.iter().any(|&b| b) {
                 continue;
             }
@@ -352,7 +360,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
             if settings.shadows {
                 cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
                 // Unlit lanes cast a harmless ray with an empty range.
-                let origin = select(&lit, leaving_origin4(x, n, diffuse), [0.0; 3]);
+                let origin = select(&lit, leaving_origin4(x, n, diffuse, offset), [0.0; 3]);
                 let shadow = B::packet(origin, select(&lit, l, [0.0, 0.0, 1.0]));
                 let t_max = core::array::from_fn(|k| if lit[k] { d[k] } else { 0.0 });
                 let blocked = self.blocked_packet(&shadow, &t_max, own);
@@ -380,10 +388,15 @@ impl<'a, B: Packets> Renderer<'a, B> {
         specular: &[f64; 4],
         s: [f64; 4],
     ) -> [F64x4; 3] {
-        let [c0, c1, c2] = self.scene.settings.attenuation.map(F64x4::splat);
+        let attenuation = self.scene.settings.attenuation;
+        let [c0, c1, c2] = attenuation.map(F64x4::splat);
         let distance = distance * F64x4::splat(self.scene.frame.scale);
-        let f_att =
-            (F64x4::splat(1.0) / (c0 + c1 * distance + c2 * distance * distance)).to_array().map(|f| f.min(1.0));
+        // `light::attenuation` lane by lane: the same operations where the distance is finite.
+        let near = (F64x4::splat(1.0) / (c0 + c1 * distance + c2 * distance * distance)).to_array();
+        let d = distance.to_array();
+        let f_att: [f64; 4] = core::array::from_fn(|l| {
+            if d[l].is_finite() { near[l].min(1.0) } else { light::attenuation(attenuation, d[l]) }
+        });
         let sf = F64x4::new(s) * F64x4::new(f_att);
         let (kd, ks) = (F64x4::new(m.map(|m| m.kd)), F64x4::new(m.map(|m| m.ks)));
         let (facing, shine) = (diffuse.max(F64x4::splat(0.0)), ks * F64x4::new(*specular));

@@ -1,7 +1,7 @@
 //! A disk: its plane met as a flat point, kept if within the rim.
 
 use super::plane::{cross_plane, flat_normal};
-use super::{Crossing, Shape, crossing_at, within};
+use super::{Crossing, Shape, crossing_at, flat_error, within};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::{Disk, GeometryError};
@@ -39,6 +39,11 @@ impl Shape for DiskShape {
 
     fn bounds(&self) -> Option<(E3, f64)> {
         Some((self.disk.centre, self.disk.radius))
+    }
+
+    /// The rounding of its plane's offset from the centre ([`flat_error`]).
+    fn crossing_error(&self) -> f64 {
+        flat_error(self.normal, self.disk.centre)
     }
 
     /// A plane's meet and a rim test cost more than a bounding-sphere test.

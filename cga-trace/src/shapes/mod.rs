@@ -62,6 +62,15 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// A sphere `(centre, radius)` holding the shape, `None` when unbounded (a plane).
     fn bounds(&self) -> Option<(E3, f64)>;
 
+    /// How far (frame units) a crossing the shape reports may lie from its true surface,
+    /// beside the rounding of the crossing's own coordinates and of its ray's origin (which
+    /// the integrator adds, [`crate::ray::offset`]): a bound from the shape's own sizes — its
+    /// extent and its distance from the frame's origin, the camera — so relative to the
+    /// shape, never to a global unit. No ray counts a crossing of the shape nearer than this
+    /// (a camera standing on it, a ray leaving it), and secondary rays start a multiple of it
+    /// off the surface.
+    fn crossing_error(&self) -> f64;
+
     /// Whether a ray should test [`Shape::bounds`] before the shape itself: where the
     /// shape's own test costs more than a sphere's (a sphere's does not; an evolved surface
     /// culls itself).
@@ -122,6 +131,25 @@ fn crossing_at(ray: &Ray, point: E3) -> Crossing {
 /// and equals it to rounding (`tests/render.rs` checks both agree).
 fn plane_normal(plane: &Plane) -> E3 {
     plane.normal_offset().map_or([0.0, 0.0, 1.0], |(n, _)| n)
+}
+
+/// `64 ε s`: the rounding of quantities of size `s`, the crossing error of shapes whose
+/// crossings are accurate to their data's own rounding.
+pub(crate) fn rounding(s: f64) -> f64 {
+    cga_core::euclid::tolerance(s)
+}
+
+/// `|x|∞`.
+pub(crate) fn largest(x: E3) -> f64 {
+    x.iter().fold(0.0f64, |m, c| m.max(c.abs()))
+}
+
+/// The crossing error of a flat shape whose plane has unit normal `n` and was placed through
+/// `p`: the rounding of its offset `δ = n · p`, `64 ε Σ |n_k p_k|` (exact for a plane along
+/// the axes, `64 ε |p|` at worst). Its crossings lie on the plane to that and their own
+/// rounding.
+pub(crate) fn flat_error(n: E3, p: E3) -> f64 {
+    rounding((0..3).map(|k| (n[k] * p[k]).abs()).sum())
 }
 
 /// `n` turned to face against `dir`.

@@ -1,6 +1,6 @@
 //! An infinite plane: met as the flat point `L ∨ Π`.
 
-use super::{Crossing, Shape, crossing_at, facing, plane_normal, within};
+use super::{Crossing, Shape, crossing_at, facing, flat_error, plane_normal, within};
 use crate::ray::Ray;
 use cga_core::euclid::E3;
 use cga_core::{GeometryError, Plane};
@@ -12,13 +12,16 @@ pub struct PlaneShape {
     pub plane: Plane,
     /// Its unit normal (the direction of every reflected line's `L' − L`).
     pub normal: E3,
+    /// Its [crossing error](Shape::crossing_error): its offset's rounding.
+    pub error: f64,
 }
 
 impl PlaneShape {
     /// The plane through `point` with normal `normal`.
     pub fn new(point: E3, normal: E3) -> Result<Self, GeometryError> {
         let plane = Plane::from_point_normal(point, normal)?;
-        Ok(PlaneShape { plane, normal: plane_normal(&plane) })
+        let normal = plane_normal(&plane);
+        Ok(PlaneShape { plane, normal, error: flat_error(normal, point) })
     }
 }
 
@@ -44,6 +47,11 @@ impl Shape for PlaneShape {
 
     fn bounds(&self) -> Option<(E3, f64)> {
         None
+    }
+
+    /// The rounding of its offset from the point it was given by ([`flat_error`]).
+    fn crossing_error(&self) -> f64 {
+        self.error
     }
 
     fn flat(&self) -> bool {

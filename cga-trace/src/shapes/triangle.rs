@@ -1,7 +1,7 @@
 //! A triangle: its plane met as a flat point, kept if inside the three edges.
 
 use super::plane::{cross_plane, flat_normal};
-use super::{Crossing, Shape, crossing_at, within};
+use super::{Crossing, Shape, crossing_at, flat_error, within};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, dot, norm, scale, sub};
 use cga_core::{GeometryError, Plane};
@@ -39,6 +39,11 @@ impl Shape for TriangleShape {
     fn bounds(&self) -> Option<(E3, f64)> {
         let c = scale([0, 1, 2].map(|k| self.corners.iter().map(|x| x[k]).sum()), 1.0 / 3.0);
         Some((c, self.corners.iter().map(|&x| norm(sub(x, c))).fold(0.0, f64::max)))
+    }
+
+    /// The rounding of its plane's offset from the first corner ([`flat_error`]).
+    fn crossing_error(&self) -> f64 {
+        flat_error(self.normal, self.corners[0])
     }
 
     /// A plane's meet and three edge tests cost more than a bounding-sphere test.

@@ -233,6 +233,10 @@ impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
         Some(EvolvedSurface::bounds(self))
     }
 
+    fn crossing_error(&self) -> f64 {
+        super::swept_error(self.origin, self.radius)
+    }
+
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.family.circles.curvature(crossing.alpha?, sub(crossing.point, self.origin))
     }

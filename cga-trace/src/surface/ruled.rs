@@ -306,6 +306,10 @@ impl Shape for RuledSurface {
         Some(RuledSurface::bounds(self))
     }
 
+    fn crossing_error(&self) -> f64 {
+        super::swept_error(self.origin, self.radius)
+    }
+
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.curvature_at(crossing.alpha?, crossing.point)
     }

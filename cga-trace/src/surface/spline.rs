@@ -175,6 +175,10 @@ impl Shape for SplineSurface {
         Some((self.origin, self.radius))
     }
 
+    fn crossing_error(&self) -> f64 {
+        super::swept_error(self.origin, self.radius)
+    }
+
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.spline.curvature(crossing.alpha?, sub(crossing.point, self.origin)).ok()
     }

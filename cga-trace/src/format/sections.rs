@@ -1,0 +1,138 @@
+//! A scene file cut at its top-level table headers by TOML's own lexer, without building
+//! the document: a parsed TOML document costs some fifty bytes of memory for every byte of
+//! text (its tokens, events and tables), so a file of a million objects would need gigabytes
+//! at once. Each `[[objects]]` section (with the sub-tables it opens, `[objects.material]`)
+//! is parsed on its own, one at a time; the rest of the file as one small document.
+
+use std::ops::Range;
+use toml_parser::Source;
+use toml_parser::lexer::TokenKind;
+
+/// The file's `[[objects]]` sections and everything else.
+pub(crate) struct Sections {
+    /// The file with every object section blanked (spaces, newlines kept): the same byte
+    /// offsets, so its errors point into the file as it is.
+    pub rest: String,
+    /// Where each `[[objects]]` section lies in the file, in order.
+    pub objects: Vec<Range<usize>>,
+}
+
+/// A top-level table header: where it starts, whether it opens an array element
+/// (`[[…]]`), whether its first key is `objects`, and whether that is its only key (a new
+/// object, as against `[objects.material]` or `[[objects.circles]]` inside the last one).
+struct Header {
+    start: usize,
+    array: bool,
+    objects: bool,
+    only: bool,
+}
+
+/// The sections of `text` ([`Sections`]).
+pub(crate) fn split(text: &str) -> Sections {
+    let mut objects: Vec<Range<usize>> = Vec::new();
+    let mut open: Option<usize> = None;
+    for header in headers(text) {
+        // An `[[objects]]` header opens a section; a header under `objects` stays in it;
+        // any other header closes it.
+        match (header.objects, header.array && header.objects && header.only, open) {
+            (true, true, Some(start)) => {
+                objects.push(start..header.start);
+                open = Some(header.start);
+            }
+            (true, true, None) => open = Some(header.start),
+            (true, false, _) => {}
+            (false, _, Some(start)) => {
+                objects.push(start..header.start);
+                open = None;
+            }
+            (false, _, None) => {}
+        }
+    }
+    if let Some(start) = open {
+        objects.push(start..text.len());
+    }
+    let mut rest = text.as_bytes().to_vec();
+    for range in &objects {
+        for b in &mut rest[range.clone()] {
+            if *b != b'\n' {
+                *b = b' ';
+            }
+        }
+    }
+    // Only whole sections, each a run of complete characters, were replaced by ASCII.
+    let rest = String::from_utf8(rest).unwrap_or_default();
+    Sections { rest, objects }
+}
+
+/// The top-level table headers of `text`, in order: a `[` at the start of a line outside
+/// any value (brackets and braces of values counted, strings and comments whole tokens).
+fn headers(text: &str) -> Vec<Header> {
+    let source = Source::new(text);
+    let mut out = Vec::new();
+    let (mut depth, mut line_start) = (0usize, true);
+    let mut tokens = source.lex().peekable();
+    while let Some(token) = tokens.next() {
+        match token.kind() {
+            TokenKind::Whitespace | TokenKind::Comment => {}
+            TokenKind::Newline => line_start = depth == 0,
+            TokenKind::LeftSquareBracket if depth == 0 && line_start => {
+                let start = token.span().start();
+                let array = tokens.peek().is_some_and(|t| t.kind() == TokenKind::LeftSquareBracket);
+                if array {
+                    tokens.next();
+                }
+                // The first key: a bare word or a quoted one.
+                let first = tokens.by_ref().find(|t| t.kind() != TokenKind::Whitespace);
+                let objects = first.is_some_and(|t| {
+                    let raw = text.get(t.span().start()..t.span().end()).unwrap_or("");
+                    raw.trim_matches(['"', '\'']) == "objects"
+                        && matches!(t.kind(), TokenKind::Atom | TokenKind::BasicString | TokenKind::LiteralString)
+                });
+                // The rest of the header, to its closing bracket(s): a dot means more keys.
+                let mut only = true;
+                for t in tokens.by_ref() {
+                    match t.kind() {
+                        TokenKind::RightSquareBracket | TokenKind::Newline => break,
+                        TokenKind::Whitespace => {}
+                        _ => only = false,
+                    }
+                }
+                out.push(Header { start, array, objects, only });
+                line_start = false;
+            }
+            TokenKind::LeftSquareBracket | TokenKind::LeftCurlyBracket => {
+                depth += 1;
+                line_start = false;
+            }
+            TokenKind::RightSquareBracket | TokenKind::RightCurlyBracket => {
+                depth = depth.saturating_sub(1);
+                line_start = false;
+            }
+            _ => line_start = false,
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn object_sections_are_cut_at_their_headers_and_nowhere_else() {
+        let text = "[camera]\nwidth = 8 # [[objects]] in a comment\n\
+                    [[objects]]\nname = \"[[objects]]\"\npoints = [\n[0.0, 0.0, 0.0],\n[1.0, 0.0, 0.0]]\n\
+                    [objects.material]\ncolour = [1.0, 0.0, 0.0]\n[[objects.circles]]\nradius = 1.0\n\
+                    [[lights]]\nposition = [0.0, 0.0, 9.0]\n\
+                    [[ 'objects' ]]\ntype = \"sphere\"\n";
+        let s = split(text);
+        assert_eq!(s.objects.len(), 2);
+        let first = &text[s.objects[0].clone()];
+        assert!(first.starts_with("[[objects]]") && first.contains("[objects.material]") && !first.contains("lights"));
+        assert!(first.contains("[[objects.circles]]"), "a sub-array stays in its object");
+        assert!(text[s.objects[1].clone()].starts_with("[[ 'objects' ]]"));
+        assert_eq!(s.rest.len(), text.len());
+        assert!(s.rest.contains("[camera]") && s.rest.contains("[[lights]]") && !s.rest.contains("sphere"));
+        assert_eq!(s.rest.matches('\n').count(), text.matches('\n').count(), "lines kept");
+    }
+}

@@ -1,0 +1,136 @@
+//! What the tests that rewrite scene files share: moving and scaling a scene file as a user
+//! would write the moved scene, and reading the shipped ones.
+#![allow(dead_code)]
+
+use cga_core::Circle;
+use cga_core::euclid::E3;
+use cga_trace::Scene;
+use cga_trace::camera::Camera;
+use toml::{Table, Value};
+
+/// `x ↦ s x + t` for a scene file: points move, lengths scale, directions stay, and the
+/// attenuation `1/(c0 + c1 d + c2 d²)` keeps its values at the scaled distances.
+pub struct Similarity {
+    pub scale: f64,
+    pub shift: f64,
+}
+
+impl Similarity {
+    pub fn point(&self, v: &mut Value) {
+        let x = triple(v);
+        *v = Value::Array(x.iter().map(|&x| Value::Float(self.scale * x + self.shift)).collect());
+    }
+
+    pub fn length(&self, v: &mut Value) {
+        *v = Value::Float(self.scale * v.as_float().expect("a length"));
+    }
+
+    pub fn circle(&self, c: &mut Table) {
+        if let Some(Value::Array(points)) = c.get_mut("points") {
+            points.iter_mut().for_each(|p| self.point(p));
+            return;
+        }
+        // A circle given as orthonormal blade coefficients is first read as centre, normal,
+        // radius (near the origin, where the file's digits are exact enough), then moved.
+        if let Some(blade) = c.remove("blade") {
+            let (centre, normal, radius) = blade_params(&blade);
+            c.insert("centre".into(), floats(&centre));
+            c.insert("normal".into(), floats(&normal));
+            c.insert("radius".into(), Value::Float(radius));
+        }
+        self.point(c.get_mut("centre").expect("centre"));
+        self.length(c.get_mut("radius").expect("radius"));
+    }
+
+    pub fn apply(&self, scene: &mut Table) {
+        let camera = scene["camera"].as_table_mut().expect("[camera]");
+        for key in ["position", "look_at"] {
+            if let Some(v) = camera.get_mut(key) {
+                self.point(v);
+            }
+        }
+        assert!(!camera.contains_key("motor"), "shipped scenes place the camera by position and look_at");
+        if let Some(Value::Table(render)) = scene.get_mut("render")
+            && let Some(Value::Array(att)) = render.get_mut("attenuation")
+        {
+            let [c0, c1, c2] = [0, 1, 2].map(|k| att[k].as_float().expect("a number"));
+            *att = vec![Value::Float(c0), Value::Float(c1 / self.scale), Value::Float(c2 / (self.scale * self.scale))];
+        }
+        for light in scene.get_mut("lights").and_then(Value::as_array_mut).into_iter().flatten() {
+            self.point(light.get_mut("position").expect("position"));
+        }
+        for object in scene.get_mut("objects").and_then(Value::as_array_mut).into_iter().flatten() {
+            let object = object.as_table_mut().expect("an object table");
+            for key in ["centre", "point"] {
+                if let Some(v) = object.get_mut(key) {
+                    self.point(v);
+                }
+            }
+            if let Some(v) = object.get_mut("radius") {
+                self.length(v);
+            }
+            if let Some(Value::Array(corners)) = object.get_mut("corners") {
+                corners.iter_mut().for_each(|c| self.point(c));
+            }
+            for key in ["c1", "c2"] {
+                if let Some(c) = object.get_mut(key).and_then(Value::as_table_mut) {
+                    self.circle(c);
+                }
+            }
+            // Spline surfaces' circles; ruled surfaces' point pairs, lines and bound.
+            if let Some(Value::Array(circles)) = object.get_mut("circles") {
+                circles.iter_mut().filter_map(Value::as_table_mut).for_each(|c| self.circle(c));
+            }
+            for key in ["p1", "p2", "points"] {
+                if let Some(Value::Array(points)) = object.get_mut(key) {
+                    points.iter_mut().for_each(|p| self.point(p));
+                }
+            }
+            for key in ["l1", "l2"] {
+                if let Some(line) = object.get_mut(key).and_then(Value::as_table_mut) {
+                    self.point(line.get_mut("point").expect("point"));
+                }
+            }
+            if let Some(bound) = object.get_mut("bound").and_then(Value::as_table_mut) {
+                self.point(bound.get_mut("centre").expect("centre"));
+                self.length(bound.get_mut("radius").expect("radius"));
+            }
+        }
+    }
+}
+
+pub fn triple(v: &Value) -> E3 {
+    let a = v.as_array().expect("an array of three numbers");
+    [0, 1, 2].map(|k| a[k].as_float().or_else(|| a[k].as_integer().map(|i| i as f64)).expect("a number"))
+}
+
+pub fn floats(x: &[f64]) -> Value {
+    Value::Array(x.iter().map(|&v| Value::Float(v)).collect())
+}
+
+/// Centre, normal and radius of a circle given by its ten orthonormal grade-3 coefficients.
+pub fn blade_params(blade: &Value) -> (E3, E3, f64) {
+    const ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
+    let mut dense = cga_core::Multivector::zero();
+    for (name, v) in ORDER.iter().zip(blade.as_array().expect("ten numbers")) {
+        let k = cga_core::Multivector::<f64>::BLADES.iter().position(|b| b == name).unwrap();
+        dense.coeffs[k] = v.as_float().expect("a number");
+    }
+    Circle::from_dense(&dense).try_normalise().unwrap().centre_normal_radius().unwrap()
+}
+
+/// A shipped scene as a TOML table, its blade circles read as centre, normal and radius.
+pub fn table(name: &str) -> Table {
+    let path = format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let mut table: Table = std::fs::read_to_string(path).unwrap().parse().unwrap();
+    Similarity { scale: 1.0, shift: 0.0 }.apply(&mut table);
+    table
+}
+
+/// The scene a table describes, rendered at `width × height`.
+pub fn scene_of(table: &Table, name: &str, width: u32, height: u32) -> Scene {
+    let mut scene = Scene::parse(&toml::to_string(table).unwrap(), name).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let c = scene.camera;
+    scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap();
+    scene
+}
