@@ -539,3 +539,48 @@ fn circle_meets_are_classified_alike_anywhere_and_at_any_scale() {
     assert!(wrong.is_empty(), "{} misclassified outside the band: {:#?}", wrong.len(), &wrong[..wrong.len().min(10)]);
     assert!(sharp > total / 2, "the band was narrow in only {sharp} of {total} cases");
 }
+
+/// Norms, points, distinctness and the constructions through points hold at every scale f64
+/// has, down to its smallest normal numbers and up to its largest: each rescales (by exact
+/// powers of two) before it squares.
+#[test]
+fn norms_points_and_constructions_hold_at_every_scale() {
+    use cga_core::euclid::norm;
+    use cga_core::{Vector, down};
+    let close = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * b.abs();
+    for s in [1e-307, 1e-300, 1e-200, 1e-154, 1.0, 1e154, 1e200, 1e300] {
+        assert!(close(norm([3.0 * s, 4.0 * s, 0.0]), 5.0 * s), "norm at {s:e}");
+        assert!(close(norm([s, -s, s]), 3f64.sqrt() * s), "norm at {s:e}");
+    }
+    assert_eq!(norm([5e-324, 0.0, 0.0]), 5e-324, "a subnormal");
+    assert_eq!(norm([0.0; 3]), 0.0);
+    // A point of any weight, at any distance f64 holds.
+    for w in [1e-300, 1e-22, 1.0, 1e22, 1e300] {
+        for x in [1e-300, 1e-12, 1.0, 1e22, 1e100] {
+            let p = Vector { e1: w * x, e2: -w * x, e3: 0.0, eo: w, ei: 0.0 };
+            if p.e1.is_finite() && p.e1.abs() >= f64::MIN_POSITIVE {
+                let back = down(p).unwrap();
+                assert!(close(back[0], x) && close(back[1], -x), "weight {w:e}, point {x:e}: {back:?}");
+            }
+        }
+    }
+    assert_eq!(down(Vector { e1: 1.0, e2: 0.0, e3: 0.0, eo: 0.0, ei: 0.0 }), Err(GeometryError::AtInfinity));
+    // Points 1e-300 apart are distinct, and what passes through them has their size.
+    for s in [1e-300, 1e-150, 1.0, 1e100] {
+        let (o, x, y, z) = ([0.0; 3], [s, 0.0, 0.0], [0.0, s, 0.0], [0.0, 0.0, s]);
+        assert!(Line::through(o, x).is_ok(), "{s:e}");
+        let (c, n, r) = cga_core::circumcircle(x, y, o).unwrap();
+        assert!(
+            close(r, s / 2f64.sqrt()) && close(c[0], s / 2.0) && close(n[2], 1.0),
+            "circle at {s:e}: {c:?} {n:?} {r:e}"
+        );
+        let (c, r, _) = cga_core::circumsphere(x, y, z, [-s, 0.0, 0.0]).unwrap();
+        assert!(close(r, s) && c.iter().all(|v| v.abs() <= 4.0 * f64::EPSILON * s), "sphere at {s:e}: {c:?} {r:e}");
+        assert!(Plane::through(o, x, y).is_ok(), "{s:e}");
+        assert_eq!(Plane::through(o, x, x), Err(GeometryError::CoincidentPoints), "{s:e}");
+        assert_eq!(Plane::through(o, x, [2.0 * s, 0.0, 0.0]), Err(GeometryError::CollinearPoints), "{s:e}");
+        // A sphere of that size, read back.
+        let (c, r) = Sphere::from_centre_radius(x, s).unwrap().centre_radius().unwrap();
+        assert!(close(r, s) && close(c[0], s), "sphere read back at {s:e}: {c:?} {r:e}");
+    }
+}

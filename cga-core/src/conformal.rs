@@ -251,11 +251,13 @@ impl<T: Real> Sphere<T> {
 /// Centre and radius of a dual sphere `λ(up(c) − ½r² ei)`.
 fn round_centre_radius<T: Real>(sigma: Vector<T>) -> Result<(E3<T>, T)> {
     let centre = down(sigma)?;
-    let r2 = sigma.norm_squared() / (sigma.eo * sigma.eo); // σ · σ = ⟨σ σ̃⟩₀ for a vector
-    if r2 < T::zero() {
+    let s2 = sigma.norm_squared(); // σ · σ = ⟨σ σ̃⟩₀ for a vector
+    if s2 < T::zero() {
         return Err(GeometryError::Imaginary);
     }
-    Ok((centre, r2.sqrt()))
+    // `√(σ²)/|λ|`, not `√(σ²/λ²)`: λ = 1/r for a unit σ, whose square overflows for r below
+    // 1e-154 (and r² underflows).
+    Ok((centre, s2.sqrt() / sigma.eo.abs()))
 }
 
 /// The sphere through four points in Euclidean terms: its centre, its radius, and whether

@@ -7,7 +7,7 @@ use crate::camera::{Camera, CameraError};
 use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
 use crate::light::Light;
-use crate::limits::{MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
+use crate::limits::{MAX_DOCUMENT_BYTES, MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
 use crate::material::Material;
 use crate::settings::Settings;
 use crate::shapes::Shape;
@@ -201,17 +201,26 @@ impl Scene {
     ///
     /// Memory is bounded per object: the file is cut at its table headers, each
     /// `[[objects]]` section parsed, placed and built alone and dropped before the next
-    /// ([`crate::format::sections`]), so loading holds the file, one object's parsed form and
+    /// (`format/sections.rs`), so loading holds the file, one object's parsed form and
     /// the scene built so far (about 225 bytes an object).
     pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         let at = |offset: usize| line_column(text, offset);
-        let syntax = |base: usize| move |e: toml::de::Error| syntax_error(text, file, &e, base);
-        let invalid = |base: usize, span: Range<usize>, what: String, reason: Invalid| {
-            let (line, column) = at(base + reason.span().unwrap_or(span).start);
+        let sections = sections::split(text);
+        if sections.rest.len() > MAX_DOCUMENT_BYTES {
+            let message = format!(
+                "the file outside its `[[objects]]` tables holds {} bytes, more than the {MAX_DOCUMENT_BYTES} read at once (objects written as `objects = [ … ]` count here: write them as `[[objects]]` tables, which are read one at a time)",
+                sections.rest.len()
+            );
+            return Err(SceneError::Syntax { file: file.into(), line: 1, column: 1, message });
+        }
+        // Offsets in the rest of the file are mapped back to the file; an object's count from
+        // its section's start.
+        let rest = |offset: usize| sections.file_offset(offset);
+        let invalid = |map: &dyn Fn(usize) -> usize, span: Range<usize>, what: String, reason: Invalid| {
+            let (line, column) = at(map(reason.span().unwrap_or(span).start));
             SceneError::Invalid { file: file.into(), line, column, what, reason }
         };
-        let sections = sections::split(text);
-        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(syntax(0))?;
+        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(|e| syntax_error(text, file, &e, &rest))?;
         // `objects = [ … ]` written as one array in the root, instead of `[[objects]]` tables.
         let inline = match document.get_mut().remove_entry("objects") {
             None => toml::de::DeArray::new(),
@@ -230,18 +239,19 @@ impl Scene {
             let message = "duplicate key `objects`: given as an array and as `[[objects]]` tables".into();
             return Err(SceneError::Syntax { file: file.into(), line, column, message });
         }
-        let spec: SceneFile = SceneFile::deserialize(toml::de::Deserializer::from(document)).map_err(syntax(0))?;
+        let spec: SceneFile = SceneFile::deserialize(toml::de::Deserializer::from(document))
+            .map_err(|e| syntax_error(text, file, &e, &rest))?;
         let (settings, render_span) = spec.render.map_or((Settings::default(), 0..0), |r| (*r.get_ref(), r.span()));
-        settings.check().map_err(|reason| invalid(0, render_span, "render".into(), reason))?;
+        settings.check().map_err(|reason| invalid(&rest, render_span, "render".into(), reason))?;
         let count = inline.len().max(sections.objects.len());
         let limit = |what, found: usize, limit: usize| {
             (found > limit).then_some(Invalid::Limit { what, found: found as u64, limit: limit as u64 })
         };
         if let Some(e) = limit("objects", count, MAX_OBJECTS).or(limit("lights", spec.lights.len(), MAX_LIGHTS)) {
-            return Err(invalid(0, 0..0, "scene".into(), e));
+            return Err(invalid(&|_| 0, 0..0, "scene".into(), e));
         }
         let camera_span = spec.camera.span();
-        let in_camera = |reason| invalid(0, camera_span.clone(), "camera".into(), reason);
+        let in_camera = |reason| invalid(&rest, camera_span.clone(), "camera".into(), reason);
         let (camera, position, pinned) = spec.camera.into_inner().build().map_err(in_camera)?;
         // Objects size the frame; lights do not (a light far away is only a direction). Each
         // object's placement is read first (a few of its fields), before any is built.
@@ -249,37 +259,38 @@ impl Scene {
         for k in 0..count {
             sizes.extend(match sections.objects.get(k) {
                 Some(range) => {
-                    let value = section_object(&text[range.clone()]).map_err(syntax(range.start))?;
-                    ObjectSpec::extent_of(&value).map_err(syntax(range.start))?
+                    let map = |offset: usize| range.start + offset;
+                    let value = section_object(&text[range.clone()]).map_err(|e| syntax_error(text, file, &e, &map))?;
+                    ObjectSpec::extent_of(&value).map_err(|e| syntax_error(text, file, &e, &map))?
                 }
-                None => ObjectSpec::extent_of(&inline[k]).map_err(syntax(0))?,
+                None => ObjectSpec::extent_of(&inline[k]).map_err(|e| syntax_error(text, file, &e, &rest))?,
             });
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
         let frame = Frame::around(position, sizes, pixel)
-            .map_err(|span| invalid(0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
+            .map_err(|span| invalid(&|_| 0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
         let mut lights = Vec::with_capacity(spec.lights.len());
         for (k, light) in spec.lights.into_iter().enumerate() {
             let span = light.span();
             let what = format!("light {}", k + 1);
-            lights.push(light.into_inner().build(&frame).map_err(|reason| invalid(0, span, what, reason))?);
+            lights.push(light.into_inner().build(&frame).map_err(|reason| invalid(&rest, span, what, reason))?);
         }
-        // Object `k` as parsed, and the offset its spans count from.
-        let mut inline = inline.into_iter().map(Some).collect::<Vec<_>>();
-        let mut object = |k: usize| -> Result<(Spanned<toml::de::DeValue<'_>>, usize), SceneError> {
-            match sections.objects.get(k) {
-                Some(range) => Ok((section_object(&text[range.clone()]).map_err(syntax(range.start))?, range.start)),
-                None => Ok((inline[k].take().expect("each object once"), 0)),
-            }
-        };
+        // Object `k` as parsed, and where its spans count from.
+        let mut inline = inline.into_iter();
         let mut built = Vec::with_capacity(count);
         for k in 0..count {
-            let (value, base) = object(k)?;
+            let start = sections.objects.get(k).map(|r| r.start);
+            let map = |offset: usize| start.map_or_else(|| rest(offset), |s| s + offset);
+            let value = match sections.objects.get(k) {
+                Some(range) => section_object(&text[range.clone()]).map_err(|e| syntax_error(text, file, &e, &map))?,
+                None => inline.next().expect("one per object"),
+            };
             let span = value.span();
-            let spec = ObjectSpec::deserialize(value.into_deserializer()).map_err(syntax(base))?;
+            let spec =
+                ObjectSpec::deserialize(value.into_deserializer()).map_err(|e| syntax_error(text, file, &e, &map))?;
             let (object, name) = build_object(spec, k, settings.surface_method, &frame);
             let what = format!("object `{name}`");
-            built.push(object.map_err(|reason| invalid(base, span, what, reason))?);
+            built.push(object.map_err(|reason| invalid(&map, span, what, reason))?);
         }
         Ok(Scene { frame, camera, objects: built, lights, settings, pinned })
     }
@@ -295,13 +306,13 @@ fn section_object(section: &str) -> Result<Spanned<toml::de::DeValue<'_>>, toml:
     }
 }
 
-/// A TOML or field error as a located one-line message, its span counted from `base`.
-fn syntax_error(text: &str, file: &str, e: &toml::de::Error, base: usize) -> SceneError {
-    let offset = base + e.span().map_or(0, |s| s.start);
+/// A TOML or field error as a located one-line message, its span mapped to the file by `map`.
+fn syntax_error(text: &str, file: &str, e: &toml::de::Error, map: &dyn Fn(usize) -> usize) -> SceneError {
+    let offset = map(e.span().map_or(0, |s| s.start));
     let (line, column) = line_column(text, offset);
     let mut message = e.message().trim().to_string();
     if message == "duplicate key"
-        && let Some(key) = e.span().and_then(|s| text.get(base + s.start..base + s.end))
+        && let Some(key) = e.span().and_then(|s| text.get(map(s.start)..map(s.start) + s.len()))
     {
         message = format!("duplicate key `{}`", key.trim().escape_debug());
     } else if let Some(better) = header_mistake(text, offset).filter(|_| message.starts_with("invalid type")) {

@@ -6,6 +6,9 @@ use cga_trace::Scene;
 
 const CAMERA: &str = "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n";
 const MATERIAL: &str = "material = { colour = [1.0, 0.0, 0.0] }\n";
+/// A camera 1e-299 from the origin, looking at it.
+const TINY_CAMERA: &str =
+    "[camera]\nposition = [0.0, -1e-299, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n";
 
 fn with_object(body: &str) -> String {
     format!("{CAMERA}[[objects]]\nname = \"thing\"\n{MATERIAL}{body}")
@@ -335,6 +338,64 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             )),
             vec!["`thing`", "circles 2 and 3 are the same circle"],
         ),
+        // What f64 cannot hold in one picture: refused by name, as the range it is.
+        (
+            "objects 1e400 apart in size",
+            format!(
+                "{TINY_CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1e-300\n{MATERIAL}\
+                 [[objects]]\ntype = \"sphere\"\ncentre = [1e100, 0.0, 0.0]\nradius = 1.0\n{MATERIAL}"
+            ),
+            vec!["bad.toml:", "scene", "run from 1.0e-299 to 1.0e100", "2^400"],
+        ),
+        (
+            "a light beyond the frame of a tiny scene",
+            format!(
+                "{TINY_CAMERA}[[lights]]\nposition = [0.0, 0.0, 1e100]\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1e-300\n{MATERIAL}"
+            ),
+            vec!["bad.toml:7:", "light 1", "`position`", "give it as `direction`"],
+        ),
+        (
+            "a circle moved beyond the frame",
+            with_object(
+                "type = \"evolved\"\nc1 = { centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }\nc2 = { centre = [0.0, 0.0, 1.0], normal = [0.0, 0.0, 1.0], radius = 1.0, transform = [{ translate = [1e100, 0.0, 0.0] }] }\n",
+            ),
+            vec!["`thing`", "`c2`", "ill-conditioned", "2^200"],
+        ),
+        (
+            "a point of an object beyond the frame",
+            format!(
+                "{CAMERA}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\n{MATERIAL}\
+                 [[objects]]\nname = \"thing\"\ntype = \"ruled\"\np1 = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]\np2 = [[0.0, 1.0, 0.0], [1.0, 1.0, 1e100]]\n{MATERIAL}"
+            ),
+            vec!["`thing`", "ill-conditioned"],
+        ),
+        // Lights.
+        (
+            "a light both ways",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\ndirection = [0.0, 0.0, -1.0]\n"),
+            vec!["bad.toml:6:", "light 1", "not both"],
+        ),
+        (
+            "a light of no direction",
+            format!("{CAMERA}[[lights]]\ndirection = [0.0, 0.0, 0.0]\n"),
+            vec!["bad.toml:7:", "`direction`", "zero"],
+        ),
+        // Counts checked before anything is built.
+        (
+            "objects inline beyond what is read at once",
+            format!("objects = [{}]\n{CAMERA}", "{ type = \"sphere\" }, ".repeat(250_000)),
+            vec!["bad.toml:1:", "4194304", "write them as `[[objects]]` tables"],
+        ),
+        (
+            "more objects than the limit",
+            format!("{CAMERA}{}", "[[objects]]\n".repeat((1 << 20) + 1)),
+            vec!["1048577 objects", "1048576"],
+        ),
+        (
+            "objects both inline and as tables",
+            format!("objects = [{{ type = \"sphere\" }}]\n{CAMERA}[[objects]]\ntype = \"sphere\"\n"),
+            vec!["bad.toml:7:", "duplicate key `objects`"],
+        ),
         (
             "control characters in a name",
             format!(
@@ -383,4 +444,93 @@ fn evolved_objects_need_the_feature() {
                 c2 = { centre = [0.0, 0.0, 1.0], normal = [0.0, 0.0, 1.0], radius = 2.0 }\n";
     let err = Scene::parse(&with_object(body), "no-evolved.toml").unwrap_err().to_string();
     assert!(err.contains("no-evolved.toml") && err.contains("feature `evolved`"), "{err}");
+}
+
+/// Inputs at the edges of what a file may give, which earlier releases refused or drew wrong
+/// (a camera 1e22 … 1e99 from the origin, an object moved 1e8 by its motor, a blade scaled by
+/// 1e-300, points 1e-300 apart, a focal length of 1e-300, a sphere of 1e12 around the camera):
+/// each loads, and its one sphere covers the middle of the picture, lit (the blades: the
+/// picture of the same blades unscaled).
+#[cfg(feature = "evolved")]
+#[test]
+fn inputs_at_the_edges_of_the_limits_load_and_render() {
+    let sphere_at = |d: &str| {
+        format!(
+            "[camera]\nposition = [{d}, -10.0, 0.0]\nlook_at = [{d}, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+             [[lights]]\nposition = [{d}, -10.0, 5.0]\n\
+             [[objects]]\ntype = \"sphere\"\ncentre = [{d}, 0.0, 0.0]\nradius = 3.0\n{MATERIAL}"
+        )
+    };
+    let tiny = "[camera]\nposition = [0.0, -1e-299, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+                [[lights]]\nposition = [0.0, -1e-299, 5e-300]\n";
+    let cases: Vec<(&str, String)> = vec![
+        ("camera 1e22 from the origin", sphere_at("1e22")),
+        ("camera 1e50 from the origin", sphere_at("1e50")),
+        ("camera 1e99 from the origin", sphere_at("1e99")),
+        (
+            "an object moved 1e8 by its motor",
+            sphere_at("1e8").replace(
+                "centre = [1e8, 0.0, 0.0]",
+                "centre = [0.0, 0.0, 0.0]\ntransform = [{ translate = [1e8, 0.0, 0.0] }]",
+            ),
+        ),
+        (
+            "a sphere through points 1e-300 apart",
+            format!(
+                "{tiny}[[objects]]\ntype = \"sphere\"\npoints = [[3e-300, 0.0, 0.0], [-3e-300, 0.0, 0.0], [0.0, 3e-300, 0.0], [0.0, 0.0, 3e-300]]\n{MATERIAL}"
+            ),
+        ),
+        (
+            "an evolved surface of blades scaled by 1e-300",
+            format!(
+                "[camera]\nposition = [1.0, -30.0, 0.0]\nlook_at = [1.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+                 [[lights]]\nposition = [0.0, -20.0, 40.0]\n[[objects]]\ntype = \"evolved\"\n\
+                 c1 = {{ blade = [0.36389e-300, -1.66662e-300, -1.81194e-300, -1.36982e-300, -1.52625e-300, 0.1694e-300, 0.84272e-300, 0.87727e-300, 0.17834e-300, 0.23224e-300] }}\n\
+                 c2 = {{ blade = [-0.16887e-300, -0.75896e-300, -0.91709e-300, -0.92729e-300, -0.97853e-300, 0.63805e-300, -0.0462e-300, -0.12142e-300, -0.29479e-300, -0.39902e-300] }}\n{MATERIAL}"
+            ),
+        ),
+        (
+            "a focal length of 1e-300",
+            sphere_at("0.0").replace("width = 8\n", "width = 8\nfocal_length = 1e-300\nx_max = 2e-300\n"),
+        ),
+        (
+            "a sphere of 1e12 around the camera",
+            format!(
+                "[camera]\nposition = [0.0, -1.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+                 [[lights]]\nposition = [0.0, -0.5, 1.0]\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1e12\n{MATERIAL}"
+            ),
+        ),
+    ];
+    let mut failures = Vec::new();
+    let render = |scene: &Scene| cga_trace::Renderer::new(scene).render(cga_trace::Aov::Shaded, &|| {});
+    for (what, text) in cases {
+        match Scene::parse(&text, "edge.toml") {
+            Err(e) => failures.push(format!("{what}: refused: {e}")),
+            // A blade and its multiples are one circle: the same picture as unscaled.
+            Ok(scene) if what.contains("blades") => {
+                let same = Scene::parse(&text.replace("e-300", ""), "edge.toml").unwrap();
+                let (a, b) = (render(&scene), render(&same));
+                let off = a.pixels.iter().flatten().zip(b.pixels.iter().flatten()).map(|(x, y)| (x - y).abs());
+                let off = off.fold(0.0f64, f64::max);
+                println!(
+                    "{what}: {} lit pixels, {off:.1e} from unscaled",
+                    a.pixels.iter().filter(|p| p[0] > 0.1).count()
+                );
+                if off > 1e-9 || a.pixels.iter().all(|p| p[0] <= 0.1) {
+                    failures.push(format!("{what}: not the picture of the unscaled blades"));
+                }
+            }
+            Ok(scene) => {
+                let film = render(&scene);
+                let [r, g, b] = film.get(4, 4);
+                println!("{what}: centre pixel ({r:.3}, {g:.3}, {b:.3})");
+                if !(r > 0.1 && r > g && r > b) {
+                    failures.push(format!(
+                        "{what}: the middle of the picture is ({r:.3}, {g:.3}, {b:.3}), not the red object"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

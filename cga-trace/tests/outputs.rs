@@ -4,8 +4,9 @@
 //! is written, a link to a device is written through and kept, and a closed or full stderr
 //! never turns into a panic.
 
-use std::collections::hash_map::DefaultHasher;
-use std::hash::{Hash, Hasher};
+mod common;
+
+use common::snapshot;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
@@ -23,29 +24,6 @@ fn scratch(test: &str) -> PathBuf {
 
 fn cga_trace(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_cga-trace")).args(args).output().unwrap()
-}
-
-/// What a directory holds: each entry's name, kind, link target and content hash.
-fn snapshot(dir: &Path) -> Vec<(String, String)> {
-    let mut entries: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| {
-            let path = e.unwrap().path();
-            let meta = std::fs::symlink_metadata(&path).unwrap();
-            let what = if meta.file_type().is_symlink() {
-                format!("link to {}", std::fs::read_link(&path).unwrap().display())
-            } else if meta.is_file() {
-                let mut h = DefaultHasher::new();
-                std::fs::read(&path).unwrap().hash(&mut h);
-                format!("file {:x}", h.finish())
-            } else {
-                "other".into()
-            };
-            (path.file_name().unwrap().to_string_lossy().into_owned(), what)
-        })
-        .collect();
-    entries.sort();
-    entries
 }
 
 /// Runs `args` in `dir`, expecting a one-line error containing `says`, and checks that the

@@ -2,7 +2,8 @@
 //! the document: a parsed TOML document costs some fifty bytes of memory for every byte of
 //! text (its tokens, events and tables), so a file of a million objects would need gigabytes
 //! at once. Each `[[objects]]` section (with the sub-tables it opens, `[objects.material]`)
-//! is parsed on its own, one at a time; the rest of the file as one small document.
+//! is parsed on its own, one at a time; the rest of the file as one small document, its
+//! offsets mapped back to the file's.
 
 use std::ops::Range;
 use toml_parser::Source;
@@ -10,11 +11,20 @@ use toml_parser::lexer::TokenKind;
 
 /// The file's `[[objects]]` sections and everything else.
 pub(crate) struct Sections {
-    /// The file with every object section blanked (spaces, newlines kept): the same byte
-    /// offsets, so its errors point into the file as it is.
+    /// The file without its object sections, the rest joined end to end.
     pub rest: String,
+    /// Where each piece of `rest` starts, in `rest` and in the file.
+    pieces: Vec<(usize, usize)>,
     /// Where each `[[objects]]` section lies in the file, in order.
     pub objects: Vec<Range<usize>>,
+}
+
+impl Sections {
+    /// The offset in the file of the byte at `offset` in [`Sections::rest`].
+    pub(crate) fn file_offset(&self, offset: usize) -> usize {
+        let k = self.pieces.partition_point(|&(at, _)| at <= offset).saturating_sub(1);
+        self.pieces.get(k).map_or(offset, |&(at, file)| file + (offset - at))
+    }
 }
 
 /// A top-level table header: where it starts, whether it opens an array element
@@ -51,17 +61,13 @@ pub(crate) fn split(text: &str) -> Sections {
     if let Some(start) = open {
         objects.push(start..text.len());
     }
-    let mut rest = text.as_bytes().to_vec();
-    for range in &objects {
-        for b in &mut rest[range.clone()] {
-            if *b != b'\n' {
-                *b = b' ';
-            }
-        }
+    let (mut rest, mut pieces, mut from) = (String::new(), Vec::new(), 0);
+    for range in objects.iter().chain([&(text.len()..text.len())]) {
+        pieces.push((rest.len(), from));
+        rest.push_str(&text[from..range.start]);
+        from = range.end;
     }
-    // Only whole sections, each a run of complete characters, were replaced by ASCII.
-    let rest = String::from_utf8(rest).unwrap_or_default();
-    Sections { rest, objects }
+    Sections { rest, pieces, objects }
 }
 
 /// The top-level table headers of `text`, in order: a `[` at the start of a line outside
@@ -131,8 +137,10 @@ mod tests {
         assert!(first.starts_with("[[objects]]") && first.contains("[objects.material]") && !first.contains("lights"));
         assert!(first.contains("[[objects.circles]]"), "a sub-array stays in its object");
         assert!(text[s.objects[1].clone()].starts_with("[[ 'objects' ]]"));
-        assert_eq!(s.rest.len(), text.len());
         assert!(s.rest.contains("[camera]") && s.rest.contains("[[lights]]") && !s.rest.contains("sphere"));
-        assert_eq!(s.rest.matches('\n').count(), text.matches('\n').count(), "lines kept");
+        for needle in ["[camera]", "width", "[[lights]]", "position"] {
+            let at = s.rest.find(needle).unwrap();
+            assert_eq!(&text[s.file_offset(at)..s.file_offset(at) + needle.len()], needle, "{needle} maps back");
+        }
     }
 }

@@ -145,7 +145,7 @@ impl Placement {
         }
         let moves = if self.rotor.is_some() { "its motor carries it to" } else { "it lies" };
         Err(Invalid::Range(format!(
-            "{moves} {:.1e} from the camera, {distance:.1e} times the scene's size ({:.1e}): beyond the 2^200 f64 renders beside the rest of the scene",
+            "{moves} {:.1e} from the camera, {distance:.1e} times the scene's size ({:.1e}): ill-conditioned, beyond the 2^200 that f64 renders beside the rest of the scene",
             distance * self.scale,
             self.scale
         )))

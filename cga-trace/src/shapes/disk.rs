@@ -41,7 +41,7 @@ impl Shape for DiskShape {
         Some((self.disk.centre, self.disk.radius))
     }
 
-    /// The rounding of its plane's offset from the centre ([`flat_error`]).
+    /// The rounding of its plane's offset from the centre, `64 ε Σ |n_k c_k|`.
     fn crossing_error(&self) -> f64 {
         flat_error(self.normal, self.disk.centre)
     }

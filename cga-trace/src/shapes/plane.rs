@@ -49,7 +49,7 @@ impl Shape for PlaneShape {
         None
     }
 
-    /// The rounding of its offset from the point it was given by ([`flat_error`]).
+    /// The rounding of its offset from the point it was given by, `64 ε Σ |n_k p_k|`.
     fn crossing_error(&self) -> f64 {
         self.error
     }

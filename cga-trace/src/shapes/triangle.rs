@@ -41,7 +41,7 @@ impl Shape for TriangleShape {
         Some((c, self.corners.iter().map(|&x| norm(sub(x, c))).fold(0.0, f64::max)))
     }
 
-    /// The rounding of its plane's offset from the first corner ([`flat_error`]).
+    /// The rounding of its plane's offset from the first corner, `64 ε Σ |n_k a_k|`.
     fn crossing_error(&self) -> f64 {
         flat_error(self.normal, self.corners[0])
     }

@@ -134,3 +134,35 @@ pub fn scene_of(table: &Table, name: &str, width: u32, height: u32) -> Scene {
     scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap();
     scene
 }
+
+/// Each entry of a directory (recursively) with what it is: a link's target, or a file's
+/// content hash.
+#[cfg(unix)]
+pub fn snapshot(dir: &std::path::Path) -> Vec<(String, String)> {
+    use std::hash::{Hash, Hasher};
+    let mut out = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for entry in std::fs::read_dir(&d).unwrap() {
+            let path = entry.unwrap().path();
+            let name = path.strip_prefix(dir).unwrap().to_string_lossy().into_owned();
+            let meta = std::fs::symlink_metadata(&path).unwrap();
+            let state = if meta.file_type().is_symlink() {
+                format!("link to {}", std::fs::read_link(&path).unwrap().display())
+            } else if meta.is_dir() {
+                todo.push(path);
+                "directory".into()
+            } else if !meta.is_file() {
+                // A pipe or device: reading it could wait for ever.
+                "special".into()
+            } else {
+                let mut h = std::collections::hash_map::DefaultHasher::new();
+                std::fs::read(&path).unwrap().hash(&mut h);
+                format!("file {:x}", h.finish())
+            };
+            out.push((name, state));
+        }
+    }
+    out.sort();
+    out
+}
