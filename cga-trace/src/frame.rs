@@ -84,8 +84,9 @@ impl Frame {
         }
         shown.sort_by(f64::total_cmp);
         let median = log(shown[shown.len() / 2]);
+        // Rounded first, then kept within the range (rounding must not undo the clamp).
         let range = f64::from(RANGE);
-        let unit = median.clamp(log(hi) - range, log(lo) + range).round().clamp(-1000.0, 1000.0);
+        let unit = median.round().clamp((log(hi) - range).ceil(), (log(lo) + range).floor()).clamp(-1000.0, 1000.0);
         Ok(Frame { origin, scale: 2f64.powi(unit as i32) })
     }
 
@@ -147,6 +148,9 @@ mod tests {
         // enough, and every size is held.
         let f = Frame::around([0.0; 3], [near, far(1e90), far(1e90)], 1e-3).unwrap();
         assert!(Frame::holds(1e90 / f.scale) && Frame::holds(f.scale / 10.0), "{:e}", f.scale);
+        // Rounding never takes the unit past the range: an object at 2^200.3 beside unit ones.
+        let f = Frame::around([0.0; 3], [near, ([2f64.powf(200.3), 0.0, 0.0], 1.0)], 1e-3).unwrap();
+        assert!(Frame::holds(2f64.powf(200.3) / f.scale), "{:e}", f.scale);
         // Planes (unbounded) count by their distance; nothing spans more than f64 holds.
         let plane = ([0.0, 0.0, -1e-3], f64::INFINITY);
         assert_eq!(Frame::around([0.0; 3], [plane], 1e-3).unwrap().scale, 2f64.powi(-10));

@@ -169,8 +169,6 @@ fn one_line(e: &anyhow::Error) -> String {
 #[cfg(feature = "evolved")]
 fn mesh_command(args: MeshArgs) -> anyhow::Result<()> {
     let format = cga_trace::mesh::MeshFormat::of(&args.output)?;
-    // The size before the scene is read (each kind checks its own least number of segments).
-    cga_trace::mesh::check_resolution(args.rings, args.segments, 1)?;
     let mut file = OutputFile::create(&args.output, &[("scene", &args.scene)])?;
     let scene = Scene::load(&args.scene)?;
     let mesh = scene.mesh(&args.object, args.rings, args.segments)?;
@@ -194,7 +192,8 @@ fn thread_pool(threads: Option<usize>) -> anyhow::Result<rayon::ThreadPool> {
             say!("note: {n} threads on {cores} cores: threads beyond the cores only add overhead");
         }
     }
-    Ok(rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(cores)).build()?)
+    // 0: rayon's own choice, one per core unless RAYON_NUM_THREADS says otherwise.
+    Ok(rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(0)).build()?)
 }
 
 /// The file beside a false-colour image that holds its scale: `OUTPUT.scale.json`.
@@ -210,10 +209,12 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     let pool = thread_pool(args.threads)?;
     let output = Output::for_path(&args.output, args.bit_depth)?;
     let mut image = OutputFile::create(&args.output, &[("scene", &args.scene)])?;
+    // A false-colour image's scale goes beside it (not beside a device: on stderr alone).
     let beside = scale_path(&args.output);
-    let mut scale_file = match args.aov.is_scalar() {
-        true => Some(OutputFile::create(&beside, &[("scene", &args.scene), ("image", &args.output)])?),
-        false => None,
+    let mut scale_file = if args.aov.is_scalar() && !image.is_device() {
+        Some(OutputFile::create(&beside, &[("scene", &args.scene), ("image", &args.output)])?)
+    } else {
+        None
     };
 
     let mut scene = Scene::load(&args.scene)?;
@@ -256,10 +257,12 @@ fn render_command(args: Render) -> anyhow::Result<()> {
         pool.install(|| render(&scene, args.aov, window, packets, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
-    let film = match (cga_trace::colour::false_colour(&film, args.aov), scale_file.as_mut()) {
-        (Some((coloured, scale)), Some(file)) => {
-            let json = serde_json::to_string_pretty(&scale)? + "\n";
-            file.write_all(json.as_bytes()).with_context(|| format!("writing {}", beside.display()))?;
+    let film = match cga_trace::colour::false_colour(&film, args.aov) {
+        Some((coloured, scale)) => {
+            if let Some(file) = scale_file.as_mut() {
+                let json = serde_json::to_string_pretty(&scale)? + "\n";
+                file.write_all(json.as_bytes()).with_context(|| format!("writing {}", beside.display()))?;
+            }
             say!(
                 "{}: {} ({}) from {:.4e} (left of the bar) to {:.4e} (right), {} pixels -> {}",
                 scale.map,
@@ -268,19 +271,20 @@ fn render_command(args: Render) -> anyhow::Result<()> {
                 scale.low,
                 scale.high,
                 scale.pixels,
-                beside.display()
+                if scale_file.is_some() { beside.display().to_string() } else { "stderr".into() }
             );
             coloured
         }
-        _ => film,
+        None => film,
     };
     let writing = Instant::now();
     pool.install(|| film.write(&mut image, output, encoding))
         .with_context(|| format!("writing {}", args.output.display()))?;
+    // The image first, then its scale: each is the old file or the new, whatever fails.
+    image.commit()?;
     if let Some(file) = scale_file {
         file.commit()?;
     }
-    image.commit()?;
     let written = writing.elapsed().as_secs_f64();
 
     let total = primary + shadow + reflection;

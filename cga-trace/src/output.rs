@@ -41,6 +41,16 @@ pub enum OutputFileError {
     /// The target exists and is read-only.
     #[error("cannot write `{0}`: it is read-only")]
     ReadOnly(String),
+    /// No temporary file can be made beside the target (the directory is not writable).
+    #[error("cannot write `{path}`: no file can be made in `{dir}` to write it to first: {source}")]
+    Directory {
+        /// The output, as given.
+        path: String,
+        /// The directory.
+        dir: String,
+        /// Why.
+        source: io::Error,
+    },
     /// Creating, writing, syncing or renaming failed.
     #[error("cannot write `{path}`: {source}")]
     Io {
@@ -73,37 +83,44 @@ enum Sink {
 impl OutputFile {
     /// Prepare to write `path`: refused if it is the same file as any of `inputs` (each with
     /// what it is, for the message), a directory or another file that is not a regular file
-    /// or a character device, or read-only; otherwise a temporary file is created beside it
-    /// (so that a directory that cannot be written fails now, before any work).
+    /// or a character device, read-only, or one this user may not replace (in a sticky
+    /// directory); otherwise a temporary file is created beside it (so that a directory that
+    /// cannot be written fails now, before any work).
     pub fn create(path: &Path, inputs: &[(&'static str, &Path)]) -> Result<Self, OutputFileError> {
         let shown = path.to_path_buf();
-        let io = |source| OutputFileError::Io { path: path.display().to_string(), source };
-        let target = resolve(path).map_err(io)?;
+        let failed = |source| OutputFileError::Io { path: path.display().to_string(), source };
+        // What the path names, through every link the system follows (`/dev/stdout` too).
+        let existing = match fs::metadata(path) {
+            Ok(m) => Some(m),
+            Err(e) if e.kind() == io::ErrorKind::NotFound => None,
+            Err(e) => return Err(failed(e)),
+        };
         for &(role, input) in inputs {
-            if same_file(&target, input) || path == input {
+            let same = existing.as_ref().is_some_and(|m| same_file(path, m, input));
+            if same || path == input {
                 let (output, input) = (path.display().to_string(), input.display().to_string());
                 return Err(OutputFileError::SameFile { output, role, input });
             }
         }
-        let existing = match fs::metadata(&target) {
-            Ok(m) => Some(m),
-            Err(e) if e.kind() == io::ErrorKind::NotFound => None,
-            Err(e) => return Err(io(e)),
-        };
         let not_a_file = |kind| OutputFileError::NotAFile { path: path.display().to_string(), kind };
-        let permissions = match &existing {
+        let (target, permissions) = match &existing {
             Some(m) if m.is_dir() => return Err(not_a_file("a directory")),
             Some(m) if m.is_file() && m.permissions().readonly() => {
                 return Err(OutputFileError::ReadOnly(path.display().to_string()));
             }
-            Some(m) if m.is_file() => Some(m.permissions()),
+            Some(m) if m.is_file() => (fs::canonicalize(path).map_err(failed)?, Some(m.permissions())),
             Some(m) => {
                 return match special_kind(m) {
-                    None => Ok(OutputFile { shown, target, sink: Sink::Device(Cursor::new(Vec::new())) }),
+                    None => Ok(OutputFile {
+                        shown: shown.clone(),
+                        target: shown,
+                        sink: Sink::Device(Cursor::new(Vec::new())),
+                    }),
                     Some(kind) => Err(not_a_file(kind)),
                 };
             }
-            None => new_file_permissions(),
+            // A new file, or the one a dangling link names.
+            None => (resolve(path).map_err(failed)?, new_file_permissions()),
         };
         let dir = match target.parent() {
             Some(d) if !d.as_os_str().is_empty() => d,
@@ -116,12 +133,25 @@ impl OutputFile {
         if let Some(p) = &permissions {
             builder.permissions(p.clone());
         }
-        let temporary = builder.tempfile_in(dir).map_err(io)?;
+        let temporary = builder.tempfile_in(dir).map_err(|source| OutputFileError::Directory {
+            path: path.display().to_string(),
+            dir: dir.display().to_string(),
+            source,
+        })?;
+        if let Some(m) = &existing {
+            replaceable(m, dir, temporary.as_file())
+                .map_err(|why| OutputFileError::NotAFile { path: path.display().to_string(), kind: why })?;
+        }
         // The mode asked for at creation is cut by the umask; an existing file's is kept.
         if let (Some(p), Some(_)) = (permissions, &existing) {
-            temporary.as_file().set_permissions(p).map_err(io)?;
+            temporary.as_file().set_permissions(p).map_err(failed)?;
         }
         Ok(OutputFile { shown, target, sink: Sink::Temporary(BufWriter::new(temporary)) })
+    }
+
+    /// Whether the output is a character device (written directly, with nothing beside it).
+    pub fn is_device(&self) -> bool {
+        matches!(self.sink, Sink::Device(_))
     }
 
     /// The path as given.
@@ -193,18 +223,38 @@ fn resolve(path: &Path) -> io::Result<PathBuf> {
     Err(io::Error::other("too many levels of symbolic links"))
 }
 
-/// Whether `a` and `b` name one file (device and inode; canonical paths where there are
-/// none): through any links, without opening either (opening a pipe could block).
-fn same_file(a: &Path, b: &Path) -> bool {
+/// Whether the existing file at `a` (its metadata `ma`, links followed) is the file `b`
+/// names: the same device and inode (canonical paths where there are none). Neither is
+/// opened (opening a pipe could block).
+fn same_file(a: &Path, ma: &fs::Metadata, b: &Path) -> bool {
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
-        matches!((fs::metadata(a), fs::metadata(b)), (Ok(x), Ok(y)) if (x.dev(), x.ino()) == (y.dev(), y.ino()))
+        let _ = a;
+        fs::metadata(b).is_ok_and(|mb| (ma.dev(), ma.ino()) == (mb.dev(), mb.ino()))
     }
     #[cfg(not(unix))]
     {
+        let _ = ma;
         matches!((fs::canonicalize(a), fs::canonicalize(b)), (Ok(x), Ok(y)) if x == y)
     }
+}
+
+/// Whether the renaming that puts the output in place will be allowed: in a sticky directory
+/// (`/tmp`) only a file's owner, the directory's or root may replace it. The temporary file
+/// just made tells who this process is.
+fn replaceable(existing: &fs::Metadata, dir: &Path, ours: &fs::File) -> Result<(), &'static str> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::{MetadataExt, PermissionsExt};
+        let (me, sticky) = (ours.metadata().map_or(0, |m| m.uid()), fs::metadata(dir));
+        let sticky = sticky.is_ok_and(|d| d.permissions().mode() & 0o1000 != 0 && d.uid() != me);
+        if sticky && me != 0 && existing.uid() != me {
+            return Err("another user's file in a sticky directory (it cannot be replaced)");
+        }
+    }
+    let _ = (existing, dir, ours);
+    Ok(())
 }
 
 /// What a file that is neither a regular file nor a directory is, if it cannot take an

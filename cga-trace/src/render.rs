@@ -153,7 +153,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
-        let errors = scene.objects.iter().map(|o| o.shape.crossing_error()).collect();
+        let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
         Renderer { scene, shapes, packets, bounds, bvh, flat, errors, counts: RayCounts::default() }
     }
 

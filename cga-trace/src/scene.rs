@@ -205,7 +205,15 @@ impl Scene {
     /// the scene built so far (about 225 bytes an object).
     pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         let at = |offset: usize| line_column(text, offset);
-        let sections = sections::split(text);
+        let sections = sections::split(text).map_err(|m| {
+            let (line, column) = at(m.at);
+            SceneError::Syntax { file: file.into(), line, column, message: m.message }
+        })?;
+        if let (Some(open), true) = (sections.unclosed, sections.rest.len() > MAX_DOCUMENT_BYTES) {
+            let (line, column) = at(open);
+            let message = "this bracket is never closed: the rest of the file is read as inside it".into();
+            return Err(SceneError::Syntax { file: file.into(), line, column, message });
+        }
         if sections.rest.len() > MAX_DOCUMENT_BYTES {
             let message = format!(
                 "the file outside its `[[objects]]` tables holds {} bytes, more than the {MAX_DOCUMENT_BYTES} read at once (objects written as `objects = [ … ]` count here: write them as `[[objects]]` tables, which are read one at a time)",
@@ -299,10 +307,9 @@ impl Scene {
 /// The one object of an `[[objects]]` section (its header and sub-tables), parsed alone.
 fn section_object(section: &str) -> Result<Spanned<toml::de::DeValue<'_>>, toml::de::Error> {
     let mut table = toml::de::DeTable::parse(section)?;
-    let span = table.span();
     match table.get_mut().remove("objects").map(Spanned::into_inner) {
         Some(toml::de::DeValue::Array(a)) if a.len() == 1 => Ok(a.into_iter().next().expect("one")),
-        _ => Err(serde::de::Error::custom(format!("an `[[objects]]` section holds one object table ({span:?})"))),
+        _ => Err(serde::de::Error::custom("an `[[objects]]` section holds one object table")),
     }
 }
 

@@ -503,6 +503,16 @@ fn inputs_at_the_edges_of_the_limits_load_and_render() {
     ];
     let mut failures = Vec::new();
     let render = |scene: &Scene| cga_trace::Renderer::new(scene).render(cga_trace::Aov::Shaded, &|| {});
+    // A floor given by a point 1e100 along it is the floor given by its point below the camera.
+    let floor = |p: &str| {
+        format!(
+            "[camera]\nposition = [0.0, -10.0, 2.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+             [[lights]]\nposition = [0.0, -10.0, 5.0]\n[[objects]]\ntype = \"plane\"\npoint = {p}\nnormal = [0.0, 0.0, 1.0]\n{MATERIAL}"
+        )
+    };
+    let (far, near) = (floor("[1e100, 3e99, -1.0]"), floor("[0.0, 0.0, -1.0]"));
+    let (far, near) = (render(&Scene::parse(&far, "far").unwrap()), render(&Scene::parse(&near, "near").unwrap()));
+    assert!(far == near && near.pixels.iter().any(|p| p[0] > 0.1), "a plane given far along it");
     for (what, text) in cases {
         match Scene::parse(&text, "edge.toml") {
             Err(e) => failures.push(format!("{what}: refused: {e}")),

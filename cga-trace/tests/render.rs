@@ -430,6 +430,31 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
     }
 }
 
+/// Packets and single rays agree where the frame's numbers are far from 1 too: a sky sphere
+/// of radius 1e12 (1e11 frame units: its meet's points have weights near 1e-22) around
+/// unit-sized objects, and a scene 1e-300 small.
+#[test]
+fn packets_render_the_bits_of_one_ray_at_a_time_at_extreme_sizes() {
+    let sky = "[camera]\nposition = [0.0, -10.0, 2.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 21\nheight = 9\n\
+               [[lights]]\nposition = [3.0, -6.0, 8.0]\n\
+               [[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1e12\nmaterial = { colour = [0.3, 0.5, 0.9] }\n\
+               [[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\nmaterial = { colour = [0.9, 0.2, 0.1], kr = 0.5 }\n\
+               [[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, -2.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = { colour = [0.5, 0.5, 0.5], kr = 0.3 }\n";
+    let tiny =
+        sky.replace("1e12", "1e-288").replace("2.0", "2e-300").replace("-10.0", "-1e-299").replace("3.0", "3e-300");
+    for (name, text) in [("sky", sky.to_string()), ("tiny", tiny)] {
+        let scene = Scene::parse(&text, name).unwrap();
+        let packets = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+        let scalar = Renderer::new(&scene).without_packets().render(Aov::Shaded, &|| {});
+        assert!(packets.pixels == scalar.pixels, "{name}: packets and single rays differ");
+        let sky_pixels = scalar.pixels.iter().filter(|p| p[2] > p[0] && p[2] > 0.05).count();
+        assert!(name != "sky" || sky_pixels > 20, "{name}: the sky is seen ({sky_pixels} pixels)");
+        let plain = Renderer::<Plain>::with_backend(&scene).render(Aov::Shaded, &|| {});
+        let single = Renderer::<Plain>::with_backend(&scene).without_packets().render(Aov::Shaded, &|| {});
+        assert!(plain.pixels == single.pixels, "{name}: plain packets and single rays differ");
+    }
+}
+
 #[test]
 fn primitive_normals_are_the_reflected_lines_direction() {
     // The normal read from the mirror plane equals the direction of `L' − L` computed by the

@@ -113,6 +113,20 @@ impl Backend for Dense {
     /// or `ε / s²` (small) of their geometry: 2²⁰ either way keeps it to about 2e-4.
     const SPAN: i32 = 20;
 
+    /// A sphere's coefficients in the orthonormal basis are of size `max(1, |c|², r²)/r`, each
+    /// rounded: its crossings lie within `64 ε` of that (more than the null basis's
+    /// `64 ε r (1 + ρ)²` where the sphere and its distance are both below the unit).
+    fn crossing_error(shape: &dyn Shape) -> f64 {
+        let own = shape.crossing_error();
+        match shape.downcast_ref::<SphereShape>() {
+            Some(s) => {
+                let c = norm(s.centre);
+                own.max(tolerance((1.0f64).max(c * c).max(s.radius * s.radius) / s.radius))
+            }
+            None => own,
+        }
+    }
+
     fn ray(origin: E3, dir: E3) -> Ray<Multivector> {
         // Through `o` and `o + |o|∞ d`: two points as far apart as the origin is large, so
         // that the line is as well conditioned as the sparse one (`d` is unit and finite, `o`

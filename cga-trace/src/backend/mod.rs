@@ -51,6 +51,12 @@ pub trait Backend: Send + Sync + 'static {
     fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
     /// Whether the back end traces ray packets ([`crate::packet::Packets`]).
     const PACKETS: bool = false;
+    /// How far this back end's crossings of `shape` may lie from it ([`Shape::crossing_error`],
+    /// which fits the null basis and plain vectors; a back end with other arithmetic says
+    /// its own).
+    fn crossing_error(shape: &dyn Shape) -> f64 {
+        shape.crossing_error()
+    }
     /// How many binary orders of magnitude an object's size may lie from the frame's unit
     /// for this back end to render it as it is ([`holds`]): the frame's own [`RANGE`] where
     /// the arithmetic is scale-free (the null basis, plain vectors).

@@ -69,9 +69,11 @@ impl LightSpec {
         }
         let source = match (self.position, self.direction) {
             (Some(p), None) => {
-                // A light forms no conformal products: any distance the frame holds will do.
+                // A light forms no conformal products: any distance whose norm f64 holds (with
+                // room for the distances from points of the scene) will do.
                 let x = frame.point(p.get_ref().0);
-                if !x.iter().all(|c| c.is_finite()) {
+                let d = norm(x);
+                if d.is_nan() || d > 1e300 {
                     let why = format!(
                         "the light is {:.1e} from the camera, more than f64 holds in units of the scene's size ({:.1e}): give it as `direction` (a light that far is a directional light)",
                         norm(sub(p.get_ref().0, frame.origin)),
@@ -85,9 +87,14 @@ impl LightSpec {
                 let unit = cga_core::euclid::unit(d.get_ref().0);
                 Source::Directional(unit.ok_or(Invalid::at("direction", d.span(), GeometryError::ZeroVector.into()))?)
             }
-            _ => {
+            (Some(_), Some(_)) => {
                 return Err(Invalid::Form(
                     "a light takes `position` (a point light) or `direction` (a directional light), not both",
+                ));
+            }
+            (None, None) => {
+                return Err(Invalid::Form(
+                    "a light takes `position` (a point light) or `direction` (a directional light)",
                 ));
             }
         };
@@ -280,6 +287,12 @@ pub(crate) struct CircleSpec {
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
 }
 
+/// The point of the plane through `p` of unit normal `n` nearest the origin, `n (n · p)`.
+fn foot(p: E3, n: E3) -> E3 {
+    let d = cga_core::euclid::dot(n, p);
+    n.map(|x| x * d)
+}
+
 /// `N` points from a `points` or `corners` field, in world coordinates.
 fn points<const N: usize>(field: &'static str, p: &Spanned<Vec<V3>>) -> Result<[E3; N], Invalid> {
     let given = p.get_ref();
@@ -301,7 +314,8 @@ impl ObjectSpec {
         let (point, extent) = if self.kind == Kind::Plane {
             let p =
                 self.point.as_ref().map(|p| p.get_ref().0).or_else(|| Some(self.points.as_ref()?.get_ref().first()?.0));
-            (p?, f64::INFINITY)
+            let (p, n) = (p?, self.normal.as_ref().and_then(|n| cga_core::euclid::unit(n.get_ref().0)));
+            (n.map_or(p, |n| foot(p, n)), f64::INFINITY)
         } else if let Some(c) = self.centre.as_ref().or(self.point.as_ref()) {
             (c.get_ref().0, radius)
         } else if let Some(p) = self.points.as_ref().or(self.corners.as_ref()).or(self.p1.as_ref()) {
@@ -439,7 +453,8 @@ impl ObjectSpec {
                     }
                     _ => return Err(form()),
                 };
-                Arc::new(PlaneShape::new(place.point(p)?, place.direction(n))?)
+                let (p, n) = place.plane(p, n)?;
+                Arc::new(PlaneShape::new(p, n)?)
             }
             Kind::Disk => {
                 let (c, n, r) = match (centre, normal, radius, &self.points) {

@@ -17,6 +17,17 @@ pub(crate) struct Sections {
     pieces: Vec<(usize, usize)>,
     /// Where each `[[objects]]` section lies in the file, in order.
     pub objects: Vec<Range<usize>>,
+    /// Where the outermost bracket or brace left open at the end of the file opened, if one
+    /// was (everything after it is inside a value, so no header is seen there).
+    pub unclosed: Option<usize>,
+}
+
+/// A header this reader cannot place: where it is and why.
+pub(crate) struct Misplaced {
+    /// Its offset in the file.
+    pub at: usize,
+    /// What to write instead.
+    pub message: String,
 }
 
 impl Sections {
@@ -37,11 +48,18 @@ struct Header {
     only: bool,
 }
 
-/// The sections of `text` ([`Sections`]).
-pub(crate) fn split(text: &str) -> Sections {
+/// The sections of `text` ([`Sections`]); `Err` for a table under `objects` written after
+/// another table, away from its object (TOML allows it; this reader keeps each object's
+/// tables together).
+pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     let mut objects: Vec<Range<usize>> = Vec::new();
     let mut open: Option<usize> = None;
-    for header in headers(text) {
+    let (headers, unclosed) = headers(text);
+    for header in headers {
+        if header.objects && !(header.array && header.only) && open.is_none() && !objects.is_empty() {
+            let message = "a table under `objects` after another table: write it right after the `[[objects]]` table it belongs to (each object's tables are read together)".into();
+            return Err(Misplaced { at: header.start, message });
+        }
         // An `[[objects]]` header opens a section; a header under `objects` stays in it;
         // any other header closes it.
         match (header.objects, header.array && header.objects && header.only, open) {
@@ -67,15 +85,16 @@ pub(crate) fn split(text: &str) -> Sections {
         rest.push_str(&text[from..range.start]);
         from = range.end;
     }
-    Sections { rest, pieces, objects }
+    Ok(Sections { rest, pieces, objects, unclosed })
 }
 
 /// The top-level table headers of `text`, in order: a `[` at the start of a line outside
-/// any value (brackets and braces of values counted, strings and comments whole tokens).
-fn headers(text: &str) -> Vec<Header> {
+/// any value (brackets and braces of values counted, strings and comments whole tokens); and
+/// where the outermost bracket left open at the end opened.
+fn headers(text: &str) -> (Vec<Header>, Option<usize>) {
     let source = Source::new(text);
     let mut out = Vec::new();
-    let (mut depth, mut line_start) = (0usize, true);
+    let (mut depth, mut line_start, mut opened) = (0usize, true, 0usize);
     let mut tokens = source.lex().peekable();
     while let Some(token) = tokens.next() {
         match token.kind() {
@@ -107,6 +126,9 @@ fn headers(text: &str) -> Vec<Header> {
                 line_start = false;
             }
             TokenKind::LeftSquareBracket | TokenKind::LeftCurlyBracket => {
+                if depth == 0 {
+                    opened = token.span().start();
+                }
                 depth += 1;
                 line_start = false;
             }
@@ -117,7 +139,7 @@ fn headers(text: &str) -> Vec<Header> {
             _ => line_start = false,
         }
     }
-    out
+    (out, (depth > 0).then_some(opened))
 }
 
 #[cfg(test)]
@@ -131,7 +153,7 @@ mod tests {
                     [objects.material]\ncolour = [1.0, 0.0, 0.0]\n[[objects.circles]]\nradius = 1.0\n\
                     [[lights]]\nposition = [0.0, 0.0, 9.0]\n\
                     [[ 'objects' ]]\ntype = \"sphere\"\n";
-        let s = split(text);
+        let s = split(text).ok().unwrap();
         assert_eq!(s.objects.len(), 2);
         let first = &text[s.objects[0].clone()];
         assert!(first.starts_with("[[objects]]") && first.contains("[objects.material]") && !first.contains("lights"));
@@ -142,5 +164,11 @@ mod tests {
             let at = s.rest.find(needle).unwrap();
             assert_eq!(&text[s.file_offset(at)..s.file_offset(at) + needle.len()], needle, "{needle} maps back");
         }
+        assert_eq!(s.unclosed, None);
+        // A sub-table away from its object is refused where it is; an open bracket is found.
+        let away = "[[objects]]\ntype = \"sphere\"\n[[lights]]\n[objects.material]\n";
+        assert_eq!(split(away).err().map(|m| m.at), away.find("[objects.material]"));
+        let open = "[camera]\nx = [1,\n[[objects]]\n";
+        assert_eq!(split(open).ok().unwrap().unclosed, open.find("[1"));
     }
 }

@@ -151,6 +151,28 @@ impl Placement {
         )))
     }
 
+    /// A plane through the world point `p` with normal `n`, in the frame: the point of it
+    /// nearest the camera (so that a point given far along the plane neither leaves the frame
+    /// nor costs its offset digits, and a plane through the camera keeps offset 0 exactly)
+    /// and its normal, turned.
+    pub(crate) fn plane(&self, p: E3, n: E3) -> Result<(E3, E3), Invalid> {
+        let n = self.direction(n);
+        let r = self.direction(p);
+        let moved: E3 = [0, 1, 2].map(|k| r[k] + self.shift[k]);
+        let unit = cga_core::euclid::unit(n).ok_or(Invalid::Geometry(cga_core::GeometryError::ZeroVector))?;
+        let d = cga_core::euclid::dot(unit, moved);
+        let foot = unit.map(|x| x * d / self.scale);
+        let distance = foot.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        if Frame::holds(distance) {
+            return Ok((foot, n));
+        }
+        Err(Invalid::Range(format!(
+            "the plane passes {:.1e} from the camera, {distance:.1e} times the scene's size ({:.1e}): ill-conditioned, beyond the 2^200 that f64 renders beside the rest of the scene",
+            distance * self.scale,
+            self.scale
+        )))
+    }
+
     /// A world direction, turned.
     pub(crate) fn direction(&self, d: E3) -> E3 {
         match self.rotor {

@@ -48,18 +48,27 @@ fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
     dot(sub(x, p.origin), p.dir)
 }
 
-/// `down(X)` in lanes: the Euclidean point and whether it is finite, as [`cga_core::down`]
-/// decides it lane by lane.
+/// `down(X)` in lanes: the Euclidean point and whether there is one, as [`cga_core::down`]
+/// decides it lane by lane (a weight not zero and a finite quotient; where `1/w` overflows,
+/// the quotient `x/w` itself, lane by lane).
 fn down4(x: Vector<F64x4>) -> ([F64x4; 3], [bool; 4]) {
     let inv = F64x4::splat(1.0) / x.eo;
-    let point = [x.e1 * inv, x.e2 * inv, x.e3 * inv];
+    let mut point = [x.e1 * inv, x.e2 * inv, x.e3 * inv];
     let (w, inv) = (x.eo.to_array(), inv.to_array());
-    let e = [x.e1.to_array(), x.e2.to_array(), x.e3.to_array()];
-    let finite = core::array::from_fn(|l| {
-        let m = e.iter().fold(1.0f64, |m, c| if c[l].abs() > m { c[l].abs() } else { m });
-        w[l].abs() > tolerance(m) * f64::EPSILON.sqrt() && inv[l].is_finite()
-    });
-    (point, finite)
+    if !inv.iter().all(|i| i.is_finite()) {
+        let e = [x.e1.to_array(), x.e2.to_array(), x.e3.to_array()];
+        for (k, p) in point.iter_mut().enumerate() {
+            let mut lanes = p.to_array();
+            for l in (0..4).filter(|&l| !inv[l].is_finite()) {
+                lanes[l] = e[k][l] / w[l];
+            }
+            *p = F64x4::new(lanes);
+        }
+    }
+    // `x · 0` is 0 for a finite x and NaN otherwise: all three finite where the sum is 0.
+    let zero = F64x4::splat(0.0);
+    let finite = (point[0] * zero + point[1] * zero + point[2] * zero).to_array();
+    (point, core::array::from_fn(|l| (w[l] != 0.0) & (finite[l] == 0.0)))
 }
 
 /// `L ∨ S` in lanes, as [`SphereShape::intersect`](crate::shapes::SphereShape) meets it:
