@@ -28,12 +28,13 @@ pub const MAX_OBJECTS: usize = 1 << 20;
 /// Lights in a scene (each costs a shadow ray at every hit).
 pub const MAX_LIGHTS: usize = 1024;
 
-/// Bytes of a scene file outside its `[[objects]]` tables (camera, settings, lights, and any
-/// objects written inline as `objects = [ … ]`), which are parsed as one document: TOML's
-/// parser holds some fifty bytes for each byte of a document, so this bounds that at about
-/// 200 MB. `[[objects]]` tables are parsed one at a time and count only against
+/// Tokens (values, keys, brackets, separators; not whitespace or comments) of a scene file
+/// outside its `[[objects]]` tables (camera, settings, lights, and any objects written
+/// inline as `objects = [ … ]`), which are parsed as one document: TOML's parser holds its
+/// tokens, events and values at once, some 150 bytes a token, so this bounds that at about
+/// 160 MB. `[[objects]]` tables are parsed one at a time and count only against
 /// [`MAX_FILE_BYTES`].
-pub const MAX_DOCUMENT_BYTES: usize = 4 << 20;
+pub const MAX_DOCUMENT_TOKENS: usize = 1 << 20;
 
 /// Bytes of a scene file. Larger files (or endless ones such as `/dev/zero`) are refused
 /// after reading this much.

@@ -7,7 +7,7 @@ use crate::camera::{Camera, CameraError};
 use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
 use crate::light::Light;
-use crate::limits::{MAX_DOCUMENT_BYTES, MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
+use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
 use crate::material::Material;
 use crate::settings::Settings;
 use crate::shapes::Shape;
@@ -209,15 +209,15 @@ impl Scene {
             let (line, column) = at(m.at);
             SceneError::Syntax { file: file.into(), line, column, message: m.message }
         })?;
-        if let (Some(open), true) = (sections.unclosed, sections.rest.len() > MAX_DOCUMENT_BYTES) {
+        let tokens = sections::significant_tokens(&sections.rest);
+        if let (Some(open), true) = (sections.unclosed, tokens > MAX_DOCUMENT_TOKENS) {
             let (line, column) = at(open);
             let message = "this bracket is never closed: the rest of the file is read as inside it".into();
             return Err(SceneError::Syntax { file: file.into(), line, column, message });
         }
-        if sections.rest.len() > MAX_DOCUMENT_BYTES {
+        if tokens > MAX_DOCUMENT_TOKENS {
             let message = format!(
-                "the file outside its `[[objects]]` tables holds {} bytes, more than the {MAX_DOCUMENT_BYTES} read at once (objects written as `objects = [ … ]` count here: write them as `[[objects]]` tables, which are read one at a time)",
-                sections.rest.len()
+                "the file outside its `[[objects]]` tables holds {tokens} values, keys and brackets, more than the {MAX_DOCUMENT_TOKENS} read at once (objects written as `objects = [ … ]` count here: write them as `[[objects]]` tables, which are read one at a time)"
             );
             return Err(SceneError::Syntax { file: file.into(), line: 1, column: 1, message });
         }

@@ -376,6 +376,23 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:6:", "light 1", "not both"],
         ),
         (
+            "a light of neither kind",
+            format!("{CAMERA}[[lights]]\ncolour = [1.0, 1.0, 1.0]\n"),
+            vec!["bad.toml:6:", "light 1", "takes `position`"],
+        ),
+        (
+            "an object's table away from it",
+            format!(
+                "{CAMERA}[[objects]]\ntype = \"sphere\"\n[[lights]]\nposition = [0.0, 0.0, 9.0]\n[objects.material]\ncolour = [1.0, 0.0, 0.0]\n"
+            ),
+            vec!["bad.toml:10:", "right after the `[[objects]]` table"],
+        ),
+        (
+            "a bracket never closed in a large file",
+            format!("{CAMERA}[render]\nbackground = [0.0, 0.0,\n{}", "0.0,\n".repeat(600_000)),
+            vec!["bad.toml:7:14:", "never closed"],
+        ),
+        (
             "a light of no direction",
             format!("{CAMERA}[[lights]]\ndirection = [0.0, 0.0, 0.0]\n"),
             vec!["bad.toml:7:", "`direction`", "zero"],
@@ -384,7 +401,7 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
         (
             "objects inline beyond what is read at once",
             format!("objects = [{}]\n{CAMERA}", "{ type = \"sphere\" }, ".repeat(250_000)),
-            vec!["bad.toml:1:", "4194304", "write them as `[[objects]]` tables"],
+            vec!["bad.toml:1:", "1048576", "write them as `[[objects]]` tables"],
         ),
         (
             "more objects than the limit",
@@ -489,6 +506,7 @@ fn inputs_at_the_edges_of_the_limits_load_and_render() {
                  c2 = {{ blade = [-0.16887e-300, -0.75896e-300, -0.91709e-300, -0.92729e-300, -0.97853e-300, 0.63805e-300, -0.0462e-300, -0.12142e-300, -0.29479e-300, -0.39902e-300] }}\n{MATERIAL}"
             ),
         ),
+        ("10 MB of comments", format!("{}{}", sphere_at("0.0"), format!("# {}\n", "x".repeat(998)).repeat(10_000))),
         (
             "a focal length of 1e-300",
             sphere_at("0.0").replace("width = 8\n", "width = 8\nfocal_length = 1e-300\nx_max = 2e-300\n"),

@@ -88,6 +88,13 @@ pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     Ok(Sections { rest, pieces, objects, unclosed })
 }
 
+/// How many tokens of `text` are not whitespace, newlines or comments: what parsing it as
+/// one document costs memory for (comments and blank lines next to nothing).
+pub(crate) fn significant_tokens(text: &str) -> usize {
+    let trivia = |k| matches!(k, TokenKind::Whitespace | TokenKind::Newline | TokenKind::Comment);
+    Source::new(text).lex().filter(|t| !trivia(t.kind())).count()
+}
+
 /// The top-level table headers of `text`, in order: a `[` at the start of a line outside
 /// any value (brackets and braces of values counted, strings and comments whole tokens); and
 /// where the outermost bracket left open at the end opened.
