@@ -102,12 +102,22 @@ proptest! {
 /// nothing: the dense `V X Ṽ` has no blade outside the sandwich's output type.
 #[test]
 fn versor_sandwiches_stay_in_type() {
-    use cga_core::{Motor, Rotor, Translator};
+    use cga_core::{Dilator, Motor, Rotor, Translator, Transversor, Vector};
     let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise();
     let translator = Translator { s: 1.0, e1i: -0.6, e2i: 1.5, e3i: 0.25 };
     let motor: Motor = rotor * translator;
-    let versors: [(&str, Multivector); 3] =
-        [("Rotor", rotor.into()), ("Translator", translator.into()), ("Motor", motor.into())];
+    let dilator = Dilator::new([0.4, -1.2, 2.0], 1.7).unwrap();
+    let transversor = Transversor::from_vector([0.3, -0.2, 0.5]);
+    // A vector versor: the dual sphere of centre (1, 2, −1) and radius 1.5.
+    let sphere = Vector { e1: 1.0, e2: 2.0, e3: -1.0, eo: 1.0, ei: 0.5 * (6.0 - 2.25) };
+    let versors: [(&str, Multivector); 6] = [
+        ("Rotor", rotor.into()),
+        ("Translator", translator.into()),
+        ("Motor", motor.into()),
+        ("Dilator", dilator.into()),
+        ("Transversor", transversor.into()),
+        ("Vector", sphere.into()),
+    ];
     let a: [f64; 32] = std::array::from_fn(|i| ((i * 37 % 11) as f64 - 5.0) / 3.0);
     let mut checked = 0;
     for e in product_table::<f64>().into_iter().filter(|e| e.kind == ProductKind::Sandwich) {
@@ -120,5 +130,5 @@ fn versor_sandwiches_stay_in_type() {
         assert!(max_rel_diff(&typed, &full) <= 1e-12, "{} X Ṽ with X a {}: typed differs", e.lhs, e.rhs);
         checked += 1;
     }
-    assert!(checked >= 3 * 10, "only {checked} sandwiches");
+    assert!(checked >= 6 * 10, "only {checked} sandwiches");
 }

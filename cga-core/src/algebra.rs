@@ -36,7 +36,9 @@ cga_macros::algebra! {
     /// `X1 ∧ X2 ∧ ei` a line, `X1 ∧ X2 ∧ X3 ∧ ei` a plane, each typed as such.
     type Infinity = [ei];
     /// A grade-1 vector: a conformal point `x + ½x² ei + eo`, a dual sphere or a dual plane.
-    type Vector = [grade(1)];
+    /// A versor too: a dual plane `π` reflects by `π X π⁻¹`, a dual sphere inverts by `σ X σ⁻¹`
+    /// (up to the grade sign of `reflect_in`/`invert_in`).
+    versor Vector = [grade(1)];
     /// A grade-2 element: a point pair `X1 ∧ X2` (OPNS), or a bivector generator.
     type Bivector = [grade(2)];
     /// A flat point `X ∧ ei`.
@@ -60,6 +62,14 @@ cga_macros::algebra! {
     versor Translator = [s, e1i, e2i, e3i];
     /// A rigid motion: rotor times translator.
     versor Motor = [s, e12, e13, e23, e1i, e2i, e3i, e123i];
+    /// A dilation about a point `c` by `e^λ`: `cosh(λ/2) + sinh(λ/2) (c ∧ ei + eo ∧ ei)`.
+    versor Dilator = [s, e1i, e2i, e3i, eoi];
+    /// A transversion `1 + eo t` (a translation conjugated by the inversion in the unit
+    /// sphere): it keeps the origin and moves the point at infinity.
+    versor Transversor = [s, e1o, e2o, e3o];
+    /// The generator `B` of a rigid motion `M = exp(B)`: rotation parts `e12, e13, e23` and
+    /// translation parts `e1i, e2i, e3i` (the dual of a line, a screw's axis and pitch).
+    type Generator = [e12, e13, e23, e1i, e2i, e3i];
     /// Any even element: scalar, bivector and 4-vector parts.
     type Even = [grade(0), grade(2), grade(4)];
     /// Any odd element: vector, trivector and pseudoscalar parts.

@@ -36,6 +36,9 @@ pub enum GeometryError {
     /// The blade is zero or null and cannot be normalised.
     #[error("the object is degenerate (zero or null)")]
     Degenerate,
+    /// Mixed grades, or `X X̃` not a scalar: not the blade of any object.
+    #[error("the multivector is not a blade (mixed grades, or X X̃ is not a scalar)")]
+    NotABlade,
     /// An input is infinite or NaN.
     #[error("an input is not finite")]
     NonFinite,

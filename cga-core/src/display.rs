@@ -5,8 +5,8 @@
 
 use crate::euclid::{E3, norm};
 use crate::{
-    Bivector, Circle, Even, FlatPoint, Infinity, Line, Motor, Multivector, Odd, Plane, Pseudoscalar, Real, Rotor,
-    Scalar, ScalarQuadvector, Sphere, Translator, Vector, down,
+    Bivector, Circle, Dilator, Even, FlatPoint, Generator, Infinity, Line, Motor, Multivector, Odd, Plane,
+    Pseudoscalar, Real, Rotor, Scalar, ScalarQuadvector, Sphere, Translator, Transversor, Vector, down,
 };
 use core::fmt::{Display, Formatter, Result};
 
@@ -83,7 +83,10 @@ terms_of!(
     Plane,
     Circle,
     Sphere,
-    Motor
+    Motor,
+    Generator,
+    Dilator,
+    Transversor
 );
 
 macro_rules! by_terms {
@@ -97,7 +100,7 @@ macro_rules! by_terms {
     )*};
 }
 
-by_terms!(Scalar, Infinity, Pseudoscalar, ScalarQuadvector, Even, Odd);
+by_terms!(Scalar, Infinity, Pseudoscalar, ScalarQuadvector, Even, Odd, Transversor);
 
 impl<T: Real> Display for Multivector<T> {
     /// The nonzero coefficients by orthonormal blade name.
@@ -290,6 +293,46 @@ impl<T: Real> Display for Motor<T> {
                 triple(f, t)
             }
             None => self.terms(f),
+        }
+    }
+}
+
+impl<T: Real> Display for Generator<T> {
+    /// The screw that `exp(B)` is: `generator of rotation θ° about the line through (p)
+    /// along (a), pitch h per radian`, or `generator of translation (t)`.
+    fn fmt(&self, f: &mut Formatter<'_>) -> Result {
+        let screw = self.screw();
+        if screw.angle.to_f64() > 0.0 {
+            f.write_str("generator of rotation ")?;
+            num(f, screw.angle.to_f64().to_degrees())?;
+            f.write_str("° about the line through ")?;
+            triple(f, screw.point)?;
+            f.write_str(" along ")?;
+            triple(f, screw.axis)?;
+            f.write_str(", pitch ")?;
+            num(f, screw.pitch.to_f64())
+        } else {
+            f.write_str("generator of translation ")?;
+            triple(f, screw.translation)
+        }
+    }
+}
+
+impl<T: Real> Display for Dilator<T> {
+    /// `dilation by s about (c)`, or the coefficients when it is not one.
+    fn fmt(&self, f: &mut Formatter<'_>) -> Result {
+        let (s, sh) = (self.factor().to_f64(), self.eoi.to_f64());
+        if s > 0.0 && s.is_finite() && sh != 0.0 {
+            f.write_str("dilation by ")?;
+            num(f, s)?;
+            f.write_str(" about ")?;
+            triple(f, [self.e1i, self.e2i, self.e3i].map(|x| x.to_f64() / sh))
+        } else if sh == 0.0 && self.s.to_f64() != 0.0 {
+            f.write_str("translation ")?;
+            let w = self.s.to_f64();
+            triple(f, [self.e1i, self.e2i, self.e3i].map(|x| -2.0 * x.to_f64() / w))
+        } else {
+            self.terms(f)
         }
     }
 }

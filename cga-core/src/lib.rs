@@ -99,27 +99,37 @@
 //! [`algebra`]; error bounds against `ρ = |c|/r` in docs/STABILITY.md.
 
 pub mod algebra;
+pub mod classify;
 pub mod conformal;
 mod convert;
+#[cfg(feature = "glam")]
+pub mod cookbook;
 pub mod curvature;
 mod display;
 mod dual;
 pub mod euclid;
 pub mod evolved;
 pub mod interpolate;
+pub mod intersect;
+pub mod measure;
 pub mod meet;
 mod real;
+pub mod reflect;
 pub mod simd;
 pub mod spline;
 pub mod versor;
 
 pub use algebra::*;
+pub use classify::{Kind, Reality};
 pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, ei, up};
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
+pub use intersect::Meet;
+pub use measure::{Closest, Nearest, distance};
 pub use meet::{Hit, RoundMeet};
 pub use real::Real;
+pub use reflect::Reflect;
 pub use spline::{Joining, Spline, SplineError, bezier};
-pub use versor::{VersorError, exp, rotor_between_lines};
+pub use versor::{MotorSpline, Screw, VersorError, exp, rotor_between_lines};

@@ -1,0 +1,112 @@
+//! Moving a million points by one motor, against glam on the same data in the same run.
+//! `cargo bench --bench bulk`: criterion's medians per method, then an interleaved
+//! comparison (`ROUNDS` alternating rounds of every method, medians and ratios to glam's
+//! `DAffine3::transform_point3`), which is what the README's figure quotes: on a shared,
+//! noisy machine only ratios measured side by side mean anything.
+
+use cga_core::{Motor, Rotor, Sandwich, down, up};
+use criterion::{Criterion, Throughput};
+use glam::{DAffine3, DQuat, DVec3};
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+const N: usize = 1_000_000;
+const ROUNDS: usize = 15;
+
+fn data() -> (Motor, Vec<[f64; 3]>) {
+    let r = Rotor::from_axis_angle([0.3, -0.5, 0.8], 1.1).unwrap();
+    let m = Motor::from_rotor_translation(r, [1.5, -2.0, 0.25]);
+    let points =
+        (0..N).map(|i| i as f64).map(|t| [(1.3 * t).sin() * 3.0, (0.7 * t).cos() * 2.0, (2.9 * t).sin()]).collect();
+    (m, points)
+}
+
+type Method = (&'static str, Box<dyn Fn(&[[f64; 3]], &mut [[f64; 3]])>);
+
+fn methods(m: Motor) -> Vec<Method> {
+    let affine = DAffine3::from(m);
+    let (q, t): (DQuat, DVec3) = m.into();
+    vec![
+        (
+            "glam DAffine3::transform_point3",
+            Box::new(move |x: &[[f64; 3]], out: &mut [[f64; 3]]| {
+                for (o, p) in out.iter_mut().zip(x) {
+                    *o = affine.transform_point3(DVec3::from(*p)).to_array();
+                }
+            }),
+        ),
+        (
+            "glam DQuat * v + t",
+            Box::new(move |x: &[[f64; 3]], out: &mut [[f64; 3]]| {
+                for (o, p) in out.iter_mut().zip(x) {
+                    *o = (q * DVec3::from(*p) + t).to_array();
+                }
+            }),
+        ),
+        (
+            "Motor::transform_points",
+            Box::new(move |x: &[[f64; 3]], out: &mut [[f64; 3]]| {
+                m.transform_points(x, out).unwrap();
+            }),
+        ),
+        (
+            "Motor::move_point",
+            Box::new(move |x: &[[f64; 3]], out: &mut [[f64; 3]]| {
+                for (o, p) in out.iter_mut().zip(x) {
+                    *o = m.move_point(*p);
+                }
+            }),
+        ),
+        (
+            "down(M up(x) M̃)",
+            Box::new(move |x: &[[f64; 3]], out: &mut [[f64; 3]]| {
+                for (o, p) in out.iter_mut().zip(x) {
+                    *o = down(m.sandwich(up(*p))).unwrap();
+                }
+            }),
+        ),
+    ]
+}
+
+fn criterion_runs(c: &mut Criterion, m: Motor, points: &[[f64; 3]]) {
+    let mut g = c.benchmark_group("move_1e6_points");
+    g.throughput(Throughput::Elements(N as u64)).sample_size(20).measurement_time(Duration::from_secs(4));
+    let mut out = vec![[0.0; 3]; N];
+    for (name, f) in methods(m) {
+        g.bench_function(name, |b| b.iter(|| f(black_box(points), black_box(&mut out))));
+    }
+    g.finish();
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Every method once per round, in turn, `ROUNDS` times; medians in ms and ratios to glam's
+/// affine map.
+fn interleaved(m: Motor, points: &[[f64; 3]]) {
+    let methods = methods(m);
+    let mut out = vec![[0.0; 3]; N];
+    let mut times = vec![Vec::new(); methods.len()];
+    for _ in 0..ROUNDS {
+        for (k, (_, f)) in methods.iter().enumerate() {
+            let start = Instant::now();
+            f(black_box(points), black_box(&mut out));
+            times[k].push(start.elapsed().as_secs_f64() * 1e3);
+        }
+    }
+    let medians: Vec<f64> = times.into_iter().map(median).collect();
+    println!("\nmoving {N} points, {ROUNDS} interleaved rounds, median ms and ratio to glam's affine map:");
+    for ((name, _), t) in methods.iter().zip(&medians) {
+        println!("  {name:34} {t:7.3} ms  {:5.2}×", t / medians[0]);
+    }
+}
+
+fn main() {
+    let (m, points) = data();
+    interleaved(m, &points);
+    let mut c = Criterion::default().configure_from_args();
+    criterion_runs(&mut c, m, &points);
+    c.final_summary();
+}

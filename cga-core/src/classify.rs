@@ -1,0 +1,208 @@
+//! What an arbitrary blade is: a round (real, imaginary or tangent), a flat or a direction,
+//! and its Euclidean parameters (Dorst, Fontijne and Mann, *Geometric Algebra for Computer
+//! Science*, ch. 14–15, in this crate's OPNS reading: `X ∧ ei = 0` for flats).
+//!
+//! For a blade `X` of grade `k` with `Π = X ∧ ei` and `w = ei ⌋ X`:
+//! - `w = 0` and `Π = 0`: a direction (a free blade `E ∧ ei`, no position);
+//! - `Π = 0`, `w ≠ 0`: a flat (flat point, line, plane) read by the flat's own read-back;
+//! - `Π ≠ 0`: a round, with centre `down(X ei X)` and `r² = σ_k ⟨X X⟩₀ / ⟨Π Π⟩₀`,
+//!   `σ_k = +1, +1, −1, +1` for `k = 1 … 4` (a point pair, circle, sphere of radius 1
+//!   measured give 1): real for `r² > 0`, imaginary for `r² < 0`, tangent (a point with a
+//!   direction) for `r² = 0` to rounding. Grade 1 reads as a dual sphere or plane (a
+//!   conformal point is the tangent, zero-radius case).
+//!
+//! Zero to rounding means within `64 ε` of the size of the terms that cancel.
+
+use crate::conformal::{GeometryError, Result, down, ei};
+use crate::euclid::{E3, norm, unit};
+use crate::{Bivector, Circle, FlatPoint, GeometricProduct, Line, Multivector, Plane, Real, Sphere, Vector};
+
+/// Whether a round is real, imaginary or a tangent (zero radius).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reality {
+    /// `r² > 0`.
+    Real,
+    /// `r² < 0` (an imaginary sphere, circle or point pair).
+    Imaginary,
+    /// `r² = 0` to rounding: a point with a direction (or a conformal point).
+    Tangent,
+}
+
+/// What a blade is, with its Euclidean parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Kind<T: Real> {
+    /// Every coefficient zero.
+    Zero,
+    /// A round: a dual sphere (grade 1), point pair (2), circle (3) or sphere (4), with its
+    /// centre and signed squared radius.
+    Round {
+        /// The grade of the blade.
+        grade: usize,
+        /// Real, imaginary or tangent.
+        reality: Reality,
+        /// The centre `down(X ei X)`.
+        centre: E3<T>,
+        /// `r²`, negative for an imaginary round.
+        radius_squared: T,
+    },
+    /// A flat point `x ∧ ei`.
+    FlatPoint(E3<T>),
+    /// A line: a point (nearest the origin) and a unit direction.
+    Line {
+        /// The point nearest the origin.
+        point: E3<T>,
+        /// The unit direction.
+        direction: E3<T>,
+    },
+    /// A plane `n · x = δ`, or a dual plane (grade 1).
+    Plane {
+        /// The grade of the blade (1 for a dual plane `n + δ ei`).
+        grade: usize,
+        /// The unit normal.
+        normal: E3<T>,
+        /// The offset `δ`.
+        offset: T,
+    },
+    /// A direction: `ei` itself (grade 1), or a free blade `E ∧ ei` whose Euclidean part `E`
+    /// is a vector (grade 2, `direction` is it) or a bivector (grade 3, `direction` is its
+    /// normal); no position.
+    Direction {
+        /// The grade of the blade.
+        grade: usize,
+        /// The unit Euclidean direction (zero for `ei`).
+        direction: E3<T>,
+    },
+}
+
+fn largest<T: Real>(c: &[T]) -> T {
+    c.iter().fold(T::zero(), |m, x| m.max(x.abs()))
+}
+
+/// `|x| ≤ 64 ε s`.
+fn negligible<T: Real>(x: T, s: T) -> bool {
+    x.abs() <= T::from_f64(64.0) * T::epsilon() * s
+}
+
+fn all_negligible<T: Real>(c: &[T], s: T) -> bool {
+    c.iter().all(|x| negligible(*x, s))
+}
+
+/// A round's centre and radius from `X`, `⟨X X⟩₀`, `⟨Π Π⟩₀` and `σ_k`.
+fn round<T: Real>(grade: usize, centre: Vector<T>, xx: T, pp: T, sign: T, size: T) -> Result<Kind<T>> {
+    let centre = down(centre)?;
+    let radius_squared = sign * xx / pp;
+    let reality = if negligible(xx, size * size) {
+        Reality::Tangent
+    } else if radius_squared > T::zero() {
+        Reality::Real
+    } else {
+        Reality::Imaginary
+    };
+    let radius_squared = if reality == Reality::Tangent { T::zero() } else { radius_squared };
+    Ok(Kind::Round { grade, reality, centre, radius_squared })
+}
+
+impl<T: Real> Vector<T> {
+    /// A grade-1 blade: a dual sphere (`Round`, a conformal point being its tangent,
+    /// zero-radius case), a dual plane `n + δ ei`, or `ei` (a direction at infinity).
+    pub fn classify(&self) -> Result<Kind<T>> {
+        let size = largest(&self.to_array());
+        if size == T::zero() {
+            return Ok(Kind::Zero);
+        }
+        let w = self.eo; // −ei · X
+        if negligible(w, size) {
+            let n = [self.e1, self.e2, self.e3];
+            return Ok(match unit(n) {
+                Some(normal) if !all_negligible(&n, size) => {
+                    Kind::Plane { grade: 1, normal, offset: self.ei / norm(n) }
+                }
+                _ => Kind::Direction { grade: 1, direction: [T::zero(); 3] },
+            });
+        }
+        let pi = *self ^ ei::<T>();
+        round(1, *self, self.norm_squared(), pi.gp(pi).s, T::one(), size)
+    }
+}
+
+/// The flat reading of a grade-2 blade with `X ∧ ei = 0`: a flat point, or `t ∧ ei`.
+fn flat_pair<T: Real>(x: &Bivector<T>, size: T) -> Kind<T> {
+    let flat = FlatPoint::from_storage(&x.to_storage());
+    match flat.point() {
+        Some(p) if !negligible(flat.eoi, size) => Kind::FlatPoint(p),
+        _ => Kind::Direction { grade: 2, direction: unit([flat.e1i, flat.e2i, flat.e3i]).unwrap_or([T::zero(); 3]) },
+    }
+}
+
+/// The flat reading of a grade-3 blade: a line, or `B ∧ ei` (its normal).
+fn flat_circle<T: Real>(x: &Circle<T>, _: T) -> Kind<T> {
+    let line = Line::from_storage(&x.to_storage());
+    match (line.point(), line.direction()) {
+        (Ok(point), Ok(direction)) => Kind::Line { point, direction },
+        _ => {
+            Kind::Direction { grade: 3, direction: unit([line.e23i, -line.e13i, line.e12i]).unwrap_or([T::zero(); 3]) }
+        }
+    }
+}
+
+/// The flat reading of a grade-4 blade: a plane, or `e123 ∧ ei`.
+fn flat_sphere<T: Real>(x: &Sphere<T>, _: T) -> Kind<T> {
+    match Plane::from_storage(&x.to_storage()).normal_offset() {
+        Ok((normal, offset)) => Kind::Plane { grade: 4, normal, offset },
+        Err(_) => Kind::Direction { grade: 4, direction: [T::zero(); 3] },
+    }
+}
+
+/// `classify` for the blades of grade 2 … 4: zero, the flat reading when `X ∧ ei = 0`, else
+/// a round with centre `down(X ei X)` and `r² = σ_k ⟨X X⟩₀ / ⟨Π Π⟩₀`.
+macro_rules! classify_round {
+    ($($ty:ident: $grade:literal, $sign:literal, $flat:ident, $doc:literal;)*) => {$(
+        impl<T: Real> $ty<T> {
+            #[doc = $doc]
+            pub fn classify(&self) -> Result<Kind<T>> {
+                let size = largest(&self.to_array());
+                if size == T::zero() {
+                    return Ok(Kind::Zero);
+                }
+                let pi = *self ^ ei::<T>();
+                if all_negligible(&pi.to_array(), size) {
+                    return Ok($flat(self, size));
+                }
+                let centre = self.gp(ei::<T>()).gp(*self).grade1();
+                round($grade, centre, self.gp(*self).s, pi.gp(pi).s, T::from_f64($sign), size)
+            }
+        }
+    )*};
+}
+
+classify_round! {
+    Bivector: 2, 1.0, flat_pair, "A grade-2 blade: a point pair (real, imaginary or tangent), a flat point, or a direction `t ∧ ei`.";
+    Circle: 3, -1.0, flat_circle, "A grade-3 blade: a circle (real, imaginary or tangent), a line, or a direction `B ∧ ei` (`direction` the normal of the bivector `B`).";
+    Sphere: 4, 1.0, flat_sphere, "A grade-4 blade: a sphere (real, imaginary or tangent), a plane, or the direction `e123 ∧ ei`.";
+}
+
+impl<T: Real> Multivector<T> {
+    /// The kind of a dense blade: `NotABlade` unless it is of one grade from 1 to 4 with
+    /// `X X̃` a scalar (to rounding), then as the typed `classify` of that grade.
+    pub fn classify(&self) -> Result<Kind<T>> {
+        let c = self.to_storage();
+        let size = largest(&c);
+        if size == T::zero() {
+            return Ok(Kind::Zero);
+        }
+        let grades: Vec<usize> = (0..=5).filter(|&k| !all_negligible(&self.grade(k).to_storage(), size)).collect();
+        let [k] = grades[..] else { return Err(GeometryError::NotABlade) };
+        let square = *self * self.reverse();
+        let rest = square.to_storage();
+        if !all_negligible(&rest[1..], size * size) {
+            return Err(GeometryError::NotABlade);
+        }
+        match k {
+            1 => Vector::from_dense(self).classify(),
+            2 => Bivector::from_dense(self).classify(),
+            3 => Circle::from_dense(self).classify(),
+            4 => Sphere::from_dense(self).classify(),
+            _ => Err(GeometryError::NotABlade),
+        }
+    }
+}
