@@ -46,7 +46,7 @@ fn median_ns(mut f: impl FnMut()) -> f64 {
 /// Times an operation over `input` one at a time (`scalar`), and through
 /// [`cga_core::simd::run`] (`batch`: packing, the lanes, unpacking, dispatched to AVX2
 /// where the CPU has it), printing both.
-fn both<K: Kernel>(name: &str, input: &[K::Input], op: impl Fn(K::Input) -> K::Output)
+fn both<K: Kernel + Default>(name: &str, input: &[K::Input], op: impl Fn(K::Input) -> K::Output)
 where
     K::Output: Default + PartialEq + std::fmt::Debug,
 {
@@ -59,15 +59,15 @@ where
     });
     let one_at_a_time = out.clone();
     let batch = median_ns(|| {
-        run::<K>(black_box(input), &mut out);
+        run(&K::default(), black_box(input), &mut out);
         black_box(&out);
     });
     // What was timed gives the bits of one at a time.
     assert_eq!(out, one_at_a_time, "{name}: run differs from one at a time");
     let packed_in: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
-    let mut packed_out: Vec<_> = packed_in.iter().map(|&x| K::apply(x)).collect();
+    let mut packed_out: Vec<_> = packed_in.iter().map(|&x| K::default().apply(x)).collect();
     let packets = median_ns(|| {
-        run_packed::<K>(black_box(&packed_in), &mut packed_out);
+        run_packed(&K::default(), black_box(&packed_in), &mut packed_out);
         black_box(&packed_out);
     });
     println!("{name} scalar {scalar:.3}");

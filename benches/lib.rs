@@ -16,12 +16,13 @@ pub mod kernels {
     macro_rules! kernel {
         ($(#[$doc:meta])* $name:ident: $input:ty => $output:ident, |$x:pat_param| $body:expr) => {
             $(#[$doc])*
+            #[derive(Default)]
             pub struct $name;
             impl Kernel for $name {
                 type Input = $input;
                 type Output = $output;
                 #[inline(always)]
-                fn apply($x: <$input as Lanes>::Packed) -> $output<F64x4> {
+                fn apply(&self, $x: <$input as Lanes>::Packed) -> $output<F64x4> {
                     $body
                 }
             }

@@ -50,12 +50,12 @@ fn run_ref<A, R>(g: &mut BenchmarkGroup<WallTime>, name: &str, a: &[A], op: impl
 
 /// Ours on packets of four ([`cga_core::simd::run_packed`]): the same 256 operations as 64
 /// packets, packed beforehand (the form a packet tracer keeps its data in).
-fn run_packets<K: Kernel>(g: &mut BenchmarkGroup<WallTime>, input: &[K::Input]) {
+fn run_packets<K: Kernel + Default>(g: &mut BenchmarkGroup<WallTime>, input: &[K::Input]) {
     let packed: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
-    let mut out: Vec<_> = packed.iter().map(|&x| K::apply(x)).collect();
+    let mut out: Vec<_> = packed.iter().map(|&x| K::default().apply(x)).collect();
     g.bench_function("cga-packets", |bench| {
         bench.iter(|| {
-            run_packed::<K>(black_box(&packed), &mut out);
+            run_packed(&K::default(), black_box(&packed), &mut out);
             black_box(&out);
         })
     });

@@ -453,6 +453,8 @@ fn map_lanes<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: &impl Fn(I::Pack
 /// finds: a closure handed to a function compiled for AVX2 is a call LLVM may decline to
 /// inline (it did, for every product bigger than a rotor's), and a call out of the
 /// AVX2 function runs baseline code; a trait method marked `#[inline(always)]` is inlined.
+/// A kernel may carry state known only at run time (a motor, a sphere): `apply` takes
+/// `&self`, and [`splat`] puts a value into every lane.
 ///
 /// ```
 /// use cga_core::simd::{F64x4, Kernel, run};
@@ -462,15 +464,31 @@ fn map_lanes<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: &impl Fn(I::Pack
 ///     type Input = (Line, Sphere);
 ///     type Output = PointPair;
 ///     #[inline(always)]
-///     fn apply((l, s): (Line<F64x4>, Sphere<F64x4>)) -> PointPair<F64x4> {
+///     fn apply(&self, (l, s): (Line<F64x4>, Sphere<F64x4>)) -> PointPair<F64x4> {
 ///         l & s
 ///     }
 /// }
 /// let line = Line::through([0.5, 0.0, -3.0], [0.5, 0.0, 3.0]).unwrap();
 /// let input = vec![(line, Sphere::from_centre_radius([0.0; 3], 1.0).unwrap()); 6];
 /// let mut out = vec![PointPair::zero(); 6];
-/// run::<Meet>(&input, &mut out).unwrap();
+/// run(&Meet, &input, &mut out).unwrap();
 /// assert_eq!(out[5], line & input[5].1);
+///
+/// // A kernel with state: one sphere, given at run time, met by many lines.
+/// use cga_core::simd::splat;
+/// struct MeetSphere(Sphere<F64x4>);
+/// impl Kernel for MeetSphere {
+///     type Input = Line;
+///     type Output = PointPair;
+///     #[inline(always)]
+///     fn apply(&self, l: Line<F64x4>) -> PointPair<F64x4> {
+///         l & self.0
+///     }
+/// }
+/// let sphere = Sphere::from_centre_radius([0.0; 3], 1.0).unwrap();
+/// let lines = vec![line; 6];
+/// run(&MeetSphere(splat(sphere)), &lines, &mut out).unwrap();
+/// assert_eq!(out[3], line & sphere);
 /// ```
 pub trait Kernel {
     /// What one operation takes (a type, or a tuple of types).
@@ -478,31 +496,38 @@ pub trait Kernel {
     /// What it gives.
     type Output: Lanes;
     /// The operation on four operands at once.
-    fn apply(x: <Self::Input as Lanes>::Packed) -> <Self::Output as Lanes>::Packed;
+    fn apply(&self, x: <Self::Input as Lanes>::Packed) -> <Self::Output as Lanes>::Packed;
+}
+
+/// `x` in every lane: a value of any generated type as a packet of four copies (a kernel's
+/// run-time state, such as the motor every point is moved by).
+#[inline]
+pub fn splat<X: Lanes>(x: X) -> X::Packed {
+    X::pack([x; 4])
 }
 
 /// `out[k] = K(input[k])` for every `k`, four at a time, compiled for AVX2 and FMA where the
 /// CPU has them (detected once, at run time: the build stays baseline x86-64) and for the
 /// baseline otherwise. The results are the same bits either way (no multiply–add is
 /// contracted). `None`, and nothing written, where the lengths differ.
-pub fn run<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
+pub fn run<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
     if input.len() != out.len() {
         return None;
     }
     #[cfg(target_arch = "x86_64")]
     if avx2() {
         // SAFETY: the CPU has the features `run_avx2` is compiled for.
-        unsafe { run_avx2::<K>(input, out) };
+        unsafe { run_avx2(kernel, input, out) };
         return Some(());
     }
-    map_lanes(input, out, &K::apply);
+    map_lanes(input, out, &|x| kernel.apply(x));
     Some(())
 }
 
 /// [`run`]'s loop compiled with AVX2 and FMA enabled.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn run_avx2<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) {
+unsafe fn run_avx2<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) {
     // `K::apply` is a function item marked `#[inline(always)]`: inlined, so compiled for AVX2;
     // the values go into and out of lanes by AVX transposes, in place.
     let whole = input.len() / 4 * 4;
@@ -511,27 +536,27 @@ unsafe fn run_avx2<K: Kernel>(input: &[K::Input], out: &mut [K::Output]) {
         // SAFETY: the CPU has AVX2 (so AVX); the rows are the chunks' four values.
         unsafe {
             let lanes = K::Input::pack_rows([0, 1, 2, 3].map(|i| &raw const x[i]));
-            K::Output::unpack_rows(K::apply(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
+            K::Output::unpack_rows(kernel.apply(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
         }
         not_across_iterations();
     }
-    map_lanes(&input[whole..], &mut out[whole..], &K::apply)
+    map_lanes(&input[whole..], &mut out[whole..], &|x| kernel.apply(x))
 }
 
 /// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
 /// `out[k] = K(input[k])`; dispatched to AVX2 and FMA the same way. `None`, and nothing
 /// written, where the lengths differ.
-pub fn run_packed<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()> {
+pub fn run_packed<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()> {
     if input.len() != out.len() {
         return None;
     }
     #[cfg(target_arch = "x86_64")]
     if avx2() {
         // SAFETY: the CPU has the features `run_packed_avx2` is compiled for.
-        unsafe { run_packed_avx2::<K>(input, out) };
+        unsafe { run_packed_avx2(kernel, input, out) };
         return Some(());
     }
-    packed_loop::<K>(input, out);
+    packed_loop(kernel, input, out);
     Some(())
 }
 
@@ -549,14 +574,14 @@ pub type Packed<X> = <X as Lanes>::Packed;
 /// [`run_packed`]'s loop compiled with AVX2 and FMA enabled.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn run_packed_avx2<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
-    packed_loop::<K>(input, out)
+unsafe fn run_packed_avx2<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+    packed_loop(kernel, input, out)
 }
 
 #[inline(always)]
-fn packed_loop<K: Kernel>(input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+fn packed_loop<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
     for (o, &x) in out.iter_mut().zip(input) {
-        *o = K::apply(x);
+        *o = kernel.apply(x);
         not_across_iterations();
     }
 }
@@ -583,8 +608,31 @@ mod tests {
         type Input = (Motor, Vector);
         type Output = Vector;
         #[inline(always)]
-        fn apply((m, x): (Motor<F64x4>, Vector<F64x4>)) -> Vector<F64x4> {
+        fn apply(&self, (m, x): (Motor<F64x4>, Vector<F64x4>)) -> Vector<F64x4> {
             m.sandwich(x)
+        }
+    }
+
+    /// A motor given at run time, in every lane.
+    struct MoveBy(Motor<F64x4>);
+    impl Kernel for MoveBy {
+        type Input = Vector;
+        type Output = Vector;
+        #[inline(always)]
+        fn apply(&self, x: Vector<F64x4>) -> Vector<F64x4> {
+            self.0.sandwich(x)
+        }
+    }
+
+    #[test]
+    fn kernels_carry_run_time_state_and_give_the_bits_of_one_at_a_time() {
+        let m: Motor =
+            Motor::from_rotor_translation(Rotor::from_axis_angle([1.0, 2.0, 3.0], 0.7).unwrap(), [1.0, -2.0, 0.5]);
+        let points: Vec<Vector> = (0..11).map(|k| up([k as f64, 0.5 * k as f64, -1.0])).collect();
+        let mut out = vec![Vector::zero(); points.len()];
+        run(&MoveBy(splat(m)), &points, &mut out).unwrap();
+        for (x, y) in points.iter().zip(&out) {
+            assert_eq!(*y, m.sandwich(*x));
         }
     }
 
@@ -593,7 +641,7 @@ mod tests {
         type Input = (Circle, Circle);
         type Output = Even;
         #[inline(always)]
-        fn apply((a, b): (Circle<F64x4>, Circle<F64x4>)) -> Even<F64x4> {
+        fn apply(&self, (a, b): (Circle<F64x4>, Circle<F64x4>)) -> Even<F64x4> {
             a * b
         }
     }
@@ -653,10 +701,10 @@ mod tests {
             let moved: Vec<_> = (0..n).map(|k| (motor(k), point(k, 0.0))).collect();
             let want: Vec<Vector> = moved.iter().map(|&(m, x)| m.sandwich(x)).collect();
             let mut got = vec![Vector::zero(); n];
-            run::<Sandwiched>(&moved, &mut got).unwrap();
+            run(&Sandwiched, &moved, &mut got).unwrap();
             assert_eq!(got, want, "run, n = {n}");
             got.fill(Vector::zero());
-            map_lanes(&moved, &mut got, &Sandwiched::apply);
+            map_lanes(&moved, &mut got, &|x| Sandwiched.apply(x));
             assert_eq!(got, want, "baseline, n = {n}");
             got.fill(Vector::zero());
             map(&moved, &mut got, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)).unwrap();
@@ -670,7 +718,7 @@ mod tests {
             let packets: Vec<_> =
                 circles.chunks_exact(4).map(|c| <(Circle, Circle)>::pack([c[0], c[1], c[2], c[3]])).collect();
             let mut out = vec![Even::<F64x4>::zero(); packets.len()];
-            run_packed::<Product>(&packets, &mut out).unwrap();
+            run_packed(&Product, &packets, &mut out).unwrap();
             for (k, &(a, b)) in circles.iter().enumerate().take(packets.len() * 4) {
                 assert_eq!(Even::unpack(out[k / 4])[k % 4], a * b, "packets, n = {n}");
             }
@@ -681,11 +729,11 @@ mod tests {
     fn lengths_must_agree() {
         let input = vec![(motor(1), point(1, 0.0)); 3];
         let mut out = vec![Vector::zero(); 2];
-        assert_eq!(run::<Sandwiched>(&input, &mut out), None);
+        assert_eq!(run(&Sandwiched, &input, &mut out), None);
         assert_eq!(map(&input, &mut out, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)), None);
         assert_eq!(out, vec![Vector::zero(); 2], "nothing written");
         let mut packed = vec![Vector::<F64x4>::zero(); 1];
-        assert_eq!(run_packed::<Sandwiched>(&[], &mut packed), None);
+        assert_eq!(run_packed(&Sandwiched, &[], &mut packed), None);
     }
 
     #[test]
