@@ -5,8 +5,8 @@
 mod common;
 
 use cga_core::{
-    GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind, RegressiveProduct,
-    UnaryKind, product_table, unary_table,
+    CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind,
+    RegressiveProduct, UnaryKind, product_table, unary_table,
 };
 use common::{grade_at, max_rel_diff};
 use proptest::prelude::*;
@@ -27,6 +27,8 @@ fn dense_product(kind: ProductKind, a: Multivector, b: Multivector) -> Multivect
         ProductKind::Inner => a.inner(b),
         ProductKind::LeftContraction => a.lc(b),
         ProductKind::Regressive => a.vee(b),
+        ProductKind::Commutator => a.commutator(b),
+        ProductKind::ScalarProduct => a.gp(b).grade(0),
         ProductKind::Sandwich => a.sandwich(&b),
     }
 }

@@ -30,11 +30,20 @@ pub enum Product {
     /// (`e_S ∧ ∁e_S = I`): the meet of OPNS objects. It equals `undual(dual A ∧ dual B)`
     /// with `dual(X) = X I⁻¹` up to a sign that depends only on the grades.
     Regressive,
+    /// Commutator product `A × B = ½(A B − B A)`. For orthonormal blades `e_a e_b = ±e_b e_a`,
+    /// so each entry is the geometric product's where the blades anticommute, else zero.
+    Commutator,
 }
 
 impl Product {
-    pub const ALL: [Product; 5] =
-        [Product::Geometric, Product::Outer, Product::Inner, Product::LeftContraction, Product::Regressive];
+    pub const ALL: [Product; 6] = [
+        Product::Geometric,
+        Product::Outer,
+        Product::Inner,
+        Product::LeftContraction,
+        Product::Regressive,
+        Product::Commutator,
+    ];
 }
 
 /// Linear maps of one multivector.
@@ -167,6 +176,11 @@ impl Algebra {
                 let r = w ^ full;
                 let sign = complement_sign(a, full) * complement_sign(b, full) * sw * complement_sign(r, full);
                 return Some((r, sign));
+            }
+            Product::Commutator => {
+                // ½(s − s') with s' = ±s: s where the blades anticommute, nothing where they commute.
+                let ((r, s), (_, s_swapped)) = (self.ortho_gp(a, b), self.ortho_gp(b, a));
+                return (s != s_swapped).then_some((r, s));
             }
         };
         keep.then(|| self.ortho_gp(a, b))
@@ -439,6 +453,24 @@ mod tests {
     fn singular_basis_is_rejected() {
         let basis = vec![vec![1.0, 1.0], vec![2.0, 2.0]];
         assert_eq!(Algebra::new(2, 0, vec!['a', 'b'], basis).unwrap_err(), ModelError::DegenerateBasis);
+    }
+
+    #[test]
+    fn commutator_is_half_the_difference() {
+        let a = cga_null();
+        for x in 0..a.dim() {
+            for y in 0..a.dim() {
+                let (xy, yx) = (a.product(Product::Geometric, x, y), a.product(Product::Geometric, y, x));
+                let mut want = Mv::new();
+                for (&r, &c) in &xy {
+                    *want.entry(r).or_insert(0.0) += 0.5 * c;
+                }
+                for (&r, &c) in &yx {
+                    *want.entry(r).or_insert(0.0) -= 0.5 * c;
+                }
+                assert_eq!(a.product(Product::Commutator, x, y), clean(want), "{x} x {y}");
+            }
+        }
     }
 
     #[test]

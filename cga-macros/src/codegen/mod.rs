@@ -21,6 +21,7 @@ pub fn generate(spec: &Spec) -> TokenStream {
     }
     out.extend(g.embeddings());
     out.extend(g.products());
+    out.extend(g.scalar_products());
     out.extend(g.sandwiches());
     out.extend(g.dense());
     out.extend(g.registry());
@@ -45,6 +46,13 @@ struct Planned {
     table: Bilinear,
 }
 
+/// The scalar part `⟨A B⟩₀` of the geometric product of two types: its terms.
+struct ScalarPlan {
+    lhs: usize,
+    rhs: usize,
+    terms: Vec<Term>,
+}
+
 /// Names and symbols of a product kind.
 struct ProductNames {
     trait_name: &'static str,
@@ -61,6 +69,7 @@ fn names(kind: Product) -> ProductNames {
         Product::Inner => ("InnerProduct", "inner", Some(("BitOr", "bitor")), "A · B (Hestenes)", "Inner"),
         Product::LeftContraction => ("LeftContraction", "lc", None, "A ⌋ B", "LeftContraction"),
         Product::Regressive => ("RegressiveProduct", "vee", Some(("BitAnd", "bitand")), "A ∨ B", "Regressive"),
+        Product::Commutator => ("CommutatorProduct", "commutator", None, "A × B = ½(A B − B A)", "Commutator"),
     };
     ProductNames { trait_name, method, operator, formula, kind_variant }
 }
@@ -86,14 +95,24 @@ struct Gen<'a> {
     plans: Vec<Planned>,
     /// Every sandwich of a versor on a type, planned once.
     sandwich_plans: Vec<SandwichPlan>,
+    /// Every nonzero scalar part of a geometric product of two types.
+    scalar_plans: Vec<ScalarPlan>,
 }
 
 impl<'a> Gen<'a> {
     fn new(spec: &'a Spec) -> Self {
         let a = &spec.algebra;
-        let mut g =
-            Gen { spec, a, real: &spec.scalar, dim: a.dim(), rank: a.rank(), plans: vec![], sandwich_plans: vec![] };
-        g.plans = g.product_plan();
+        let mut g = Gen {
+            spec,
+            a,
+            real: &spec.scalar,
+            dim: a.dim(),
+            rank: a.rank(),
+            plans: vec![],
+            sandwich_plans: vec![],
+            scalar_plans: vec![],
+        };
+        (g.plans, g.scalar_plans) = g.product_plan();
         g.sandwich_plans = g.all_sandwich_plans();
         g
     }

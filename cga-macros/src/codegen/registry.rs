@@ -27,6 +27,23 @@ impl Gen<'_> {
                 }
             });
         }
+        for plan in &self.scalar_plans {
+            let (lt, rt) = (&self.spec.types[plan.lhs], &self.spec.types[plan.rhs]);
+            let (li, ri) = (&lt.ident, &rt.ident);
+            let (ls, rs, terms) = (li.to_string(), ri.to_string(), plan.terms.len());
+            let (lb, rb) = (self.target_index(Target::Type(plan.lhs)), self.target_index(Target::Type(plan.rhs)));
+            products.push(quote! {
+                ProductEntry {
+                    kind: ProductKind::ScalarProduct, lhs: #ls, rhs: #rs, output: "scalar", terms: #terms,
+                    lhs_blades: #lb, rhs_blades: #rb, output_blades: &[0],
+                    eval: |a, b| {
+                        let mut out = [<T as #real>::zero(); #dim];
+                        out[0] = ScalarProduct::scalar_product(#li::<T>::from_storage(a), #ri::<T>::from_storage(b));
+                        out
+                    },
+                }
+            });
+        }
         for plan in &self.sandwich_plans {
             let (vpos, xpos, target) = (plan.versor, plan.object, plan.target);
             let (v, x) = (&self.spec.types[vpos], &self.spec.types[xpos]);
@@ -108,6 +125,10 @@ impl Gen<'_> {
                 LeftContraction,
                 /// `A ∨ B`
                 Regressive,
+                /// `A × B = ½(A B − B A)`
+                Commutator,
+                /// `⟨A B⟩₀`, returned in the scalar slot
+                ScalarProduct,
                 /// `V X Ṽ`, grades of `X` only
                 Sandwich,
             }

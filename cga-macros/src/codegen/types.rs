@@ -35,6 +35,16 @@ impl Gen<'_> {
                 /// `V X Ṽ`.
                 fn sandwich(self, x: X) -> Self::Output;
             }
+
+            /// The scalar product `⟨A B⟩₀`: the scalar part of the geometric product, computed
+            /// alone (one multiplication per scalar term of the Cayley table). Generated for every
+            /// pair of types whose geometric product has a scalar part.
+            pub trait ScalarProduct<Rhs> {
+                /// The scalar type.
+                type Output;
+                /// `⟨A B⟩₀`.
+                fn scalar_product(self, rhs: Rhs) -> Self::Output;
+            }
         });
         out
     }
