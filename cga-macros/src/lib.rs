@@ -68,6 +68,8 @@ pub(crate) struct Spec {
     pub types: Vec<TypeSpec>,
     pub aliases: Vec<parse::Alias>,
     pub approx: Option<parse::Approx>,
+    /// Concrete scalars that get the scalar-on-the-left operators (`scalars = [f32, f64];`).
+    pub scalars: Vec<syn::Type>,
 }
 
 pub(crate) struct TypeSpec {
@@ -123,7 +125,28 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         }
         names.push(alias.name.clone());
     }
-    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases, approx: input.approx })
+    let scalars = resolve_scalars(input.scalars)?;
+    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases, approx: input.approx, scalars })
+}
+
+/// The `scalars` list: at least one type, none twice.
+fn resolve_scalars(scalars: Option<parse::Scalars>) -> syn::Result<Vec<syn::Type>> {
+    let Some(scalars) = scalars else { return Ok(Vec::new()) };
+    if scalars.types.is_empty() {
+        return Err(Error::new(
+            scalars.span,
+            "`scalars` lists no type: name the concrete scalars (`scalars = [f32, f64];`) or leave the option out",
+        ));
+    }
+    let mut seen: Vec<String> = Vec::new();
+    for ty in &scalars.types {
+        let name = quote::ToTokens::to_token_stream(ty).to_string();
+        if seen.contains(&name) {
+            return Err(Error::new(ty.span(), format!("scalar `{name}` is listed twice in `scalars`")));
+        }
+        seen.push(name);
+    }
+    Ok(scalars.types)
 }
 
 fn check_new_name(names: &[Ident], name: &Ident) -> syn::Result<()> {
@@ -334,6 +357,11 @@ mod tests {
             "versor X = [s, eo1];",
             "alias P = V;",
             "alias P = Nope;",
+            "scalars = [f64];",
+            "scalars = [f32, f64];",
+            "scalars = [];",
+            "scalars = [f64, f64];",
+            "scalars = [f64",
             "type V = [e1];",
             "type W = [e1oi, e2i];",
             "type",

@@ -8,6 +8,7 @@ use quote::{format_ident, quote};
 use std::collections::BTreeMap;
 
 mod approx;
+mod arith;
 mod dense;
 mod products;
 mod registry;
@@ -18,6 +19,7 @@ pub fn generate(spec: &Spec) -> TokenStream {
     let mut out = g.traits();
     for t in &spec.types {
         out.extend(g.type_items(t));
+        out.extend(g.scalar_ops(t));
     }
     out.extend(g.embeddings());
     out.extend(g.products());
@@ -122,11 +124,16 @@ impl<'a> Gen<'a> {
     }
 
     pub(super) fn target_for(&self, blades: &[usize]) -> Option<Target> {
-        let models: Vec<_> = self.spec.types.iter().map(|t| t.model.clone()).collect();
-        match cover(&models, blades) {
+        match self.declared_cover(blades) {
             Some(t) => Some(Target::Type(t)),
             None => self.spec.dense.as_ref().map(|_| Target::Dense),
         }
+    }
+
+    /// The smallest declared type holding `blades` (never the dense type).
+    pub(super) fn declared_cover(&self, blades: &[usize]) -> Option<usize> {
+        let models: Vec<_> = self.spec.types.iter().map(|t| t.model.clone()).collect();
+        cover(&models, blades)
     }
 
     pub(super) fn target_ty(&self, target: Target) -> TokenStream {

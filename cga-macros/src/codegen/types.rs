@@ -62,6 +62,19 @@ impl Gen<'_> {
         let ranks2 = ranks.clone();
         let dim = self.dim;
         let summary = format!(" {n} coefficients: `{}`.", blade_names.join("`, `"));
+        let one = blades.contains(&0).then(|| {
+            let fields = blades.iter().map(|&b| {
+                let f = self.field(b);
+                if b == 0 { quote!(#f: <T as #real>::one()) } else { quote!(#f: <T as #real>::zero()) }
+            });
+            quote! {
+                /// The unit `1`: `s = 1`, every other coefficient zero.
+                #[inline]
+                pub fn one() -> Self {
+                    Self { #(#fields),* }
+                }
+            }
+        });
 
         let signs = |kind: Unary| -> Vec<TokenStream> {
             blades
@@ -133,6 +146,8 @@ impl Gen<'_> {
                 pub fn from_storage(c: &[T; #dim]) -> Self {
                     Self { #(#fields: c[#ranks2]),* }
                 }
+
+                #one
 
                 /// As a storage-basis array (canonical blade order), other blades zero.
                 #[inline]
@@ -232,12 +247,40 @@ impl Gen<'_> {
                 }
             }
 
+            /// `A s`: every coefficient times `s` (`scale`).
             impl<T: #real> core::ops::Mul<T> for #ident<T> {
                 type Output = Self;
                 /// Scale by a scalar.
                 #[inline]
                 fn mul(self, s: T) -> Self {
                     self.scale(s)
+                }
+            }
+
+            /// `A *= s`: every coefficient times `s`.
+            impl<T: #real> core::ops::MulAssign<T> for #ident<T> {
+                #[inline]
+                fn mul_assign(&mut self, s: T) {
+                    *self = self.scale(s);
+                }
+            }
+
+            /// `A / s`: every coefficient divided by `s` (one rounding each, not a
+            /// multiplication by `1/s`); non-finite for `s = 0`.
+            impl<T: #real> core::ops::Div<T> for #ident<T> {
+                type Output = Self;
+                /// Divide by a scalar.
+                #[inline]
+                fn div(self, s: T) -> Self {
+                    Self { #(#fields: self.#fields / s),* }
+                }
+            }
+
+            /// `A /= s`: every coefficient divided by `s`.
+            impl<T: #real> core::ops::DivAssign<T> for #ident<T> {
+                #[inline]
+                fn div_assign(&mut self, s: T) {
+                    *self = *self / s;
                 }
             }
         }

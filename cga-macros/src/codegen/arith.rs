@@ -1,0 +1,124 @@
+//! Arithmetic that reads like the maths: scalars on either side (`x + s`, `s - x`, `s * x`).
+
+use super::*;
+
+impl Gen<'_> {
+    /// Scalars on either side. Generic: `X + s`, `X − s` (into `X` when it holds the scalar
+    /// blade, else into the smallest declared type holding it and `X`'s blades, if any), and
+    /// `X += s`, `X −= s` when `X` holds it. For every concrete scalar of the `scalars`
+    /// option: `s * X`, `s + X`, `s − X` (the orphan rule forbids these generically).
+    pub(super) fn scalar_ops(&self, t: &TypeSpec) -> TokenStream {
+        let real = self.real;
+        let ident = &t.ident;
+        let mut out = TokenStream::new();
+        let mut with_scalar = t.model.blades.clone();
+        if !with_scalar.contains(&0) {
+            with_scalar.push(0);
+        }
+        let sum = self.declared_cover(&with_scalar);
+        if let Some(target) = sum {
+            let s = self.field(0);
+            let exprs = |negate: bool| -> BTreeMap<usize, TokenStream> {
+                let mut exprs: BTreeMap<usize, TokenStream> = t
+                    .model
+                    .blades
+                    .iter()
+                    .map(|&b| {
+                        let f = self.field(b);
+                        (b, quote!(self.#f))
+                    })
+                    .collect();
+                let add = match (exprs.contains_key(&0), negate) {
+                    (true, false) => quote!(self.#s + s),
+                    (true, true) => quote!(self.#s - s),
+                    (false, false) => quote!(s),
+                    (false, true) => quote!(-s),
+                };
+                exprs.insert(0, add);
+                exprs
+            };
+            let (plus, minus) = (exprs(false), exprs(true));
+            let (add_body, sub_body) =
+                (self.construct(Target::Type(target), &plus), self.construct(Target::Type(target), &minus));
+            let out_ty = self.target_ty(Target::Type(target));
+            let out_name = self.target_name(Target::Type(target));
+            let doc_add = format!(" `A + s`: the scalar coefficient `s` plus `s`, as a `{out_name}`.");
+            let doc_sub = format!(" `A − s`: the scalar coefficient `s` minus `s`, as a `{out_name}`.");
+            out.extend(quote! {
+                #[doc = #doc_add]
+                impl<T: #real> core::ops::Add<T> for #ident<T> {
+                    type Output = #out_ty;
+                    #[inline]
+                    fn add(self, s: T) -> #out_ty {
+                        #add_body
+                    }
+                }
+
+                #[doc = #doc_sub]
+                impl<T: #real> core::ops::Sub<T> for #ident<T> {
+                    type Output = #out_ty;
+                    #[inline]
+                    fn sub(self, s: T) -> #out_ty {
+                        #sub_body
+                    }
+                }
+            });
+            if t.model.blades.contains(&0) {
+                out.extend(quote! {
+                    /// `A += s`: the scalar coefficient plus `s`.
+                    impl<T: #real> core::ops::AddAssign<T> for #ident<T> {
+                        #[inline]
+                        fn add_assign(&mut self, s: T) {
+                            self.#s = self.#s + s;
+                        }
+                    }
+
+                    /// `A −= s`: the scalar coefficient minus `s`.
+                    impl<T: #real> core::ops::SubAssign<T> for #ident<T> {
+                        #[inline]
+                        fn sub_assign(&mut self, s: T) {
+                            self.#s = self.#s - s;
+                        }
+                    }
+                });
+            }
+        }
+        for scalar in &self.spec.scalars {
+            out.extend(quote! {
+                /// `s A`: every coefficient times `s`, the same as `A * s` (scalars commute).
+                impl core::ops::Mul<#ident<#scalar>> for #scalar {
+                    type Output = #ident<#scalar>;
+                    #[inline]
+                    fn mul(self, x: #ident<#scalar>) -> #ident<#scalar> {
+                        x.scale(self)
+                    }
+                }
+            });
+            let Some(target) = sum else { continue };
+            let out_ident = &self.spec.types[target].ident;
+            let out_name = out_ident.to_string();
+            let doc_add = format!(" `s + A`, the same as `A + s`, as a `{out_name}`.");
+            let doc_sub = format!(" `s − A`: `−A` with `s` added to its scalar coefficient, as a `{out_name}`.");
+            out.extend(quote! {
+                #[doc = #doc_add]
+                impl core::ops::Add<#ident<#scalar>> for #scalar {
+                    type Output = #out_ident<#scalar>;
+                    #[inline]
+                    fn add(self, x: #ident<#scalar>) -> #out_ident<#scalar> {
+                        x + self
+                    }
+                }
+
+                #[doc = #doc_sub]
+                impl core::ops::Sub<#ident<#scalar>> for #scalar {
+                    type Output = #out_ident<#scalar>;
+                    #[inline]
+                    fn sub(self, x: #ident<#scalar>) -> #out_ident<#scalar> {
+                        -x + self
+                    }
+                }
+            });
+        }
+        out
+    }
+}
