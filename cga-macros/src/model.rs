@@ -301,6 +301,33 @@ impl Algebra {
         out
     }
 
+    /// `X X̃` for a type holding `blades`, as polynomials in its coefficients: per output
+    /// blade, the coefficient of every monomial `c_i c_j` (i ≤ j, the `(i, j)` and `(j, i)`
+    /// terms combined), monomials and blades that cancel removed.
+    pub fn reverse_square(&self, blades: &[usize]) -> BTreeMap<usize, BTreeMap<(usize, usize), f64>> {
+        let mut out: BTreeMap<usize, BTreeMap<(usize, usize), f64>> = BTreeMap::new();
+        for (i, &x) in blades.iter().enumerate() {
+            for (j, &y) in blades.iter().enumerate() {
+                let rev = self.unary(Unary::Reverse, y).get(&y).copied().unwrap_or(1.0);
+                for (r, c) in self.product(Product::Geometric, x, y) {
+                    *out.entry(r).or_default().entry((i.min(j), i.max(j))).or_insert(0.0) += c * rev;
+                }
+            }
+        }
+        out.into_iter()
+            .map(|(r, poly)| (r, poly.into_iter().filter(|(_, c)| c.abs() > ZERO).collect::<BTreeMap<_, _>>()))
+            .filter(|(_, poly)| !poly.is_empty())
+            .collect()
+    }
+
+    /// Whether every value of a type holding `blades` has `X X̃` a scalar (every other blade's
+    /// polynomial identically zero) that is not identically zero itself: then `X⁻¹ = X̃ / ⟨X X̃⟩₀`
+    /// wherever `⟨X X̃⟩₀ ≠ 0`.
+    pub fn has_reverse_inverse(&self, blades: &[usize]) -> bool {
+        let square = self.reverse_square(blades);
+        square.contains_key(&0) && square.keys().all(|&r| r == 0)
+    }
+
     /// Position of every blade in canonical order.
     pub fn rank(&self) -> Vec<usize> {
         let mut rank = vec![0; self.dim()];
@@ -470,6 +497,23 @@ mod tests {
                 }
                 assert_eq!(a.product(Product::Commutator, x, y), clean(want), "{x} x {y}");
             }
+        }
+    }
+
+    #[test]
+    fn inverses_by_the_reverse() {
+        let a = cga_null();
+        let grade = |k| a.grade_blades(k);
+        let named = |names: &[&str]| names.iter().map(|n| a.parse_blade(n).unwrap()).collect::<Vec<_>>();
+        // Vectors, 4-vectors (every one a blade in 5 dimensions), rotors and translators.
+        for blades in [grade(0), grade(1), grade(4), grade(5), named(&["s", "e12", "e13", "e23"])] {
+            assert!(a.has_reverse_inverse(&blades), "{blades:?}");
+        }
+        assert!(a.has_reverse_inverse(&named(&["s", "e1i", "e2i", "e3i"])));
+        // Motors (M M̃ = s + p e123i), bivectors, trivectors; ei alone squares to zero.
+        let motor = named(&["s", "e12", "e13", "e23", "e1i", "e2i", "e3i", "e123i"]);
+        for blades in [motor, grade(2), grade(3), named(&["ei"])] {
+            assert!(!a.has_reverse_inverse(&blades), "{blades:?}");
         }
     }
 

@@ -1,4 +1,5 @@
-//! Arithmetic that reads like the maths: scalars on either side (`x + s`, `s - x`, `s * x`).
+//! Arithmetic that reads like the maths: scalars on either side (`x + s`, `s - x`, `s * x`),
+//! and inverses of the types whose `X X̃` is always a scalar.
 
 use super::*;
 
@@ -120,5 +121,39 @@ impl Gen<'_> {
             });
         }
         out
+    }
+
+    /// `try_inverse` and `inverse` for a type whose `X X̃` is a scalar for every value of its
+    /// coefficients (decided here, from the Cayley table): `X⁻¹ = X̃ / ⟨X X̃⟩₀`.
+    pub(super) fn inverse(&self, pos: usize, t: &TypeSpec) -> TokenStream {
+        if !self.invertible[pos] {
+            return TokenStream::new();
+        }
+        let real = self.real;
+        let ident = &t.ident;
+        let fields: Vec<_> = t.model.blades.iter().map(|&b| self.field(b)).collect();
+        quote! {
+            impl<T: #real> #ident<T> {
+                /// The inverse `A⁻¹ = Ã / ⟨A Ã⟩₀` (for this type `A Ã` is a scalar whatever the
+                /// coefficients, so `A A⁻¹ = A⁻¹ A = 1`), or `None` when `⟨A Ã⟩₀` is zero (a null
+                /// or zero element) or not finite, or a coefficient of the result is not finite.
+                #[inline]
+                pub fn try_inverse(self) -> Option<Self> {
+                    let n2 = self.norm_squared();
+                    if n2 == <T as #real>::zero() || !n2.is_finite() {
+                        return None;
+                    }
+                    let inv = self.reverse() / n2;
+                    (true #( && inv.#fields.is_finite() )*).then_some(inv)
+                }
+
+                /// The inverse `A⁻¹ = Ã / ⟨A Ã⟩₀`, unchecked: its coefficients are not finite
+                /// when `A` is not invertible (`⟨A Ã⟩₀ = 0`). Prefer `try_inverse`.
+                #[inline]
+                pub fn inverse(self) -> Self {
+                    self.reverse() / self.norm_squared()
+                }
+            }
+        }
     }
 }

@@ -17,9 +17,10 @@ mod types;
 pub fn generate(spec: &Spec) -> TokenStream {
     let g = Gen::new(spec);
     let mut out = g.traits();
-    for t in &spec.types {
+    for (pos, t) in spec.types.iter().enumerate() {
         out.extend(g.type_items(t));
         out.extend(g.scalar_ops(t));
+        out.extend(g.inverse(pos, t));
     }
     out.extend(g.embeddings());
     out.extend(g.products());
@@ -99,11 +100,14 @@ struct Gen<'a> {
     sandwich_plans: Vec<SandwichPlan>,
     /// Every nonzero scalar part of a geometric product of two types.
     scalar_plans: Vec<ScalarPlan>,
+    /// Per type: whether `X X̃` is identically a (not identically zero) scalar.
+    invertible: Vec<bool>,
 }
 
 impl<'a> Gen<'a> {
     fn new(spec: &'a Spec) -> Self {
         let a = &spec.algebra;
+        let invertible = spec.types.iter().map(|t| a.has_reverse_inverse(&t.model.blades)).collect();
         let mut g = Gen {
             spec,
             a,
@@ -113,6 +117,7 @@ impl<'a> Gen<'a> {
             plans: vec![],
             sandwich_plans: vec![],
             scalar_plans: vec![],
+            invertible,
         };
         (g.plans, g.scalar_plans) = g.product_plan();
         g.sandwich_plans = g.all_sandwich_plans();

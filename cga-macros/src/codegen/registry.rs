@@ -62,6 +62,16 @@ impl Gen<'_> {
             });
         }
 
+        let mut inverses = Vec::new();
+        for (tpos, t) in self.spec.types.iter().enumerate().filter(|(pos, _)| self.invertible[*pos]) {
+            let ty = &t.ident;
+            let (ts, ib) = (ty.to_string(), self.target_index(Target::Type(tpos)));
+            inverses.push(quote! {
+                InverseEntry { input: #ts, input_blades: #ib,
+                    eval: |a| #ty::<T>::from_storage(a).try_inverse().map(#ty::to_storage) }
+            });
+        }
+
         let mut unaries = Vec::new();
         for (tpos, t) in self.spec.types.iter().enumerate() {
             let ty = &t.ident;
@@ -195,6 +205,24 @@ impl Gen<'_> {
                 pub output_blades: &'static [usize],
                 /// Runs the generated code on a storage-basis array.
                 pub eval: fn(&[T; #dim]) -> [T; #dim],
+            }
+
+            /// A type with a generated `try_inverse` (its `X X̃` is a scalar for every value).
+            #[derive(Clone, Copy, Debug)]
+            #[doc(hidden)]
+            pub struct InverseEntry<T> {
+                /// The type.
+                pub input: &'static str,
+                /// Storage indices of its blades.
+                pub input_blades: &'static [usize],
+                /// Runs `try_inverse` on a storage-basis array.
+                pub eval: fn(&[T; #dim]) -> Option<[T; #dim]>,
+            }
+
+            /// Every type with a generated `try_inverse`, in declaration order.
+            #[doc(hidden)]
+            pub fn inverse_table<T: #real>() -> Vec<InverseEntry<T>> {
+                vec![#(#inverses),*]
             }
 
             /// Every generated product (and sandwich), for checking them all against the dense type.
