@@ -1,9 +1,45 @@
 //! Arithmetic that reads like the maths: scalars on either side (`x + s`, `s - x`, `s * x`),
-//! and inverses of the types whose `X X̃` is always a scalar.
+//! inverses of the types whose `X X̃` is always a scalar, checked conversions between types
+//! (`TryFrom`) and the error type they return.
 
 use super::*;
 
 impl Gen<'_> {
+    /// `TruncationError` (a conversion that would drop nonzero blades), once per invocation.
+    pub(super) fn error_types(&self) -> TokenStream {
+        quote! {
+            /// A conversion that would drop blades whose coefficients are not zero: returned by
+            /// `TryFrom` between the generated types (where the target lacks some of the
+            /// source's blades) and by `try_from_storage`. Displays as
+            /// `converting Even to Motor would drop e1o = 0.5, e2o = -1.0`.
+            #[derive(Clone, Debug, PartialEq)]
+            pub struct TruncationError {
+                /// The type converted from (`"storage array"` for `try_from_storage`).
+                pub from: &'static str,
+                /// The type converted to.
+                pub to: &'static str,
+                /// Every blade of the source that the target lacks and whose coefficient is not
+                /// exactly zero, with that coefficient as `f64` (a dual number's value).
+                pub dropped: ::std::vec::Vec<(&'static str, f64)>,
+            }
+
+            impl core::fmt::Display for TruncationError {
+                fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                    write!(f, "converting {} to {} would drop ", self.from, self.to)?;
+                    for (i, (blade, c)) in self.dropped.iter().enumerate() {
+                        if i > 0 {
+                            f.write_str(", ")?;
+                        }
+                        write!(f, "{blade} = {c:?}")?;
+                    }
+                    Ok(())
+                }
+            }
+
+            impl ::std::error::Error for TruncationError {}
+        }
+    }
+
     /// Scalars on either side. Generic: `X + s`, `X − s` (into `X` when it holds the scalar
     /// blade, else into the smallest declared type holding it and `X`'s blades, if any), and
     /// `X += s`, `X −= s` when `X` holds it. For every concrete scalar of the `scalars`
@@ -155,5 +191,81 @@ impl Gen<'_> {
                 }
             }
         }
+    }
+
+    /// `TryFrom<A> for B` for every ordered pair of distinct types where `A`'s blades are not
+    /// all `B`'s but some are: `Ok` when every coefficient of `A` on a blade `B` lacks is
+    /// exactly zero, else a `TruncationError` naming them. And from the dense type into every
+    /// type.
+    pub(super) fn truncations(&self) -> TokenStream {
+        let real = self.real;
+        let mut out = TokenStream::new();
+        for a in &self.spec.types {
+            for (pos, b) in self.spec.types.iter().enumerate() {
+                let (ab, bb) = (&a.model.blades, &b.model.blades);
+                let subset = ab.iter().all(|x| bb.contains(x));
+                let shared = ab.iter().any(|x| bb.contains(x));
+                if a.ident == b.ident || subset || !shared {
+                    continue;
+                }
+                let lost: Vec<_> = ab.iter().filter(|x| !bb.contains(x)).map(|&x| self.field(x)).collect();
+                let lost_names: Vec<String> = lost.iter().map(|f| f.to_string()).collect();
+                let exprs = ab
+                    .iter()
+                    .filter(|x| bb.contains(x))
+                    .map(|&x| {
+                        let f = self.field(x);
+                        (x, quote!(x.#f))
+                    })
+                    .collect();
+                let body = self.construct(Target::Type(pos), &exprs);
+                let (ai, bi) = (&a.ident, &b.ident);
+                let (an, bn) = (ai.to_string(), bi.to_string());
+                let doc = format!(
+                    " A `{an}` as a `{bn}` when its coefficients on `{}` are exactly zero, else a `TruncationError` naming those that are not.",
+                    lost_names.join("`, `")
+                );
+                out.extend(quote! {
+                    #[doc = #doc]
+                    impl<T: #real> TryFrom<#ai<T>> for #bi<T> {
+                        type Error = TruncationError;
+                        #[inline]
+                        fn try_from(x: #ai<T>) -> Result<Self, TruncationError> {
+                            let zero = <T as #real>::zero();
+                            let mut dropped = ::std::vec::Vec::new();
+                            #( if x.#lost != zero {
+                                dropped.push((#lost_names, <T as #real>::to_f64(x.#lost)));
+                            } )*
+                            if dropped.is_empty() {
+                                Ok(#body)
+                            } else {
+                                Err(TruncationError { from: #an, to: #bn, dropped })
+                            }
+                        }
+                    }
+                });
+            }
+        }
+        if let Some(dense) = &self.spec.dense {
+            let d = &dense.name;
+            let dn = d.to_string();
+            for t in &self.spec.types {
+                let ti = &t.ident;
+                let doc = format!(
+                    " The `{ti}` blades of a dense multivector when its other storage-basis coefficients are exactly zero, else a `TruncationError` naming those that are not."
+                );
+                out.extend(quote! {
+                    #[doc = #doc]
+                    impl<T: #real> TryFrom<#d<T>> for #ti<T> {
+                        type Error = TruncationError;
+                        #[inline]
+                        fn try_from(m: #d<T>) -> Result<Self, TruncationError> {
+                            Self::try_from_storage(&m.to_storage()).map_err(|e| TruncationError { from: #dn, ..e })
+                        }
+                    }
+                });
+            }
+        }
+        out
     }
 }

@@ -17,12 +17,14 @@ mod types;
 pub fn generate(spec: &Spec) -> TokenStream {
     let g = Gen::new(spec);
     let mut out = g.traits();
+    out.extend(g.error_types());
     for (pos, t) in spec.types.iter().enumerate() {
         out.extend(g.type_items(t));
         out.extend(g.scalar_ops(t));
         out.extend(g.inverse(pos, t));
     }
     out.extend(g.embeddings());
+    out.extend(g.truncations());
     out.extend(g.products());
     out.extend(g.scalar_products());
     out.extend(g.sandwiches());

@@ -62,6 +62,11 @@ impl Gen<'_> {
         let ranks2 = ranks.clone();
         let dim = self.dim;
         let summary = format!(" {n} coefficients: `{}`.", blade_names.join("`, `"));
+        let name = ident.to_string();
+        // Blades of a storage array this type lacks: what `try_from_storage` refuses to drop.
+        let lacking: Vec<(usize, String)> =
+            (0..dim).filter(|b| !blades.contains(b)).map(|b| (self.rank[b], self.a.blade_name(b))).collect();
+        let (lacking_index, lacking_name): (Vec<usize>, Vec<String>) = lacking.into_iter().unzip();
         let one = blades.contains(&0).then(|| {
             let fields = blades.iter().map(|&b| {
                 let f = self.field(b);
@@ -141,10 +146,27 @@ impl Gen<'_> {
                     [#(self.#fields),*]
                 }
 
-                /// This type's blades taken from a storage-basis array; other blades are dropped.
+                /// This type's blades taken from a storage-basis array; the other blades are
+                /// dropped, whatever their values (`try_from_storage` refuses to drop nonzero ones).
                 #[inline]
                 pub fn from_storage(c: &[T; #dim]) -> Self {
                     Self { #(#fields: c[#ranks2]),* }
+                }
+
+                /// This type's blades taken from a storage-basis array, or a `TruncationError`
+                /// naming every other blade whose coefficient is not exactly zero.
+                #[inline]
+                pub fn try_from_storage(c: &[T; #dim]) -> Result<Self, TruncationError> {
+                    let zero = <T as #real>::zero();
+                    let mut dropped = ::std::vec::Vec::new();
+                    #( if c[#lacking_index] != zero {
+                        dropped.push((#lacking_name, <T as #real>::to_f64(c[#lacking_index])));
+                    } )*
+                    if dropped.is_empty() {
+                        Ok(Self::from_storage(c))
+                    } else {
+                        Err(TruncationError { from: "storage array", to: #name, dropped })
+                    }
                 }
 
                 #one
