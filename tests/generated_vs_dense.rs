@@ -105,7 +105,7 @@ proptest! {
 #[test]
 fn versor_sandwiches_stay_in_type() {
     use cga_core::{Motor, Rotor, Translator};
-    let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise();
+    let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise().unwrap();
     let translator = Translator { s: 1.0, e1i: -0.6, e2i: 1.5, e3i: 0.25 };
     let motor: Motor = rotor * translator;
     let versors: [(&str, Multivector); 3] =

@@ -1,11 +1,12 @@
 //! Arithmetic that reads like the maths: scalars on either side (`x + s`, `s - x`, `s * x`),
 //! inverses of the types whose `X X̃` is always a scalar, checked conversions between types
-//! (`TryFrom`) and the error type they return.
+//! (`TryFrom`), and the error types they return.
 
 use super::*;
 
 impl Gen<'_> {
-    /// `TruncationError` (a conversion that would drop nonzero blades), once per invocation.
+    /// `TruncationError` (a conversion that would drop nonzero blades) and `NormaliseError`
+    /// (an element with no unit multiple), once per invocation.
     pub(super) fn error_types(&self) -> TokenStream {
         quote! {
             /// A conversion that would drop blades whose coefficients are not zero: returned by
@@ -37,6 +38,58 @@ impl Gen<'_> {
             }
 
             impl ::std::error::Error for TruncationError {}
+
+            /// Why `normalise` found no unit multiple `A / √|⟨A Ã⟩₀|` of an element.
+            #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+            pub enum NormaliseError {
+                /// Every coefficient is zero.
+                Zero {
+                    /// The type of the element.
+                    type_name: &'static str,
+                },
+                /// `⟨A Ã⟩₀ = 0` with finite, nonzero coefficients: a null element (a conformal
+                /// point, say), or one whose squared norm underflows.
+                Null {
+                    /// The type of the element.
+                    type_name: &'static str,
+                },
+                /// A coefficient, the squared norm, its inverse square root or a coefficient of
+                /// the result is not finite.
+                NonFinite {
+                    /// The type of the element.
+                    type_name: &'static str,
+                },
+            }
+
+            impl NormaliseError {
+                /// The type of the element that could not be normalised.
+                pub fn type_name(&self) -> &'static str {
+                    match *self {
+                        NormaliseError::Zero { type_name }
+                        | NormaliseError::Null { type_name }
+                        | NormaliseError::NonFinite { type_name } => type_name,
+                    }
+                }
+            }
+
+            impl core::fmt::Display for NormaliseError {
+                fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                    match self {
+                        NormaliseError::Zero { type_name } => {
+                            write!(f, "cannot normalise {type_name}: every coefficient is zero")
+                        }
+                        NormaliseError::Null { type_name } => write!(
+                            f,
+                            "cannot normalise {type_name}: it is null (⟨A Ã⟩₀ = 0 with nonzero coefficients)"
+                        ),
+                        NormaliseError::NonFinite { type_name } => {
+                            write!(f, "cannot normalise {type_name}: its norm or the result is not finite")
+                        }
+                    }
+                }
+            }
+
+            impl ::std::error::Error for NormaliseError {}
         }
     }
 

@@ -224,18 +224,36 @@ impl Gen<'_> {
                     self.norm_squared().abs().sqrt()
                 }
 
-                /// `A / √|⟨A Ã⟩₀|`, so that `A Ã = ±1` for blades and versors. A null `A`
-                /// (a point, `⟨A Ã⟩₀ = 0`) gives non-finite coefficients: see `try_normalise`.
+                /// `A / √|⟨A Ã⟩₀|`, so that `A Ã = ±1` for blades and versors; a
+                /// `NormaliseError` when every coefficient is zero (`Zero`), when a coefficient,
+                /// the norm or a coefficient of the result is not finite (`NonFinite`), or when
+                /// `⟨A Ã⟩₀ = 0` with finite nonzero coefficients (`Null`: a conformal point, or a
+                /// squared norm that underflows). Never a non-finite `Ok`.
                 #[inline]
-                pub fn normalise(self) -> Self {
-                    self.scale(<T as #real>::one() / self.norm())
+                pub fn normalise(self) -> Result<Self, NormaliseError> {
+                    let zero = <T as #real>::zero();
+                    match self.try_normalise() {
+                        Some(unit) => Ok(unit),
+                        None if true #( && self.#fields == zero )* => Err(NormaliseError::Zero { type_name: #name }),
+                        None if !(true #( && self.#fields.is_finite() )*) => {
+                            Err(NormaliseError::NonFinite { type_name: #name })
+                        }
+                        None if self.norm_squared() == zero => Err(NormaliseError::Null { type_name: #name }),
+                        None => Err(NormaliseError::NonFinite { type_name: #name }),
+                    }
                 }
 
-                /// `A / √|⟨A Ã⟩₀|`, or `None` when `⟨A Ã⟩₀` is zero or not finite.
+                /// `A / √|⟨A Ã⟩₀|`, or `None` when `⟨A Ã⟩₀` is zero or not finite, or a
+                /// coefficient of the result is not finite (`normalise` says which).
                 #[inline]
                 pub fn try_normalise(self) -> Option<Self> {
-                    let inv = <T as #real>::one() / self.norm();
-                    (self.norm_squared() != <T as #real>::zero() && inv.is_finite()).then(|| self.scale(inv))
+                    let n2 = self.norm_squared();
+                    let inv = <T as #real>::one() / n2.abs().sqrt();
+                    if n2 == <T as #real>::zero() || !n2.is_finite() || !inv.is_finite() {
+                        return None;
+                    }
+                    let unit = self.scale(inv);
+                    (true #( && unit.#fields.is_finite() )*).then_some(unit)
                 }
             }
 
