@@ -7,6 +7,7 @@ use super::*;
 impl Gen<'_> {
     pub(super) fn traits(&self) -> TokenStream {
         let mut out = TokenStream::new();
+        let scalars = "to multiply by a scalar `s`, write `x * s` or `x.scale(s)`";
         for kind in Product::ALL {
             let n = names(kind);
             let (tr, m) = (format_ident!("{}", n.trait_name), format_ident!("{}", n.method));
@@ -14,8 +15,16 @@ impl Gen<'_> {
                 " The product `{}`, generated for every pair of types whose Cayley table is not identically zero.",
                 n.formula
             );
+            let message = format!("`{{Self}}` has no product `{}` with `{{Rhs}}`", n.formula);
+            let note = format!(
+                "`{}` is generated for every ordered pair of declared types whose table for it is not identically \
+                 zero: if both are declared types, the product of `{{Self}}` and `{{Rhs}}` is identically zero in \
+                 this algebra (or, with no `dense` type declared, no declared type holds its result)",
+                n.trait_name
+            );
             out.extend(quote! {
                 #[doc = #doc]
+                #[diagnostic::on_unimplemented(message = #message, note = #note, note = #scalars)]
                 pub trait #tr<Rhs> {
                     /// The smallest declared type that holds every nonzero blade of the result.
                     type Output;
@@ -24,11 +33,27 @@ impl Gen<'_> {
                 }
             });
         }
+        let versors: Vec<String> =
+            self.spec.types.iter().filter(|t| t.model.versor).map(|t| format!("`{}`", t.ident)).collect();
+        let versors = match versors.len() {
+            0 => "none are declared in this algebra".to_string(),
+            _ => format!("here {}", versors.join(", ")),
+        };
+        let sandwich_note = format!(
+            "sandwiches are generated for the types declared with `versor` ({versors}) acting on the declared types; \
+             `{{Self}}` is not a versor, or `{{X}}` is not a declared type"
+        );
         out.extend(quote! {
             /// The sandwich `V X Ṽ` of a versor `V` and any object `X`. A versor preserves
             /// grades, so only `X`'s grades are computed; the result type is the smallest
             /// declared type holding the nonzero blades of those grades (a translator turns
             /// a rotor into a motor, but keeps a line a line).
+            #[diagnostic::on_unimplemented(
+                message = "`{Self}` has no sandwich `V X Ṽ` with `{X}`",
+                note = #sandwich_note,
+                note = "for any other element `A`, write the products out (`A * x * A.reverse()`, say), or use the \
+                        algebra's own methods for reflections and inversions"
+            )]
             pub trait Sandwich<X> {
                 /// The type of `V X Ṽ`.
                 type Output;
@@ -39,6 +64,13 @@ impl Gen<'_> {
             /// The scalar product `⟨A B⟩₀`: the scalar part of the geometric product, computed
             /// alone (one multiplication per scalar term of the Cayley table). Generated for every
             /// pair of types whose geometric product has a scalar part.
+            #[diagnostic::on_unimplemented(
+                message = "`{Self}` has no scalar product `⟨A B⟩₀` with `{Rhs}`",
+                note = "`ScalarProduct` is generated for every ordered pair of declared types whose geometric product \
+                        has a scalar part: if both are declared types, `⟨A B⟩₀` of `{Self}` and `{Rhs}` is identically \
+                        zero in this algebra",
+                note = #scalars
+            )]
             pub trait ScalarProduct<Rhs> {
                 /// The scalar type.
                 type Output;
