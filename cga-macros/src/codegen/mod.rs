@@ -19,7 +19,7 @@ pub fn generate(spec: &Spec) -> TokenStream {
     let mut out = g.traits();
     out.extend(g.error_types());
     for (pos, t) in spec.types.iter().enumerate() {
-        out.extend(g.type_items(t));
+        out.extend(g.type_items(pos, t));
         out.extend(g.scalar_ops(t));
         out.extend(g.inverse(pos, t));
     }

@@ -47,6 +47,7 @@ impl Gen<'_> {
                 plan.terms.len()
             );
             out.extend(quote! {
+                #[doc(hidden)]
                 impl<T: #real> ScalarProduct<#ri<T>> for #li<T> {
                     type Output = T;
                     #[doc = #doc]
@@ -79,6 +80,7 @@ impl Gen<'_> {
                 self.target_name(target)
             );
             out.extend(quote! {
+                #[doc(hidden)]
                 impl<T: #real> #tr<#ri<T>> for #li<T> {
                     type Output = #out_ty;
                     #[doc = #doc]
@@ -92,6 +94,7 @@ impl Gen<'_> {
             if let Some((op_trait, op_method)) = n.operator {
                 let (ot, om) = (format_ident!("{op_trait}"), format_ident!("{op_method}"));
                 out.extend(quote! {
+                    #[doc(hidden)]
                     impl<T: #real> core::ops::#ot<#ri<T>> for #li<T> {
                         type Output = #out_ty;
                         #[doc = #doc]
@@ -178,6 +181,7 @@ impl Gen<'_> {
                 self.target_name(target)
             );
             out.extend(quote! {
+                #[doc(hidden)]
                 impl<T: #real> Sandwich<#xi<T>> for #vi<T> {
                     type Output = #out_ty;
                     #[doc = #doc]

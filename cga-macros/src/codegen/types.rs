@@ -81,7 +81,76 @@ impl Gen<'_> {
         out
     }
 
-    pub(super) fn type_items(&self, t: &TypeSpec) -> TokenStream {
+    /// The `# Products` section of a type's rustdoc: per right-hand type, the result type of
+    /// each product (— where it is identically zero and not generated), and of the sandwich
+    /// for a versor. The impls themselves are hidden from the docs.
+    pub(super) fn products_doc(&self, pos: usize) -> Vec<String> {
+        let kinds = [
+            (Product::Geometric, "A * B"),
+            (Product::Outer, "A ^ B"),
+            (Product::Inner, "A \\| B"),
+            (Product::Regressive, "A & B"),
+            (Product::LeftContraction, "A.lc(B)"),
+            (Product::Commutator, "A.commutator(B)"),
+        ];
+        let link = |target: Target| format!("[`{}`]", self.target_name(target));
+        let versor = self.spec.types[pos].model.versor;
+        let mut header = String::from("| B |");
+        let mut rule = String::from("|---|");
+        for (_, op) in kinds {
+            header.push_str(&format!(" `{op}` |"));
+            rule.push_str("---|");
+        }
+        header.push_str(" `A.scalar_product(B)` |");
+        rule.push_str("---|");
+        if versor {
+            header.push_str(" `A.sandwich(B)` |");
+            rule.push_str("---|");
+        }
+        let mut lines = vec![
+            String::new(),
+            "# Products".to_string(),
+            String::new(),
+            "The type of every product of this type `A` with a declared type `B` (`—`: identically zero in this \
+             algebra, so not generated); one multiplication per nonzero term of the Cayley table. Their trait \
+             impls (`GeometricProduct`, `Mul`, `OuterProduct`, `BitXor`, … `Sandwich`) are hidden from this page."
+                .to_string(),
+            String::new(),
+            header,
+            rule,
+        ];
+        for (r, rt) in self.spec.types.iter().enumerate() {
+            let mut row = format!("| [`{}`] |", rt.ident);
+            for (kind, _) in kinds {
+                let plan = self.plans.iter().find(|p| p.kind == kind && p.lhs == pos && p.rhs == r);
+                row.push_str(&format!(" {} |", plan.map_or("—".to_string(), |p| link(p.target))));
+            }
+            let scalar = self.scalar_plans.iter().any(|p| p.lhs == pos && p.rhs == r);
+            row.push_str(if scalar { " `T` |" } else { " — |" });
+            if versor {
+                let plan = self.sandwich_plans.iter().find(|p| p.versor == pos && p.object == r);
+                row.push_str(&format!(" {} |", plan.map_or("—".to_string(), |p| link(p.target))));
+            }
+            lines.push(row);
+        }
+        let mut with_scalar = self.spec.types[pos].model.blades.clone();
+        with_scalar.push(0);
+        let name = &self.spec.types[pos].ident;
+        lines.push(String::new());
+        lines.push(match self.declared_cover(&with_scalar) {
+            Some(sum) => format!(
+                "With a scalar `s`: `A * s`, `A / s` are [`{name}`]s, `A + s`, `A - s` are [`{}`]s.",
+                self.spec.types[sum].ident
+            ),
+            None => format!(
+                "With a scalar `s`: `A * s`, `A / s` are [`{name}`]s; no declared type holds `s` and this type's \
+                 blades, so there is no `A + s`."
+            ),
+        });
+        lines.into_iter().map(|l| if l.is_empty() { l } else { format!(" {l}") }).collect()
+    }
+
+    pub(super) fn type_items(&self, pos: usize, t: &TypeSpec) -> TokenStream {
         let real = self.real;
         let ident = &t.ident;
         let attrs = &t.attrs;
@@ -94,6 +163,7 @@ impl Gen<'_> {
         let ranks2 = ranks.clone();
         let dim = self.dim;
         let summary = format!(" {n} coefficients: `{}`.", blade_names.join("`, `"));
+        let products_doc = self.products_doc(pos);
         let name = ident.to_string();
         // Blades of a storage array this type lacks: what `try_from_storage` refuses to drop.
         let lacking: Vec<(usize, String)> =
@@ -133,6 +203,7 @@ impl Gen<'_> {
             #(#attrs)*
             #[doc = ""]
             #[doc = #summary]
+            #( #[doc = #products_doc] )*
             #[derive(Clone, Copy, PartialEq, Default)]
             // `repr(C)`: a value is its coefficients in field order (`[T; N]` in memory), which
             // `cga_core::simd` transposes in place into and out of lanes.
