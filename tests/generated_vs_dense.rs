@@ -5,8 +5,8 @@
 mod common;
 
 use cga_core::{
-    GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind, RegressiveProduct,
-    UnaryKind, product_table, unary_table,
+    CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind,
+    RegressiveProduct, UnaryKind, product_table, unary_table,
 };
 use common::{grade_at, max_rel_diff};
 use proptest::prelude::*;
@@ -27,6 +27,8 @@ fn dense_product(kind: ProductKind, a: Multivector, b: Multivector) -> Multivect
         ProductKind::Inner => a.inner(b),
         ProductKind::LeftContraction => a.lc(b),
         ProductKind::Regressive => a.vee(b),
+        ProductKind::Commutator => a.commutator(b),
+        ProductKind::ScalarProduct => a.gp(b).grade(0),
         ProductKind::Sandwich => a.sandwich(&b),
     }
 }
@@ -103,7 +105,7 @@ proptest! {
 #[test]
 fn versor_sandwiches_stay_in_type() {
     use cga_core::{Dilator, Motor, Rotor, Translator, Transversor, Vector};
-    let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise();
+    let rotor = Rotor { s: 0.3, e12: -0.5, e13: 0.7, e23: 0.2 }.normalise().unwrap();
     let translator = Translator { s: 1.0, e1i: -0.6, e2i: 1.5, e3i: 0.25 };
     let motor: Motor = rotor * translator;
     let dilator = Dilator::new([0.4, -1.2, 2.0], 1.7).unwrap();

@@ -98,7 +98,7 @@ fn reflections_follow_the_mirror_law() {
         assert!((DVec3::from(reflected.direction().unwrap()) - want).length() < 1e-9, "reflected direction");
         assert!(DVec3::from(reflected.meet_plane(&plane).unwrap()).distance(hit) < 1e-8, "through the hit");
         // L' − L: the normal line at the hit, pointing back to the side the ray came from.
-        let normal_line = (reflected - line).normalise();
+        let normal_line = (reflected - line).normalise().unwrap();
         let nd = DVec3::from(normal_line.direction().unwrap());
         assert!(nd.cross(n).length() < 1e-9 && nd.dot(d) < 0.0, "normal line");
         let on_line = DVec3::from(normal_line.point().unwrap());

@@ -25,9 +25,13 @@ fn support(m: &Multivector) -> Vec<usize> {
 }
 
 fn dense(kind: ProductKind, a: Multivector, b: Multivector) -> Multivector {
-    use cga_core::{GeometricProduct, InnerProduct, LeftContraction, OuterProduct, RegressiveProduct};
+    use cga_core::{
+        CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, OuterProduct, RegressiveProduct,
+    };
     match kind {
         ProductKind::Geometric | ProductKind::Sandwich => a.gp(b),
+        ProductKind::ScalarProduct => a.gp(b).grade(0),
+        ProductKind::Commutator => a.commutator(b),
         ProductKind::Outer => a.wedge(b),
         ProductKind::Inner => a.inner(b),
         ProductKind::LeftContraction => a.lc(b),

@@ -20,6 +20,7 @@
 
 cga_macros::algebra! {
     scalar = crate::Real;
+    scalars = [f32, f64];
     signature = (4, 1);
     basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];
     #[cfg(feature = "approx")]

@@ -73,6 +73,14 @@ pub fn down<T: Real>(p: Vector<T>) -> Result<E3<T>> {
     if weight != T::zero() && point.iter().all(|v| v.is_finite()) { Ok(point) } else { Err(GeometryError::AtInfinity) }
 }
 
+/// `x` of a point of unit weight (`−X · ei = 1`: `up(x)`, and its image under any rigid
+/// motor): the `e1, e2, e3` parts, no division and no check (for bulk work, where the
+/// weight is known; [`down`] for any weight).
+#[inline(always)]
+pub fn down_unit<T: Real>(p: Vector<T>) -> E3<T> {
+    [p.e1, p.e2, p.e3]
+}
+
 /// The point at infinity `ei`.
 #[inline]
 pub fn ei<T: Real>() -> Infinity<T> {

@@ -118,7 +118,8 @@ impl<T: Real> ScalarQuadvector<T> {
 }
 
 /// Blades that interpolate through the projector: [`Circle`], [`Bivector`] (point pairs),
-/// [`Line`], [`Plane`], [`Sphere`].
+/// [`Line`], [`Plane`], [`Sphere`]. The interpolation's machinery, named for what it does
+/// there (none of it is a geometric projection: for those see [`crate::Nearest`]).
 pub trait Interpolable<T: Real>: Copy + Add<Output = Self> + Mul<T, Output = Self> + Neg<Output = Self> {
     /// The same blade over dual numbers.
     type Lifted: Interpolable<Dual<T>>;
@@ -130,15 +131,15 @@ pub trait Interpolable<T: Real>: Copy + Add<Output = Self> + Mul<T, Output = Sel
     /// vanishes identically and is dropped).
     fn neg_square(self) -> ScalarQuadvector<T>;
     /// `K⁻¹ X = K* X / (K* K)`, the parts of this type's grade kept; `None` when singular.
-    fn project(self, k: ScalarQuadvector<T>) -> Option<Self>;
+    fn apply_projector(self, k: ScalarQuadvector<T>) -> Option<Self>;
     /// `⟨A B̃⟩₀`.
-    fn scalar_product(self, other: Self) -> T;
+    fn reverse_product(self, other: Self) -> T;
     /// `A / √|⟨A Ã⟩₀|`, `None` for a null or zero blade.
     fn try_normalised(self) -> Option<Self>;
     /// For a round (circle, point pair, sphere): its centre and size (radius, or half the
     /// pair's distance), to estimate conditioning; `None` for flats, whose coefficients grow
     /// only linearly with distance.
-    fn reach(self) -> Option<(E3<T>, T)>;
+    fn centre_size(self) -> Option<(E3<T>, T)>;
 }
 
 macro_rules! interpolable {
@@ -159,20 +160,20 @@ macro_rules! interpolable {
                 -ScalarQuadvector::from_storage(&(self * self.reverse()).to_storage())
             }
             #[inline]
-            fn project(self, k: ScalarQuadvector<T>) -> Option<Self> {
+            fn apply_projector(self, k: ScalarQuadvector<T>) -> Option<Self> {
                 let star = k.star();
                 let inv = T::one() / (star * k).s;
                 inv.is_finite().then(|| $ty::from_storage(&(star * self).to_storage()).scale(inv))
             }
             #[inline]
-            fn scalar_product(self, other: Self) -> T {
+            fn reverse_product(self, other: Self) -> T {
                 ScalarQuadvector::from_storage(&(self * other.reverse()).to_storage()).s
             }
             #[inline]
             fn try_normalised(self) -> Option<Self> {
                 self.try_normalise()
             }
-            fn reach(self) -> Option<(E3<T>, T)> {
+            fn centre_size(self) -> Option<(E3<T>, T)> {
                 let reach: fn($ty<T>) -> Option<(E3<T>, T)> = $reach;
                 reach(self)
             }
@@ -199,8 +200,8 @@ interpolable!(
 /// could choose the other — so `C2` is kept the way it was given.
 #[inline]
 pub fn align<T: Real, X: Interpolable<T>>(c1: X, c2: X) -> X {
-    let (own, cross) = (c1.scalar_product(c1), c1.scalar_product(c2));
-    let undecided = cross.abs() <= T::from_f64(64.0) * T::epsilon() * (own * c2.scalar_product(c2)).abs().sqrt();
+    let (own, cross) = (c1.reverse_product(c1), c1.reverse_product(c2));
+    let undecided = cross.abs() <= T::from_f64(64.0) * T::epsilon() * (own * c2.reverse_product(c2)).abs().sqrt();
     if !undecided && (own < T::zero()) != (cross < T::zero()) { -c2 } else { c2 }
 }
 
@@ -230,7 +231,7 @@ pub fn project_at<T: Real, X: Interpolable<T>>(x: X, alpha: T) -> Result<X, Inte
             });
         }
     };
-    x.project(k).ok_or_else(singular)?.try_normalised().ok_or_else(singular)
+    x.apply_projector(k).ok_or_else(singular)?.try_normalised().ok_or_else(singular)
 }
 
 /// Two normalised blades of one kind, the second aligned to the first: the endpoints of an
@@ -286,7 +287,7 @@ impl<X> Pair<X> {
     where
         X: Interpolable<T>,
     {
-        let (Some((a, r1)), Some((b, r2))) = (self.c1.reach(), self.c2.reach()) else { return 0.0 };
+        let (Some((a, r1)), Some((b, r2))) = (self.c1.centre_size(), self.c2.centre_size()) else { return 0.0 };
         let own = |c: crate::euclid::E3<T>, r: T| norm(c.map(|x| x.to_f64())) / r.to_f64();
         let rho = own(a, r1).max(own(b, r2));
         T::epsilon().to_f64() * (1.0 + rho).powi(3)

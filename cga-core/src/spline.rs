@@ -222,7 +222,7 @@ impl<X> Spline<X> {
     where
         X: Interpolable<T>,
     {
-        let rho = (self.knots.iter().filter_map(|k| k.reach()))
+        let rho = (self.knots.iter().filter_map(|k| k.centre_size()))
             .map(|(c, r)| norm(c.map(|x| x.to_f64())) / r.to_f64())
             .fold(0.0, f64::max);
         T::epsilon().to_f64() * (1.0 + rho).powi(3)

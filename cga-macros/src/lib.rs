@@ -11,6 +11,7 @@
 //! ```text
 //! algebra! {
 //!     scalar = crate::Real;                 // trait bound of the coefficient type T
+//!     scalars = [f32, f64];                 // optional: concrete scalars for `2.0 * x`, `1.0 - r`
 //!     signature = (4, 1);                   // e1..e4 square to +1, e5 to −1
 //!     basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];   // storage vectors
 //!     /// docs…
@@ -21,6 +22,17 @@
 //!     alias PointPair = Bivector;           // a type alias
 //! }
 //! ```
+//!
+//! `scalar` names the trait every coefficient type `T` implements. The generated code calls
+//! its `zero()`, `one()`, `from_f64(f64)`, `to_f64(self) -> f64` (for `cast` and the values
+//! in `TruncationError`), `sqrt`, `abs` and `is_finite` as associated functions, and needs
+//! `Copy + PartialEq + Add + Sub + Mul + Div + Neg` (all with `Output = Self`) and `Debug`:
+//! declare those in the trait (`cga_core::Real` does).
+//!
+//! `scalars` (optional) lists concrete coefficient types (`f32`, `f64`, any type that
+//! implements the `scalar` trait) that get the operators with the scalar on the left: the
+//! orphan rule forbids `impl<T> Mul<X<T>> for T`, so for each listed `S` and type `X` the
+//! macro emits `S * X<S>`, and where `X + s` exists (below) `S + X<S>` and `S − X<S>`.
 //!
 //! `basis` is optional (default: the orthonormal `e1..en`); each storage vector is named
 //! `e` plus one label character and may be any linear combination of `e1..en`, so a
@@ -33,13 +45,41 @@
 //! ordered pair of types the products whose Cayley table is not identically zero, as
 //! traits (`GeometricProduct::gp`, `OuterProduct::wedge`, `InnerProduct::inner` (Hestenes),
 //! `LeftContraction::lc`, `RegressiveProduct::vee`, the regressive product
-//! `∁⁻¹(∁A ∧ ∁B)` with the right complement `e_S ∧ ∁e_S = I`) and operators (`*`, `^`, `|`, `&`);
-//! the result type is the smallest declared type holding every nonzero output blade (else
-//! the dense type). Per type: reverse, involute, conjugate, dual, undual, grade
-//! projections, norm, normalise/try_normalise, scale, add/sub/neg. Versors get
-//! `Sandwich::sandwich` (`V X Ṽ`) on every type. A registry (`product_table`,
-//! `unary_table`) lists every generated map with its term count, for tests that compare
-//! against the dense type.
+//! `∁⁻¹(∁A ∧ ∁B)` with the right complement `e_S ∧ ∁e_S = I`, and
+//! `CommutatorProduct::commutator`, `A × B = ½(A B − B A)`) and operators (`*`, `^`, `|`,
+//! `&`); the result type is the smallest declared type holding every nonzero output blade
+//! (else the dense type). `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
+//! multiplication per scalar term) for every pair whose geometric product has a scalar part.
+//! The traits carry `#[diagnostic::on_unimplemented]` messages saying why a pair has none.
+//! Their impls are hidden from rustdoc; each type's page has a `# Products` table of the
+//! result types instead.
+//!
+//! Per type: reverse, involute, conjugate, dual, undual, grade projections, norm,
+//! `normalise` (`Result<Self, NormaliseError>`: zero, null or not finite) and
+//! `try_normalise` (`Option`), scale, `cast::<U>()` (through `f64`: a dual number's derivative
+//! is dropped), `from_storage` (drops other blades) and `try_from_storage` (refuses to), and
+//! the arithmetic: `+`, `−`, unary `−`, `x * s`, `x / s` (each coefficient divided), `*=`,
+//! `/=`. With the scalar on the right, generically: `x + s` and `x − s` into `X` when it holds
+//! the scalar blade `s` (then also `+=`, `−=` and `X::one()`), else into the smallest declared
+//! type holding `s` and `X`'s blades (none if no type does).
+//!
+//! Inverses: `try_inverse` (`Option`) and `inverse` (unchecked), `X⁻¹ = X̃ / ⟨X X̃⟩₀`, for every
+//! type whose `X X̃` is a scalar for all values of its coefficients, decided at expansion time
+//! from the Cayley table (every non-scalar blade's polynomial in the coefficients cancels),
+//! and whose `⟨X X̃⟩₀` is not identically zero. Other types get none: a motor of CGA has
+//! `M M̃ = s + p e123i`, so its inverse is for the algebra's crate to write by hand.
+//! `inverse_table` lists the types that have one.
+//!
+//! Conversions: `From<A> for B` where `A`'s blades are all `B`'s; `TryFrom<A> for B` where
+//! some but not all are, and from the dense type into every type, returning a
+//! `TruncationError` (source and target names, and each dropped blade with its nonzero value)
+//! unless every dropped coefficient is exactly zero.
+//!
+//! Versors get `Sandwich::sandwich` (`V X Ṽ`) on every type. A registry (`product_table`,
+//! `unary_table`, `inverse_table`) lists every generated map with its term count, for tests
+//! that compare against the dense type. Besides the types, the invocation's module gets the
+//! traits above, `TruncationError`, `NormaliseError`, the registry and, with `dense`, the
+//! dense type's tables (hidden).
 
 mod codegen;
 mod model;
@@ -68,6 +108,8 @@ pub(crate) struct Spec {
     pub types: Vec<TypeSpec>,
     pub aliases: Vec<parse::Alias>,
     pub approx: Option<parse::Approx>,
+    /// Concrete scalars that get the scalar-on-the-left operators (`scalars = [f32, f64];`).
+    pub scalars: Vec<syn::Type>,
 }
 
 pub(crate) struct TypeSpec {
@@ -123,7 +165,28 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         }
         names.push(alias.name.clone());
     }
-    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases, approx: input.approx })
+    let scalars = resolve_scalars(input.scalars)?;
+    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases, approx: input.approx, scalars })
+}
+
+/// The `scalars` list: at least one type, none twice.
+fn resolve_scalars(scalars: Option<parse::Scalars>) -> syn::Result<Vec<syn::Type>> {
+    let Some(scalars) = scalars else { return Ok(Vec::new()) };
+    if scalars.types.is_empty() {
+        return Err(Error::new(
+            scalars.span,
+            "`scalars` lists no type: name the concrete scalars (`scalars = [f32, f64];`) or leave the option out",
+        ));
+    }
+    let mut seen: Vec<String> = Vec::new();
+    for ty in &scalars.types {
+        let name = quote::ToTokens::to_token_stream(ty).to_string();
+        if seen.contains(&name) {
+            return Err(Error::new(ty.span(), format!("scalar `{name}` is listed twice in `scalars`")));
+        }
+        seen.push(name);
+    }
+    Ok(scalars.types)
 }
 
 fn check_new_name(names: &[Ident], name: &Ident) -> syn::Result<()> {
@@ -334,6 +397,11 @@ mod tests {
             "versor X = [s, eo1];",
             "alias P = V;",
             "alias P = Nope;",
+            "scalars = [f64];",
+            "scalars = [f32, f64];",
+            "scalars = [];",
+            "scalars = [f64, f64];",
+            "scalars = [f64",
             "type V = [e1];",
             "type W = [e1oi, e2i];",
             "type",

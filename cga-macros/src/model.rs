@@ -30,11 +30,20 @@ pub enum Product {
     /// (`e_S ∧ ∁e_S = I`): the meet of OPNS objects. It equals `undual(dual A ∧ dual B)`
     /// with `dual(X) = X I⁻¹` up to a sign that depends only on the grades.
     Regressive,
+    /// Commutator product `A × B = ½(A B − B A)`. For orthonormal blades `e_a e_b = ±e_b e_a`,
+    /// so each entry is the geometric product's where the blades anticommute, else zero.
+    Commutator,
 }
 
 impl Product {
-    pub const ALL: [Product; 5] =
-        [Product::Geometric, Product::Outer, Product::Inner, Product::LeftContraction, Product::Regressive];
+    pub const ALL: [Product; 6] = [
+        Product::Geometric,
+        Product::Outer,
+        Product::Inner,
+        Product::LeftContraction,
+        Product::Regressive,
+        Product::Commutator,
+    ];
 }
 
 /// Linear maps of one multivector.
@@ -168,6 +177,11 @@ impl Algebra {
                 let sign = complement_sign(a, full) * complement_sign(b, full) * sw * complement_sign(r, full);
                 return Some((r, sign));
             }
+            Product::Commutator => {
+                // ½(s − s') with s' = ±s: s where the blades anticommute, nothing where they commute.
+                let ((r, s), (_, s_swapped)) = (self.ortho_gp(a, b), self.ortho_gp(b, a));
+                return (s != s_swapped).then_some((r, s));
+            }
         };
         keep.then(|| self.ortho_gp(a, b))
     }
@@ -285,6 +299,33 @@ impl Algebra {
         let mut out: Bilinear = outputs.into_iter().collect();
         out.sort_by_key(|(blade, _)| rank[*blade]);
         out
+    }
+
+    /// `X X̃` for a type holding `blades`, as polynomials in its coefficients: per output
+    /// blade, the coefficient of every monomial `c_i c_j` (i ≤ j, the `(i, j)` and `(j, i)`
+    /// terms combined), monomials and blades that cancel removed.
+    pub fn reverse_square(&self, blades: &[usize]) -> BTreeMap<usize, BTreeMap<(usize, usize), f64>> {
+        let mut out: BTreeMap<usize, BTreeMap<(usize, usize), f64>> = BTreeMap::new();
+        for (i, &x) in blades.iter().enumerate() {
+            for (j, &y) in blades.iter().enumerate() {
+                let rev = self.unary(Unary::Reverse, y).get(&y).copied().unwrap_or(1.0);
+                for (r, c) in self.product(Product::Geometric, x, y) {
+                    *out.entry(r).or_default().entry((i.min(j), i.max(j))).or_insert(0.0) += c * rev;
+                }
+            }
+        }
+        out.into_iter()
+            .map(|(r, poly)| (r, poly.into_iter().filter(|(_, c)| c.abs() > ZERO).collect::<BTreeMap<_, _>>()))
+            .filter(|(_, poly)| !poly.is_empty())
+            .collect()
+    }
+
+    /// Whether every value of a type holding `blades` has `X X̃` a scalar (every other blade's
+    /// polynomial identically zero) that is not identically zero itself: then `X⁻¹ = X̃ / ⟨X X̃⟩₀`
+    /// wherever `⟨X X̃⟩₀ ≠ 0`.
+    pub fn has_reverse_inverse(&self, blades: &[usize]) -> bool {
+        let square = self.reverse_square(blades);
+        square.contains_key(&0) && square.keys().all(|&r| r == 0)
     }
 
     /// Position of every blade in canonical order.
@@ -439,6 +480,41 @@ mod tests {
     fn singular_basis_is_rejected() {
         let basis = vec![vec![1.0, 1.0], vec![2.0, 2.0]];
         assert_eq!(Algebra::new(2, 0, vec!['a', 'b'], basis).unwrap_err(), ModelError::DegenerateBasis);
+    }
+
+    #[test]
+    fn commutator_is_half_the_difference() {
+        let a = cga_null();
+        for x in 0..a.dim() {
+            for y in 0..a.dim() {
+                let (xy, yx) = (a.product(Product::Geometric, x, y), a.product(Product::Geometric, y, x));
+                let mut want = Mv::new();
+                for (&r, &c) in &xy {
+                    *want.entry(r).or_insert(0.0) += 0.5 * c;
+                }
+                for (&r, &c) in &yx {
+                    *want.entry(r).or_insert(0.0) -= 0.5 * c;
+                }
+                assert_eq!(a.product(Product::Commutator, x, y), clean(want), "{x} x {y}");
+            }
+        }
+    }
+
+    #[test]
+    fn inverses_by_the_reverse() {
+        let a = cga_null();
+        let grade = |k| a.grade_blades(k);
+        let named = |names: &[&str]| names.iter().map(|n| a.parse_blade(n).unwrap()).collect::<Vec<_>>();
+        // Vectors, 4-vectors (every one a blade in 5 dimensions), rotors and translators.
+        for blades in [grade(0), grade(1), grade(4), grade(5), named(&["s", "e12", "e13", "e23"])] {
+            assert!(a.has_reverse_inverse(&blades), "{blades:?}");
+        }
+        assert!(a.has_reverse_inverse(&named(&["s", "e1i", "e2i", "e3i"])));
+        // Motors (M M̃ = s + p e123i), bivectors, trivectors; ei alone squares to zero.
+        let motor = named(&["s", "e12", "e13", "e23", "e1i", "e2i", "e3i", "e123i"]);
+        for blades in [motor, grade(2), grade(3), named(&["ei"])] {
+            assert!(!a.has_reverse_inverse(&blades), "{blades:?}");
+        }
     }
 
     #[test]

@@ -16,6 +16,14 @@ pub struct Input {
     pub types: Vec<TypeDecl>,
     pub aliases: Vec<Alias>,
     pub approx: Option<Approx>,
+    pub scalars: Option<Scalars>,
+}
+
+/// `scalars = [f32, f64];`: concrete coefficient types that get the scalar-on-the-left
+/// operators (`2.0 * x`, `1.0 - r`), which the orphan rule forbids generically.
+pub struct Scalars {
+    pub types: Vec<syn::Type>,
+    pub span: Span,
 }
 
 /// `#[cfg(…)] approx = path::to::approx;`: implement the `approx` crate's comparison traits
@@ -85,6 +93,7 @@ impl Parse for Input {
             types: vec![],
             aliases: vec![],
             approx: None,
+            scalars: None,
         };
         while !input.is_empty() {
             let attrs = input.call(Attribute::parse_outer)?;
@@ -129,6 +138,14 @@ impl Parse for Input {
                     input.parse::<Token![=]>()?;
                     set_once(&mut out.approx, Approx { attrs, path: input.parse()? }, &key)?;
                 }
+                "scalars" => {
+                    input.parse::<Token![=]>()?;
+                    let content;
+                    let brackets = bracketed!(content in input);
+                    let list = Punctuated::<syn::Type, Token![,]>::parse_terminated(&content)?;
+                    let scalars = Scalars { types: list.into_iter().collect(), span: brackets.span.join() };
+                    set_once(&mut out.scalars, scalars, &key)?;
+                }
                 "alias" => {
                     let name = input.parse()?;
                     input.parse::<Token![=]>()?;
@@ -138,7 +155,7 @@ impl Parse for Input {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown item `{other}`: expected `scalar`, `signature`, `basis`, `dense`, `type`, `versor`, `alias` or `approx`"
+                            "unknown item `{other}`: expected `scalar`, `signature`, `basis`, `dense`, `type`, `versor`, `alias`, `approx` or `scalars`"
                         ),
                     ));
                 }

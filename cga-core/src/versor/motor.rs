@@ -125,13 +125,12 @@ impl<T: Real> Motor<T> {
         Ok(self * fix)
     }
 
-    /// `M⁻¹ = M̃ (M M̃)⁻¹` with `(a + b e123i)⁻¹ = (a − b e123i)/a²`; `NotInvertible` when
-    /// `a` is zero or the result is not finite. For a rigid motor this is `M̃`.
-    pub fn try_inverse(self) -> VersorResult<Self> {
-        let (a, b) = self.study();
-        let k = T::one() / (a * a);
-        let inv = self.reverse() * Motor { s: a * k, e123i: -b * k, ..Motor::zero() };
-        inv.to_array().iter().all(|x| x.is_finite()).then_some(inv).ok_or(VersorError::NotInvertible)
+    /// `M⁻¹ = M̃ (M M̃)⁻¹` with `(a + b e123i)⁻¹ = (a − b e123i)/a²` (the generated
+    /// `try_inverse` of other types needs `X X̃` to be a scalar, which a motor's is not);
+    /// `None` when `a` is zero or the result is not finite. For a rigid motor this is `M̃`.
+    pub fn try_inverse(self) -> Option<Self> {
+        let inv = self.inverse();
+        inv.to_array().iter().all(|x| x.is_finite()).then_some(inv)
     }
 
     /// [`Motor::try_inverse`] for a motor known to be invertible: non-finite coefficients

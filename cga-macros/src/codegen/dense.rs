@@ -273,6 +273,13 @@ impl Gen<'_> {
                     Self { coeffs: self.coeffs.map(|x| x * s) }
                 }
 
+                /// The same coefficients in another scalar type, each through `f64`
+                /// (`U::from_f64(c.to_f64())`); a dual number's derivative part is dropped.
+                #[inline]
+                pub fn cast<U: #real>(&self) -> #ident<U> {
+                    #ident { coeffs: self.coeffs.map(|c| <U as #real>::from_f64(<T as #real>::to_f64(c))) }
+                }
+
                 /// `V X Ṽ`, in full.
                 #[inline]
                 pub fn sandwich(&self, x: &Self) -> Self {

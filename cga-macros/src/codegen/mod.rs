@@ -8,6 +8,7 @@ use quote::{format_ident, quote};
 use std::collections::BTreeMap;
 
 mod approx;
+mod arith;
 mod dense;
 mod products;
 mod registry;
@@ -16,11 +17,16 @@ mod types;
 pub fn generate(spec: &Spec) -> TokenStream {
     let g = Gen::new(spec);
     let mut out = g.traits();
-    for t in &spec.types {
-        out.extend(g.type_items(t));
+    out.extend(g.error_types());
+    for (pos, t) in spec.types.iter().enumerate() {
+        out.extend(g.type_items(pos, t));
+        out.extend(g.scalar_ops(t));
+        out.extend(g.inverse(pos, t));
     }
     out.extend(g.embeddings());
+    out.extend(g.truncations());
     out.extend(g.products());
+    out.extend(g.scalar_products());
     out.extend(g.sandwiches());
     out.extend(g.dense());
     out.extend(g.registry());
@@ -45,6 +51,13 @@ struct Planned {
     table: Bilinear,
 }
 
+/// The scalar part `⟨A B⟩₀` of the geometric product of two types: its terms.
+struct ScalarPlan {
+    lhs: usize,
+    rhs: usize,
+    terms: Vec<Term>,
+}
+
 /// Names and symbols of a product kind.
 struct ProductNames {
     trait_name: &'static str,
@@ -61,6 +74,7 @@ fn names(kind: Product) -> ProductNames {
         Product::Inner => ("InnerProduct", "inner", Some(("BitOr", "bitor")), "A · B (Hestenes)", "Inner"),
         Product::LeftContraction => ("LeftContraction", "lc", None, "A ⌋ B", "LeftContraction"),
         Product::Regressive => ("RegressiveProduct", "vee", Some(("BitAnd", "bitand")), "A ∨ B", "Regressive"),
+        Product::Commutator => ("CommutatorProduct", "commutator", None, "A × B = ½(A B − B A)", "Commutator"),
     };
     ProductNames { trait_name, method, operator, formula, kind_variant }
 }
@@ -86,14 +100,28 @@ struct Gen<'a> {
     plans: Vec<Planned>,
     /// Every sandwich of a versor on a type, planned once.
     sandwich_plans: Vec<SandwichPlan>,
+    /// Every nonzero scalar part of a geometric product of two types.
+    scalar_plans: Vec<ScalarPlan>,
+    /// Per type: whether `X X̃` is identically a (not identically zero) scalar.
+    invertible: Vec<bool>,
 }
 
 impl<'a> Gen<'a> {
     fn new(spec: &'a Spec) -> Self {
         let a = &spec.algebra;
-        let mut g =
-            Gen { spec, a, real: &spec.scalar, dim: a.dim(), rank: a.rank(), plans: vec![], sandwich_plans: vec![] };
-        g.plans = g.product_plan();
+        let invertible = spec.types.iter().map(|t| a.has_reverse_inverse(&t.model.blades)).collect();
+        let mut g = Gen {
+            spec,
+            a,
+            real: &spec.scalar,
+            dim: a.dim(),
+            rank: a.rank(),
+            plans: vec![],
+            sandwich_plans: vec![],
+            scalar_plans: vec![],
+            invertible,
+        };
+        (g.plans, g.scalar_plans) = g.product_plan();
         g.sandwich_plans = g.all_sandwich_plans();
         g
     }
@@ -103,11 +131,16 @@ impl<'a> Gen<'a> {
     }
 
     pub(super) fn target_for(&self, blades: &[usize]) -> Option<Target> {
-        let models: Vec<_> = self.spec.types.iter().map(|t| t.model.clone()).collect();
-        match cover(&models, blades) {
+        match self.declared_cover(blades) {
             Some(t) => Some(Target::Type(t)),
             None => self.spec.dense.as_ref().map(|_| Target::Dense),
         }
+    }
+
+    /// The smallest declared type holding `blades` (never the dense type).
+    pub(super) fn declared_cover(&self, blades: &[usize]) -> Option<usize> {
+        let models: Vec<_> = self.spec.types.iter().map(|t| t.model.clone()).collect();
+        cover(&models, blades)
     }
 
     pub(super) fn target_ty(&self, target: Target) -> TokenStream {

@@ -4,13 +4,20 @@
 use super::*;
 
 impl Gen<'_> {
-    /// One entry per nonzero product of an ordered pair of types.
-    pub(super) fn product_plan(&self) -> Vec<Planned> {
+    /// One entry per nonzero product of an ordered pair of types, and one per nonzero scalar
+    /// part of their geometric product.
+    pub(super) fn product_plan(&self) -> (Vec<Planned>, Vec<ScalarPlan>) {
         let mut plan = Vec::new();
+        let mut scalars = Vec::new();
         for (l, lt) in self.spec.types.iter().enumerate() {
             for (r, rt) in self.spec.types.iter().enumerate() {
                 for kind in Product::ALL {
                     let table = self.a.bilinear(kind, &lt.model.blades, &rt.model.blades);
+                    if kind == Product::Geometric
+                        && let Some((_, terms)) = table.iter().find(|(b, _)| *b == 0)
+                    {
+                        scalars.push(ScalarPlan { lhs: l, rhs: r, terms: terms.clone() });
+                    }
                     let outs: Vec<usize> = table.iter().map(|(b, _)| *b).collect();
                     if outs.is_empty() {
                         continue;
@@ -21,7 +28,38 @@ impl Gen<'_> {
                 }
             }
         }
-        plan
+        (plan, scalars)
+    }
+
+    /// `ScalarProduct` for every pair of types whose geometric product has a scalar part.
+    pub(super) fn scalar_products(&self) -> TokenStream {
+        let real = self.real;
+        let mut out = TokenStream::new();
+        for plan in &self.scalar_plans {
+            let (lt, rt) = (&self.spec.types[plan.lhs], &self.spec.types[plan.rhs]);
+            let body = self.sum(plan.terms.iter().map(|t| {
+                let (l, r) = (self.field(lt.model.blades[t.lhs]), self.field(rt.model.blades[t.rhs]));
+                (t.coeff, quote!(a.#l * b.#r))
+            }));
+            let (li, ri) = (&lt.ident, &rt.ident);
+            let doc = format!(
+                " `⟨A B⟩₀` with A: `{li}`, B: `{ri}`: {} multiplications, the scalar terms of the geometric product.",
+                plan.terms.len()
+            );
+            out.extend(quote! {
+                #[doc(hidden)]
+                impl<T: #real> ScalarProduct<#ri<T>> for #li<T> {
+                    type Output = T;
+                    #[doc = #doc]
+                    #[inline(always)]
+                    fn scalar_product(self, rhs: #ri<T>) -> T {
+                        let (a, b) = (self, rhs);
+                        #body
+                    }
+                }
+            });
+        }
+        out
     }
 
     pub(super) fn products(&self) -> TokenStream {
@@ -42,6 +80,7 @@ impl Gen<'_> {
                 self.target_name(target)
             );
             out.extend(quote! {
+                #[doc(hidden)]
                 impl<T: #real> #tr<#ri<T>> for #li<T> {
                     type Output = #out_ty;
                     #[doc = #doc]
@@ -55,6 +94,7 @@ impl Gen<'_> {
             if let Some((op_trait, op_method)) = n.operator {
                 let (ot, om) = (format_ident!("{op_trait}"), format_ident!("{op_method}"));
                 out.extend(quote! {
+                    #[doc(hidden)]
                     impl<T: #real> core::ops::#ot<#ri<T>> for #li<T> {
                         type Output = #out_ty;
                         #[doc = #doc]
@@ -141,6 +181,7 @@ impl Gen<'_> {
                 self.target_name(target)
             );
             out.extend(quote! {
+                #[doc(hidden)]
                 impl<T: #real> Sandwich<#xi<T>> for #vi<T> {
                     type Output = #out_ty;
                     #[doc = #doc]

@@ -27,6 +27,23 @@ impl Gen<'_> {
                 }
             });
         }
+        for plan in &self.scalar_plans {
+            let (lt, rt) = (&self.spec.types[plan.lhs], &self.spec.types[plan.rhs]);
+            let (li, ri) = (&lt.ident, &rt.ident);
+            let (ls, rs, terms) = (li.to_string(), ri.to_string(), plan.terms.len());
+            let (lb, rb) = (self.target_index(Target::Type(plan.lhs)), self.target_index(Target::Type(plan.rhs)));
+            products.push(quote! {
+                ProductEntry {
+                    kind: ProductKind::ScalarProduct, lhs: #ls, rhs: #rs, output: "scalar", terms: #terms,
+                    lhs_blades: #lb, rhs_blades: #rb, output_blades: &[0],
+                    eval: |a, b| {
+                        let mut out = [<T as #real>::zero(); #dim];
+                        out[0] = ScalarProduct::scalar_product(#li::<T>::from_storage(a), #ri::<T>::from_storage(b));
+                        out
+                    },
+                }
+            });
+        }
         for plan in &self.sandwich_plans {
             let (vpos, xpos, target) = (plan.versor, plan.object, plan.target);
             let (v, x) = (&self.spec.types[vpos], &self.spec.types[xpos]);
@@ -42,6 +59,16 @@ impl Gen<'_> {
                     lhs_blades: #vb, rhs_blades: #xb, output_blades: #ob,
                     eval: |a, b| Sandwich::sandwich(#vi::<T>::from_storage(a), #xi::<T>::from_storage(b)).to_storage(),
                 }
+            });
+        }
+
+        let mut inverses = Vec::new();
+        for (tpos, t) in self.spec.types.iter().enumerate().filter(|(pos, _)| self.invertible[*pos]) {
+            let ty = &t.ident;
+            let (ts, ib) = (ty.to_string(), self.target_index(Target::Type(tpos)));
+            inverses.push(quote! {
+                InverseEntry { input: #ts, input_blades: #ib,
+                    eval: |a| #ty::<T>::from_storage(a).try_inverse().map(#ty::to_storage) }
             });
         }
 
@@ -108,6 +135,10 @@ impl Gen<'_> {
                 LeftContraction,
                 /// `A ∨ B`
                 Regressive,
+                /// `A × B = ½(A B − B A)`
+                Commutator,
+                /// `⟨A B⟩₀`, returned in the scalar slot
+                ScalarProduct,
                 /// `V X Ṽ`, grades of `X` only
                 Sandwich,
             }
@@ -174,6 +205,24 @@ impl Gen<'_> {
                 pub output_blades: &'static [usize],
                 /// Runs the generated code on a storage-basis array.
                 pub eval: fn(&[T; #dim]) -> [T; #dim],
+            }
+
+            /// A type with a generated `try_inverse` (its `X X̃` is a scalar for every value).
+            #[derive(Clone, Copy, Debug)]
+            #[doc(hidden)]
+            pub struct InverseEntry<T> {
+                /// The type.
+                pub input: &'static str,
+                /// Storage indices of its blades.
+                pub input_blades: &'static [usize],
+                /// Runs `try_inverse` on a storage-basis array.
+                pub eval: fn(&[T; #dim]) -> Option<[T; #dim]>,
+            }
+
+            /// Every type with a generated `try_inverse`, in declaration order.
+            #[doc(hidden)]
+            pub fn inverse_table<T: #real>() -> Vec<InverseEntry<T>> {
+                vec![#(#inverses),*]
             }
 
             /// Every generated product (and sandwich), for checking them all against the dense type.

@@ -7,6 +7,7 @@ use super::*;
 impl Gen<'_> {
     pub(super) fn traits(&self) -> TokenStream {
         let mut out = TokenStream::new();
+        let scalars = "to multiply by a scalar `s`, write `x * s` or `x.scale(s)`";
         for kind in Product::ALL {
             let n = names(kind);
             let (tr, m) = (format_ident!("{}", n.trait_name), format_ident!("{}", n.method));
@@ -14,8 +15,16 @@ impl Gen<'_> {
                 " The product `{}`, generated for every pair of types whose Cayley table is not identically zero.",
                 n.formula
             );
+            let message = format!("`{{Self}}` has no product `{}` with `{{Rhs}}`", n.formula);
+            let note = format!(
+                "`{}` is generated for every ordered pair of declared types whose table for it is not identically \
+                 zero: if both are declared types, the product of `{{Self}}` and `{{Rhs}}` is identically zero in \
+                 this algebra (or, with no `dense` type declared, no declared type holds its result)",
+                n.trait_name
+            );
             out.extend(quote! {
                 #[doc = #doc]
+                #[diagnostic::on_unimplemented(message = #message, note = #note, note = #scalars)]
                 pub trait #tr<Rhs> {
                     /// The smallest declared type that holds every nonzero blade of the result.
                     type Output;
@@ -24,22 +33,124 @@ impl Gen<'_> {
                 }
             });
         }
+        let versors: Vec<String> =
+            self.spec.types.iter().filter(|t| t.model.versor).map(|t| format!("`{}`", t.ident)).collect();
+        let versors = match versors.len() {
+            0 => "none are declared in this algebra".to_string(),
+            _ => format!("here {}", versors.join(", ")),
+        };
+        let sandwich_note = format!(
+            "sandwiches are generated for the types declared with `versor` ({versors}) acting on the declared types; \
+             `{{Self}}` is not a versor, or `{{X}}` is not a declared type"
+        );
         out.extend(quote! {
             /// The sandwich `V X Ṽ` of a versor `V` and any object `X`. A versor preserves
             /// grades, so only `X`'s grades are computed; the result type is the smallest
             /// declared type holding the nonzero blades of those grades (a translator turns
             /// a rotor into a motor, but keeps a line a line).
+            #[diagnostic::on_unimplemented(
+                message = "`{Self}` has no sandwich `V X Ṽ` with `{X}`",
+                note = #sandwich_note,
+                note = "for any other element `A`, write the products out (`A * x * A.reverse()`, say), or use the \
+                        algebra's own methods for reflections and inversions"
+            )]
             pub trait Sandwich<X> {
                 /// The type of `V X Ṽ`.
                 type Output;
                 /// `V X Ṽ`.
                 fn sandwich(self, x: X) -> Self::Output;
             }
+
+            /// The scalar product `⟨A B⟩₀`: the scalar part of the geometric product, computed
+            /// alone (one multiplication per scalar term of the Cayley table). Generated for every
+            /// pair of types whose geometric product has a scalar part.
+            #[diagnostic::on_unimplemented(
+                message = "`{Self}` has no scalar product `⟨A B⟩₀` with `{Rhs}`",
+                note = "`ScalarProduct` is generated for every ordered pair of declared types whose geometric product \
+                        has a scalar part: if both are declared types, `⟨A B⟩₀` of `{Self}` and `{Rhs}` is identically \
+                        zero in this algebra",
+                note = #scalars
+            )]
+            pub trait ScalarProduct<Rhs> {
+                /// The scalar type.
+                type Output;
+                /// `⟨A B⟩₀`.
+                fn scalar_product(self, rhs: Rhs) -> Self::Output;
+            }
         });
         out
     }
 
-    pub(super) fn type_items(&self, t: &TypeSpec) -> TokenStream {
+    /// The `# Products` section of a type's rustdoc: per right-hand type, the result type of
+    /// each product (— where it is identically zero and not generated), and of the sandwich
+    /// for a versor. The impls themselves are hidden from the docs.
+    pub(super) fn products_doc(&self, pos: usize) -> Vec<String> {
+        let kinds = [
+            (Product::Geometric, "A * B"),
+            (Product::Outer, "A ^ B"),
+            (Product::Inner, "A \\| B"),
+            (Product::Regressive, "A & B"),
+            (Product::LeftContraction, "A.lc(B)"),
+            (Product::Commutator, "A.commutator(B)"),
+        ];
+        let link = |target: Target| format!("[`{}`]", self.target_name(target));
+        let versor = self.spec.types[pos].model.versor;
+        let mut header = String::from("| B |");
+        let mut rule = String::from("|---|");
+        for (_, op) in kinds {
+            header.push_str(&format!(" `{op}` |"));
+            rule.push_str("---|");
+        }
+        header.push_str(" `A.scalar_product(B)` |");
+        rule.push_str("---|");
+        if versor {
+            header.push_str(" `A.sandwich(B)` |");
+            rule.push_str("---|");
+        }
+        let mut lines = vec![
+            String::new(),
+            "# Products".to_string(),
+            String::new(),
+            "The type of every product of this type `A` with a declared type `B` (`—`: identically zero in this \
+             algebra, so not generated); one multiplication per nonzero term of the Cayley table. Their trait \
+             impls (`GeometricProduct`, `Mul`, `OuterProduct`, `BitXor`, … `Sandwich`) are hidden from this page."
+                .to_string(),
+            String::new(),
+            header,
+            rule,
+        ];
+        for (r, rt) in self.spec.types.iter().enumerate() {
+            let mut row = format!("| [`{}`] |", rt.ident);
+            for (kind, _) in kinds {
+                let plan = self.plans.iter().find(|p| p.kind == kind && p.lhs == pos && p.rhs == r);
+                row.push_str(&format!(" {} |", plan.map_or("—".to_string(), |p| link(p.target))));
+            }
+            let scalar = self.scalar_plans.iter().any(|p| p.lhs == pos && p.rhs == r);
+            row.push_str(if scalar { " `T` |" } else { " — |" });
+            if versor {
+                let plan = self.sandwich_plans.iter().find(|p| p.versor == pos && p.object == r);
+                row.push_str(&format!(" {} |", plan.map_or("—".to_string(), |p| link(p.target))));
+            }
+            lines.push(row);
+        }
+        let mut with_scalar = self.spec.types[pos].model.blades.clone();
+        with_scalar.push(0);
+        let name = &self.spec.types[pos].ident;
+        lines.push(String::new());
+        lines.push(match self.declared_cover(&with_scalar) {
+            Some(sum) => format!(
+                "With a scalar `s`: `A * s`, `A / s` are [`{name}`]s, `A + s`, `A - s` are [`{}`]s.",
+                self.spec.types[sum].ident
+            ),
+            None => format!(
+                "With a scalar `s`: `A * s`, `A / s` are [`{name}`]s; no declared type holds `s` and this type's \
+                 blades, so there is no `A + s`."
+            ),
+        });
+        lines.into_iter().map(|l| if l.is_empty() { l } else { format!(" {l}") }).collect()
+    }
+
+    pub(super) fn type_items(&self, pos: usize, t: &TypeSpec) -> TokenStream {
         let real = self.real;
         let ident = &t.ident;
         let attrs = &t.attrs;
@@ -52,6 +163,25 @@ impl Gen<'_> {
         let ranks2 = ranks.clone();
         let dim = self.dim;
         let summary = format!(" {n} coefficients: `{}`.", blade_names.join("`, `"));
+        let products_doc = self.products_doc(pos);
+        let name = ident.to_string();
+        // Blades of a storage array this type lacks: what `try_from_storage` refuses to drop.
+        let lacking: Vec<(usize, String)> =
+            (0..dim).filter(|b| !blades.contains(b)).map(|b| (self.rank[b], self.a.blade_name(b))).collect();
+        let (lacking_index, lacking_name): (Vec<usize>, Vec<String>) = lacking.into_iter().unzip();
+        let one = blades.contains(&0).then(|| {
+            let fields = blades.iter().map(|&b| {
+                let f = self.field(b);
+                if b == 0 { quote!(#f: <T as #real>::one()) } else { quote!(#f: <T as #real>::zero()) }
+            });
+            quote! {
+                /// The unit `1`: `s = 1`, every other coefficient zero.
+                #[inline]
+                pub fn one() -> Self {
+                    Self { #(#fields),* }
+                }
+            }
+        });
 
         let signs = |kind: Unary| -> Vec<TokenStream> {
             blades
@@ -73,6 +203,7 @@ impl Gen<'_> {
             #(#attrs)*
             #[doc = ""]
             #[doc = #summary]
+            #( #[doc = #products_doc] )*
             #[derive(Clone, Copy, PartialEq, Default)]
             // `repr(C)`: a value is its coefficients in field order (`[T; N]` in memory), which
             // `cga_core::simd` transposes in place into and out of lanes.
@@ -118,10 +249,37 @@ impl Gen<'_> {
                     [#(self.#fields),*]
                 }
 
-                /// This type's blades taken from a storage-basis array; other blades are dropped.
+                /// This type's blades taken from a storage-basis array; the other blades are
+                /// dropped, whatever their values (`try_from_storage` refuses to drop nonzero ones).
                 #[inline]
                 pub fn from_storage(c: &[T; #dim]) -> Self {
                     Self { #(#fields: c[#ranks2]),* }
+                }
+
+                /// This type's blades taken from a storage-basis array, or a `TruncationError`
+                /// naming every other blade whose coefficient is not exactly zero.
+                #[inline]
+                pub fn try_from_storage(c: &[T; #dim]) -> Result<Self, TruncationError> {
+                    let zero = <T as #real>::zero();
+                    let mut dropped = ::std::vec::Vec::new();
+                    #( if c[#lacking_index] != zero {
+                        dropped.push((#lacking_name, <T as #real>::to_f64(c[#lacking_index])));
+                    } )*
+                    if dropped.is_empty() {
+                        Ok(Self::from_storage(c))
+                    } else {
+                        Err(TruncationError { from: "storage array", to: #name, dropped })
+                    }
+                }
+
+                #one
+
+                /// The same coefficients in another scalar type, each through `f64`
+                /// (`U::from_f64(c.to_f64())`): exact from `f32` to `f64`, rounded the other way;
+                /// a dual number's derivative part is dropped (only its value goes through).
+                #[inline]
+                pub fn cast<U: #real>(self) -> #ident<U> {
+                    #ident { #(#fields: <U as #real>::from_f64(<T as #real>::to_f64(self.#fields))),* }
                 }
 
                 /// As a storage-basis array (canonical blade order), other blades zero.
@@ -169,18 +327,36 @@ impl Gen<'_> {
                     self.norm_squared().abs().sqrt()
                 }
 
-                /// `A / √|⟨A Ã⟩₀|`, so that `A Ã = ±1` for blades and versors. A null `A`
-                /// (a point, `⟨A Ã⟩₀ = 0`) gives non-finite coefficients: see `try_normalise`.
+                /// `A / √|⟨A Ã⟩₀|`, so that `A Ã = ±1` for blades and versors; a
+                /// `NormaliseError` when every coefficient is zero (`Zero`), when a coefficient,
+                /// the norm or a coefficient of the result is not finite (`NonFinite`), or when
+                /// `⟨A Ã⟩₀ = 0` with finite nonzero coefficients (`Null`: a conformal point, or a
+                /// squared norm that underflows). Never a non-finite `Ok`.
                 #[inline]
-                pub fn normalise(self) -> Self {
-                    self.scale(<T as #real>::one() / self.norm())
+                pub fn normalise(self) -> Result<Self, NormaliseError> {
+                    let zero = <T as #real>::zero();
+                    match self.try_normalise() {
+                        Some(unit) => Ok(unit),
+                        None if true #( && self.#fields == zero )* => Err(NormaliseError::Zero { type_name: #name }),
+                        None if !(true #( && self.#fields.is_finite() )*) => {
+                            Err(NormaliseError::NonFinite { type_name: #name })
+                        }
+                        None if self.norm_squared() == zero => Err(NormaliseError::Null { type_name: #name }),
+                        None => Err(NormaliseError::NonFinite { type_name: #name }),
+                    }
                 }
 
-                /// `A / √|⟨A Ã⟩₀|`, or `None` when `⟨A Ã⟩₀` is zero or not finite.
+                /// `A / √|⟨A Ã⟩₀|`, or `None` when `⟨A Ã⟩₀` is zero or not finite, or a
+                /// coefficient of the result is not finite (`normalise` says which).
                 #[inline]
                 pub fn try_normalise(self) -> Option<Self> {
-                    let inv = <T as #real>::one() / self.norm();
-                    (self.norm_squared() != <T as #real>::zero() && inv.is_finite()).then(|| self.scale(inv))
+                    let n2 = self.norm_squared();
+                    let inv = <T as #real>::one() / n2.abs().sqrt();
+                    if n2 == <T as #real>::zero() || !n2.is_finite() || !inv.is_finite() {
+                        return None;
+                    }
+                    let unit = self.scale(inv);
+                    (true #( && unit.#fields.is_finite() )*).then_some(unit)
                 }
             }
 
@@ -222,12 +398,40 @@ impl Gen<'_> {
                 }
             }
 
+            /// `A s`: every coefficient times `s` (`scale`).
             impl<T: #real> core::ops::Mul<T> for #ident<T> {
                 type Output = Self;
                 /// Scale by a scalar.
                 #[inline]
                 fn mul(self, s: T) -> Self {
                     self.scale(s)
+                }
+            }
+
+            /// `A *= s`: every coefficient times `s`.
+            impl<T: #real> core::ops::MulAssign<T> for #ident<T> {
+                #[inline]
+                fn mul_assign(&mut self, s: T) {
+                    *self = self.scale(s);
+                }
+            }
+
+            /// `A / s`: every coefficient divided by `s` (one rounding each, not a
+            /// multiplication by `1/s`); non-finite for `s = 0`.
+            impl<T: #real> core::ops::Div<T> for #ident<T> {
+                type Output = Self;
+                /// Divide by a scalar.
+                #[inline]
+                fn div(self, s: T) -> Self {
+                    Self { #(#fields: self.#fields / s),* }
+                }
+            }
+
+            /// `A /= s`: every coefficient divided by `s`.
+            impl<T: #real> core::ops::DivAssign<T> for #ident<T> {
+                #[inline]
+                fn div_assign(&mut self, s: T) {
+                    *self = *self / s;
                 }
             }
         }
