@@ -368,6 +368,30 @@ fn meets_hand_back_euclidean_points_lines_and_circles() {
     let across = Line::new([-3.0, 0.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
     assert_eq!(across.intersect_circle(&ring).unwrap(), Meet::Points([[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]));
     assert_eq!(wall.intersect_circle(&ring).unwrap(), Meet::Points([[0.0, -1.0, 0.0], [0.0, 1.0, 0.0]]));
+    // Circles in one plane, in two planes, and a circle on a sphere.
+    let beside = Circle::new([1.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0).unwrap();
+    let h = 0.75f64.sqrt();
+    assert_eq!(ring.intersect_circle(&beside).unwrap(), Meet::Points([[0.5, -h, 0.0], [0.5, h, 0.0]]));
+    let far = Circle::new([2.0, 0.0, 0.0], [0.0, 0.0, 1.0], 1.0).unwrap();
+    assert_eq!(ring.intersect_circle(&far).unwrap(), Meet::Point([1.0, 0.0, 0.0]));
+    assert_eq!(ring.intersect_circle(&ring).unwrap(), Meet::Contained);
+    let upright = Circle::new([2.0, 0.0, 0.0], [0.0, 1.0, 0.0], 1.0).unwrap(); // in y = 0, through (1, 0, 0) and (3, 0, 0)
+    match ring.intersect_circle(&upright).unwrap() {
+        Meet::Point(x) => close(x, [1.0, 0.0, 0.0], 1e-15, "crossing planes: the one common point"),
+        m => panic!("{m:?}"),
+    }
+    let crossing = Circle::new([0.0; 3], [0.0, 1.0, 0.0], 1.0).unwrap(); // the unit circle in y = 0
+    // Ordered along n1 × n2 = e3 × e2 = −e1.
+    assert_eq!(ring.intersect_circle(&crossing).unwrap(), Meet::Points([[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]));
+    assert_eq!(ring.intersect_sphere(&unit).unwrap(), Meet::Contained);
+    match ring.intersect_sphere(&Sphere::new([1.0, 0.0, 0.0], 1.0).unwrap()).unwrap() {
+        Meet::Points([a, b]) => {
+            close(a, [0.5, -h, 0.0], 1e-15, "circle ∩ sphere");
+            close(b, [0.5, h, 0.0], 1e-15, "circle ∩ sphere");
+        }
+        m => panic!("{m:?}"),
+    }
+    assert_eq!(ring.intersect_sphere(&Sphere::new([0.0, 0.0, 5.0], 1.0).unwrap()).unwrap(), Meet::Miss);
 }
 
 #[test]

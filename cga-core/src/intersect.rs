@@ -161,17 +161,96 @@ impl<T: Real> Sphere<T> {
         let Some(n) = unit(v).filter(|_| !negligible(d, size)) else {
             return Ok(if negligible(r1 - r2, size) { Meet::Contained } else { Meet::Miss });
         };
-        let (outer, inner) = (d - (r1 + r2), d - (r1 - r2).abs());
-        if negligible(outer, size) || negligible(inner, size) {
-            // Outside each other, or the first around the second: the point on the side of c2.
-            let a = if negligible(outer, size) || r1 > r2 { r1 } else { -r1 };
-            return Ok(Meet::Point(add(c1, scale(n, a))));
-        }
-        if outer > T::zero() || inner < T::zero() {
-            return Ok(Meet::Miss);
-        }
-        let a = (d * d + (r1 - r2) * (r1 + r2)) / (d + d);
-        let radius = ((r1 - a) * (r1 + a)).sqrt();
-        Ok(Meet::Circle { centre: add(c1, scale(n, a)), normal: n, radius })
+        Ok(match two_rounds(c1, n, r1, r2, d) {
+            Rounds::Touch(x) => Meet::Point(x),
+            Rounds::Apart => Meet::Miss,
+            Rounds::Cross { foot, half } => Meet::Circle { centre: foot, normal: n, radius: half },
+        })
     }
+}
+
+impl<T: Real> Circle<T> {
+    /// Where two circles meet: two points, a tangent point, a miss, or `Contained` for the
+    /// same circle. In one plane, by the chord of the two discs (`a = (d² + r1² − r2²)/2d`
+    /// from the first centre, half-chord `√((r1 − a)(r1 + a))`, the points ordered along
+    /// `n × (c2 − c1)`); in two planes, where the line the planes share meets both (ordered
+    /// along `n1 × n2`).
+    pub fn intersect_circle(&self, other: &Circle<T>) -> Result<Meet<T>> {
+        let ((c1, n1, r1), (c2, n2, r2)) = (self.centre_normal_radius()?, other.centre_normal_radius()?);
+        let (p1, p2) = (Plane::from_point_normal(c1, n1)?, Plane::from_point_normal(c2, n2)?);
+        match p1.intersect_plane(&p2)? {
+            Meet::Contained => Ok(coplanar_circles((c1, n1, r1), (c2, r2))),
+            Meet::Line(line) => {
+                let on_second = |x: E3<T>| negligible(norm(sub(x, c2)) - r2, r2 + norm(sub(x, c2)));
+                Ok(match line.intersect_circle(self)? {
+                    Meet::Points([a, b]) => match (on_second(a), on_second(b)) {
+                        (true, true) => Meet::Points([a, b]),
+                        (true, false) => Meet::Point(a),
+                        (false, true) => Meet::Point(b),
+                        _ => Meet::Miss,
+                    },
+                    Meet::Point(a) if on_second(a) => Meet::Point(a),
+                    _ => Meet::Miss,
+                })
+            }
+            _ => Ok(Meet::Miss),
+        }
+    }
+
+    /// Where a circle meets a sphere: the sphere cuts the circle's plane in a circle, met
+    /// as [`Circle::intersect_circle`] in that plane; `Contained` for a circle on the sphere.
+    pub fn intersect_sphere(&self, sphere: &Sphere<T>) -> Result<Meet<T>> {
+        let (c, n, r) = self.centre_normal_radius()?;
+        match Plane::from_point_normal(c, n)?.intersect_sphere(sphere)? {
+            Meet::Circle { centre, radius, .. } => Ok(coplanar_circles((c, n, r), (centre, radius))),
+            Meet::Point(x) => {
+                let off = norm(sub(x, c)) - r;
+                Ok(if negligible(off, r + norm(sub(x, c))) { Meet::Point(x) } else { Meet::Miss })
+            }
+            other => Ok(other),
+        }
+    }
+}
+
+/// Two circles in the plane of normal `n`: the first `(c1, r1)`, the second `(c2, r2)`.
+fn coplanar_circles<T: Real>((c1, n, r1): (E3<T>, E3<T>, T), (c2, r2): (E3<T>, T)) -> Meet<T> {
+    let v = sub(c2, c1);
+    let d = norm(v);
+    let size = r1 + r2 + d;
+    let Some(u) = unit(v).filter(|_| !negligible(d, size)) else {
+        return if negligible(r1 - r2, size) { Meet::Contained } else { Meet::Miss };
+    };
+    match two_rounds(c1, u, r1, r2, d) {
+        Rounds::Touch(x) => Meet::Point(x),
+        Rounds::Apart => Meet::Miss,
+        Rounds::Cross { foot, half } => {
+            let across = cross(n, u);
+            Meet::Points([sub(foot, scale(across, half)), add(foot, scale(across, half))])
+        }
+    }
+}
+
+/// How two rounds of radii `r1`, `r2` whose centres lie `d` apart along the unit `u` from
+/// `c1` meet: touching (at the point on the side the second lies), apart, or crossing
+/// where the plane `a = (d² + r1² − r2²)/2d` from `c1` cuts them, with the half-chord
+/// `√((r1 − a)(r1 + a))`. Touching within rounding of `r1 + r2 + d`.
+enum Rounds<T> {
+    Touch(E3<T>),
+    Apart,
+    Cross { foot: E3<T>, half: T },
+}
+
+fn two_rounds<T: Real>(c1: E3<T>, u: E3<T>, r1: T, r2: T, d: T) -> Rounds<T> {
+    let size = r1 + r2 + d;
+    let (outer, inner) = (d - (r1 + r2), d - (r1 - r2).abs());
+    if negligible(outer, size) || negligible(inner, size) {
+        // Outside each other, or the first around the second: the point toward the second.
+        let a = if negligible(outer, size) || r1 > r2 { r1 } else { -r1 };
+        return Rounds::Touch(add(c1, scale(u, a)));
+    }
+    if outer > T::zero() || inner < T::zero() {
+        return Rounds::Apart;
+    }
+    let a = (d * d + (r1 - r2) * (r1 + r2)) / (d + d);
+    Rounds::Cross { foot: add(c1, scale(u, a)), half: ((r1 - a) * (r1 + a)).sqrt() }
 }
