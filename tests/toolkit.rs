@@ -517,3 +517,28 @@ fn blades_are_classified_as_they_were_built() {
         Multivector::from(up([1.0, 0.0, 0.0])) + Multivector::from(Line::new([0.0; 3], [1.0, 0.0, 0.0]).unwrap());
     assert_eq!(mixed.classify(), Err(cga_core::GeometryError::NotABlade));
 }
+
+#[test]
+fn disjoint_spheres_are_refused_by_name_not_interpolated_through_a_plane() {
+    use cga_core::{InterpolationError, Pair};
+    let (a, b): (Sphere, Sphere) = (Sphere::new([0.0; 3], 1.0).unwrap(), Sphere::new([10.0, 0.0, 0.0], 2.0).unwrap());
+    // Aligned, the duals' weights are 1/r1 and −1/r2: their blend vanishes at
+    // α = λ1/(λ1 − λ2) = 1/(1 + 1/2) = 2/3.
+    match Pair::new(a, b) {
+        Err(InterpolationError::ThroughInfinity { alpha }) => assert!((alpha - 2.0 / 3.0).abs() < 1e-15, "{alpha}"),
+        other => panic!("{other:?}"),
+    }
+    // What it refuses: unchecked, the centre leaves the segment between the two (at α = 0.3 it
+    // is at x ≈ −12, radius ≈ 15, as the issue found) and runs off to infinity near 2/3.
+    let unchecked = Pair::new_unchecked(a, b).unwrap();
+    let (c, _) = unchecked.at(0.3).unwrap().centre_radius().unwrap();
+    assert!(c[0] < 0.0, "centre {c:?}");
+    let (c, _) = unchecked.at(0.66).unwrap().centre_radius().unwrap();
+    assert!(c[0].abs() > 100.0, "centre {c:?}");
+    // Overlapping spheres interpolate as before, centres between, radii between.
+    let pair = Pair::new(a, Sphere::new([1.5, 0.0, 0.0], 2.0).unwrap()).unwrap();
+    for k in 0..=10 {
+        let (c, r) = pair.at(k as f64 / 10.0).unwrap().centre_radius().unwrap();
+        assert!((0.0..=1.5).contains(&c[0]) && (0.99..=2.01).contains(&r), "centre {c:?}, radius {r}");
+    }
+}

@@ -34,6 +34,15 @@ pub enum InterpolationError {
         /// Where it happened.
         alpha: f64,
     },
+    /// The interpolation leaves through infinity: two disjoint spheres, aligned, pass
+    /// through a plane at `alpha` (their centres run off to infinity on either side of it;
+    /// with the other sign the spheres in between are imaginary). No real, bounded path of
+    /// this pencil joins them; `Pair::new_unchecked` interpolates anyway.
+    #[error("the interpolation passes through a plane at α = {alpha} (disjoint spheres): no bounded path joins them")]
+    ThroughInfinity {
+        /// Where the interpolant is a plane.
+        alpha: f64,
+    },
     /// An endpoint is zero or null: it cannot be normalised.
     #[error("an endpoint is zero or null")]
     Degenerate,
@@ -140,10 +149,16 @@ pub trait Interpolable<T: Real>: Copy + Add<Output = Self> + Mul<T, Output = Sel
     /// pair's distance), to estimate conditioning; `None` for flats, whose coefficients grow
     /// only linearly with distance.
     fn centre_size(self) -> Option<(E3<T>, T)>;
+    /// Where the interpolation `(1 − α) C1 + α C2` of two aligned blades of this kind leaves
+    /// the kind through infinity, if it does for `α` in `(0, 1)`: two spheres whose duals'
+    /// weights `λ1, λ2` differ in sign (disjoint spheres, once aligned) pass through a
+    /// plane at `α = λ1/(λ1 − λ2)`, where the centre runs off to infinity; `None` for the
+    /// other kinds.
+    fn through_infinity(self, other: Self) -> Option<T>;
 }
 
 macro_rules! interpolable {
-    ($($ty:ident => $reach:expr),*) => {$(
+    ($($ty:ident => $reach:expr, $agree:expr);*) => {$(
         impl<T: Real> Interpolable<T> for $ty<T> {
             type Lifted = $ty<Dual<T>>;
             #[inline]
@@ -177,20 +192,28 @@ macro_rules! interpolable {
                 let reach: fn($ty<T>) -> Option<(E3<T>, T)> = $reach;
                 reach(self)
             }
+            fn through_infinity(self, other: Self) -> Option<T> {
+                let at: fn($ty<T>, $ty<T>) -> Option<T> = $agree;
+                at(self, other)
+            }
         }
     )*};
 }
 
 interpolable!(
-    Circle => |c| c.centre_normal_radius().ok().map(|(c, _, r)| (c, r)),
+    Circle => |c| c.centre_normal_radius().ok().map(|(c, _, r)| (c, r)), |_, _| None;
     Bivector => |p| {
         let [a, b] = p.end_points().ok()?;
         let half = T::from_f64(0.5);
         Some(([0, 1, 2].map(|k| half * (a[k] + b[k])), half * norm(sub(b, a))))
-    },
-    Line => |_| None,
-    Plane => |_| None,
-    Sphere => |s| s.centre_radius().ok()
+    }, |_, _| None;
+    Line => |_| None, |_, _| None;
+    Plane => |_| None, |_, _| None;
+    Sphere => |s| s.centre_radius().ok(), |a, b| {
+        // The dual weights λ of λ(up(c) − ½r² ei).
+        let (w1, w2) = (a.dual().eo, b.dual().eo);
+        ((w1 < T::zero()) != (w2 < T::zero()) && w1 != T::zero() && w2 != T::zero()).then(|| w1 / (w1 - w2))
+    }
 );
 
 /// `C2` or `−C2`, whichever is oriented like `C1`: the sign of `⟨C1 C̃2⟩₀` must be that of
@@ -254,6 +277,9 @@ impl<X> Pair<X> {
         X: Interpolable<T>,
     {
         let pair = Self::new_unchecked(c1, c2)?;
+        if let Some(alpha) = pair.c1.through_infinity(pair.c2) {
+            return Err(InterpolationError::ThroughInfinity { alpha: alpha.to_f64() });
+        }
         let estimate = pair.condition();
         if estimate.is_nan() || estimate > accuracy::<T>() {
             return Err(InterpolationError::IllConditioned { estimate });
