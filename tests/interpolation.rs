@@ -236,7 +236,9 @@ fn endpoints_are_reproduced_for_every_kind() {
     check(Bivector::from_points(a, b).unwrap(), Bivector::from_points(c, d).unwrap(), |x| x.to_array().to_vec());
     check(Line::through(a, b).unwrap(), Line::through(c, d).unwrap(), |x| x.to_array().to_vec());
     check(Plane::through(a, b, c).unwrap(), Plane::through(b, c, d).unwrap(), |x| x.to_array().to_vec());
-    check(Sphere::from_centre_radius(a, 1.0).unwrap(), Sphere::from_centre_radius(b, 2.0).unwrap(), |x| {
+    // Spheres that overlap enough to interpolate (disjoint ones pass through a plane: refused).
+    let reach = 2.0 + glam::DVec3::from(a).distance(glam::DVec3::from(b));
+    check(Sphere::from_centre_radius(a, 1.0).unwrap(), Sphere::from_centre_radius(b, reach).unwrap(), |x| {
         x.to_array().to_vec()
     });
     // Concentric spheres interpolate to concentric spheres.

@@ -1,5 +1,6 @@
 //! Rotors, translators, motors, exp/log and the rotor between lines, against clifford
-//! (`rotors.json`), a dense Taylor series, and rigid transforms in glam.
+//! (`rotors.json`) and the exact far set (`../data/far_objects.json`, translations and points
+//! up to 1e3, by the same comparison), a dense Taylor series, and rigid transforms in glam.
 
 mod common;
 
@@ -15,30 +16,61 @@ fn e3(v: &serde_json::Value) -> E3 {
     floats(v).try_into().expect("three floats")
 }
 
+/// Tolerances `k ε M` (see `Model`; no size scale, so `ρ = 0`), `M` a multivector's largest
+/// coefficient or, for the moved point, `|x| + |t|`: ours (measured on the far set, ×10), and
+/// clifford's float64 error on the near file (measured against the 50-digit reference of
+/// `tools/far_objects.py --check`, ×10).
+mod models {
+    use super::Model;
+    pub const ROTOR: Model = Model { ours: (24.0, 0), clifford: (4.0, 0) };
+    pub const TRANSLATOR: Model = Model { ours: (12.0, 0), clifford: (4.0, 0) };
+    pub const MOTOR: Model = Model { ours: (16.0, 0), clifford: (4.0, 0) };
+    pub const MOVED: Model = Model { ours: (16.0, 0), clifford: (480.0, 0) };
+    pub const EXP_LOG: Model = Model { ours: (16.0, 0), clifford: (4.0, 0) };
+}
+use models::*;
+
+/// A rotors.json case: rotor, translator, motor, the moved point, and exp/log of them.
+fn check_rotors(case: &serde_json::Value, label: &str, r: &mut Ratios) {
+    let rotor = Rotor::from_axis_angle(e3(&case["axis"]), case["angle"].as_f64().unwrap()).unwrap();
+    r.check("rotor", ROTOR, 0.0, mv_ulps(&rotor.into(), &mv(&case["rotor"])), label);
+    let translator = Translator::from_vector(e3(&case["translation"]));
+    r.check("translator", TRANSLATOR, 0.0, mv_ulps(&translator.into(), &mv(&case["translator"])), label);
+    let motor = Motor::from_rotor_translator(rotor, translator);
+    r.check("motor", MOTOR, 0.0, mv_ulps(&motor.into(), &mv(&case["motor"])), label);
+    let x = e3(&case["x"]);
+    let moved = DVec3::from(down(motor.sandwich(up(x))).unwrap());
+    let size = DVec3::from(x).length() + DVec3::from(e3(&case["translation"])).length();
+    let err = moved.distance(DVec3::from(e3(&case["moved_euc"]))) / (f64::EPSILON * size);
+    r.check("moved point: M = |x| + |t|", MOVED, 0.0, err, label);
+    // exp of the generators gives the same versors; log inverts exp.
+    let half = -0.5 * case["angle"].as_f64().unwrap();
+    let a = DVec3::from(e3(&case["axis"])).normalize();
+    let gen_r = Bivector { e12: half * a.z, e13: -half * a.y, e23: half * a.x, ..Bivector::zero() };
+    r.check("exp rotor", ROTOR, 0.0, mv_ulps(&exp(gen_r).unwrap().into(), &mv(&case["rotor"])), label);
+    let t = e3(&case["translation"]);
+    let gen_t = Bivector { e1i: -0.5 * t[0], e2i: -0.5 * t[1], e3i: -0.5 * t[2], ..Bivector::zero() };
+    r.check("exp translator", TRANSLATOR, 0.0, mv_ulps(&exp(gen_t).unwrap().into(), &mv(&case["translator"])), label);
+    let back = Motor::exp(motor.log().unwrap());
+    r.check("exp(log M)", EXP_LOG, 0.0, mv_ulps(&back.into(), &mv(&case["motor"])), label);
+}
+
 #[test]
 fn rotors_translators_and_motors_match_clifford() {
-    let file = golden("rotors.json");
-    for (n, case) in cases(&file).iter().enumerate() {
-        let rotor = Rotor::from_axis_angle(e3(&case["axis"]), case["angle"].as_f64().unwrap()).unwrap();
-        assert_mv_close(&rotor.into(), &mv(&case["rotor"]), 1e-12, &format!("case {n}: rotor"));
-        let translator = Translator::from_vector(e3(&case["translation"]));
-        assert_mv_close(&translator.into(), &mv(&case["translator"]), 1e-12, &format!("case {n}: translator"));
-        let motor = Motor::from_rotor_translator(rotor, translator);
-        assert_mv_close(&motor.into(), &mv(&case["motor"]), 1e-12, &format!("case {n}: motor"));
-        let moved = down(motor.sandwich(up(e3(&case["x"])))).unwrap();
-        let want = DVec3::from(e3(&case["moved_euc"]));
-        assert!(DVec3::from(moved).distance(want) < 1e-11 * want.length().max(1.0), "case {n}: moved point");
-        // exp of the generators gives the same versors; log inverts exp.
-        let half = -0.5 * case["angle"].as_f64().unwrap();
-        let a = DVec3::from(e3(&case["axis"])).normalize();
-        let gen_r = Bivector { e12: half * a.z, e13: -half * a.y, e23: half * a.x, ..Bivector::zero() };
-        assert_mv_close(&exp(gen_r).unwrap().into(), &mv(&case["rotor"]), 1e-12, &format!("case {n}: exp rotor"));
-        let t = e3(&case["translation"]);
-        let gen_t = Bivector { e1i: -0.5 * t[0], e2i: -0.5 * t[1], e3i: -0.5 * t[2], ..Bivector::zero() };
-        assert_mv_close(&exp(gen_t).unwrap().into(), &mv(&case["translator"]), 1e-12, &format!("case {n}: exp T"));
-        let back = Motor::exp(motor.log().unwrap());
-        assert_mv_close(&back.into(), &mv(&case["motor"]), 1e-11, &format!("case {n}: exp(log M)"));
+    let mut r = Ratios::new("rotors.json", Reference::Clifford);
+    for (n, case) in cases(&golden("rotors.json")).iter().enumerate() {
+        check_rotors(case, &format!("case {n}"), &mut r);
     }
+    r.finish();
+}
+
+#[test]
+fn far_rotors_translators_and_motors_match_the_exact_reference() {
+    let mut r = Ratios::new("far_objects.json rotors", Reference::Exact);
+    for (n, case) in far_objects()["rotors"].as_array().unwrap().iter().enumerate() {
+        check_rotors(case, &format!("case {n}"), &mut r);
+    }
+    r.finish();
 }
 
 /// A point in [−s, s]³.

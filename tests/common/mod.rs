@@ -202,3 +202,96 @@ pub fn on_circle(c: &cga_core::Circle, theta: f64) -> cga_core::euclid::E3 {
     let v = cross(normal, u);
     add(centre, add(scale(u, r * theta.cos()), scale(v, r * theta.sin())))
 }
+
+/// `tests/data/far_objects.json` (made by `tools/far_objects.py`, mpmath 50 digits): the
+/// golden files' families (`objects`, `line_sphere`, `conformal`, `rotors`) with the same keys,
+/// far from the origin and exact for their f64 inputs.
+pub fn far_objects() -> Value {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/far_objects.json");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+    let value: Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("parsing {}: {e}", path.display()));
+    let blades: Vec<&str> = value["blades"].as_array().expect("blades").iter().map(|b| b.as_str().unwrap()).collect();
+    assert_eq!(blades, Multivector::<f64>::BLADES, "far_objects.json: blade order differs from the dense type's");
+    value
+}
+
+/// What a golden comparison is against, and so whose error its tolerance holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reference {
+    /// clifford 1.5.1 (float64): its own error at the case's scale plus ours.
+    Clifford,
+    /// The 50-digit mpmath reference: ours only.
+    Exact,
+}
+
+/// A tolerance `ε (k (1 + ρ)^p)` in units of a quantity's own magnitude, for us and for
+/// clifford; `ρ` is the case's |position| / size.
+#[derive(Clone, Copy, Debug)]
+pub struct Model {
+    pub ours: (f64, i32),
+    pub clifford: (f64, i32),
+}
+
+impl Model {
+    /// The bound in units of `ε` times the quantity's magnitude.
+    pub fn bound(&self, reference: Reference, rho: f64) -> f64 {
+        let term = |(k, p): (f64, i32)| k * (1.0 + rho).powi(p);
+        term(self.ours) + if reference == Reference::Clifford { term(self.clifford) } else { 0.0 }
+    }
+}
+
+/// `max |a − b| / (ε max |b|)`: a multivector's error in units of rounding its largest
+/// coefficient.
+pub fn mv_ulps(got: &Multivector, want: &Multivector) -> f64 {
+    let size = want.coeffs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    got.coeffs.iter().zip(&want.coeffs).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / (f64::EPSILON * size)
+}
+
+/// `a ≤ b`, false when either is NaN.
+pub fn at_most(a: f64, b: f64) -> bool {
+    a <= b
+}
+
+/// Worst error / tolerance per quantity over a file, and every case over its tolerance.
+pub struct Ratios {
+    title: String,
+    reference: Reference,
+    worst: std::collections::BTreeMap<&'static str, (f64, String)>,
+    failures: Vec<String>,
+}
+
+impl Ratios {
+    pub fn new(title: &str, reference: Reference) -> Self {
+        Ratios { title: title.into(), reference, worst: Default::default(), failures: vec![] }
+    }
+    /// Records `err` (in units of `ε` times the quantity's magnitude) against `model` at `rho`.
+    pub fn check(&mut self, what: &'static str, model: Model, rho: f64, err: f64, case: &str) {
+        let bound = model.bound(self.reference, rho);
+        let ratio = err / bound;
+        let entry = self.worst.entry(what).or_insert((0.0, String::new()));
+        if !at_most(ratio, entry.0) {
+            *entry = (ratio, case.to_string());
+        }
+        if !at_most(err, bound) {
+            self.failures.push(format!("{case}: {what} off by {err:.3e} ε > {bound:.3e} ε (ρ = {rho:.3e})"));
+        }
+    }
+    /// Records a failure outright.
+    pub fn fail(&mut self, case: &str, msg: impl std::fmt::Display) {
+        self.failures.push(format!("{case}: {msg}"));
+    }
+    /// Prints the worst ratios (see them with `--nocapture`) and fails on any case over.
+    pub fn finish(self) {
+        println!("{} ({:?}): worst error / tolerance", self.title, self.reference);
+        for (what, (ratio, case)) in &self.worst {
+            println!("  {what:<40} {ratio:9.3e}  ({case})");
+        }
+        assert!(
+            self.failures.is_empty(),
+            "{}: {} failures:\n{}",
+            self.title,
+            self.failures.len(),
+            self.failures.join("\n")
+        );
+    }
+}
