@@ -424,6 +424,7 @@ fn bulk_transforms_are_the_single_ones_to_the_bit_and_glam_round_trips() {
     let (q, t): (DQuat, DVec3) = m.into();
     assert!(max_rel_diff(&Motor::from((q, t)).to_array(), &m.to_array()) < 1e-14);
     assert!(matches!(Motor::try_from(DAffine3::from_scale(DVec3::splat(2.0))), Err(VersorError::NotRigid { .. })));
+    assert_eq!(up(DVec3::new(1.0, 2.0, 3.0)), up([1.0, 2.0, 3.0])); // up(impl Into<[f64; 3]>)
     let p: Vector = DVec3::new(1.0, 2.0, 3.0).into();
     assert_eq!(DVec3::try_from(p).unwrap(), DVec3::new(1.0, 2.0, 3.0));
 }

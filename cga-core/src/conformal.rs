@@ -52,8 +52,10 @@ pub enum GeometryError {
 pub type Result<T, E = GeometryError> = core::result::Result<T, E>;
 
 /// `up(x) = x + ½x² ei + eo`: the null vector of a Euclidean point, with `up(x) · ei = −1`.
+/// Takes anything that converts into `[T; 3]` (an array, glam's `DVec3`/`Vec3`).
 #[inline]
-pub fn up<T: Real>(x: E3<T>) -> Vector<T> {
+pub fn up<T: Real>(x: impl Into<E3<T>>) -> Vector<T> {
+    let x: E3<T> = x.into();
     let half = T::from_f64(0.5);
     Vector { e1: x[0], e2: x[1], e3: x[2], eo: T::one(), ei: half * dot(x, x) }
 }
