@@ -328,6 +328,28 @@ fn projections_distances_and_angles_are_euclids() {
 }
 
 #[test]
+fn joins_of_lines_and_points_are_the_planes_that_hold_them() {
+    let x_axis: Line = Line::new([0.0; 3], [1.0, 0.0, 0.0]).unwrap();
+    let (n, d) = x_axis.join_point([0.0, 2.0, 5.0]).unwrap().normal_offset().unwrap();
+    close(n, [0.0, -5.0 / 29f64.sqrt(), 2.0 / 29f64.sqrt()], 1e-15, "normal d × (x − p)");
+    assert!(d.abs() < 1e-15);
+    assert_eq!(x_axis.join_point([3.0, 0.0, 0.0]), Err(cga_core::GeometryError::CollinearPoints));
+    let crossing = Line::new([2.0, -1.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+    let (n, d) = x_axis.join_line(&crossing).unwrap().normal_offset().unwrap();
+    close(n, [0.0, 0.0, 1.0], 1e-15, "crossing lines' plane");
+    assert!(d.abs() < 1e-15);
+    let parallel = Line::new([0.0, 0.0, 3.0], [2.0, 0.0, 0.0]).unwrap();
+    let (n, _) = x_axis.join_line(&parallel).unwrap().normal_offset().unwrap();
+    close(n, [0.0, -1.0, 0.0], 1e-15, "parallel lines' plane");
+    let skew = Line::new([0.0, 0.0, 1.0], [0.0, 1.0, 0.0]).unwrap();
+    assert_eq!(x_axis.join_line(&skew), Err(cga_core::GeometryError::Skew));
+    // Far from the origin, a crossing is still a crossing.
+    let far: Line = Line::new([1e6, 1e6, 1e6], [1.0, 0.0, 0.0]).unwrap();
+    let other = Line::new([1e6, 1e6, 1e6], [0.0, 1.0, 1.0]).unwrap();
+    assert!(far.join_line(&other).is_ok());
+}
+
+#[test]
 fn meets_hand_back_euclidean_points_lines_and_circles() {
     let unit = Sphere::new([0.0; 3], 1.0).unwrap();
     let z = |x: f64, y: f64| Line::new([x, y, 0.0], [0.0, 0.0, 1.0]).unwrap();

@@ -36,6 +36,9 @@ pub enum GeometryError {
     /// The blade is zero or null and cannot be normalised.
     #[error("the object is degenerate (zero or null)")]
     Degenerate,
+    /// Two lines that neither meet nor are parallel: no plane holds both.
+    #[error("the lines are skew: no plane holds both")]
+    Skew,
     /// Mixed grades, or `X X̃` not a scalar: not the blade of any object.
     #[error("the multivector is not a blade (mixed grades, or X X̃ is not a scalar)")]
     NotABlade,

@@ -216,3 +216,37 @@ pub struct Closest<T> {
     /// The lines are parallel (the points are one closest pair of many).
     pub parallel: bool,
 }
+
+impl<T: Real> Line<T> {
+    /// The join of the line and a point off it: the plane through both, with normal
+    /// `d × (x − p)` (`L ∧ X` normalised, from the Euclidean data). `CollinearPoints` for a
+    /// point on the line (within rounding of `|x − p|`), where the join is the line itself. The
+    /// joins of points alone are the constructors `Line::through`, `Plane::through`,
+    /// `Circle::through` and `Sphere::through`.
+    pub fn join_point(&self, x: E3<T>) -> Result<Plane<T>> {
+        let (p, d) = (self.point()?, self.direction()?);
+        let v = sub(x, p);
+        let n = cross(d, v);
+        if norm(n) <= T::from_f64(16.0) * T::epsilon() * norm(v) {
+            return Err(GeometryError::CollinearPoints);
+        }
+        Plane::from_point_normal(x, n)
+    }
+
+    /// The join of two lines that meet or are parallel: the plane holding both (normal
+    /// `d1 × d2` for crossing lines, through their crossing; through the first and the
+    /// second's point for parallel ones). `Skew` for lines that do neither (their join is
+    /// all of space), `CollinearPoints` for the same line. Crossing means closer than
+    /// rounding of the crossing's distance from the origin.
+    pub fn join_line(&self, other: &Line<T>) -> Result<Plane<T>> {
+        let k = self.closest_points(other)?;
+        if k.parallel {
+            return self.join_point(other.point()?);
+        }
+        let size = norm(k.on_self).max(norm(k.on_other));
+        if k.distance > T::from_f64(64.0) * T::epsilon() * size {
+            return Err(GeometryError::Skew);
+        }
+        Plane::from_point_normal(k.on_self, cross(self.direction()?, other.direction()?))
+    }
+}
