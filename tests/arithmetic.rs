@@ -57,6 +57,9 @@ fn scalars_scale_on_either_side() {
             Rotor,
             Translator,
             Motor,
+            Dilator,
+            Transversor,
+            Generator,
             Even,
             Odd
         );

@@ -386,6 +386,9 @@ lanes!(
     Rotor,
     Translator,
     Motor,
+    Dilator,
+    Transversor,
+    Generator,
     Even,
     Odd
 );
