@@ -4,7 +4,6 @@
 //! the Euclidean surface, and shadows in the shipped scene.
 
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
-use cga_core::{Line, ei};
 use cga_trace::ray::Ray;
 use cga_trace::shapes::{Crossing, Shape};
 use cga_trace::surface::{RuledSurface, Rulings};
@@ -12,65 +11,13 @@ use cga_trace::{Aov, Renderer, Scene};
 use rand::{RngExt, SeedableRng};
 use rand_xorshift::XorShiftRng;
 
-/// The ruling at α in the local frame: a point, a unit direction, the range along it.
-fn ruling(surface: &RuledSurface, alpha: f64) -> Option<(Line, E3, E3, (f64, f64))> {
-    match surface.rulings() {
-        Rulings::PointPairs(pair) => {
-            let b = pair.at(alpha).ok()?;
-            let [p, q] = b.end_points().ok()?;
-            Some(((b ^ ei()).try_normalise()?, p, unit(sub(q, p))?, (0.0, norm(sub(q, p)))))
-        }
-        Rulings::Lines { pair, bound } => {
-            let l = pair.at(alpha).ok()?;
-            let (p, d) = (l.point().ok()?, l.direction().ok()?);
-            let pc = sub(p, bound.0);
-            let (b, c) = (dot(pc, d), dot(pc, pc) - bound.1 * bound.1);
-            let disc = b * b - c;
-            (disc > 0.0).then(|| (l, p, d, (-b - disc.sqrt(), -b + disc.sqrt())))
-        }
-    }
-}
+mod common;
 
-/// The reference: the Plücker form of the ray and the normalised ruling sampled at `n`
-/// points, sign changes bisected to rounding, each root's closest approach kept if within
-/// the ruling's range: the nearest `(t, α)`.
+use common::swept::ruling;
+
+/// The reference: `common::swept`'s sampled Plücker form, over every `t > 0`.
 fn reference(surface: &RuledSurface, ray: &Ray, n: usize) -> Option<(f64, f64)> {
-    let o = sub(ray.origin, surface.origin());
-    let line = Line::from_point_unit_direction(o, ray.dir);
-    let f = |alpha: f64| ruling(surface, alpha).map(|(l, ..)| (line * l).e123i);
-    let mut best: Option<(f64, f64)> = None;
-    let mut prev = (0.0, f(0.0));
-    for k in 1..=n {
-        let alpha = k as f64 / n as f64;
-        let cur = (alpha, f(alpha));
-        if let (Some(a), Some(b)) = (prev.1, cur.1)
-            && (a > 0.0) != (b > 0.0)
-        {
-            let (mut lo, mut hi, f_lo) = (prev.0, cur.0, a);
-            for _ in 0..100 {
-                let mid = 0.5 * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break;
-                }
-                match f(mid) {
-                    Some(v) if (v > 0.0) == (f_lo > 0.0) => lo = mid,
-                    _ => hi = mid,
-                }
-            }
-            let alpha = 0.5 * (lo + hi);
-            if let Some((_, p, u, (s0, s1))) = ruling(surface, alpha) {
-                let w0 = sub(o, p);
-                let (b, d, e) = (dot(ray.dir, u), dot(ray.dir, w0), dot(u, w0));
-                let den = 1.0 - b * b;
-                let (t, s) = ((b * e - d) / den, (e - b * d) / den);
-                if t > 0.0 && s >= s0 && s <= s1 && best.is_none_or(|x| t < x.0) {
-                    best = Some((t, alpha));
-                }
-            }
-        }
-        prev = cur;
-    }
-    best
+    common::swept::ruled_reference(surface, ray, n, 0.0, f64::INFINITY)
 }
 
 fn surfaces() -> Vec<(&'static str, RuledSurface)> {

@@ -4,14 +4,15 @@
 //! circle's plane, grazing the surface, through a knot — with no missed and no false hits and
 //! α to 1e-9; and the segments meet without a crack.
 
+mod common;
+
 use cga_core::Joining;
 use cga_core::euclid::{E3, add, circle_distance, cross, dot, perpendicular, scale, sub, unit};
-use cga_core::{Circle, Dual, InterpolationError, Line, Spline};
 use cga_trace::camera::Camera;
 use cga_trace::ray::Ray;
 use cga_trace::shapes::{Crossing, Shape};
-use cga_trace::surface::bernstein::Bernstein;
-use cga_trace::surface::{Circles, EvolvedSurface, Method, SplineSurface};
+use cga_trace::surface::{EvolvedSurface, Method, SplineSurface};
+use common::swept::Whole;
 use rand::{RngExt, SeedableRng};
 use rand_xorshift::XorShiftRng;
 use std::time::Instant;
@@ -127,28 +128,6 @@ fn adversarial_rays(surface: &SplineSurface, rng: &mut XorShiftRng) -> Vec<Ray> 
         rays.extend(Ray::new(add(sub(x, scale(d, 15.0)), o), d));
     }
     rays
-}
-
-/// The whole spline as one family over the global α, for the reference: dense samples of `f`
-/// run across the knots, so a root at a knot is a sign change, bisected to rounding, not an
-/// end-point minimum.
-#[derive(Clone, Debug)]
-struct Whole(Spline<Circle>);
-
-impl Circles<f64> for Whole {
-    type Polynomial = Bernstein<f64>;
-    fn at(&self, alpha: f64) -> Result<Circle, InterpolationError> {
-        self.0.at(alpha)
-    }
-    fn at_dual(&self, alpha: Dual<f64>) -> Result<Circle<Dual<f64>>, InterpolationError> {
-        let (c, d) = self.0.with_derivative(alpha.re)?;
-        let (c, d) = (c.to_array(), d.to_array());
-        Ok(Circle::from_array(std::array::from_fn(|k| Dual { re: c[k], du: d[k] * alpha.du })))
-    }
-    /// Not used: the reference samples.
-    fn polynomial(&self, _: &Line) -> Bernstein<f64> {
-        Bernstein::new(&[1.0])
-    }
 }
 
 /// Rays per surface in `cargo test` (a debug build); the ignored test runs them all.
@@ -342,5 +321,63 @@ fn segments_meet_without_a_crack() {
                 assert!(hit.t <= 30.0 + 1e-9, "{name}: knot {j}, point {k}: t = {}", hit.t);
             }
         }
+    }
+}
+
+/// Rays aimed at points of a segment's circles near its ends (α within 1e-7 to 3e-2 of
+/// either end, where the polynomial's coefficients are many decades below its largest): each
+/// hits where it is aimed, to 1e-9 in α, for linear, quadratic and cubic segments, at two
+/// scales, from every side and slanted towards grazing. (The root finder's own test of that
+/// cause is `a_root_among_tiny_coefficients_is_placed_to_its_own_rounding`.)
+#[test]
+fn roots_near_a_segment_end_for_every_degree() {
+    let sets: [(&str, Vec<Round>, Joining); 3] = [
+        ("linear", FIG3[..2].to_vec(), Joining::Linear),
+        ("quadratic", vec![FIG3[0], FIG3[1], FIG3[3]], Joining::Quadratic),
+        ("cubic", FIG3.to_vec(), Joining::Cubic),
+    ];
+    for ((name, circles, joining), size) in sets.into_iter().flat_map(|s| [1.0, 1.0 / 16.0].map(|k| (s.clone(), k))) {
+        let circles: Vec<Round> = circles.iter().map(|&(c, n, r)| (scale(c, size), n, r * size)).collect();
+        let spline = SplineSurface::new(&circles, joining, Method::default()).unwrap();
+        assert_eq!(spline.segments(), 1, "{name}");
+        let controls = spline.spline().segment(0);
+        let o = spline.origin();
+        let surfaces: Vec<(String, Box<dyn Shape>)> = vec![
+            ("spline".into(), Box::new(spline.clone())),
+            ("polynomial".into(), Box::new(spline.with_method(Method::Polynomial { tolerance: 0.0 }).unwrap())),
+        ];
+        let (mut aimed, mut total) = (0, 0);
+        for &near in &[1e-7, 1e-5, 1e-3, 3e-3, 1e-2, 3e-2] {
+            for alpha in [near, 1.0 - near] {
+                let circle = cga_core::bezier(controls, alpha);
+                let circle = cga_core::project_at(circle, alpha).unwrap();
+                let (c, n, r) = circle.centre_normal_radius().unwrap();
+                for k in 0..16 {
+                    let x = on_circle((c, n, r), k as f64 * std::f64::consts::TAU / 16.0 + 0.05);
+                    // From outside, at the point: radial, tilted off the circle's plane both
+                    // ways, and slanted along the circle (towards grazing, as a camera looking
+                    // down on a rim sees it).
+                    let radial = unit(sub(x, c)).unwrap();
+                    let along = cross(unit(n).unwrap(), radial);
+                    for (tilt, slant) in [(-0.4, 0.0), (0.4, 0.0), (0.4, 1.5), (-0.4, -1.5), (1.2, 3.0), (-1.2, 3.0)] {
+                        let outward = unit(add(add(radial, scale(n, tilt)), scale(along, slant))).unwrap();
+                        let ray = Ray::new(add(add(x, o), scale(outward, 30.0 * size)), scale(outward, -1.0)).unwrap();
+                        for (method, surface) in &surfaces {
+                            total += 1;
+                            let hit = surface.intersect(&ray, 0.0, f64::INFINITY);
+                            let hit = hit.unwrap_or_else(|| panic!("{name}, {method}: missed α = {alpha}, point {k}"));
+                            assert!(hit.t <= (30.0 + 1e-9) * size, "{name}, {method}: α = {alpha}: t = {}", hit.t);
+                            if (hit.t - 30.0 * size).abs() <= 1e-9 * 30.0 * size {
+                                aimed += 1;
+                                let got = hit.alpha.unwrap();
+                                assert!((got - alpha).abs() <= 1e-9, "{name}, {method}: α {got} for {alpha}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // Most rays meet the surface first where they are aimed.
+        assert!(aimed * 10 >= total * 8, "{name}: {aimed} of {total} at the aimed point");
     }
 }

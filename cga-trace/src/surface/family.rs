@@ -564,7 +564,14 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
     fn newton(&self, line: &Line<Dual<T>>, lo: T, hi: T, f_lo: T) -> T {
         let eps = T::epsilon();
         let stop = Stop { noise: T::zero(), absolute: eps + eps, relative: T::from_f64(4.0) * eps, iterations: 64 };
-        safeguarded(|x| self.f_and_slope(line, x), (lo, hi), f_lo > T::zero(), T::from_f64(0.5) * (lo + hi), stop)
+        safeguarded(
+            |x| self.f_and_slope(line, x),
+            |_| T::zero(),
+            (lo, hi),
+            f_lo > T::zero(),
+            T::from_f64(0.5) * (lo + hi),
+            stop,
+        )
     }
 
     /// The α minimising `|f|` on `[lo, hi]` (golden-section search).
@@ -716,8 +723,11 @@ fn clamp_unit<T: Real>(x: T) -> T {
 }
 
 /// Points where the ray's line meets `circle`, each checked to lie on both. The meet
-/// `C ∨ L` is the touching point; when it vanishes (the line in the circle's plane), the
-/// in-plane intersection is solved instead.
+/// `C ∨ L` is the touching point; where it fails the check — it vanishes with the line in the
+/// circle's plane, and near that plane it is ill-conditioned (a ray within 1e-8 of a circle's
+/// plane gave a point 3e-3 off at 160×120 in `surface.toml`) — the points where the line meets
+/// the circle's sphere `|x − c| = r` are checked instead: well-conditioned unless the ray runs
+/// along the circle's tangent, that is grazes the surface.
 fn hit_points<T: Real>(circle: &Circle<T>, (origin, dir, line): (E3<T>, E3<T>, &Line<T>)) -> SmallVec<[E3<T>; 2]> {
     let mut points = SmallVec::new();
     let Ok((c, n, r)) = circle.centre_normal_radius() else { return points };
@@ -733,18 +743,19 @@ fn hit_points<T: Real>(circle: &Circle<T>, (origin, dir, line): (E3<T>, E3<T>, &
     };
     points.extend(down(line.meet_circle(circle)).ok().filter(on_both));
     if points.is_empty() {
-        // The line in the circle's plane: |o + t d − c|² = r².
+        // |o + t d − c|² = r², each root kept where it lies in the circle's plane.
         let oc = sub(origin, c);
-        let flat = T::from_f64(1e-9).max(T::from_f64(10.0) * eps);
-        if dot(dir, n).abs() < flat && dot(oc, n).abs() < tol {
-            let (b, cc) = (dot(oc, dir), dot(oc, oc) - r * r);
-            let disc = b * b - cc;
-            if disc >= T::zero() {
-                let s = disc.sqrt();
-                for t in [-b - s, -b + s] {
-                    points.push(cga_core::euclid::add(origin, scale(dir, t)));
-                }
-            }
+        let (b, cc) = (dot(oc, dir), dot(oc, oc) - r * r);
+        let disc = b * b - cc;
+        if disc >= T::zero() {
+            let s = disc.sqrt();
+            // The root of larger magnitude directly, the other from their product: no
+            // cancellation.
+            let far = if b > T::zero() { -b - s } else { -b + s };
+            let near = if far != T::zero() { cc / far } else { T::zero() };
+            let mut ts = [near, far];
+            ts.sort_by(|a, b| a.to_f64().total_cmp(&b.to_f64()));
+            points.extend(ts.into_iter().map(|t| cga_core::euclid::add(origin, scale(dir, t))).filter(on_both));
         }
     }
     points

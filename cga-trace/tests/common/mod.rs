@@ -166,3 +166,4 @@ pub fn snapshot(dir: &std::path::Path) -> Vec<(String, String)> {
     out.sort();
     out
 }
+pub mod swept;
