@@ -241,6 +241,37 @@ impl<'a, B: Backend> Renderer<'a, B> {
         })
     }
 
+    /// The rays a one-sample render of `window` casts before any reflection: each pixel
+    /// centre's primary ray, and from its nearest hit the shadow ray towards every light that
+    /// lights it (as [`Renderer::trace`] casts them, shadows on or off), each with the end of
+    /// its range (∞ for primary rays). For checking and timing shapes on a scene's own rays.
+    pub fn first_rays(&self, window: &Window) -> Vec<(Ray<B::Carrier>, f64)>
+    where
+        B::Carrier: Send,
+    {
+        let rows: Vec<u32> = window.rows.clone().collect();
+        rows.par_iter()
+            .flat_map_iter(|&j| {
+                let mut out = Vec::new();
+                for i in window.columns.clone() {
+                    let Some(ray) = B::camera_ray(&self.scene.camera, f64::from(i) + 0.5, f64::from(j) + 0.5) else {
+                        continue;
+                    };
+                    out.push((ray, f64::INFINITY));
+                    let Some((hit, k)) = self.hit(&ray, 0.0, f64::INFINITY) else { continue };
+                    let offset = offset(hit.point, ray.origin, self.errors[k]);
+                    for light in &self.scene.lights {
+                        let material = &self.scene.objects[k].material;
+                        if let Some(term) = light_term(ray.dir, &hit, material, light, offset) {
+                            out.push((B::ray(term.shadow_origin, term.l), term.distance));
+                        }
+                    }
+                }
+                out
+            })
+            .collect()
+    }
+
     /// The colour seen along `ray`, `depth` bounces deep.
     pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
         let mut cast = Cast::default();

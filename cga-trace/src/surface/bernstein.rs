@@ -29,24 +29,26 @@ pub struct Bernstein<T, const N: usize = { MAX_DEGREE + 1 }> {
     pub degree: usize,
 }
 
-/// `C(n, k)` for `n ≤ 36` (exact in f64: the largest, `C(36, 18)`, is below 2⁵³).
-pub(crate) fn binomial(n: usize, k: usize) -> f64 {
+/// Pascal's triangle to row 36 (exact in f64: the largest, `C(36, 18)`, is below 2⁵³).
+const BINOMIALS: [[f64; LARGEST_DEGREE + 1]; LARGEST_DEGREE + 1] = {
     const M: usize = LARGEST_DEGREE + 1;
-    const ROWS: [[f64; M]; M] = {
-        let mut t = [[0.0; M]; M];
-        let mut n = 0;
-        while n < M {
-            t[n][0] = 1.0;
-            let mut k = 1;
-            while k <= n {
-                t[n][k] = t[n - 1][k - 1] + if k < n { t[n - 1][k] } else { 0.0 };
-                k += 1;
-            }
-            n += 1;
+    let mut t = [[0.0; M]; M];
+    let mut n = 0;
+    while n < M {
+        t[n][0] = 1.0;
+        let mut k = 1;
+        while k <= n {
+            t[n][k] = t[n - 1][k - 1] + if k < n { t[n - 1][k] } else { 0.0 };
+            k += 1;
         }
-        t
-    };
-    ROWS[n][k]
+        n += 1;
+    }
+    t
+};
+
+/// `C(n, k)` for `n ≤ 36`.
+pub(crate) fn binomial(n: usize, k: usize) -> f64 {
+    BINOMIALS[n][k]
 }
 
 /// Roots found in one call: rarely more than a few.
@@ -75,6 +77,11 @@ impl<T: Real, const N: usize> Scaled<T, N> {
         self.degree
     }
 
+    /// The scaled coefficients in use, `C(n, k) cₖ`.
+    pub fn coefficients(&self) -> &[T] {
+        &self.c[..=self.degree]
+    }
+
     /// `(1 − t) a + t b`.
     pub fn linear(a: T, b: T) -> Self {
         let mut c = [T::zero(); N];
@@ -97,6 +104,21 @@ impl<T: Real, const N: usize> Scaled<T, N> {
         for i in 0..=self.degree {
             for j in 0..=q.degree {
                 c[i + j] = c[i + j] + self.c[i] * q.c[j];
+            }
+        }
+        Scaled { c, degree }
+    }
+
+    /// `p²`, each off-diagonal product formed once.
+    pub fn square(&self) -> Self {
+        let degree = 2 * self.degree;
+        assert!(degree < N, "product degree above the capacity");
+        let mut c = [T::zero(); N];
+        let two = T::from_f64(2.0);
+        for i in 0..=self.degree {
+            c[2 * i] = c[2 * i] + self.c[i] * self.c[i];
+            for j in i + 1..=self.degree {
+                c[i + j] = c[i + j] + two * (self.c[i] * self.c[j]);
             }
         }
         Scaled { c, degree }
@@ -182,12 +204,13 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
         let (a, s) = if flip { (t, u / t) } else { (u, t / u) };
         // The coefficients from the nearer end: eⱼ = cⱼ, or c_{n−j} when flipped.
         let e = |j: usize| if flip { c[n - j] } else { c[j] };
+        let (rows, lower) = (&BINOMIALS[n], &BINOMIALS[n - 1]);
         let (mut value, mut slope) = (e(n), e(n) - e(n - 1));
         let mut power = T::one();
         for j in (0..n).rev() {
-            value = value * s + T::from_f64(binomial(n, j)) * e(j);
+            value = value * s + T::from_f64(rows[j]) * e(j);
             if j < n - 1 {
-                slope = slope * s + T::from_f64(binomial(n - 1, j)) * (e(j + 1) - e(j));
+                slope = slope * s + T::from_f64(lower[j]) * (e(j + 1) - e(j));
             }
             if j > 0 {
                 power = power * a;
@@ -225,11 +248,15 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
         left[0] = b[0];
         right[n] = b[n];
         for r in 1..=n {
-            for k in 0..=n - r {
-                b[k] = u * b[k] + s * b[k + 1];
+            // Row r of de Casteljau's triangle from row r − 1, in place; slicing the row first
+            // lets the compiler drop the bounds checks of the inner loop.
+            let m = n - r + 1;
+            let row = &mut b[..=m];
+            for k in 0..m {
+                row[k] = u * row[k] + s * row[k + 1];
             }
-            left[r] = b[0];
-            right[n - r] = b[n - r];
+            left[r] = row[0];
+            right[n - r] = row[m - 1];
         }
         (Bernstein { c: left, degree: n }, Bernstein { c: right, degree: n })
     }

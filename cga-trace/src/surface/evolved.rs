@@ -9,6 +9,7 @@ use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
 use cga_core::euclid::{E3, add, cross, dot, norm, sub};
 use cga_core::{Circle, Dual, Interpolable, Line, NormalParts, Pair, Sandwich, Translator};
+use smallvec::SmallVec;
 
 /// A surface swept by a family of circles `C_α`, `α ∈ [0, 1]`: by default those interpolated
 /// between two circles ([`TwoCircles`]); one segment of a spline surface
@@ -162,14 +163,13 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         match &self.cells {
             Some(cells) => {
                 let intervals = cells.intervals(local, t_min, t_max);
-                if C::REFINE && matches!(self.method.finder(1), Finder::Polynomial(_)) && !intervals.is_empty() {
-                    // A high-degree polynomial (a spline segment's) is isolated over the whole
-                    // of [0, 1] and its roots kept where the cells reach: restricted to a cell
-                    // at a segment's end, a root on the knot circle came out 5e-10 off in α,
-                    // beyond what refinement on f recovers.
-                    self.family.roots(line, self.method.finder(1), 0.0, 1.0, &mut out);
-                    let slack = 1e-9;
-                    out.retain(|a| intervals.iter().any(|&(lo, hi, _)| lo - slack <= *a && *a <= hi + slack));
+                if let (true, Finder::Polynomial(tolerance)) = (C::REFINE, self.method.finder(1)) {
+                    // A high-degree polynomial (a spline segment's) is built once and
+                    // restricted to each interval: cheaper than building it on each.
+                    let spans: SmallVec<[(f64, f64); 8]> = intervals.iter().map(|&(lo, hi, _)| (lo, hi)).collect();
+                    if !spans.is_empty() {
+                        self.family.roots_on(line, tolerance, &spans, &mut out);
+                    }
                 } else {
                     for (lo, hi, leaves) in intervals {
                         self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);

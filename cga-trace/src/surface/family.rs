@@ -255,7 +255,7 @@ fn restrict_quadratic<T: Real>(q: [T; 3], lo: T, hi: T) -> [T; 3] {
 /// `x y` for polynomials in the scaled Bernstein basis: a convolution, `C = A + B − 1`
 /// coefficients.
 #[inline(always)]
-fn convolve<T: Real, const A: usize, const B: usize, const C: usize>(x: &[T; A], y: &[T; B]) -> [T; C] {
+pub(super) fn convolve<T: Real, const A: usize, const B: usize, const C: usize>(x: &[T; A], y: &[T; B]) -> [T; C] {
     const { assert!(C + 1 == A + B, "the product has A + B − 1 coefficients") };
     let mut c = [T::zero(); C];
     for (i, xi) in x.iter().enumerate() {
@@ -321,32 +321,61 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
             Finder::Slope(n) => self.sampled_with_slope(&line.lift(), lo, hi, n.max(2), out),
             Finder::Polynomial(tolerance) => {
                 let restricted = self.circles.polynomial_on(line, lo, hi);
-                // A root within rounding of α = 0 or 1 (a ray through an end circle) can fall
-                // just outside [0, 1] in R; a short Newton step from the end tells, and f
-                // itself then places the root. (Slopes in α: the restricted parameter runs
-                // 1/(hi − lo) times faster.)
-                let c = restricted.coefficients();
-                let n = T::from_f64((c.len() - 1) as f64) / (hi - lo);
-                let near = |value: T, slope: T| value.abs() <= T::from_f64(END_STEP) * (n * slope).abs();
-                let (first, last) = (c[0], c[c.len() - 1]);
-                let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
-                let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
-                let first = out.len();
-                restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
-                if C::REFINE {
-                    let lifted = line.lift();
-                    for k in first..out.len() {
-                        out[k] = self.refine(&lifted, out[k]);
-                    }
-                }
-                for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
-                    // Kept only if it stays by the end: a polish that wanders off converges
-                    // (slowly, if to a touch) on a root the polynomial reports itself.
-                    let polished = if near_end { self.polish(&line.lift(), end) } else { continue };
-                    if (polished - end).abs() <= T::from_f64(END_STEP) {
-                        out.push(polished);
-                    }
-                }
+                self.polynomial_roots(line, &restricted, lo, hi, tolerance, out);
+            }
+        }
+    }
+
+    /// The polynomial's candidate α on each of `intervals` (increasing, disjoint, within
+    /// [0, 1]): the polynomial built once over [0, 1], restricted to each interval by de
+    /// Casteljau's algorithm, and its roots there isolated — for a spline segment, whose
+    /// polynomial of degree 20 or 32 costs more to build than to restrict, and which the cells
+    /// leave a few short intervals of.
+    pub fn roots_on(&self, line: &Line<T>, tolerance: f64, intervals: &[(f64, f64)], out: &mut Roots<T>) {
+        let whole = self.circles.polynomial(line);
+        for &(lo, hi) in intervals {
+            let (lo, hi) = (T::from_f64(lo), T::from_f64(hi));
+            let restricted = if lo > T::zero() || hi < T::one() { whole.restrict(lo, hi) } else { whole };
+            self.polynomial_roots(line, &restricted, lo, hi, tolerance, out);
+        }
+    }
+
+    /// The candidate α of `restricted`, the polynomial on `[lo, hi]` reparametrised to [0, 1]:
+    /// its roots there, each refined on `f` where the family asks for it ([`Circles::REFINE`]),
+    /// and roots within rounding of α = 0 or 1 placed by `f` itself.
+    fn polynomial_roots(
+        &self,
+        line: &Line<T>,
+        restricted: &C::Polynomial,
+        lo: T,
+        hi: T,
+        tolerance: f64,
+        out: &mut Roots<T>,
+    ) {
+        // A root within rounding of α = 0 or 1 (a ray through an end circle) can fall just
+        // outside [0, 1] in R; a short Newton step from the end tells, and f itself then
+        // places the root. (Slopes in α: the restricted parameter runs 1/(hi − lo) times
+        // faster.)
+        let c = restricted.coefficients();
+        let n = T::from_f64((c.len() - 1) as f64) / (hi - lo);
+        let near = |value: T, slope: T| value.abs() <= T::from_f64(END_STEP) * (n * slope).abs();
+        let (first, last) = (c[0], c[c.len() - 1]);
+        let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
+        let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
+        let first = out.len();
+        restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
+        if C::REFINE {
+            let lifted = line.lift();
+            for k in first..out.len() {
+                out[k] = self.refine(&lifted, out[k]);
+            }
+        }
+        for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
+            // Kept only if it stays by the end: a polish that wanders off converges (slowly,
+            // if to a touch) on a root the polynomial reports itself.
+            let polished = if near_end { self.polish(&line.lift(), end) } else { continue };
+            if (polished - end).abs() <= T::from_f64(END_STEP) {
+                out.push(polished);
             }
         }
     }
