@@ -163,7 +163,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         match &self.cells {
             Some(cells) => {
                 let intervals = cells.intervals(local, t_min, t_max);
-                if let (true, Finder::Polynomial(tolerance)) = (C::REFINE, self.method.finder(1)) {
+                if let (true, Finder::Polynomial(tolerance)) = (C::HIGH_DEGREE, self.method.finder(1)) {
                     // A high-degree polynomial (a spline segment's) is built once and
                     // restricted to each interval: cheaper than building it on each.
                     let spans: SmallVec<[(f64, f64); 8]> = intervals.iter().map(|&(lo, hi, _)| (lo, hi)).collect();

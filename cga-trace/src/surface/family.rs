@@ -17,8 +17,8 @@ const TOUCH: f64 = 1e-12;
 /// A root within this Newton step (in α) of α = 0 or 1 is looked for with `f` itself: rounding
 /// decides which side of the end it falls, and verification whether the ray meets the edge.
 const END_STEP: f64 = 1e-6;
-/// How far from a polynomial's root (in α) a touch of `f` is looked for ([`Family::roots`]
-/// with [`Circles::REFINE`]).
+/// How far from a candidate (in α) a touch of `f` is looked for when the kept crossing is
+/// refined ([`Family::nearest`]).
 const TOUCH_REACH: f64 = 1e-4;
 /// `|f|` at or below this after Newton is a simple root placed to rounding (`f` is
 /// dimensionless: the meet of a normalised circle and line).
@@ -48,10 +48,10 @@ pub trait Circles<T: Real>: Clone + core::fmt::Debug {
     fn curvature(&self, _alpha: T, _x: E3<T>) -> Option<cga_core::Curvature<T>> {
         None
     }
-    /// Whether the polynomial's roots are refined by Newton on `f` itself (up to two steps,
-    /// each shorter than 1e-6 and kept only if `|f|` falls): for polynomials of high degree,
-    /// whose roots carry more rounding than `f`'s own.
-    const REFINE: bool = false;
+    /// Whether the polynomial costs more to build than to restrict (degree 20 or 32, a spline
+    /// segment's): then it is built once over [0, 1] and restricted to each α-interval the
+    /// cells leave ([`Family::roots_on`]), rather than built on each.
+    const HIGH_DEGREE: bool = false;
 }
 
 /// What the root finder needs of a polynomial in the Bernstein basis, of any capacity.
@@ -341,8 +341,9 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
     }
 
     /// The candidate α of `restricted`, the polynomial on `[lo, hi]` reparametrised to [0, 1]:
-    /// its roots there, each refined on `f` where the family asks for it ([`Circles::REFINE`]),
-    /// and roots within rounding of α = 0 or 1 placed by `f` itself.
+    /// its roots there, and roots within rounding of α = 0 or 1 placed by `f` itself. (The
+    /// crossing finally kept is placed on `f` itself, [`Family::nearest`]: refining every root
+    /// of a spline segment's polynomial up front cost a fifth of its rays' time for nothing.)
     fn polynomial_roots(
         &self,
         line: &Line<T>,
@@ -362,14 +363,7 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
         let (first, last) = (c[0], c[c.len() - 1]);
         let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
         let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
-        let first = out.len();
         restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
-        if C::REFINE {
-            let lifted = line.lift();
-            for k in first..out.len() {
-                out[k] = self.refine(&lifted, out[k]);
-            }
-        }
         for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
             // Kept only if it stays by the end: a polish that wanders off converges (slowly,
             // if to a touch) on a root the polynomial reports itself.

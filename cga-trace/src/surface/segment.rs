@@ -169,7 +169,7 @@ fn circle_at<T: Real, U: Weight<T>>(segment: &BezierSegment<T>, t: U) -> Result<
 
 impl<T: Real> Circles<T> for BezierSegment<T> {
     type Polynomial = Bernstein<T, CAPACITY>;
-    const REFINE: bool = true;
+    const HIGH_DEGREE: bool = true;
 
     fn at(&self, t: T) -> Result<Circle<T>, InterpolationError> {
         circle_at(self, t)
@@ -245,9 +245,9 @@ fn eliminate<
     let b_seq: [Vector<T>; VB] = core::array::from_fn(|k| b_seq[k]);
     let s: [T; SA] = core::array::from_fn(|k| s[k]);
     let q: [T; P] = core::array::from_fn(|k| q[k]);
-    let a: [T; SA] = core::array::from_fn(|k| pairs(&a_seq, &a_seq, k));
+    let a: [T; SA] = squares(&a_seq);
     let p: [T; P] = core::array::from_fn(|k| pairs(&a_seq, &b_seq, k));
-    let b: [T; BB] = core::array::from_fn(|k| pairs(&b_seq, &b_seq, k));
+    let b: [T; BB] = squares(&b_seq);
     let qa: [T; BB] = family_convolve(&q, &a);
     let n: [T; BB] = core::array::from_fn(|k| qa[k] - b[k]);
     let sa: [T; P] = family_convolve(&s, &a);
@@ -258,6 +258,21 @@ fn eliminate<
     let dd: [T; DD] = family_convolve(&d, &d);
     let qdd: [T; R1] = family_convolve(&q, &dd);
     core::array::from_fn(|k| nm[k] + T::from_f64(0.25) * qdd[k])
+}
+
+/// `Σ_{i+j=k} uᵢ · uⱼ` for every `k`, each pair `i < j` formed once.
+#[inline(always)]
+fn squares<T: Real, const U: usize, const K: usize>(u: &[Vector<T>; U]) -> [T; K] {
+    const { assert!(K + 1 == 2 * U, "the square has 2U − 1 coefficients") };
+    let mut out = [T::zero(); K];
+    let two = T::from_f64(2.0);
+    for i in 0..U {
+        out[2 * i] = out[2 * i] + dot(u[i], u[i]);
+        for j in i + 1..U {
+            out[i + j] = out[i + j] + two * dot(u[i], u[j]);
+        }
+    }
+    out
 }
 
 /// `Σ_{i+j=k} uᵢ · vⱼ`.
