@@ -245,7 +245,7 @@ fn every_scene_at_full_resolution() {
         rows.extend(check_scene(name, &Window::full(1280, 960), SAMPLES));
     }
     println!(
-        "| surface | method | rays | hits | missed | false | nearer (off the surface) | tangent | worst α error | ns per ray |"
+        "| surface | method | rays | hits | of which within the crossing error (largest Δt) | missed | false | nearer (off the surface) | tangent | worst α error | ns per ray |"
     );
     println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for (surface, method, t) in &rows {
