@@ -9,7 +9,6 @@ use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
 use cga_core::euclid::{E3, add, cross, dot, norm, sub};
 use cga_core::{Circle, Dual, Interpolable, Line, NormalParts, Pair, Sandwich, Translator};
-use smallvec::SmallVec;
 
 /// A surface swept by a family of circles `C_α`, `α ∈ [0, 1]`: by default those interpolated
 /// between two circles ([`TwoCircles`]); one segment of a spline surface
@@ -166,10 +165,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
                 if let (true, Finder::Polynomial(tolerance)) = (C::HIGH_DEGREE, self.method.finder(1)) {
                     // A high-degree polynomial (a spline segment's) is built once and
                     // restricted to each interval: cheaper than building it on each.
-                    let spans: SmallVec<[(f64, f64); 8]> = intervals.iter().map(|&(lo, hi, _)| (lo, hi)).collect();
-                    if !spans.is_empty() {
-                        self.family.roots_on(line, tolerance, &spans, &mut out);
-                    }
+                    self.family.roots_on(line, tolerance, intervals.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
                 } else {
                     for (lo, hi, leaves) in intervals {
                         self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);

@@ -331,9 +331,17 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
     /// Casteljau's algorithm, and its roots there isolated — for a spline segment, whose
     /// polynomial of degree 20 or 32 costs more to build than to restrict, and which the cells
     /// leave a few short intervals of.
-    pub fn roots_on(&self, line: &Line<T>, tolerance: f64, intervals: &[(f64, f64)], out: &mut Roots<T>) {
-        let whole = self.circles.polynomial(line);
-        for &(lo, hi) in intervals {
+    pub fn roots_on(
+        &self,
+        line: &Line<T>,
+        tolerance: f64,
+        intervals: impl IntoIterator<Item = (f64, f64)>,
+        out: &mut Roots<T>,
+    ) {
+        // Built at the first interval: a ray the cells leave none costs nothing.
+        let mut whole = None;
+        for (lo, hi) in intervals {
+            let whole = *whole.get_or_insert_with(|| self.circles.polynomial(line));
             let (lo, hi) = (T::from_f64(lo), T::from_f64(hi));
             let restricted = if lo > T::zero() || hi < T::one() { whole.restrict(lo, hi) } else { whole };
             self.polynomial_roots(line, &restricted, lo, hi, tolerance, out);
