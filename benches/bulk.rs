@@ -4,7 +4,8 @@
 //! `DAffine3::transform_point3`), which is what the README's figure quotes: on a shared,
 //! noisy machine only ratios measured side by side mean anything.
 
-use cga_core::{Motor, Rotor, Sandwich, down, up};
+use cga_core::simd::{self, F64x4, Kernel};
+use cga_core::{Motor, Rotor, Sandwich, Vector, down, up};
 use criterion::{Criterion, Throughput};
 use glam::{DAffine3, DQuat, DVec3};
 use std::hint::black_box;
@@ -103,9 +104,73 @@ fn interleaved(m: Motor, points: &[[f64; 3]]) {
     }
 }
 
+/// `M X M̃` on four conformal points at once, the motor given at run time.
+struct MoveBy(Motor<F64x4>);
+
+impl Kernel for MoveBy {
+    type Input = Vector;
+    type Output = Vector;
+    #[inline(always)]
+    fn apply(&self, x: Vector<F64x4>) -> Vector<F64x4> {
+        self.0.sandwich(x)
+    }
+}
+
+type Conformal = (&'static str, Box<dyn Fn(&[Vector], &mut [Vector])>);
+
+/// Moving conformal points (`M X M̃`, all five coefficients) one at a time, through
+/// `simd::run` with a kernel and through `simd::map` with a closure: the closure form is
+/// meant to cost nothing over the kernel.
+fn conformal_methods(m: Motor) -> Vec<Conformal> {
+    let lanes = simd::splat(m);
+    vec![
+        (
+            "sandwich, one at a time",
+            Box::new(move |x: &[Vector], out: &mut [Vector]| {
+                for (o, p) in out.iter_mut().zip(x) {
+                    *o = m.sandwich(*p);
+                }
+            }),
+        ),
+        (
+            "simd::run(MoveBy)",
+            Box::new(move |x: &[Vector], out: &mut [Vector]| simd::run(&MoveBy(lanes), x, out).unwrap()),
+        ),
+        (
+            "simd::map(|x| m.sandwich(x))",
+            Box::new(move |x: &[Vector], out: &mut [Vector]| {
+                simd::map(x, out, |p: Vector<F64x4>| lanes.sandwich(p)).unwrap()
+            }),
+        ),
+    ]
+}
+
+/// [`interleaved`] for conformal points; ratios to one at a time.
+fn interleaved_conformal(m: Motor, points: &[[f64; 3]]) {
+    let methods = conformal_methods(m);
+    let xs: Vec<Vector> = points.iter().map(|&p| up(p)).collect();
+    let mut out = vec![Vector::zero(); N];
+    let mut times = vec![Vec::new(); methods.len()];
+    for _ in 0..ROUNDS {
+        for (k, (_, f)) in methods.iter().enumerate() {
+            let start = Instant::now();
+            f(black_box(&xs), black_box(&mut out));
+            times[k].push(start.elapsed().as_secs_f64() * 1e3);
+        }
+    }
+    let medians: Vec<f64> = times.into_iter().map(median).collect();
+    println!(
+        "\nmoving {N} conformal points, {ROUNDS} interleaved rounds, median ms, ratio to one at a time and to run:"
+    );
+    for ((name, _), t) in methods.iter().zip(&medians) {
+        println!("  {name:34} {t:7.3} ms  {:5.2}×  {:5.2}× run", t / medians[0], t / medians[1]);
+    }
+}
+
 fn main() {
     let (m, points) = data();
     interleaved(m, &points);
+    interleaved_conformal(m, &points);
     let mut c = Criterion::default().configure_from_args();
     criterion_runs(&mut c, m, &points);
     c.final_summary();

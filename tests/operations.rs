@@ -76,6 +76,9 @@
 //! | `reflect_in_line` | 7.6e-15 | a line's constructor against clifford's wedge | 1e-13 |
 //! | `project_point` | 4.3e-15 | `up(projection)` against clifford's normalised point | 1e-13 |
 //! | `project_flat` | 4.7e-15 | `cos(angle) × projection` against `(L ⌋ P) P⁻¹` | 1e-13 |
+//! | `project_flats` | 1.4e-15 | a line's constructor against clifford's (images: 6.1e-16) | 1e-13 |
+//! | `line_meets` | 9.8e-15 | `&` of parallel lines against `vee_mv` | 1e-13 |
+//! | `pair_meets` | 4.2e-15 | a pair's point found on another pair | 1e-13 |
 //! | `distances` | 2.7e-14 | closest points of nearly parallel skew lines (sin θ = 0.12) | 1e-12 |
 //! | `angles` | 4.4e-16 | generic cases (special ones: within the reference's rounding) | 1e-14 |
 //! | `meets` | 6.5e-15 | `&` against `vee_mv` | 1e-13 |
@@ -126,8 +129,8 @@ mod common;
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub};
 use cga_core::reflect::{invert_point, reflect_point};
 use cga_core::{
-    Bivector, Circle, Dilator, GeometryError, Line, Meet, Motor, Multivector, Nearest, Plane, Reflect, Rotor, Sandwich,
-    Sphere, Transversor, Vector, distance, down, up,
+    Bivector, Circle, Dilator, Flat, GeometryError, Line, Meet, Motor, Multivector, Nearest, Plane, Reflect, Rotor,
+    Sandwich, Sphere, Transversor, Vector, distance, down, ei, up,
 };
 use common::*;
 use serde_json::Value;
@@ -581,6 +584,118 @@ fn project_flat() {
         let e = mv_err(&weighted, &mv(&c["projected_mv"]));
         report.err("project_onto_plane × cos(angle_to_plane) = (L⌋P)P⁻¹", TOL, e, &case);
         report.read_back("read-back = image", TOL, read_back_err(&image.into(), "line", &c["image"], 1.0), &case);
+    }
+    report.finish();
+}
+
+/// A flat of the data (`point`: the flat point `up(x) ∧ ei`), checked against its blade.
+fn flat_of(report: &mut Report, case: &str, kind: &str, v: &Value, blade: &Value) -> Flat {
+    let (flat, got): (Flat, Multivector) = match kind {
+        "point" => (Flat::Point(e3(&v["x"])), (up(e3(&v["x"])) ^ ei::<f64>()).into()),
+        "line" => (Flat::Line(line_of(v)), line_of(v).into()),
+        "plane" => (Flat::Plane(plane_of(v)), plane_of(v).into()),
+        _ => panic!("unknown flat {kind}"),
+    };
+    report.err("flats = a_mv, b_mv", TOL_PROJECT_FLAT, mv_err(&got, &mv(blade)), case);
+    flat
+}
+
+#[test]
+fn project_flats() {
+    const TOL: f64 = TOL_PROJECT_FLAT;
+    let file = golden("operations.json");
+    let mut report = Report::new("project_flats");
+    for (i, c) in list(&file["project_flats"]).iter().enumerate() {
+        let kind = s(&c["kind"]);
+        let case = format!("case {i} ({kind}, {})", s(&c["relation"]));
+        let (ka, kb) = kind.split_once("_onto_").expect("a_onto_b");
+        let a = flat_of(&mut report, &case, ka, &c["a"], &c["a_mv"]);
+        let b = flat_of(&mut report, &case, kb, &c["b"], &c["b_mv"]);
+        // Through the typed methods where the flat has a type of its own.
+        let got = match a {
+            Flat::Line(l) => l.project_flat_onto(&b),
+            Flat::Plane(p) => p.project_flat_onto(&b),
+            Flat::Point(x) => (up(x) ^ ei::<f64>()).project_flat_onto(&b),
+        };
+        let Some(got) = report.ok(&case, "project_flat_onto", got) else { continue };
+        let want = &c["image"];
+        let (blade, zero) = (mv(&c["blade_mv"]), c["blade_zero"].as_bool().unwrap());
+        match (s(&want["kind"]), got) {
+            ("point", Flat::Point(x)) => report.err("image point", TOL, pt_err(x, e3(&want["x"])), &case),
+            ("line", Flat::Line(l)) => {
+                report.read_back("image line", TOL, read_back_err(&l.into(), "line", want, 1.0), &case);
+                if !zero {
+                    let e = mv_err(&Multivector::from(l).scale(f(&c["weight"])), &blade);
+                    report.err("image × weight = (A⌋B)B⁻¹", TOL, e, &case);
+                }
+            }
+            ("plane", Flat::Plane(p)) => {
+                report.read_back("image plane", TOL, read_back_err(&p.into(), "plane", want, 1.0), &case);
+                let e = mv_err(&Multivector::from(p).scale(f(&c["weight"])), &blade);
+                report.err("image × weight = (A⌋B)B⁻¹", TOL, e, &case);
+            }
+            (k, got) => report.fail(&case, format!("the data's image is a {k}, ours {got:?}")),
+        }
+    }
+    report.finish();
+}
+
+#[test]
+fn line_meets() {
+    const TOL: f64 = TOL_MEETS;
+    let file = golden("operations.json");
+    let mut report = Report::new("line_meets");
+    for (i, c) in list(&file["line_meets"]).iter().enumerate() {
+        let kind = s(&c["kind"]);
+        let case = format!("case {i} ({kind})");
+        let (l1, l2) = (line_of(&c["line1"]), line_of(&c["line2"]));
+        report.err("& = vee_mv", TOL, mv_err(&(l1 & l2).into(), &mv(&c["vee_mv"])), &case);
+        let Some(got) = report.ok(&case, "intersect_line", l1.intersect_line(&l2)) else { continue };
+        match (kind, got) {
+            ("cross", Meet::Point(x)) => report.err("Line::intersect_line", TOL, pt_err(x, e3(&c["point"])), &case),
+            ("parallel" | "skew", Meet::Miss) | ("same", Meet::Contained) => {}
+            (kind, got) => report.fail(&case, format!("the data's lines are {kind}, ours meet as {got:?}")),
+        }
+    }
+    report.finish();
+}
+
+#[test]
+fn pair_meets() {
+    const TOL: f64 = TOL_MEETS;
+    let file = golden("operations.json");
+    let mut report = Report::new("pair_meets");
+    for (i, c) in list(&file["pair_meets"]).iter().enumerate() {
+        let kind = s(&c["kind"]);
+        let case = format!("case {i} ({kind})");
+        let (o, want_pair) = (&c["object"], mv(&c["pair_mv"]));
+        let pair = if kind == "imaginary" {
+            Bivector::try_from(want_pair).expect("a bivector")
+        } else {
+            Bivector::from_points(e3(&c["pair"]["a"]), e3(&c["pair"]["b"])).unwrap()
+        };
+        report.err("pair = pair_mv", TOL, mv_err(&pair.into(), &want_pair), &case);
+        let got = match kind {
+            "sphere" | "imaginary" => pair.intersect(&sphere_of(o)),
+            "plane" => pair.intersect(&plane_of(o)),
+            "line" => pair.intersect(&Line::new(e3(&o["point"]), e3(&o["direction"])).unwrap()),
+            "circle" => pair.intersect(&circle_of(o)),
+            "pair" => pair.intersect(&Bivector::from_points(e3(&o["a"]), e3(&o["b"])).unwrap()),
+            "point" => pair.intersect(&up(e3(&o["x"]))),
+            _ => panic!("unknown kind {kind}"),
+        };
+        let Some(got) = report.ok(&case, "intersect", got) else { continue };
+        let on: Vec<bool> = list(&c["on"]).iter().map(|v| v.as_bool().unwrap()).collect();
+        let ends: Vec<E3> = c["ends"].as_array().map(|e| e.iter().map(e3).collect()).unwrap_or_default();
+        let want: Vec<E3> = ends.iter().zip(&on).filter(|(_, on)| **on).map(|(x, _)| *x).collect();
+        // The nearer of the wanted points to each of ours (the data keeps clifford's order).
+        let err = |x: E3| want.iter().map(|w| pt_err(x, *w)).fold(f64::INFINITY, f64::min);
+        match (want.len(), got) {
+            (0, Meet::Miss) => {}
+            (1, Meet::Point(x)) => report.err("Bivector::intersect", TOL, err(x), &case),
+            (2, Meet::Points([a, b])) => report.err("Bivector::intersect", TOL, err(a).max(err(b)), &case),
+            (n, got) => report.fail(&case, format!("{n} of the pair's points are on the {kind}, ours {got:?}")),
+        }
     }
     report.finish();
 }

@@ -8,8 +8,8 @@ mod common;
 use cga_core::euclid::E3;
 use cga_core::reflect::{invert_point, reflect_point};
 use cga_core::{
-    Bivector, Circle, Dilator, Generator, Line, Meet, Motor, MotorSpline, Nearest, Plane, Reflect, Rotor, Sandwich,
-    Sphere, Transversor, Vector, VersorError, distance, down, up,
+    Bivector, Circle, Dilator, Flat, Generator, Line, Meet, Motor, MotorSpline, Nearest, Plane, Reflect, Rotor,
+    Sandwich, Sphere, Transversor, Vector, VersorError, distance, down, up,
 };
 use common::*;
 use glam::{DAffine3, DQuat, DVec3};
@@ -564,4 +564,154 @@ fn disjoint_spheres_are_refused_by_name_not_interpolated_through_a_plane() {
         let (c, r) = pair.at(k as f64 / 10.0).unwrap().centre_radius().unwrap();
         assert!((0.0..=1.5).contains(&c[0]) && (0.99..=2.01).contains(&r), "centre {c:?}, radius {r}");
     }
+}
+
+/// The same meet, points to 1e-15.
+fn same_meet(got: Meet, want: Meet) {
+    match (got, want) {
+        (Meet::Point(x), Meet::Point(y)) => close(x, y, 1e-15, "meet point"),
+        (Meet::Points([a, b]), Meet::Points([c, d])) => {
+            close(a, c, 1e-15, "first meet point");
+            close(b, d, 1e-15, "second meet point");
+        }
+        (got, want) => assert_eq!(got, want),
+    }
+}
+
+/// A flat moved by `x ↦ s (M x)` (a motor, then a scaling about the origin).
+fn moved_flat(f: &Flat, m: &Motor, s: f64) -> Flat {
+    let at = |x: E3| m.move_point(x).map(|c| c * s);
+    match f {
+        Flat::Point(x) => Flat::Point(at(*x)),
+        Flat::Line(l) => {
+            Flat::Line(Line::new(at(l.point().unwrap()), m.move_direction(l.direction().unwrap())).unwrap())
+        }
+        Flat::Plane(p) => {
+            let (n, d) = p.normal_offset().unwrap();
+            Flat::Plane(Plane::new(at(n.map(|c| c * d)), m.move_direction(n)).unwrap())
+        }
+    }
+}
+
+/// The same flat (and orientation) to `tol` of the positions' scale `size`.
+fn same_flat(a: &Flat, b: &Flat, size: f64, tol: f64, what: &str) {
+    let dir_close = |x: E3, y: E3| v(x).distance(v(y)) <= tol;
+    let ok = match (a, b) {
+        (Flat::Point(x), Flat::Point(y)) => distance(*x, *y) <= tol * size,
+        (Flat::Line(k), Flat::Line(l)) => {
+            dir_close(k.direction().unwrap(), l.direction().unwrap())
+                && l.distance_to(k.point().unwrap()).unwrap() <= tol * size
+        }
+        (Flat::Plane(p), Flat::Plane(q)) => {
+            let ((n, d), (m, e)) = (p.normal_offset().unwrap(), q.normal_offset().unwrap());
+            dir_close(n, m) && (d - e).abs() <= tol * size
+        }
+        _ => false,
+    };
+    assert!(ok, "{what}: {a:?} vs {b:?}");
+}
+
+#[test]
+fn flats_project_onto_flats_the_same_way_anywhere_and_the_image_lies_in_the_target() {
+    let mut rng = Rng::new(24);
+    let mut dimensions = [[0usize; 3]; 3];
+    for case in 0..600 {
+        let p = rng.e3(-3.0, 3.0);
+        let d = rng.direction();
+        // Targets: a line or a plane; sources: a point, a line or a plane, a third of them
+        // exactly perpendicular or parallel to the target's direction.
+        let t_dir = rng.direction();
+        let pick = |rng: &mut Rng, n: f64| (rng.unit() * n) as usize;
+        let target = if pick(&mut rng, 2.0) == 0 {
+            Flat::Line(Line::new(rng.e3(-2.0, 2.0), t_dir).unwrap())
+        } else {
+            Flat::Plane(Plane::new(rng.e3(-2.0, 2.0), t_dir).unwrap())
+        };
+        let d = match pick(&mut rng, 3.0) {
+            0 => d,
+            1 => t_dir,
+            _ => v(t_dir).cross(v(d)).normalize().to_array(),
+        };
+        let source = match pick(&mut rng, 3.0) {
+            0 => Flat::Point(p),
+            1 => Flat::Line(Line::new(p, d).unwrap()),
+            _ => Flat::Plane(Plane::new(p, d).unwrap()),
+        };
+        let image = source.project_onto(&target).unwrap();
+        dimensions[source.dimension()][image.dimension()] += 1;
+        assert!(image.dimension() <= source.dimension().min(target.dimension()), "case {case}: {image:?}");
+        // In the target, and a projection: projecting the image again changes nothing.
+        same_flat(&image.project_onto(&target).unwrap(), &image, 10.0, 1e-13, "idempotent");
+        let inside = match image {
+            Flat::Point(x) => x,
+            Flat::Line(l) => l.point().unwrap(),
+            Flat::Plane(q) => q.normal_offset().map(|(n, d)| n.map(|c| c * d)).unwrap(),
+        };
+        let on_target = match target {
+            Flat::Line(l) => l.distance_to(inside).unwrap(),
+            Flat::Plane(q) => q.signed_distance(inside).unwrap().abs(),
+            Flat::Point(_) => unreachable!(),
+        };
+        assert!(on_target < 1e-14 * 10.0, "case {case}: the image is off the target by {on_target:e}");
+        // Moved up to 1e3 away and scaled by 1e-3 … 1e3: the image moved the same way.
+        let (m, s) = (random_motor(&mut rng, 1e3), rng.decades(-3.0, 3.0));
+        let far = moved_flat(&source, &m, s).project_onto(&moved_flat(&target, &m, s)).unwrap();
+        same_flat(&far, &moved_flat(&image, &m, s), s * (1e3 + 10.0), 1e-13, "moved and scaled");
+    }
+    // Every relation was reached: point → point; line → point, line; plane → point, line, plane.
+    assert!(
+        dimensions[1][0] > 0 && dimensions[2][0] > 0 && dimensions[2][1] > 0 && dimensions[2][2] > 0,
+        "{dimensions:?}"
+    );
+}
+
+#[test]
+fn point_pairs_meet_objects_in_their_points_on_them_the_same_way_anywhere() {
+    let mut rng = Rng::new(2024);
+    for case in 0..400 {
+        let (m, s) = (random_motor(&mut rng, 1e3), rng.decades(-3.0, 3.0));
+        let at = |x: E3| m.move_point(x).map(|c| c * s);
+        let (c, r) = (rng.e3(-2.0, 2.0), rng.range(0.5, 2.0));
+        let on = add(c, rng.direction().map(|x| x * r));
+        let off = add(c, rng.direction().map(|x| x * r * rng.range(1.1, 2.0)));
+        let (sphere, far_sphere) = (Sphere::new(c, r).unwrap(), Sphere::new(at(c), s * r).unwrap());
+        let (pair, far_pair) = match case % 3 {
+            0 => ([on, off], Meet::Point(on)),
+            1 => ([off, on], Meet::Point(on)),
+            _ => ([off, add(off, [0.0, 0.0, 3.0 * r])], Meet::Miss),
+        };
+        let got = Bivector::from_points(pair[0], pair[1]).unwrap().intersect(&sphere).unwrap();
+        let far = Bivector::from_points(at(pair[0]), at(pair[1])).unwrap().intersect(&far_sphere).unwrap();
+        match (got, far, far_pair) {
+            (Meet::Point(x), Meet::Point(y), Meet::Point(w)) => {
+                close(x, w, 1e-14, "near");
+                // The pair's ends 1e3 away are good to ε ρ² r (ρ up to 1e3/r).
+                assert!(distance(y, at(w)) <= 1e-9 * s, "case {case}: {y:?} vs {:?}", at(w));
+            }
+            (Meet::Miss, Meet::Miss, Meet::Miss) => {}
+            other => panic!("case {case}: near, far and wanted meets differ: {other:?}"),
+        }
+    }
+    // An imaginary pair (a line missing a sphere) has no points; a pair meets a plane, a
+    // line, a circle, another pair and a point in the points it shares with them.
+    let unit = Sphere::new([0.0; 3], 1.0).unwrap();
+    let missing = Line::new([0.0, 2.0, 0.0], [1.0, 0.0, 0.0]).unwrap() & unit;
+    assert_eq!(missing.intersect(&unit).unwrap(), Meet::Miss);
+    let pair = Bivector::from_points([1.0, 0.0, 0.0], [0.0, 0.0, 1.0]).unwrap();
+    let floor = Plane::new([0.0; 3], [0.0, 0.0, 1.0]).unwrap();
+    same_meet(pair.intersect(&floor).unwrap(), Meet::Point([1.0, 0.0, 0.0]));
+    same_meet(pair.intersect(&unit).unwrap(), Meet::Points([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]));
+    let ring = Circle::new([0.0; 3], [0.0, 0.0, 1.0], 1.0).unwrap();
+    same_meet(pair.intersect(&ring).unwrap(), Meet::Point([1.0, 0.0, 0.0]));
+    let z = Line::new([0.0; 3], [0.0, 0.0, 1.0]).unwrap();
+    same_meet(pair.intersect(&z).unwrap(), Meet::Point([0.0, 0.0, 1.0]));
+    let other = Bivector::from_points([0.0, 0.0, 1.0], [5.0, 5.0, 5.0]).unwrap();
+    same_meet(pair.intersect(&other).unwrap(), Meet::Point([0.0, 0.0, 1.0]));
+    same_meet(pair.intersect(&up([0.0, 0.0, 1.0])).unwrap(), Meet::Point([0.0, 0.0, 1.0]));
+    // Two lines: crossing, parallel, skew, the same.
+    let x = Line::new([0.0, 0.0, 1.0], [1.0, 0.0, 0.0]).unwrap();
+    assert_eq!(x.intersect_line(&z).unwrap(), Meet::Point([0.0, 0.0, 1.0]));
+    assert_eq!(x.intersect_line(&Line::new([0.0, 1.0, 1.0], [-1.0, 0.0, 0.0]).unwrap()).unwrap(), Meet::Miss);
+    assert_eq!(x.intersect_line(&Line::new([0.0, 1.0, 0.0], [0.0, 0.0, 1.0]).unwrap()).unwrap(), Meet::Miss);
+    assert_eq!(x.intersect_line(&Line::new([7.0, 0.0, 1.0], [-1.0, 0.0, 0.0]).unwrap()).unwrap(), Meet::Contained);
 }

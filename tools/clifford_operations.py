@@ -5,7 +5,9 @@ Writes tests/golden/operations.json: reflections in planes, lines and points, in
 sphere, projections and rejections of points, projection of a line onto a plane, distances,
 angles, meets, the parts of a circle (carrier plane, carrier sphere, tangent line), versors
 (rotor between directions, motor about a line, screw, motor interpolation and powers through
-clifford's general_logarithm, dilator, transversor) and a classification set of ~30 blades.
+clifford's general_logarithm, dilator, transversor), a classification set of ~30 blades, and
+(appended last, so the earlier families draw the same random numbers) projections of flats
+onto flats, meets of two lines and meets of point pairs with every object.
 
 Every case gives its inputs as Euclidean parameters and as the multivectors (32 floats, in the
 golden blade order) built from them, and its outputs as clifford's multivector and as the
@@ -1401,6 +1403,177 @@ CONSTRUCTORS = {
               "points counter-clockwise about n (cga-core Circle::from_centre_normal_radius)",
 }
 
+# ---------------------------------------------------------------------------------------------
+# Flats onto flats, lines meeting lines, point pairs meeting objects (appended after the
+# families above, so their cases and the random stream they draw are unchanged).
+
+def flat_mv(kind, f):
+    return {"line": lambda: line(f["point"], f["direction"]), "plane": lambda: plane(f["point"], f["normal"]),
+            "point": lambda: flat_point(f["x"])}[kind]()
+
+
+def on_opns(x, A):
+    """up(x) lies on the OPNS blade A: |up(x) ^ A| within 1e-9 of the sizes involved."""
+    return biggest(up(x) ^ A) <= TOL * max(biggest(A), 1.0) * max(1.0, float(np.dot(x, x)))
+
+
+def project_flats():
+    """Every ordered pair of point, line and plane: oblique, and each degenerate relation (perpendicular
+    lines, a plane onto a line along its normal, perpendicular planes, a line along a plane's normal)."""
+    cases = []
+    plan = [("line", "line", "oblique")] * 4 + [("line", "line", "perpendicular")] * 2 + \
+        [("plane", "plane", "oblique")] * 3 + [("plane", "plane", "perpendicular")] * 2 + \
+        [("plane", "line", "oblique")] * 3 + [("plane", "line", "along_normal")] * 2 + \
+        [("line", "plane", "along_normal")] * 2 + [("point", "line", "oblique")] * 2 + \
+        [("point", "plane", "oblique")] * 2 + [("line", "point", "oblique")] * 1 + [("plane", "point", "oblique")] * 1
+    for ka, kb, rel_ in plan:
+        pa, pb, da, db = rpoint(), rpoint(2), rdir(), rdir()
+        if rel_ == "perpendicular":
+            da = unit(np.cross(db, rdir()))
+        if rel_ == "along_normal":
+            da = db.copy() * (1 if rng.rand() < 0.5 else -1)
+        if rel_ == "oblique" and abs(np.dot(da, db)) < 0.2:
+            da = unit(da + db)
+        fa = {"line": {"point": pa, "direction": da}, "plane": {"point": pa, "normal": da}, "point": {"x": pa}}[ka]
+        fb = {"line": {"point": pb, "direction": db}, "plane": {"point": pb, "normal": db}, "point": {"x": pb}}[kb]
+        A, B = flat_mv(ka, fa), flat_mv(kb, fb)
+        ga, gb = max(A.grades()), max(B.grades())
+        blade = (A << B) * B.inv() if ga <= gb else 0 * A
+        # The Euclidean image: closed forms per case (numpy), and clifford's meet where the image
+        # is where two flats cross.
+        if kb == "point":
+            image = {"kind": "point", "x": pb}
+        elif ka == "point":
+            x = pa - np.dot(pa - pb, db) * db if kb == "plane" else foot_on_line(pa, pb, db)
+            image = {"kind": "point", "x": x}
+        elif (ka, kb) == ("line", "line"):
+            if rel_ == "perpendicular":
+                # The foot of the closest points on line b: the common perpendicular's end.
+                n = np.cross(da, db)
+                t = float(np.dot(np.cross(pb - pa, da), n) / np.dot(n, n))
+                close(pb + t * db, foot_on_line(pa, pb, db), "closest point = foot")
+                image = {"kind": "point", "x": pb + t * db}
+            else:
+                image = {"kind": "line", "point": foot_on_line(pa, pb, db), "direction": np.sign(np.dot(da, db)) * db}
+        elif (ka, kb) == ("plane", "plane"):
+            if rel_ == "perpendicular":
+                M = B & A  # clifford's meet of the planes, a line in the plane b
+                image = {"kind": "line", "point": None, "direction": None, "mv": M}
+            else:
+                image = {"kind": "plane", "point": pb, "normal": np.sign(np.dot(da, db)) * db}
+        elif (ka, kb) == ("plane", "line"):
+            if rel_ == "along_normal":
+                Fp = A & B  # clifford's meet: a flat point
+                image = {"kind": "point", "x": flat_point_euc(Fp)[0]}
+            else:
+                image = {"kind": "line", "point": pb, "direction": db}
+        else:  # a line along a plane's normal: its foot
+            image = {"kind": "point", "x": pa - np.dot(pa - pb, db) * db}
+        case = {"kind": "%s_onto_%s" % (ka, kb), "relation": rel_, "a": jparams(fa), "b": jparams(fb),
+                "a_mv": mvl(A), "b_mv": mvl(B), "blade_mv": mvl(blade), "blade_zero": bool(biggest(blade) < 1e-12)}
+        if image["kind"] == "line" and image["point"] is None:
+            Mn = image.pop("mv").normal()
+            d = unit(np.cross(da, db))
+            # A point on both planes: solve n_a.x = n_a.pa, n_b.x = n_b.pb, d.x = d.pb.
+            x0 = np.linalg.solve(np.array([da, db, d]), np.array([np.dot(da, pa), np.dot(db, pb), np.dot(d, pb)]))
+            assert on_opns(x0, Mn) and on_opns(x0 + d, Mn), "plane meet"
+            image.update({"point": x0, "direction": d})
+            case["meet_mv"] = mvl(Mn)
+        if image["kind"] == "point":
+            assert on_opns(image["x"], B), ("image off b", case["kind"])
+        elif image["kind"] == "line":
+            Y = line(image["point"], image["direction"])
+            assert biggest(Y ^ B) < 1e-9 or kb == "line", "image line not in b"
+            if not case["blade_zero"]:
+                lam = rel(blade, Y, "projected flat")
+                assert lam > 0, ("blade orientation", lam)
+                case["weight"] = lam
+        else:
+            Y = plane(image["point"], image["normal"])
+            lam = rel(blade, Y, "projected plane")
+            assert lam > 0, ("blade orientation", lam)
+            case["weight"] = lam
+        case["image"] = dict(kind=image.pop("kind"), **jparams(image))
+        cases.append(case)
+    return cases
+
+
+def line_meets():
+    """Two lines: crossing (the point on both, checked with clifford's up(x) ^ L = 0), parallel,
+    skew, the same line."""
+    cases = []
+    for what in ["cross"] * 4 + ["parallel"] * 2 + ["skew"] * 2 + ["same"] * 2:
+        x, d1, d2 = rpoint(), rdir(), rdir()
+        p1, p2 = x + rng.uniform(-2, 2) * d1, x + rng.uniform(-2, 2) * d2
+        if what == "parallel":
+            d2 = d1 * (1 if rng.rand() < 0.5 else -1)
+            p2 = p1 + 0.7 * perp(d1) + rng.uniform(-1, 1) * d1
+        if what == "skew":
+            p2 = p2 + 0.5 * unit(np.cross(d1, d2))
+        if what == "same":
+            d2, p2 = -d1, p1 + rng.uniform(-2, 2) * d1
+        L1, L2 = line(p1, d1), line(p2, d2)
+        case = {"kind": what, "line1": {"point": E(p1), "direction": E(d1)}, "line2": {"point": E(p2), "direction": E(d2)},
+                "line1_mv": mvl(L1), "line2_mv": mvl(L2), "vee_mv": mvl(L1 & L2)}
+        if what == "cross":
+            assert on_opns(x, L1) and on_opns(x, L2), "crossing point"
+            case["point"] = E(x)
+        cases.append(case)
+    return cases
+
+
+def pair_meets():
+    """A point pair against a sphere, plane, line, circle, another pair and a point: 0, 1 or 2 of its
+    points on the object, each decided by clifford (up(x) ^ A = 0 for the OPNS object A) and by
+    construction. Imaginary pairs (line & sphere missing it) have no real points."""
+    cases = []
+    for kind in ["sphere", "plane", "line", "circle", "pair", "point"]:
+        for on_count in [2, 1, 0]:
+            if kind == "point" and on_count == 2:
+                continue
+            c, n, r = rpoint(2), rdir(), rradius()
+            u, v = frame(n)
+            if kind == "sphere":
+                obj, prm = sphere(c, r), {"centre": c, "radius": r}
+                on_pts = [c + r * rdir(), c + r * rdir()]
+            elif kind == "plane":
+                obj, prm = plane(c, n), {"point": c, "normal": n}
+                on_pts = [c + 1.5 * u - 0.5 * v, c - 0.8 * u + 2.0 * v]
+            elif kind == "line":
+                obj, prm = line(c, n), {"point": c, "direction": n}
+                on_pts = [c + 1.3 * n, c - 2.1 * n]
+            elif kind == "circle":
+                obj, prm = circle(c, n, r), {"centre": c, "normal": n, "radius": r}
+                on_pts = [c + r * u, c + r * (0.6 * u + 0.8 * v)]
+            elif kind == "pair":
+                a0, b0 = rpoint(), rpoint()
+                obj, prm = pair(a0, b0), {"a": a0, "b": b0}
+                on_pts = [b0, a0]
+            else:
+                obj, prm = up(c), {"x": c}
+                on_pts = [c, c]
+            off = [q + 0.37 * unit(rdir()) * r for q in on_pts]
+            off = [q if not on_opns(q, obj) else q + 0.5 * n for q in off]
+            a = on_pts[0] if on_count >= 1 else off[0]
+            b = on_pts[1] if on_count == 2 else off[1]
+            P = pair(a, b)
+            ends = pp_points_euc(P)
+            same_set(ends, [a, b], "pair ends")
+            on = [bool(on_opns(q, obj)) for q in ends]
+            assert sum(on) == on_count, (kind, on_count, on)
+            cases.append({"kind": kind, "pair": {"a": E(a), "b": E(b)}, "pair_mv": mvl(P), "object": jparams(prm),
+                          "object_mv": mvl(obj), "ends": [E(q) for q in ends], "on": on})
+    # Imaginary pairs: a line missing a sphere.
+    for _ in range(2):
+        c, r, d = rpoint(2), rradius(), rdir()
+        p = c + 1.5 * r * perp(d)
+        P = line(p, d) & sphere(c, r)
+        assert s0(P * P) < 0
+        cases.append({"kind": "imaginary", "pair_mv": mvl(P), "object": jparams({"centre": c, "radius": r}),
+                      "object_mv": mvl(sphere(c, r)), "ends": None, "on": [False, False]})
+    return cases
+
+
 FAMILIES = {
     "reflect_in_plane": "24 cases, kinds point, point_pair, line, circle, sphere, plane. mirror {point, normal}, mirror_mv P "
                         "(plane constructor), mirror_dual_mv pi = dual(P) = -(n + (n.p) einf); kind, grade k; object (params of "
@@ -1497,6 +1670,21 @@ FAMILIES = {
                 "up(x + e u)/e, square 0); tangent bivector likewise with u and v; tangent trivector = undual(up(x)) (the zero-"
                 "radius sphere); flat point up(x) ^ einf; direction (free vector) u ^ einf; free bivector u ^ v ^ einf; free "
                 "trivector e123 ^ einf; dual forms = dual(X) = -X I5",
+    "project_flats": "24 cases, kind A_onto_B for A, B in point (the flat point up(x) ^ einf), line, plane; relation oblique, "
+                     "perpendicular (lines, planes), along_normal (a plane onto a line along its normal, a line along a plane's "
+                     "normal). a, b {point, direction | point, normal | x}, a_mv, b_mv; blade_mv = (A _| B) B^-1 where grade A <= "
+                     "grade B (else 0), blade_zero; image {kind point {x} | line {point, direction} | plane {point, normal}}: the set "
+                     "the orthogonal projection onto B maps A to, in closed form (numpy), directed as blade_mv (weight = blade_mv / "
+                     "image's constructor > 0) where that is nonzero; where it is zero: perpendicular lines give the closest point on "
+                     "b, a plane onto a line along its normal the flat point of clifford's meet A & B, perpendicular planes their line "
+                     "along n_a x n_b (checked on clifford's meet B & A), a plane onto a line not along its normal the line b as given; "
+                     "every image point is checked on B with clifford (up(x) ^ B = 0)",
+    "line_meets": "10 cases, kind cross (the crossing point, checked on both lines with clifford's up(x) ^ L = 0), parallel, skew, "
+                  "same (the second line given opposite); line1, line2 {point, direction}, line1_mv, line2_mv, vee_mv = L1 & L2",
+    "pair_meets": "19 cases, kind sphere, plane, line, circle, pair, point (0, 1 or 2 of the pair's points on the object, by "
+                  "construction) and imaginary (line & sphere missing it); pair {a, b}, pair_mv = up(a) ^ up(b), object (its "
+                  "parameters), object_mv, ends = clifford's point_pair_to_end_points in its order, on = [up(end) ^ object = 0 "
+                  "(clifford), for each end], asserted against the construction",
 }
 
 
@@ -1520,7 +1708,8 @@ def main():
                      ("reflect_in_point", reflect_in_point), ("reflect_in_line", reflect_in_line),
                      ("project_point", project_point), ("project_flat", project_flat), ("distances", distances),
                      ("angles", angles), ("meets", meets), ("circle_parts", circle_parts), ("versors", versors),
-                     ("classify", classify)]:
+                     ("classify", classify), ("project_flats", project_flats), ("line_meets", line_meets),
+                     ("pair_meets", pair_meets)]:
         cases = fn()
         out[name] = cases
         kinds = {}

@@ -5,14 +5,14 @@
 //! them: two spheres touch when `|d − (r1 + r2)|` or `|d − |r1 − r2||` is within rounding
 //! of `r1 + r2 + d`.
 
-use crate::conformal::Result;
+use crate::conformal::{GeometryError, Result};
 use crate::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use crate::measure::Nearest;
-use crate::{Circle, Line, Plane, Real, Sphere};
+use crate::{Bivector, Circle, Line, Plane, Real, Sphere};
 
 /// What a meet is, in Euclidean terms.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Meet<T: Real> {
+pub enum Meet<T: Real = f64> {
     /// The objects do not meet.
     Miss,
     /// One point where they touch (tangent) or cross once (a line and a plane).
@@ -92,6 +92,52 @@ impl<T: Real> Line<T> {
             }
             other => Ok(other),
         }
+    }
+}
+
+impl<T: Real> Line<T> {
+    /// Where two lines meet: their crossing point, `Contained` for the same line, a miss for
+    /// skew or parallel lines. From the closest points ([`Line::closest_points`]): the lines
+    /// cross when those lie within rounding of their distance from the origin
+    /// (`64 ε max(|a|, |b|)`, as [`Line::join_line`] decides), and the point returned is
+    /// their midpoint.
+    pub fn intersect_line(&self, other: &Line<T>) -> Result<Meet<T>> {
+        let k = self.closest_points(other)?;
+        let size = norm(k.on_self).max(norm(k.on_other));
+        let touching = k.distance <= T::from_f64(64.0) * T::epsilon() * size;
+        Ok(match (k.parallel, touching) {
+            (true, true) => Meet::Contained,
+            (false, true) => Meet::Point(scale(add(k.on_self, k.on_other), T::from_f64(0.5))),
+            _ => Meet::Miss,
+        })
+    }
+}
+
+impl<T: Real> Bivector<T> {
+    /// Where a point pair meets an object (a sphere, plane, line, circle, another pair or a
+    /// conformal point): those of its two points that lie on the object, `Points` in the
+    /// pair's order when both do. A point pair is two points, so its meet with anything is a
+    /// subset of them; the blade meet `P ∨ X` is not (it has grade `2 + k − 5`). "On" is
+    /// [`Nearest::contains_within`] with the pair's own uncertainty as slack: its ends, read
+    /// back from the blade, are good to `ε ρ² r` (half-distance `r`, centre `c`,
+    /// `ρ = |c|/r`, docs/STABILITY.md), so the slack is `64 ε (1 + ρ)² r`. An imaginary pair
+    /// has no real points: a miss. A tangent pair is `Degenerate`, as its read-back
+    /// ([`Bivector::end_points`]).
+    pub fn intersect<O: Nearest<T>>(&self, object: &O) -> Result<Meet<T>> {
+        let [a, b] = match self.end_points() {
+            Err(GeometryError::Imaginary) => return Ok(Meet::Miss),
+            points => points?,
+        };
+        let half = T::from_f64(0.5);
+        let r = half * norm(sub(a, b));
+        let rho = half * norm(add(a, b)) / r;
+        let slack = T::from_f64(64.0) * T::epsilon() * (T::one() + rho) * (T::one() + rho) * r;
+        Ok(match (object.contains_within(a, slack)?, object.contains_within(b, slack)?) {
+            (true, true) => Meet::Points([a, b]),
+            (true, false) => Meet::Point(a),
+            (false, true) => Meet::Point(b),
+            (false, false) => Meet::Miss,
+        })
     }
 }
 

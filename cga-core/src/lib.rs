@@ -109,6 +109,7 @@ mod display;
 mod dual;
 pub mod euclid;
 pub mod evolved;
+pub mod flat;
 pub mod interpolate;
 pub mod intersect;
 pub mod measure;
@@ -125,6 +126,7 @@ pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
+pub use flat::{AsFlat, Flat};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
 pub use intersect::Meet;
 pub use measure::{Closest, Nearest, distance};

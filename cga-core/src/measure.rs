@@ -31,6 +31,34 @@ pub trait Nearest<T: Real> {
     fn distance_to(&self, x: E3<T>) -> Result<T> {
         Ok(norm(self.rejection(x)?))
     }
+
+    /// Whether `x` lies on the object: `|x − nearest(x)| ≤ 64 ε (|x| + |nearest(x)|)`, within
+    /// rounding of the coordinates that decide it (so the answer is the same wherever the
+    /// pair is moved or however it is scaled). Spheres and circles answer `false` at their
+    /// centre and axis, where the nearest point is not unique.
+    fn contains(&self, x: E3<T>) -> Result<bool> {
+        self.contains_within(x, T::zero())
+    }
+
+    /// [`Nearest::contains`] with `slack` added to the tolerance: for a point known only to
+    /// within `slack` (a point pair's end far from the origin, [`Bivector::intersect`]).
+    fn contains_within(&self, x: E3<T>, slack: T) -> Result<bool> {
+        Ok(on(x, self.nearest_point(x)?, slack))
+    }
+}
+
+/// `|x − y| ≤ 64 ε (|x| + |y|) + slack`: `x` is its nearest point `y` to rounding.
+fn on<T: Real>(x: E3<T>, y: E3<T>, slack: T) -> bool {
+    distance(x, y) <= T::from_f64(64.0) * T::epsilon() * (norm(x) + norm(y)) + slack
+}
+
+/// [`Nearest::contains_within`] for rounds: `false` where every point is nearest
+/// (`Degenerate` from a valid object).
+fn on_round<T: Real>(x: E3<T>, nearest: Result<E3<T>>, valid: Result<()>, slack: T) -> Result<bool> {
+    match nearest {
+        Err(GeometryError::Degenerate) => valid.map(|()| false),
+        y => Ok(on(x, y?, slack)),
+    }
 }
 
 impl<T: Real> Nearest<T> for Line<T> {
@@ -56,6 +84,10 @@ impl<T: Real> Nearest<T> for Sphere<T> {
         let u = unit(sub(x, c)).ok_or(GeometryError::Degenerate)?;
         Ok(add(c, scale(u, r)))
     }
+
+    fn contains_within(&self, x: E3<T>, slack: T) -> Result<bool> {
+        on_round(x, self.nearest_point(x), self.centre_radius().map(|_| ()), slack)
+    }
 }
 
 impl<T: Real> Nearest<T> for Circle<T> {
@@ -70,6 +102,10 @@ impl<T: Real> Nearest<T> for Circle<T> {
             return Err(GeometryError::Degenerate);
         }
         Ok(add(c, scale(u, r)))
+    }
+
+    fn contains_within(&self, x: E3<T>, slack: T) -> Result<bool> {
+        on_round(x, self.nearest_point(x), self.centre_normal_radius().map(|_| ()), slack)
     }
 }
 

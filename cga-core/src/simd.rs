@@ -11,11 +11,11 @@
 //! - [`run`]: over slices of ordinary values, transposed into lanes four at a time and
 //!   back, in place (with AVX: about 1 ns per operation for the six of
 //!   benches/README.md, faster than one at a time for each);
-//! - [`map`]: the same with a closure, compiled for the baseline only.
+//! - [`map`]: the same with a closure (run as a [`Kernel`]).
 //!
-//! `run` and `run_packed` take the operation as a [`Kernel`] and compile it twice, for the
-//! baseline (SSE2) and for AVX2 + FMA, choosing at run time: no `target-cpu` flag is
-//! needed and the binary runs on any x86-64. The lanes are a plain `[f64; 4]` that LLVM
+//! `run` and `run_packed` take the operation as a [`Kernel`] (`map` makes one of its
+//! closure) and compile it twice, for the baseline (SSE2) and for AVX2 + FMA, choosing at
+//! run time: no `target-cpu` flag is needed and the binary runs on any x86-64. The lanes are a plain `[f64; 4]` that LLVM
 //! vectorises, not a SIMD crate's type: `wide` (tried first) picks its width when it is
 //! compiled, so under run-time dispatch it stays at two SSE2 registers.
 //!
@@ -426,15 +426,27 @@ tuple_lanes!(A 0, B 1);
 tuple_lanes!(A 0, B 1, C 2);
 
 /// `out[k] = f(input[k])` for every `k`, four at a time on [`F64x4`] lanes (a tail of
-/// fewer than four is padded with copies of the last input). `None`, and nothing written,
-/// where the lengths differ.
+/// fewer than four is padded with copies of the last input): [`run`] with the closure as
+/// its kernel, so dispatched to AVX2 and FMA the same way, with the same bits. The closure
+/// is called from the AVX2 loop; LLVM inlines it there as it inlines any small function
+/// with one caller, and where it declines (a body of several hundred instructions) a
+/// [`Kernel`], whose `apply` is `#[inline(always)]`, is the sure way. `None`, and nothing
+/// written, where the lengths differ.
 #[inline]
 pub fn map<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: impl Fn(I::Packed) -> R::Packed) -> Option<()> {
-    if input.len() != out.len() {
-        return None;
+    run(&Closure(f, core::marker::PhantomData), input, out)
+}
+
+/// A closure as a [`Kernel`] ([`map`]).
+struct Closure<I, R, F>(F, core::marker::PhantomData<fn(I) -> R>);
+
+impl<I: Lanes, R: Lanes, F: Fn(I::Packed) -> R::Packed> Kernel for Closure<I, R, F> {
+    type Input = I;
+    type Output = R;
+    #[inline(always)]
+    fn apply(&self, x: I::Packed) -> R::Packed {
+        (self.0)(x)
     }
-    map_lanes(input, out, &f);
-    Some(())
 }
 
 /// The loop of [`map`], lengths already checked.
