@@ -125,11 +125,13 @@ impl<T: Real> Flat<T> {
             }
         }
         let by_length = |x: &E3<T>, y: &E3<T>| norm(*x).partial_cmp(&norm(*y)).unwrap_or(core::cmp::Ordering::Equal);
-        match images[..a.count].iter().copied().max_by(by_length) {
-            Some(_) if a.count > b.count && b.count == 1 && images.iter().any(|d| norm(*d) > small) => Ok(target),
-            Some(d) if norm(d) > small => Ok(Flat::Line(Line::from_point_direction(point, d)?)),
-            _ => Ok(Flat::Point(point)),
-        }
+        let longest = images[..a.count].iter().copied().max_by(by_length).filter(|d| norm(*d) > small);
+        Ok(match longest {
+            None => Flat::Point(point),
+            // A plane onto the whole of a line.
+            Some(_) if a.count > b.count => target,
+            Some(d) => Flat::Line(Line::from_point_direction(point, d)?),
+        })
     }
 
     /// The flat's dimension: 0, 1 or 2.
