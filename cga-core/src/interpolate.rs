@@ -308,7 +308,7 @@ impl<X> Pair<X> {
     /// rounding. Measured (docs/STABILITY.md, `cargo test --test precision -- --ignored
     /// --nocapture`): through this crate's constructors the normal's error stays 10× below
     /// the estimate and C_α's centre and radius 300× below; from correctly rounded blades
-    /// (50-digit references, `tests/far_reference.rs`) within it.
+    /// (50-digit references, `tests/tests/far_reference.rs`) within it.
     pub fn condition<T: Real>(&self) -> f64
     where
         X: Interpolable<T>,

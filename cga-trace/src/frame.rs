@@ -114,10 +114,10 @@ impl Frame {
         [0, 1, 2].map(|k| x[k] * self.scale + self.origin[k])
     }
 
-    /// A length of the frame in world units.
+    /// A length of the frame in world units (in any scalar: one ray's or a packet's lanes).
     #[inline]
-    pub fn world_length(&self, l: f64) -> f64 {
-        l * self.scale
+    pub fn world_length<T: cga_core::Real>(&self, l: T) -> T {
+        l * T::from_f64(self.scale)
     }
 }
 

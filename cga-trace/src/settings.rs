@@ -8,7 +8,8 @@ use crate::surface::Method;
 use serde::Deserialize;
 
 /// How the output PNG encodes linear values.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 #[serde(rename_all = "lowercase")]
 pub enum Encoding {
     /// The sRGB transfer curve (the default).

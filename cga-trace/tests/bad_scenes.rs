@@ -7,6 +7,7 @@ use cga_trace::Scene;
 const CAMERA: &str = "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n";
 const MATERIAL: &str = "material = { colour = [1.0, 0.0, 0.0] }\n";
 /// A camera 1e-299 from the origin, looking at it.
+#[cfg(feature = "evolved")]
 const TINY_CAMERA: &str =
     "[camera]\nposition = [0.0, -1e-299, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n";
 

@@ -168,7 +168,8 @@ impl Backend for Sparse {
 }
 
 /// Which back end renders (for the CLI and benches).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum BackendKind {
     /// Generated grade-sparse types.
     #[default]

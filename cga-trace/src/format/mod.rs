@@ -28,7 +28,9 @@ use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
 use cga_core::Joining;
 use cga_core::euclid::E3;
 use cga_core::euclid::{norm, sub};
-use cga_core::{Circle, GeometryError, Motor, Plane, Real, circumcircle, circumsphere};
+#[cfg(feature = "evolved")]
+use cga_core::{Circle, Real};
+use cga_core::{GeometryError, Motor, Plane, circumcircle, circumsphere};
 use numbers::{Num, Nums, V3};
 use serde::Deserialize;
 use std::ops::Range;

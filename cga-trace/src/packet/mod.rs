@@ -390,7 +390,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
     ) -> [F64x4; 3] {
         let attenuation = self.scene.settings.attenuation;
         let [c0, c1, c2] = attenuation.map(F64x4::splat);
-        let distance = distance * F64x4::splat(self.scene.frame.scale);
+        let distance = self.scene.frame.world_length(distance);
         // `light::attenuation` lane by lane: the same operations where the distance is finite.
         let near = (F64x4::splat(1.0) / (c0 + c1 * distance + c2 * distance * distance)).to_array();
         let d = distance.to_array();

@@ -48,7 +48,7 @@ impl Shape for SphereShape {
     }
 
     /// `64 ε r (1 + ρ)²`, `ρ = |c|/r`: the meet's points carry the null basis's `ε ρ²` of
-    /// the radius (`RoundMeet::new`; measured at 3 ε (1 + ρ)² in `tests/precision.rs`).
+    /// the radius (`RoundMeet::new`; measured at 3 ε (1 + ρ)² in `tests/tests/precision.rs`).
     fn crossing_error(&self) -> f64 {
         let one_plus_rho = 1.0 + largest(self.centre) / self.radius;
         rounding(self.radius * one_plus_rho * one_plus_rho)

@@ -88,6 +88,7 @@ pub enum SurfaceError {
 /// The crossing error of a swept surface of bounding radius `radius` centred at `origin`
 /// (frame units): its crossings are verified on their circle `C_α` to `1e-6` of its radius
 /// (`family.rs`, `hit_points`), and its local frame's origin carries its own rounding.
+#[cfg(feature = "evolved")]
 pub(crate) fn swept_error(origin: cga_core::euclid::E3, radius: f64) -> f64 {
     1e-6 * radius + crate::shapes::rounding(crate::shapes::largest(origin))
 }

@@ -63,7 +63,7 @@ fn far_circles_and_their_interpolation_agree_with_high_precision() {
         let got = pair.at(case["alpha"].as_f64().unwrap()).unwrap();
         let (centre, _, radius) = got.centre_normal_radius().unwrap();
         // Against C_α of the exact parameters (the blades in the file are rounded, and a
-        // rounded blade is not exactly a blade: tests/interpolation.rs checks those as given).
+        // rounded blade is not exactly a blade: tests/tests/interpolation.rs checks those as given).
         let exact = &params["c_alpha"];
         let (want_centre, want_radius) = (e3(&exact["centre"]), exact["radius"].as_f64().unwrap());
         let err = (norm(sub(centre, want_centre)) / want_radius).max((radius - want_radius).abs() / want_radius);

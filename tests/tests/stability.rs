@@ -375,7 +375,7 @@ fn through_a_zero_radius_circle() {
 #[test]
 fn identical_circles_have_no_normal() {
     // Ċ = 0: Ω = 0, Ẋ = 0, L_T = 0 — the limit where L_T is parallel to (here: vanishes
-    // against) L_C. In 1000 random pairs L_T ⟂ L_C held everywhere (tests/interpolation.rs).
+    // against) L_C. In 1000 random pairs L_T ⟂ L_C held everywhere (tests/tests/interpolation.rs).
     let c = ([1.0, 0.0, 0.0], Z, 1.0);
     let pair = Pair::new(circle::<f64>(c), circle::<f64>(c)).unwrap();
     let e = pair.normal(0.5, [2.0, 0.0, 0.0]).unwrap_err();
