@@ -31,7 +31,7 @@ fn swept(scene: &Scene) -> Vec<(String, Box<dyn Shape>)> {
     let only = std::env::var("SWEPT_METHOD").ok();
     let methods: Vec<_> = methods.into_iter().filter(|(n, _)| only.as_deref().is_none_or(|o| o == *n)).collect();
     for object in &scene.objects {
-        let any = object.shape.as_any();
+        let any: &dyn Shape = &*object.shape;
         for &(name, method) in &methods {
             let label = format!("{} ({name})", object.name);
             if let Some(s) = any.downcast_ref::<EvolvedSurface>() {

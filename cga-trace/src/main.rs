@@ -5,7 +5,7 @@ use cga_trace::backend::{Backend, Dense, Plain, Sparse, holds};
 use cga_trace::film::Output;
 use cga_trace::limits::MAX_THREADS;
 use cga_trace::output::OutputFile;
-use cga_trace::render::Window;
+use cga_trace::render::{RayCounts, Window};
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
@@ -253,7 +253,7 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     holds(&scene).map_err(anyhow::Error::msg).context("--backend")?;
     let start = Instant::now();
     let packets = !args.no_packets;
-    let (film, (primary, shadow, reflection)) =
+    let (film, RayCounts { primary, shadow, reflection }) =
         pool.install(|| render(&scene, args.aov, window, packets, &|| bar.inc(1)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
@@ -298,22 +298,22 @@ fn render_command(args: Render) -> anyhow::Result<()> {
 }
 
 /// A back end's render, as [`render`] gives it.
-type RenderFn = fn(&Scene, Aov, Window, bool, &(dyn Fn() + Sync)) -> (Film, (u64, u64, u64));
+type RenderFn = fn(&Scene, Aov, Window, bool, &(dyn Fn() + Sync)) -> (Film, RayCounts);
 /// A back end's [`holds`].
 type Holds = fn(&Scene) -> Result<(), String>;
 
-/// The image and the rays cast `(primary, shadow, reflection)`, on back end `B`.
+/// The image and the rays cast, on back end `B`.
 fn render<B: Backend>(
     scene: &Scene,
     aov: Aov,
     window: Window,
     packets: bool,
     on_row: &(dyn Fn() + Sync),
-) -> (Film, (u64, u64, u64)) {
+) -> (Film, RayCounts) {
     let mut renderer = Renderer::<B>::with_backend(scene);
     if !packets {
         renderer = renderer.without_packets();
     }
     let film = renderer.render_window(aov, window, on_row);
-    (film, renderer.counts.get())
+    (film, renderer.counts())
 }

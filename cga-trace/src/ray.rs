@@ -58,6 +58,13 @@ impl<C> Ray<C> {
     }
 }
 
+/// Whether the ray parameter `t` lies in the open range `(t_min, t_max)` a ray is searched
+/// over: the one test of whether a crossing counts, for every shape, back end and lane.
+#[inline(always)]
+pub fn in_range(t: f64, t_min: f64, t_max: f64) -> bool {
+    (t > t_min) & (t < t_max)
+}
+
 /// How far off a surface a secondary ray starts when it leaves the crossing `x` of a ray from
 /// `origin` with a shape whose crossings lie within `error` of it
 /// ([`Shape::crossing_error`](crate::shapes::Shape::crossing_error)): four times that error and

@@ -11,7 +11,7 @@ use crate::film::Film;
 use crate::light::{Light, attenuation};
 use crate::ray::{Ray, crosses, leaving_origin, offset};
 use crate::scene::{Object, Scene};
-use crate::shapes::{Crossing, Hit};
+use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::euclid::{E3, dot, reflect, scale, unit};
 use rayon::prelude::*;
 use smallvec::SmallVec;
@@ -71,20 +71,10 @@ impl Aov {
 /// are tested one by one (cheaper than any traversal).
 const BVH_FROM: usize = 8;
 
-/// Rays cast, by kind.
-#[derive(Debug, Default)]
+/// Rays cast, by kind: one thread's tally of a row, or the renderer's total
+/// ([`Renderer::counts`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct RayCounts {
-    /// From the camera.
-    pub primary: AtomicU64,
-    /// Towards lights.
-    pub shadow: AtomicU64,
-    /// Mirror bounces.
-    pub reflection: AtomicU64,
-}
-
-/// Rays cast by one thread, added to the shared [`RayCounts`] once per row.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Cast {
     /// From the camera.
     pub primary: u64,
     /// Towards lights.
@@ -93,25 +83,17 @@ pub struct Cast {
     pub reflection: u64,
 }
 
-impl Cast {
+impl RayCounts {
     /// Adds `other`'s counts.
-    pub(crate) fn add(&mut self, other: &Cast) {
+    pub(crate) fn add(&mut self, other: &RayCounts) {
         self.primary += other.primary;
         self.shadow += other.shadow;
         self.reflection += other.reflection;
     }
-}
 
-impl RayCounts {
-    fn add(&self, cast: &Cast) {
-        self.primary.fetch_add(cast.primary, Relaxed);
-        self.shadow.fetch_add(cast.shadow, Relaxed);
-        self.reflection.fetch_add(cast.reflection, Relaxed);
-    }
-
-    /// `(primary, shadow, reflection)`.
-    pub fn get(&self) -> (u64, u64, u64) {
-        (self.primary.load(Relaxed), self.shadow.load(Relaxed), self.reflection.load(Relaxed))
+    /// `[primary, shadow, reflection]`.
+    fn to_array(self) -> [u64; 3] {
+        [self.primary, self.shadow, self.reflection]
     }
 }
 
@@ -132,8 +114,9 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
     /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
     pub(crate) errors: Vec<f64>,
-    /// Rays cast so far.
-    pub counts: RayCounts,
+    /// Rays cast so far, `[primary, shadow, reflection]`: each thread adds its row's
+    /// [`RayCounts`] once.
+    counted: [AtomicU64; 3],
 }
 
 impl<'a> Renderer<'a> {
@@ -155,7 +138,20 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
         let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
-        Renderer { scene, shapes, packets, bounds, bvh, flat, errors, counts: RayCounts::default() }
+        Renderer { scene, shapes, packets, bounds, bvh, flat, errors, counted: Default::default() }
+    }
+
+    /// The rays cast so far, by kind.
+    pub fn counts(&self) -> RayCounts {
+        let [primary, shadow, reflection] = self.counted.each_ref().map(|c| c.load(Relaxed));
+        RayCounts { primary, shadow, reflection }
+    }
+
+    /// Adds one thread's tally.
+    fn count(&self, cast: &RayCounts) {
+        for (total, n) in self.counted.iter().zip(cast.to_array()) {
+            total.fetch_add(n, Relaxed);
+        }
     }
 
     /// The same renderer tracing one ray at a time, without packets (to compare them).
@@ -208,14 +204,14 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// The nearest hit with `t_min < t < t_max`, and its object: the nearest crossing over
     /// all objects, then its normal, once.
-    pub fn nearest(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Hit, &'a Object)> {
+    pub fn nearest(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(ShadingPoint, &'a Object)> {
         self.hit(ray, t_min, t_max).map(|(hit, k)| (hit, &self.scene.objects[k]))
     }
 
     /// [`Renderer::nearest`] with the object's index.
-    fn hit(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Hit, usize)> {
+    fn hit(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(ShadingPoint, usize)> {
         let (c, k) = self.crossing(ray, t_min, t_max)?;
-        let hit = Hit { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
+        let hit = ShadingPoint { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
         Some((hit, k))
     }
 
@@ -275,9 +271,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// The colour seen along `ray`, `depth` bounces deep.
     pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
-        let mut cast = Cast::default();
+        let mut cast = RayCounts::default();
         let colour = self.trace_counted(ray, depth, &mut cast);
-        self.counts.add(&cast);
+        self.count(&cast);
         colour
     }
 
@@ -288,7 +284,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// stack: each hit's own colour and `k_r` are kept, and summed from the deepest up as
     /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
     /// order, so the same bits).
-    fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut Cast) -> [f64; 3] {
+    fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut RayCounts) -> [f64; 3] {
         let Some((hit, k)) = self.hit(ray, 0.0, f64::INFINITY) else {
             return self.scene.settings.background;
         };
@@ -301,11 +297,11 @@ impl<'a, B: Backend> Renderer<'a, B> {
     pub(crate) fn reflect_from(
         &self,
         ray: &Ray<B::Carrier>,
-        hit: &Hit,
+        hit: &ShadingPoint,
         k: usize,
         local: [f64; 3],
         depth: u32,
-        cast: &mut Cast,
+        cast: &mut RayCounts,
     ) -> [f64; 3] {
         let settings = &self.scene.settings;
         let mut layers = Layers::new();
@@ -330,7 +326,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// The ambient and direct light at a hit (eq. 12 without the reflected term), casting a
     /// shadow ray towards each light that could reach it.
-    fn shade(&self, ray: &Ray<B::Carrier>, hit: &Hit, k: usize, cast: &mut Cast) -> [f64; 3] {
+    fn shade(&self, ray: &Ray<B::Carrier>, hit: &ShadingPoint, k: usize, cast: &mut RayCounts) -> [f64; 3] {
         let (settings, object) = (&self.scene.settings, &self.scene.objects[k]);
         let mut colour = self.ambient(object);
         let offset = offset(hit.point, ray.origin, self.errors[k]);
@@ -366,15 +362,15 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// One pixel: the shaded colour or an AOV.
     pub fn pixel(&self, i: u32, j: u32, aov: Aov) -> [f64; 3] {
-        let mut cast = Cast::default();
+        let mut cast = RayCounts::default();
         let colour = self.pixel_counted(i, j, aov, &mut cast);
-        self.counts.add(&cast);
+        self.count(&cast);
         colour
     }
 
     /// One pixel, averaged over the scene's `spp` samples ([`sample_offset`]; the centre
     /// alone for one sample).
-    fn pixel_counted(&self, i: u32, j: u32, aov: Aov, cast: &mut Cast) -> [f64; 3] {
+    fn pixel_counted(&self, i: u32, j: u32, aov: Aov, cast: &mut RayCounts) -> [f64; 3] {
         let spp = self.scene.settings.spp.max(1);
         if spp == 1 {
             return self.sample(f64::from(i) + 0.5, f64::from(j) + 0.5, aov, cast);
@@ -389,7 +385,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     }
 
     /// The colour (or AOV) seen at continuous pixel coordinates `(u, v)`.
-    fn sample(&self, u: f64, v: f64, aov: Aov, cast: &mut Cast) -> [f64; 3] {
+    fn sample(&self, u: f64, v: f64, aov: Aov, cast: &mut RayCounts) -> [f64; 3] {
         let Some(ray) = B::camera_ray(&self.scene.camera, u, v) else {
             return self.scene.settings.background;
         };
@@ -400,7 +396,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
             }
             Aov::Alpha => match self.nearest(&ray, 0.0, f64::INFINITY) {
-                Some((Hit { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
+                Some((ShadingPoint { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
                 _ => [0.0; 3],
             },
             // (value, 1) where the surface has a curvature, (0, 0) elsewhere: averaged over
@@ -433,7 +429,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // One row per task: rayon otherwise splits the image into few large pieces, and rows
         // differ in cost (mirrors, surfaces), so one thread idles at the end.
         pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
-            let mut cast = Cast::default();
+            let mut cast = RayCounts::default();
             let mut done = 0;
             if aov == Aov::Shaded && self.packets {
                 for (four, i0) in row.chunks_exact_mut(4).zip(window.columns.clone().step_by(4)) {
@@ -445,7 +441,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             for (pixel, i) in row.iter_mut().zip(window.columns.clone()).skip(done) {
                 *pixel = self.pixel_counted(i, j, aov, &mut cast);
             }
-            self.counts.add(&cast);
+            self.count(&cast);
             on_row();
         });
         Film { width: width as u32, height: height as u32, pixels }
@@ -535,7 +531,7 @@ pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
 /// The mirror bounce of `ray` at `hit` on a shape whose crossings lie within `error` of it:
 /// `dir` and the normal are unit, so the reflected direction is (to rounding), and the ray
 /// starts off the surface ([`leaving_origin`]).
-pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &Hit, error: f64) -> Ray<B::Carrier> {
+pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &ShadingPoint, error: f64) -> Ray<B::Carrier> {
     let r = reflect(ray.dir, hit.normal);
     B::ray(leaving_origin(hit.point, hit.normal, r, offset(hit.point, ray.origin, error)), r)
 }
@@ -560,7 +556,7 @@ pub(crate) struct LightTerm {
 #[inline]
 pub(crate) fn light_term(
     dir: E3,
-    hit: &Hit,
+    hit: &ShadingPoint,
     m: &crate::material::Material,
     light: &Light,
     offset: f64,

@@ -415,7 +415,7 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         let (a, b) = (Renderer::new(&scene), Renderer::new(&scene).without_packets());
         a.render(Aov::Shaded, &|| {});
         b.render(Aov::Shaded, &|| {});
-        assert_eq!(a.counts.get(), b.counts.get(), "{name}: the same rays are cast");
+        assert_eq!(a.counts(), b.counts(), "{name}: the same rays are cast");
         // The plain back end's packets, against its own single rays.
         let plain = Renderer::<Plain>::with_backend(&scene).render(Aov::Shaded, &|| {});
         let single = Renderer::<Plain>::with_backend(&scene).without_packets().render(Aov::Shaded, &|| {});
@@ -426,7 +426,7 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         let (a, b) = (Renderer::new(&sampled), Renderer::new(&sampled).without_packets());
         let (pa, pb) = (a.render(Aov::Shaded, &|| {}), b.render(Aov::Shaded, &|| {}));
         assert!(pa.pixels == pb.pixels, "{name}: packets and single rays differ at 5 samples per pixel");
-        assert_eq!(a.counts.get(), b.counts.get(), "{name}: the same rays are cast at 5 samples per pixel");
+        assert_eq!(a.counts(), b.counts(), "{name}: the same rays are cast at 5 samples per pixel");
     }
 }
 

@@ -153,8 +153,6 @@ fn ruled_surfaces_cast_shadows_and_reflect() {
     let mut scene = Scene::load(&path).unwrap();
     scene.resize(Some(80), None).unwrap();
     let lit = Renderer::new(&scene).render(Aov::Shaded, &|| {});
-    let hits = Renderer::new(&scene).counts.get();
-    let _ = hits;
     scene.settings.shadows = false;
     let unshadowed = Renderer::new(&scene).render(Aov::Shaded, &|| {});
     scene.settings.shadows = true;

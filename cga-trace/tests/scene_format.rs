@@ -171,3 +171,23 @@ fn the_readme_examples_are_valid_scenes() {
         }
     }
 }
+
+/// The README's first scene renders as it says: the ball red at the image's centre, the floor
+/// grey (equal channels) at the bottom, black sky at the top.
+#[test]
+fn the_readme_first_scene_renders_a_red_ball_on_a_grey_floor() {
+    let readme =
+        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
+    let section = readme.split("### Your first scene").nth(1).expect("the README's first scene");
+    let block = section.split("```toml\n").nth(1).and_then(|b| b.split("```").next()).unwrap();
+    let mut scene = Scene::parse(block, "first.toml").unwrap();
+    scene.resize(Some(32), Some(24)).unwrap();
+    let film = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+    // Rows from the bottom, as the film stores them.
+    let at = |i: usize, j: usize| film.pixels[j * 32 + i];
+    let ball = at(16, 12);
+    assert!(ball[0] > 4.0 * ball[1].max(ball[2]) && ball[0] > 0.2, "the ball is red: {ball:?}");
+    let floor = at(3, 1);
+    assert!(floor[0] > 0.05 && (floor[0] - floor[1]).abs() < 1e-12 && (floor[1] - floor[2]).abs() < 1e-12, "{floor:?}");
+    assert_eq!(at(3, 23), [0.0; 3], "the sky is the background");
+}

@@ -6,7 +6,9 @@
 use super::Backend;
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
+use crate::shapes::{
+    Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle, point_in_range,
+};
 use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
 use cga_core::{FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
 use std::sync::Arc;
@@ -114,7 +116,7 @@ impl Backend for Dense {
     const SPAN: i32 = 20;
 
     /// A sphere's coefficients in the orthonormal basis are of size `max(1, |c|², r²)/r`, each
-    /// rounded: its crossings lie within `64 ε` of that (more than the null basis's
+    /// rounded: its crossings lie in_range `64 ε` of that (more than the null basis's
     /// `64 ε r (1 + ρ)²` where the sphere and its distance are both below the unit).
     fn crossing_error(shape: &dyn Shape) -> f64 {
         let own = shape.crossing_error();
@@ -158,18 +160,15 @@ impl Backend for Dense {
     }
 
     fn intersect(shape: &DenseShape, ray: &Ray<Multivector>, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let within = |x: &E3| {
-            let t = ray.t_of(*x);
-            t > t_min && t < t_max
-        };
+        let in_range = point_in_range(ray, t_min, t_max);
         let point = match shape {
-            DenseShape::Sphere { sphere, .. } => meet_sphere(&ray.line, sphere, ray.dir)?.into_iter().find(within)?,
-            DenseShape::Plane(plane) => meet_plane(&ray.line, plane).filter(within)?,
+            DenseShape::Sphere { sphere, .. } => meet_sphere(&ray.line, sphere, ray.dir)?.into_iter().find(in_range)?,
+            DenseShape::Plane(plane) => meet_plane(&ray.line, plane).filter(in_range)?,
             DenseShape::Disk { plane, centre, radius } => {
-                meet_plane(&ray.line, plane).filter(|x| within(x) && norm(sub(*x, *centre)) <= *radius)?
+                meet_plane(&ray.line, plane).filter(|x| in_range(x) && norm(sub(*x, *centre)) <= *radius)?
             }
             DenseShape::Triangle { plane, corners } => {
-                meet_plane(&ray.line, plane).filter(|x| within(x) && inside_triangle(*x, corners))?
+                meet_plane(&ray.line, plane).filter(|x| in_range(x) && inside_triangle(*x, corners))?
             }
             DenseShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };

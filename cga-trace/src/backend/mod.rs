@@ -21,7 +21,7 @@ mod plain;
 use crate::camera::Camera;
 use crate::frame::RANGE;
 use crate::ray::Ray;
-use crate::render::{Cast, Renderer};
+use crate::render::{RayCounts, Renderer};
 use crate::scene::Scene;
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 use cga_core::Line;
@@ -64,7 +64,7 @@ pub trait Backend: Send + Sync + 'static {
     /// Four neighbouring pixels `(i₀ + k, j)` of a renderer whose packets are on
     /// ([`crate::packet`]); `None` where the back end has none or a camera ray cannot be
     /// formed (the scalar path takes over).
-    fn pixels4(_renderer: &Renderer<'_, Self>, _i0: u32, _j: u32, _cast: &mut Cast) -> Option<[[f64; 3]; 4]>
+    fn pixels4(_renderer: &Renderer<'_, Self>, _i0: u32, _j: u32, _cast: &mut RayCounts) -> Option<[[f64; 3]; 4]>
     where
         Self: Sized,
     {
@@ -139,7 +139,7 @@ impl Backend for Sparse {
     }
 
     fn prepare(shape: &Arc<dyn Shape>) -> SparseShape {
-        let any = shape.as_any();
+        let any: &dyn Shape = &**shape;
         if let Some(s) = any.downcast_ref::<SphereShape>() {
             SparseShape::Sphere(s.clone())
         } else if let Some(p) = any.downcast_ref::<PlaneShape>() {
@@ -162,7 +162,7 @@ impl Backend for Sparse {
         each_kind!(shape, s => s.normal(ray, crossing))
     }
 
-    fn pixels4(renderer: &Renderer<'_, Sparse>, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+    fn pixels4(renderer: &Renderer<'_, Sparse>, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         renderer.pixels4(i0, j, cast)
     }
 }

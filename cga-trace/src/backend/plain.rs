@@ -4,8 +4,8 @@
 
 use super::Backend;
 use crate::camera::Camera;
-use crate::ray::Ray;
-use crate::render::{Cast, Renderer};
+use crate::ray::{Ray, in_range};
+use crate::render::{RayCounts, Renderer};
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
 use cga_core::euclid::{E3, cross, unit};
 use glam::DVec3;
@@ -94,11 +94,10 @@ impl Backend for Plain {
     #[inline]
     fn intersect(shape: &PlainShape, ray: &Ray<()>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let (o, d) = (DVec3::from(ray.origin), DVec3::from(ray.dir));
-        let within = |t: f64| t > t_min && t < t_max;
         let on_plane = |n: DVec3, offset: f64| {
             let denom = n.dot(d);
             let t = (offset - n.dot(o)) / denom;
-            (denom != 0.0 && t.is_finite() && within(t)).then_some(t)
+            (denom != 0.0 && t.is_finite() && in_range(t, t_min, t_max)).then_some(t)
         };
         let t = match shape {
             PlainShape::Sphere { centre, radius } => {
@@ -109,7 +108,7 @@ impl Backend for Plain {
                     return None;
                 }
                 let s = disc.sqrt();
-                [-b - s, -b + s].into_iter().find(|&t| within(t))?
+                [-b - s, -b + s].into_iter().find(|&t| in_range(t, t_min, t_max))?
             }
             PlainShape::Plane { normal, offset } => on_plane(*normal, *offset)?,
             PlainShape::Disk { normal, offset, centre, radius } => {
@@ -123,7 +122,7 @@ impl Backend for Plain {
         Some(Crossing { t, point: (o + t * d).into(), alpha: None })
     }
 
-    fn pixels4(renderer: &Renderer<'_, Plain>, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+    fn pixels4(renderer: &Renderer<'_, Plain>, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         renderer.pixels4(i0, j, cast)
     }
 

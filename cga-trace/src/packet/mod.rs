@@ -18,12 +18,12 @@ use crate::camera::Camera;
 use crate::light::{self, Light};
 use crate::material::{Material, power};
 use crate::ray::Ray;
-use crate::ray::offset;
+use crate::ray::{in_range, offset};
 #[cfg(doc)]
 use crate::render::light_term;
-use crate::render::{Cast, Layers, Renderer, sample_offset, sum_layers};
+use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
 use crate::scene::Object;
-use crate::shapes::{Crossing, Hit};
+use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Real;
 use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, unit};
 use cga_core::simd::F64x4;
@@ -91,8 +91,8 @@ fn lanes3(v: [E3; 4]) -> [F64x4; 3] {
 /// circuits (they vectorise). For a sphere's two roots; a plane's one root is tested with
 /// its other conditions in one expression (1.4 % fewer instructions in the sparse back end).
 #[inline(always)]
-fn within(t: [f64; 4], t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
-    core::array::from_fn(|l| (t[l] > t_min[l]) & (t[l] < t_max[l]))
+fn lanes_in_range(t: [f64; 4], t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
+    core::array::from_fn(|l| in_range(t[l], t_min[l], t_max[l]))
 }
 
 /// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where
@@ -137,7 +137,7 @@ fn leaving_origin4(x: [F64x4; 3], n: [F64x4; 3], n_dir: F64x4, offset: F64x4) ->
 #[inline(always)]
 fn mirror_packet<B: Packets>(
     p: &Packet<B>,
-    hits: &[Option<(Hit, &Object)>; 4],
+    hits: &[Option<(ShadingPoint, &Object)>; 4],
     errors: &[f64; 4],
     bounce: &[bool; 4],
 ) -> Packet<B> {
@@ -233,7 +233,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
     /// [`Renderer::pixel`] gives its pixel: the same samples, meets, shading, sum from the
     /// deepest bounce up and mean over samples. Compiled for AVX2 and FMA where the CPU has
     /// them (the lanes then run in one register each).
-    pub fn pixels4(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+    pub fn pixels4(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         #[cfg(target_arch = "x86_64")]
         if avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
@@ -244,15 +244,15 @@ impl<'a, B: Packets> Renderer<'a, B> {
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn pixels4_avx2(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+    unsafe fn pixels4_avx2(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         self.pixels4_lanes(i0, j, cast)
     }
 
     #[inline(always)]
-    fn pixels4_lanes(&self, i0: u32, j: u32, cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+    fn pixels4_lanes(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         let spp = self.scene.settings.spp.max(1);
         let pixels = [0, 1, 2, 3].map(|k| i0 + k);
-        let mut counted = Cast::default();
+        let mut counted = RayCounts::default();
         if spp == 1 {
             let centre = |i: u32| f64::from(i) + 0.5;
             let colours = self.samples4(pixels.map(centre), [centre(j); 4], &mut counted)?;
@@ -276,7 +276,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
 
     /// The colours seen at continuous pixel coordinates `(u_k, v_k)`, one packet.
     #[inline(always)]
-    fn samples4(&self, u: [f64; 4], v: [f64; 4], cast: &mut Cast) -> Option<[[f64; 3]; 4]> {
+    fn samples4(&self, u: [f64; 4], v: [f64; 4], cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         let (camera, settings) = (&self.scene.camera, &self.scene.settings);
         let mut packet = B::camera_packet(camera, u, v)?;
         cast.primary += 4;
@@ -287,10 +287,10 @@ impl<'a, B: Packets> Renderer<'a, B> {
         while active.iter().any(|&a| a) {
             let nearest = self.nearest_packet(&packet, &active);
             let own = nearest.map(|n| n.and_then(|(_, k)| self.skip_own(k)));
-            let hits: [Option<(Hit, &Object)>; 4] = core::array::from_fn(|l| {
+            let hits: [Option<(ShadingPoint, &Object)>; 4] = core::array::from_fn(|l| {
                 nearest[l].map(|(c, k)| {
                     let normal = B::normal(&self.shapes[k], &packet.rays[l], &c);
-                    (Hit { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
+                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
                 })
             });
             let errors = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
@@ -329,10 +329,10 @@ impl<'a, B: Packets> Renderer<'a, B> {
     fn shade_packet(
         &self,
         p: &Packet<B>,
-        hits: &[Option<(Hit, &Object)>; 4],
+        hits: &[Option<(ShadingPoint, &Object)>; 4],
         own: &[Option<usize>; 4],
         errors: &[f64; 4],
-        cast: &mut Cast,
+        cast: &mut RayCounts,
     ) -> [[f64; 3]; 4] {
         let settings = &self.scene.settings;
         let mut colours: [[f64; 3]; 4] =

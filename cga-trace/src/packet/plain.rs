@@ -2,7 +2,7 @@
 //! [`Plain`] in lanes — the same operations in the same order as glam's, so the same bits;
 //! other shapes one lane at a time.
 
-use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes3, within};
+use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes_in_range, lanes3};
 use crate::backend::{Backend, Plain, PlainShape};
 use crate::camera::Camera;
 use crate::shapes::Crossing;
@@ -57,7 +57,7 @@ fn splat3(v: DVec3) -> [F64x4; 3] {
     v.to_array().map(F64x4::splat)
 }
 
-/// The nearer root within range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
+/// The nearer root lanes_in_range range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
 /// `b = (o − c)·d`.
 #[inline(always)]
 fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
@@ -71,7 +71,7 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     }
     let s = F64x4::new(d.map(f64::sqrt));
     let (near, far) = ((-b - s).to_array(), (-b + s).to_array());
-    let (near_in, far_in) = (within(near, t_min, t_max), within(far, t_min, t_max));
+    let (near_in, far_in) = (lanes_in_range(near, t_min, t_max), lanes_in_range(far, t_min, t_max));
     let ok: [bool; 4] = core::array::from_fn(|l| (d[l] >= 0.0) & (near_in[l] | far_in[l]));
     if !ok.iter().any(|&o| o) {
         return [None; 4];
@@ -85,7 +85,7 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     })
 }
 
-/// `t = (δ − n·o)/(n·d)` on the plane `n·x = δ`, within range, and for a disk within the rim.
+/// `t = (δ − n·o)/(n·d)` on the plane `n·x = δ`, lanes_in_range range, and for a disk lanes_in_range the rim.
 #[inline(always)]
 fn plane4(
     p: &Packet<Plain>,

@@ -1,7 +1,7 @@
-//! A disk: its plane met as a flat point, kept if within the rim.
+//! A disk: its plane met as a flat point, kept if point_in_range the rim.
 
 use super::plane::{cross_plane, flat_normal};
-use super::{Crossing, Shape, crossing_at, flat_error, within};
+use super::{Crossing, Shape, crossing_at, flat_error, point_in_range};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::{Disk, GeometryError};
@@ -30,7 +30,7 @@ impl Shape for DiskShape {
         let x = cross_plane(ray, &d.plane)?;
         // Squared distances: no square root per ray.
         let v = sub(x, d.centre);
-        (within(ray, t_min, t_max)(&x) && dot(v, v) <= d.radius * d.radius).then(|| crossing_at(ray, x))
+        (point_in_range(ray, t_min, t_max)(&x) && dot(v, v) <= d.radius * d.radius).then(|| crossing_at(ray, x))
     }
 
     fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
@@ -53,9 +53,5 @@ impl Shape for DiskShape {
 
     fn flat(&self) -> bool {
         true
-    }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
     }
 }

@@ -15,7 +15,7 @@ mod plane;
 mod sphere;
 mod triangle;
 
-use crate::ray::Ray;
+use crate::ray::{Ray, in_range};
 use cga_core::Plane;
 use cga_core::euclid::{E3, dot};
 use core::any::Any;
@@ -39,7 +39,7 @@ pub struct Crossing {
 
 /// A crossing with its normal, ready to shade.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit {
+pub struct ShadingPoint {
     /// Ray parameter.
     pub t: f64,
     /// The point.
@@ -85,10 +85,6 @@ pub trait Shape: Send + Sync + Debug + Any {
         false
     }
 
-    /// The shape as `Any`, for back ends that specialise some kinds (the comparison
-    /// baselines) and for inspection.
-    fn as_any(&self) -> &dyn Any;
-
     /// The curvature of the surface at a crossing (in the scene's frame), for surfaces swept
     /// by circles; `None` for the others (flat or of constant curvature, not reported).
     fn curvature(&self, _crossing: &Crossing) -> Option<cga_core::Curvature> {
@@ -96,25 +92,22 @@ pub trait Shape: Send + Sync + Debug + Any {
     }
 
     /// The nearest crossing and its normal.
-    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<ShadingPoint> {
         let c = self.intersect(ray, t_min, t_max)?;
-        Some(Hit { t: c.t, point: c.point, normal: self.normal(ray, &c), alpha: c.alpha })
+        Some(ShadingPoint { t: c.t, point: c.point, normal: self.normal(ray, &c), alpha: c.alpha })
     }
 }
 
 impl dyn Shape {
     /// The shape as a `S`, if it is one.
     pub fn downcast_ref<S: Shape>(&self) -> Option<&S> {
-        self.as_any().downcast_ref()
+        (self as &dyn Any).downcast_ref()
     }
 }
 
-/// Whether the point of a ray lies within `(t_min, t_max)`.
-fn within(ray: &Ray, t_min: f64, t_max: f64) -> impl Fn(&E3) -> bool + '_ {
-    move |x| {
-        let t = ray.t_of(*x);
-        t > t_min && t < t_max
-    }
+/// Whether a point of the ray lies in its range `(t_min, t_max)` ([`in_range`]).
+pub(crate) fn point_in_range<C>(ray: &Ray<C>, t_min: f64, t_max: f64) -> impl Fn(&E3) -> bool + '_ {
+    move |x| in_range(ray.t_of(*x), t_min, t_max)
 }
 
 /// The crossing at `point`.

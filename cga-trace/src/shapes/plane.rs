@@ -1,6 +1,6 @@
 //! An infinite plane: met as the flat point `L ∨ Π`.
 
-use super::{Crossing, Shape, crossing_at, facing, flat_error, plane_normal, within};
+use super::{Crossing, Shape, crossing_at, facing, flat_error, plane_normal, point_in_range};
 use crate::ray::Ray;
 use cga_core::euclid::E3;
 use cga_core::{GeometryError, Plane};
@@ -38,7 +38,7 @@ pub(super) fn flat_normal(ray: &Ray, normal: E3) -> E3 {
 impl Shape for PlaneShape {
     #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        cross_plane(ray, &self.plane).filter(within(ray, t_min, t_max)).map(|x| crossing_at(ray, x))
+        cross_plane(ray, &self.plane).filter(point_in_range(ray, t_min, t_max)).map(|x| crossing_at(ray, x))
     }
 
     fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
@@ -56,9 +56,5 @@ impl Shape for PlaneShape {
 
     fn flat(&self) -> bool {
         true
-    }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
     }
 }

@@ -1,9 +1,9 @@
 //! A sphere: met as the point pair `L ∨ S`, classified by its square.
 
-use super::{Crossing, Shape, crossing_at, facing, largest, rounding, within};
+use super::{Crossing, Shape, crossing_at, facing, largest, point_in_range, rounding};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, scale, sub, unit};
-use cga_core::{GeometryError, Hit as MeetHit, RoundMeet, Sphere};
+use cga_core::{GeometryError, Hit, RoundMeet, Sphere};
 
 /// A sphere, with its centre and radius (for bounds and normals).
 #[derive(Clone, Debug)]
@@ -29,10 +29,10 @@ impl Shape for SphereShape {
         // Rays and spheres are normalised, so the meet is classified with weight 1, as
         // `Line::meet_sphere` would after computing the two norms.
         let meet = RoundMeet::new(ray.line & self.sphere, 1.0);
-        if meet.hit == MeetHit::Miss {
+        if meet.hit == Hit::Miss {
             return None;
         }
-        let point = meet.points_along(ray.dir).ok()?.into_iter().find(within(ray, t_min, t_max))?;
+        let point = meet.points_along(ray.dir).ok()?.into_iter().find(point_in_range(ray, t_min, t_max))?;
         Some(crossing_at(ray, point))
     }
 
@@ -52,9 +52,5 @@ impl Shape for SphereShape {
     fn crossing_error(&self) -> f64 {
         let one_plus_rho = 1.0 + largest(self.centre) / self.radius;
         rounding(self.radius * one_plus_rho * one_plus_rho)
-    }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
     }
 }

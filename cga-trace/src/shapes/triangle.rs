@@ -1,7 +1,7 @@
 //! A triangle: its plane met as a flat point, kept if inside the three edges.
 
 use super::plane::{cross_plane, flat_normal};
-use super::{Crossing, Shape, crossing_at, flat_error, within};
+use super::{Crossing, Shape, crossing_at, flat_error, point_in_range};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, dot, norm, scale, sub};
 use cga_core::{GeometryError, Plane};
@@ -29,7 +29,7 @@ impl Shape for TriangleShape {
     #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let x = cross_plane(ray, &self.plane)?;
-        (within(ray, t_min, t_max)(&x) && inside_triangle(x, &self.corners)).then(|| crossing_at(ray, x))
+        (point_in_range(ray, t_min, t_max)(&x) && inside_triangle(x, &self.corners)).then(|| crossing_at(ray, x))
     }
 
     fn normal(&self, ray: &Ray, _: &Crossing) -> E3 {
@@ -53,10 +53,6 @@ impl Shape for TriangleShape {
 
     fn flat(&self) -> bool {
         true
-    }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
     }
 }
 

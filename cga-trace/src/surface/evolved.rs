@@ -236,8 +236,4 @@ impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.family.circles.curvature(crossing.alpha?, sub(crossing.point, self.origin))
     }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
-    }
 }

@@ -313,8 +313,4 @@ impl Shape for RuledSurface {
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.curvature_at(crossing.alpha?, crossing.point)
     }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
-    }
 }

@@ -182,8 +182,4 @@ impl Shape for SplineSurface {
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.spline.curvature(crossing.alpha?, sub(crossing.point, self.origin)).ok()
     }
-
-    fn as_any(&self) -> &dyn std::any::Any {
-        self
-    }
 }

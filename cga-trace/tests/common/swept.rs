@@ -116,10 +116,9 @@ pub type Variant = (String, Box<dyn Shape>);
 impl<'a> Swept<'a> {
     /// The swept surface a scene object's shape is, if it is one.
     pub fn of(shape: &'a dyn Shape) -> Option<Self> {
-        let any = shape.as_any();
-        (any.downcast_ref::<EvolvedSurface>().map(Swept::Evolved))
-            .or_else(|| any.downcast_ref::<SplineSurface>().map(Swept::Spline))
-            .or_else(|| any.downcast_ref::<RuledSurface>().map(Swept::Ruled))
+        (shape.downcast_ref::<EvolvedSurface>().map(Swept::Evolved))
+            .or_else(|| shape.downcast_ref::<SplineSurface>().map(Swept::Spline))
+            .or_else(|| shape.downcast_ref::<RuledSurface>().map(Swept::Ruled))
     }
 
     /// What kind it is.
