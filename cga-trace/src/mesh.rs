@@ -355,7 +355,7 @@ impl Scene {
         }
     }
 
-    fn object(&self, name: &str) -> Result<&crate::scene::Object, MeshError> {
+    fn object(&self, name: &str) -> Result<&crate::object::Object, MeshError> {
         self.objects.iter().find(|o| o.name == name).ok_or_else(|| MeshError::NoObject(name.into()))
     }
 }

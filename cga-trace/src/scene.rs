@@ -6,31 +6,16 @@
 use crate::camera::{Camera, CameraError};
 use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
+use crate::invalid::Invalid;
 use crate::light::Light;
 use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
-use crate::material::Material;
+pub use crate::object::Object;
 use crate::settings::Settings;
-use crate::shapes::Shape;
-#[cfg(feature = "evolved")]
-use crate::surface::SurfaceError;
-use cga_core::GeometryError;
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
 use std::ops::Range;
 use std::path::Path;
-use std::sync::Arc;
 use toml::Spanned;
-
-/// One object of a scene.
-#[derive(Clone, Debug)]
-pub struct Object {
-    /// Its name in the scene file (or `object N`).
-    pub name: String,
-    /// Geometry.
-    pub shape: Arc<dyn Shape>,
-    /// Material.
-    pub material: Material,
-}
 
 /// A scene ready to render, in its [`Frame`]: camera, objects and lights are given
 /// relative to the camera's position, in units of `frame.scale` (see [`crate::frame`]).
@@ -88,94 +73,6 @@ pub enum SceneError {
         /// Why.
         reason: Invalid,
     },
-}
-
-/// Why a well-formed table or object is invalid: the core's named errors, wrapped, or a
-/// value out of range.
-#[derive(Debug, thiserror::Error)]
-pub enum Invalid {
-    /// A value out of range or missing (the message names it).
-    #[error("{0}")]
-    Value(&'static str),
-    /// The fields given do not make the object (the message says which it takes).
-    #[error("{0}")]
-    Form(&'static str),
-    /// A list of the wrong length.
-    #[error("expected {expected} {what}, found {found}")]
-    Count {
-        /// What is counted.
-        what: &'static str,
-        /// How many it takes.
-        expected: usize,
-        /// How many were given.
-        found: usize,
-    },
-    /// More of something than [`crate::limits`] allows.
-    #[error("{found} {what} exceed the limit of {limit}")]
-    Limit {
-        /// What is counted.
-        what: &'static str,
-        /// How many were given.
-        found: u64,
-        /// The limit.
-        limit: u64,
-    },
-    /// One element of a list (`circle 3`).
-    #[error("{what} {index}: {reason}")]
-    Indexed {
-        /// What the list holds.
-        what: &'static str,
-        /// 1-based position.
-        index: usize,
-        /// Why.
-        reason: Box<Invalid>,
-    },
-    /// The problem is with one field, at `span` in the file.
-    #[error("`{field}`: {reason}")]
-    Field {
-        /// The field's name.
-        field: &'static str,
-        /// Its bytes in the file.
-        span: Range<usize>,
-        /// Why.
-        reason: Box<Invalid>,
-    },
-    /// The surface method's settings.
-    #[error("surface_method: {0}")]
-    SurfaceMethod(&'static str),
-    /// Geometry that cannot be built (cga-core's reason).
-    #[error(transparent)]
-    Geometry(#[from] GeometryError),
-    /// A camera that cannot be built.
-    #[error(transparent)]
-    Camera(#[from] CameraError),
-    /// Two circles that make no surface.
-    #[cfg(feature = "evolved")]
-    #[error(transparent)]
-    Surface(#[from] SurfaceError),
-    /// Numbers the frame cannot hold beside the rest of the scene (the message says which
-    /// and how far).
-    #[error("{0}")]
-    Range(String),
-    /// An evolved surface in a build without them.
-    #[error("this build leaves out evolved surfaces (cargo feature `evolved`)")]
-    NoEvolved,
-}
-
-impl Invalid {
-    /// `reason`, about the field `field` at `span`.
-    pub fn at(field: &'static str, span: Range<usize>, reason: Invalid) -> Invalid {
-        Invalid::Field { field, span, reason: Box::new(reason) }
-    }
-
-    /// The span of the innermost field this is about, if any.
-    fn span(&self) -> Option<Range<usize>> {
-        match self {
-            Invalid::Field { span, reason, .. } => reason.span().or_else(|| Some(span.clone())),
-            Invalid::Indexed { reason, .. } => reason.span(),
-            _ => None,
-        }
-    }
 }
 
 impl Scene {
@@ -249,7 +146,8 @@ impl Scene {
         }
         let spec: SceneFile = SceneFile::deserialize(toml::de::Deserializer::from(document))
             .map_err(|e| syntax_error(text, file, &e, &rest))?;
-        let (settings, render_span) = spec.render.map_or((Settings::default(), 0..0), |r| (*r.get_ref(), r.span()));
+        let (settings, render_span) =
+            spec.render.map_or((Settings::default(), 0..0), |r| (Settings::from(*r.get_ref()), r.span()));
         settings.check().map_err(|reason| invalid(&rest, render_span, "render".into(), reason))?;
         let count = inline.len().max(sections.objects.len());
         let limit = |what, found: usize, limit: usize| {

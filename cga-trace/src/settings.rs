@@ -1,16 +1,13 @@
 //! Render settings: depth, background, ambient light, shadows, attenuation, output
 //! encoding, and how evolved surfaces are intersected.
 
-use crate::format::{number, numbers};
+use crate::invalid::Invalid;
 use crate::limits::{MAX_DEPTH, MAX_SPP};
-use crate::scene::Invalid;
 use crate::surface::Method;
-use serde::Deserialize;
 
 /// How the output PNG encodes linear values.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
-#[serde(rename_all = "lowercase")]
 pub enum Encoding {
     /// The sRGB transfer curve (the default).
     #[default]
@@ -20,65 +17,42 @@ pub enum Encoding {
 }
 
 /// Global render settings.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
     /// Reflection depth: bounces after the first hit (at most [`MAX_DEPTH`]).
-    #[serde(default = "five")]
     pub max_depth: u32,
     /// Samples per pixel, stratified over the pixel (at most [`MAX_SPP`]; 1: the centre).
-    #[serde(default = "one_sample")]
     pub spp: u32,
     /// Colour of rays that hit nothing.
-    #[serde(default, deserialize_with = "numbers")]
     pub background: [f64; 3],
     /// Ambient light intensity (times `k_a` and the colour).
-    #[serde(default = "ambient", deserialize_with = "number")]
     pub ambient: f64,
     /// Fraction of a light's diffuse and specular that passes a blocker (0: hard shadows).
-    #[serde(default, deserialize_with = "number")]
     pub shadow_transmission: f64,
     /// Whether shadow rays are cast at all (`false`: every light reaches every point).
-    #[serde(default = "yes")]
     pub shadows: bool,
     /// `f_att = min(1, 1 / (c0 + c1 d + c2 d²))`, `d` the distance to the light.
-    #[serde(default = "no_attenuation", deserialize_with = "numbers")]
     pub attenuation: [f64; 3],
     /// PNG encoding.
-    #[serde(default)]
     pub encoding: Encoding,
     /// How rays meet evolved surfaces (default: hybrid — α-cells cull, the degree-8
     /// polynomial finds the roots; docs/SURFACE.md).
-    #[serde(default)]
     pub surface_method: Method,
 }
 
-fn yes() -> bool {
-    true
-}
-pub(crate) fn five() -> u32 {
-    5
-}
-fn one_sample() -> u32 {
-    1
-}
-fn ambient() -> f64 {
-    0.3
-}
-fn no_attenuation() -> [f64; 3] {
-    [1.0, 0.0, 0.0]
-}
-
+/// What a scene gets where it sets nothing: 5 bounces, one sample per pixel (the centre), a
+/// black background, ambient 0.3, hard shadows, no attenuation, sRGB, the hybrid surface
+/// method.
 impl Default for Settings {
     fn default() -> Self {
         Settings {
-            max_depth: five(),
+            max_depth: 5,
             spp: 1,
             background: [0.0; 3],
-            ambient: ambient(),
+            ambient: 0.3,
             shadow_transmission: 0.0,
             shadows: true,
-            attenuation: no_attenuation(),
+            attenuation: [1.0, 0.0, 0.0],
             encoding: Encoding::Srgb,
             surface_method: Method::default(),
         }

@@ -9,17 +9,18 @@
 
 mod numbers;
 pub(crate) mod sections;
+mod specs;
 mod transform;
 
-pub(crate) use numbers::{number, numbers};
+pub(crate) use specs::{MaterialSpec, SettingsSpec};
 
 use crate::camera::{Camera, CameraError};
 use crate::frame::Frame;
+use crate::invalid::Invalid;
 use crate::light::{Light, Source};
 use crate::limits::MAX_SIDE;
 use crate::material::Material;
-use crate::scene::{Invalid, Object};
-use crate::settings::Settings;
+use crate::object::Object;
 use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
@@ -42,7 +43,7 @@ use transform::{Placement, Step, rigid, world_motor};
 #[serde(deny_unknown_fields)]
 pub(crate) struct SceneFile {
     pub camera: Spanned<CameraSpec>,
-    pub render: Option<Spanned<Settings>>,
+    pub render: Option<Spanned<SettingsSpec>>,
     #[serde(default)]
     pub lights: Vec<Spanned<LightSpec>>,
     /// Read one at a time by [`Scene::parse`](crate::Scene::parse), which takes the list out
@@ -249,7 +250,7 @@ pub(crate) struct ObjectSpec {
     #[serde(rename = "type")]
     kind: Kind,
     name: Option<String>,
-    material: Material,
+    material: MaterialSpec,
     centre: Option<Spanned<V3>>,
     radius: Option<Spanned<Num>>,
     normal: Option<Spanned<V3>>,
@@ -584,7 +585,7 @@ pub(crate) fn build_object(
 ) -> (Result<Object, Invalid>, String) {
     let name = spec.name.clone().unwrap_or_else(|| format!("object {}", index + 1));
     let shown = name.escape_debug().to_string();
-    let material = spec.material;
+    let material = Material::from(spec.material);
     let shape = material.check().and_then(|()| spec.shape(method, frame));
     (shape.map(|shape| Object { name, shape, material }), shown)
 }

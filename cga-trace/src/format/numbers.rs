@@ -26,6 +26,16 @@ pub(crate) fn number<'de, D: Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
     refuse(x).map_or(Ok(x), |why| Err(D::Error::custom(why)))
 }
 
+/// [`number`] for a field that may be missing (with `#[serde(default)]`).
+pub(crate) fn some_number<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+    number(d).map(Some)
+}
+
+/// [`numbers`] for a field that may be missing (with `#[serde(default)]`).
+pub(crate) fn some_numbers<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<Option<[f64; N]>, D::Error> {
+    numbers(d).map(Some)
+}
+
 /// Exactly `N` numbers, each checked.
 pub(crate) fn numbers<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<[f64; N], D::Error> {
     struct Exactly<const N: usize>;

@@ -8,7 +8,7 @@
 
 use super::numbers::{Num, Nums, V3};
 use crate::frame::Frame;
-use crate::scene::Invalid;
+use crate::invalid::Invalid;
 use cga_core::euclid::{E3, norm};
 use cga_core::{Motor, Rotor, Sandwich, Translator, Vector};
 use serde::Deserialize;

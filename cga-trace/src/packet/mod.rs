@@ -17,12 +17,12 @@ use crate::backend::Backend;
 use crate::camera::Camera;
 use crate::light::{self, Light};
 use crate::material::{Material, power};
+use crate::object::Object;
 use crate::ray::Ray;
 use crate::ray::{in_range, offset};
 #[cfg(doc)]
 use crate::render::light_term;
 use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
-use crate::scene::Object;
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Real;
 use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, unit};

@@ -1,0 +1,90 @@
+//! The `[render]` table and an object's `material` as scene files write them: every field
+//! optional but a material's `colour`, numbers checked as they are read ([`super::numbers`]),
+//! and what is not given taken from the domain's defaults ([`Settings::default`],
+//! [`Material::new`]), so that no default is written twice.
+
+use super::numbers::{numbers, some_number, some_numbers};
+use crate::material::Material;
+use crate::settings::{Encoding, Settings};
+use crate::surface::Method;
+use serde::Deserialize;
+
+/// A `[render]` table.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct SettingsSpec {
+    max_depth: Option<u32>,
+    spp: Option<u32>,
+    #[serde(default, deserialize_with = "some_numbers")]
+    background: Option<[f64; 3]>,
+    #[serde(default, deserialize_with = "some_number")]
+    ambient: Option<f64>,
+    #[serde(default, deserialize_with = "some_number")]
+    shadow_transmission: Option<f64>,
+    shadows: Option<bool>,
+    #[serde(default, deserialize_with = "some_numbers")]
+    attenuation: Option<[f64; 3]>,
+    encoding: Option<EncodingSpec>,
+    surface_method: Option<Method>,
+}
+
+/// `encoding = "srgb" | "linear"`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum EncodingSpec {
+    Srgb,
+    Linear,
+}
+
+impl From<SettingsSpec> for Settings {
+    fn from(s: SettingsSpec) -> Settings {
+        let d = Settings::default();
+        Settings {
+            max_depth: s.max_depth.unwrap_or(d.max_depth),
+            spp: s.spp.unwrap_or(d.spp),
+            background: s.background.unwrap_or(d.background),
+            ambient: s.ambient.unwrap_or(d.ambient),
+            shadow_transmission: s.shadow_transmission.unwrap_or(d.shadow_transmission),
+            shadows: s.shadows.unwrap_or(d.shadows),
+            attenuation: s.attenuation.unwrap_or(d.attenuation),
+            encoding: match s.encoding {
+                Some(EncodingSpec::Srgb) => Encoding::Srgb,
+                Some(EncodingSpec::Linear) => Encoding::Linear,
+                None => d.encoding,
+            },
+            surface_method: s.surface_method.unwrap_or(d.surface_method),
+        }
+    }
+}
+
+/// An object's `material`: `colour` and any of `ka`, `kd`, `ks`, `q`, `kr`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct MaterialSpec {
+    #[serde(deserialize_with = "numbers")]
+    colour: [f64; 3],
+    #[serde(default, deserialize_with = "some_number")]
+    ka: Option<f64>,
+    #[serde(default, deserialize_with = "some_number")]
+    kd: Option<f64>,
+    #[serde(default, deserialize_with = "some_number")]
+    ks: Option<f64>,
+    #[serde(default, deserialize_with = "some_number")]
+    q: Option<f64>,
+    #[serde(default, deserialize_with = "some_number")]
+    kr: Option<f64>,
+}
+
+impl From<MaterialSpec> for Material {
+    fn from(s: MaterialSpec) -> Material {
+        let d = Material::new(s.colour);
+        Material {
+            colour: s.colour,
+            ka: s.ka.unwrap_or(d.ka),
+            kd: s.kd.unwrap_or(d.kd),
+            ks: s.ks.unwrap_or(d.ks),
+            q: s.q.unwrap_or(d.q),
+            kr: s.kr.unwrap_or(d.kr),
+        }
+    }
+}

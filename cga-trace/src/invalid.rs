@@ -1,0 +1,99 @@
+//! Why a well-formed table or object of a scene is invalid: a value out of range, a form
+//! that makes no object, or the named error of the geometry that could not be built. The
+//! domain types' checks ([`crate::material::Material::check`],
+//! [`crate::settings::Settings::check`]) and the scene format share it; the format adds the
+//! field and its place in the file.
+
+use crate::camera::CameraError;
+#[cfg(feature = "evolved")]
+use crate::surface::SurfaceError;
+use cga_core::GeometryError;
+use std::ops::Range;
+
+/// Why a well-formed table or object is invalid: the core's named errors, wrapped, or a
+/// value out of range.
+#[derive(Debug, thiserror::Error)]
+pub enum Invalid {
+    /// A value out of range or missing (the message names it).
+    #[error("{0}")]
+    Value(&'static str),
+    /// The fields given do not make the object (the message says which it takes).
+    #[error("{0}")]
+    Form(&'static str),
+    /// A list of the wrong length.
+    #[error("expected {expected} {what}, found {found}")]
+    Count {
+        /// What is counted.
+        what: &'static str,
+        /// How many it takes.
+        expected: usize,
+        /// How many were given.
+        found: usize,
+    },
+    /// More of something than [`crate::limits`] allows.
+    #[error("{found} {what} exceed the limit of {limit}")]
+    Limit {
+        /// What is counted.
+        what: &'static str,
+        /// How many were given.
+        found: u64,
+        /// The limit.
+        limit: u64,
+    },
+    /// One element of a list (`circle 3`).
+    #[error("{what} {index}: {reason}")]
+    Indexed {
+        /// What the list holds.
+        what: &'static str,
+        /// 1-based position.
+        index: usize,
+        /// Why.
+        reason: Box<Invalid>,
+    },
+    /// The problem is with one field, at `span` in the file.
+    #[error("`{field}`: {reason}")]
+    Field {
+        /// The field's name.
+        field: &'static str,
+        /// Its bytes in the file.
+        span: Range<usize>,
+        /// Why.
+        reason: Box<Invalid>,
+    },
+    /// The surface method's settings.
+    #[error("surface_method: {0}")]
+    SurfaceMethod(&'static str),
+    /// Geometry that cannot be built (cga-core's reason).
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
+    /// A camera that cannot be built.
+    #[error(transparent)]
+    Camera(#[from] CameraError),
+    /// Two circles that make no surface.
+    #[cfg(feature = "evolved")]
+    #[error(transparent)]
+    Surface(#[from] SurfaceError),
+    /// Numbers the frame cannot hold beside the rest of the scene (the message says which
+    /// and how far).
+    #[error("{0}")]
+    Range(String),
+    /// An evolved surface in a build without them.
+    #[error("this build leaves out evolved surfaces (cargo feature `evolved`)")]
+    NoEvolved,
+}
+
+impl Invalid {
+    /// `reason`, about the field `field` at `span`.
+    pub fn at(field: &'static str, span: Range<usize>, reason: Invalid) -> Invalid {
+        Invalid::Field { field, span, reason: Box::new(reason) }
+    }
+
+    /// The span of the innermost field this is about, if any.
+    pub(crate) fn span(&self) -> Option<Range<usize>> {
+        match self {
+            Invalid::Field { span, reason, .. } => reason.span().or_else(|| Some(span.clone())),
+            Invalid::Indexed { reason, .. } => reason.span(),
+            _ => None,
+        }
+    }
+}
