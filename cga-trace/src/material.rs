@@ -37,8 +37,8 @@ impl Material {
     }
 
     /// The specular term `max(c, 0)^q` for `c = n·h`: by repeated squaring ([`power`]) where
-    /// `q` is a whole number up to 1,024 (as it nearly always is: a seventh of the time of
-    /// `powf`, which was an eighth of a frame; within a few ulps of it), by `powf` otherwise.
+    /// `q` is a whole number up to 1,024 (as it nearly always is; far cheaper than `powf` and
+    /// within a few ulps of it), by `powf` otherwise.
     #[inline]
     pub fn specular(&self, c: f64) -> f64 {
         if c.is_nan() || c <= 0.0 {

@@ -95,8 +95,8 @@ pub fn holds<B: Backend>(scene: &Scene) -> Result<(), String> {
 pub struct Sparse;
 
 /// A scene object for the sparse back end: the built-in primitives by value, so that their
-/// meets are inlined into the integrator's loop (a call through `dyn Shape` per object and
-/// ray cost 10 % of a frame of the primitives scene), any other shape through its trait.
+/// meets are inlined into the integrator's loop (rather than a call through `dyn Shape` per
+/// object and ray), any other shape through its trait.
 #[derive(Clone, Debug)]
 pub enum SparseShape {
     /// A sphere.

@@ -120,8 +120,8 @@ fn crossing_at(ray: &Ray, point: E3) -> Crossing {
 /// plane of unit normal `n` changes only the component of its direction along `n`
 /// (`d' = d − 2(d·n)n`), so `L' − L` points along `±n`: the normal is `Π`'s own, read from
 /// its dual's Euclidean part when the shape is made (for a sphere, the tangent plane's
-/// `(x − c)/r`), instead of the sandwich `Π L Π` per hit — which cost a twentieth of a frame
-/// and equals it to rounding (`tests/render.rs` checks both agree).
+/// `(x − c)/r`): the sandwich `Π L Π` per hit equals it to rounding (`tests/render.rs`
+/// checks both agree) at the cost of a product per hit.
 fn plane_normal(plane: &Plane) -> E3 {
     plane.normal_offset().map_or([0.0, 0.0, 1.0], |(n, _)| n)
 }
