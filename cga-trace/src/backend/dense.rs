@@ -116,7 +116,7 @@ impl Backend for Dense {
     const SPAN: i32 = 20;
 
     /// A sphere's coefficients in the orthonormal basis are of size `max(1, |c|², r²)/r`, each
-    /// rounded: its crossings lie in_range `64 ε` of that (more than the null basis's
+    /// rounded: its crossings lie within `64 ε` of that (more than the null basis's
     /// `64 ε r (1 + ρ)²` where the sphere and its distance are both below the unit).
     fn crossing_error(shape: &dyn Shape) -> f64 {
         let own = shape.crossing_error();

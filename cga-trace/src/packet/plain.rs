@@ -57,7 +57,7 @@ fn splat3(v: DVec3) -> [F64x4; 3] {
     v.to_array().map(F64x4::splat)
 }
 
-/// The nearer root lanes_in_range range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
+/// The nearer root within range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
 /// `b = (o − c)·d`.
 #[inline(always)]
 fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
@@ -85,7 +85,7 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     })
 }
 
-/// `t = (δ − n·o)/(n·d)` on the plane `n·x = δ`, lanes_in_range range, and for a disk lanes_in_range the rim.
+/// `t = (δ − n·o)/(n·d)` on the plane `n·x = δ`, within range, and for a disk within the rim.
 #[inline(always)]
 fn plane4(
     p: &Packet<Plain>,

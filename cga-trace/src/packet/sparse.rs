@@ -73,7 +73,7 @@ fn down4(x: Vector<F64x4>) -> ([F64x4; 3], [bool; 4]) {
 
 /// `L ∨ S` in lanes, as [`SphereShape::intersect`](crate::shapes::SphereShape) meets it:
 /// classified by the pair's square (rays and spheres normalised: weight 1), its points
-/// `P·e ∓ √(P²) e` with `e = ei ⌋ P`, ordered along the ray, the first lanes_in_range range kept.
+/// `P·e ∓ √(P²) e` with `e = ei ⌋ P`, ordered along the ray, the first within range kept.
 #[inline(always)]
 fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
     let pair = p.line & *sphere;
@@ -90,7 +90,7 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
     let ((a, a_ok), (b, b_ok)) = (down4(pe - e.scale(s)), down4(pe + e.scale(s)));
     let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
     let ab = dot(sub(b, a), p.dir).to_array();
-    // Along the ray `b` comes first where `ab < 0`; the first point lanes_in_range range is kept.
+    // Along the ray `b` comes first where `ab < 0`; the first point within range is kept.
     let (a_in, b_in) = (lanes_in_range(ta, t_min, t_max), lanes_in_range(tb, t_min, t_max));
     let ok: [bool; 4] = core::array::from_fn(|l| hit[l] & a_ok[l] & b_ok[l] & (a_in[l] | b_in[l]));
     if !ok.iter().any(|&o| o) {
@@ -106,7 +106,7 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
 }
 
 /// `L ∨ Π` in lanes, as the plane and disk shapes meet it: the flat point's point where
-/// its weight is not zero to rounding, lanes_in_range range, and for a disk lanes_in_range the rim.
+/// its weight is not zero to rounding, within range, and for a disk within the rim.
 #[inline(always)]
 fn meet_plane(
     p: &Packet<Sparse>,

@@ -1,4 +1,4 @@
-//! A disk: its plane met as a flat point, kept if point_in_range the rim.
+//! A disk: its plane met as a flat point, kept if within the rim.
 
 use super::plane::{cross_plane, flat_normal};
 use super::{Crossing, Shape, crossing_at, flat_error, point_in_range};
