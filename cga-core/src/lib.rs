@@ -131,7 +131,7 @@ pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate
 pub use intersect::Meet;
 pub use measure::{Closest, Nearest, distance};
 pub use meet::{Hit, RoundMeet};
-pub use real::Real;
+pub use real::{Real, Select};
 pub use reflect::Reflect;
 pub use spline::{Joining, Spline, SplineError, bezier};
 pub use versor::{MotorSpline, Screw, VersorError, exp, rotor_between_lines};

@@ -110,9 +110,71 @@ macro_rules! impl_real {
 
 impl_real!(f32, f64);
 
+/// Comparisons and choices made lane by lane: what code written once for one value and for a
+/// packet of lanes ([`crate::simd::F64x4`]) needs where the lanes' paths may differ. For one
+/// value a mask is a `bool` and [`Select::select`] is `if`; for lanes it is a truth value per
+/// lane and the choice is made in each (no branch). [`Real`]'s own comparisons hold only where
+/// every lane agrees; these do not.
+pub trait Select: Real {
+    /// One truth value per lane (`bool` for one value).
+    type Mask: Copy
+        + core::ops::BitAnd<Output = Self::Mask>
+        + core::ops::BitOr<Output = Self::Mask>
+        + core::ops::Not<Output = Self::Mask>;
+    /// `self < other`, lane by lane (false where either is NaN).
+    fn lt(self, other: Self) -> Self::Mask;
+    /// `self ≤ other`, lane by lane (false where either is NaN).
+    fn le(self, other: Self) -> Self::Mask;
+    /// Neither infinite nor NaN, lane by lane.
+    fn finite(self) -> Self::Mask;
+    /// `if_true` where `mask` holds, `if_false` elsewhere, lane by lane.
+    fn select(mask: Self::Mask, if_true: Self, if_false: Self) -> Self;
+    /// Whether `mask` holds in any lane.
+    fn any(mask: Self::Mask) -> bool;
+    /// Whether `mask` holds in every lane.
+    fn all(mask: Self::Mask) -> bool;
+
+    /// The smaller of the two, lane by lane, as `f64::min` takes it: `other` where `self` is
+    /// NaN.
+    #[inline(always)]
+    fn min_lanes(self, other: Self) -> Self {
+        Self::select(self.lt(other), self, other)
+    }
+}
+
+macro_rules! impl_select {
+    ($($t:ty),*) => {$(
+        impl Select for $t {
+            type Mask = bool;
+            #[inline(always)]
+            fn lt(self, other: Self) -> bool { self < other }
+            #[inline(always)]
+            fn le(self, other: Self) -> bool { self <= other }
+            #[inline(always)]
+            fn finite(self) -> bool { <$t>::is_finite(self) }
+            #[inline(always)]
+            fn select(mask: bool, if_true: Self, if_false: Self) -> Self { if mask { if_true } else { if_false } }
+            #[inline(always)]
+            fn any(mask: bool) -> bool { mask }
+            #[inline(always)]
+            fn all(mask: bool) -> bool { mask }
+        }
+    )*};
+}
+
+impl_select!(f32, f64);
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn one_value_selects_as_if_does() {
+        assert_eq!(f64::select(1.0.lt(2.0), 3.0, 4.0), 3.0);
+        assert_eq!(f64::select(f64::NAN.le(0.0), 3.0, 4.0), 4.0);
+        assert_eq!((f64::NAN.min_lanes(1.0), 0.5f64.min_lanes(1.0), 2.0f64.min_lanes(1.0)), (1.0, 0.5, 1.0));
+        assert!(!Select::finite(f64::INFINITY) && Select::finite(1.0f32));
+    }
 
     #[test]
     fn binades_are_the_powers_of_two_below() {

@@ -186,6 +186,65 @@ impl Real for F64x4 {
     }
 }
 
+/// A truth value per lane of an [`F64x4`] ([`Select`](crate::Select)).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Mask4(pub [bool; 4]);
+
+macro_rules! mask_op {
+    ($($trait:ident $method:ident $op:tt),*) => {$(
+        impl core::ops::$trait for Mask4 {
+            type Output = Mask4;
+            #[inline(always)]
+            fn $method(self, rhs: Mask4) -> Mask4 {
+                let (a, b) = (self.0, rhs.0);
+                Mask4([a[0] $op b[0], a[1] $op b[1], a[2] $op b[2], a[3] $op b[3]])
+            }
+        }
+    )*};
+}
+mask_op!(BitAnd bitand &, BitOr bitor |);
+
+impl core::ops::Not for Mask4 {
+    type Output = Mask4;
+    #[inline(always)]
+    fn not(self) -> Mask4 {
+        Mask4(self.0.map(|x| !x))
+    }
+}
+
+impl crate::Select for F64x4 {
+    type Mask = Mask4;
+    #[inline(always)]
+    fn lt(self, other: Self) -> Mask4 {
+        let (a, b) = (self.0, other.0);
+        Mask4([a[0] < b[0], a[1] < b[1], a[2] < b[2], a[3] < b[3]])
+    }
+    #[inline(always)]
+    fn le(self, other: Self) -> Mask4 {
+        let (a, b) = (self.0, other.0);
+        Mask4([a[0] <= b[0], a[1] <= b[1], a[2] <= b[2], a[3] <= b[3]])
+    }
+    #[inline(always)]
+    fn finite(self) -> Mask4 {
+        Mask4(self.0.map(f64::is_finite))
+    }
+    #[inline(always)]
+    fn select(mask: Mask4, if_true: Self, if_false: Self) -> Self {
+        let (m, a, b) = (mask.0, if_true.0, if_false.0);
+        F64x4([0, 1, 2, 3].map(|l| if m[l] { a[l] } else { b[l] }))
+    }
+    #[inline(always)]
+    fn any(mask: Mask4) -> bool {
+        let m = mask.0;
+        m[0] | m[1] | m[2] | m[3]
+    }
+    #[inline(always)]
+    fn all(mask: Mask4) -> bool {
+        let m = mask.0;
+        m[0] & m[1] & m[2] & m[3]
+    }
+}
+
 /// A generated type that packs four of itself into one of four lanes, field by field.
 pub trait Lanes: Copy {
     /// The same type over [`F64x4`].
@@ -616,6 +675,21 @@ fn not_across_iterations() {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lanes_select_each_as_one_value_does() {
+        use crate::Select;
+        let (a, b) = ([1.0, f64::NAN, 3.0, -0.5], [2.0, 0.0, 3.0, f64::INFINITY]);
+        let (x, y) = (F64x4(a), F64x4(b));
+        for l in 0..4 {
+            assert_eq!(x.lt(y).0[l], a[l].lt(b[l]));
+            assert_eq!(x.le(y).0[l], a[l].le(b[l]));
+            assert_eq!(y.finite().0[l], Select::finite(b[l]));
+            assert_eq!(F64x4::select(x.lt(y), x, y).0[l].to_bits(), f64::select(a[l] < b[l], a[l], b[l]).to_bits());
+            assert_eq!(x.min_lanes(y).0[l].to_bits(), a[l].min(b[l]).to_bits());
+        }
+        assert!(F64x4::any(x.lt(y)) && !F64x4::all(x.lt(y)) && F64x4::all(!Mask4::default()));
+    }
     use crate::{Circle, Even, Line, Motor, Rotor, Sandwich, Sphere, Translator, Vector, up};
 
     struct Sandwiched;

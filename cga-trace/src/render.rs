@@ -534,7 +534,7 @@ pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
 /// starts off the surface ([`leaving_origin`]).
 pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &ShadingPoint, error: f64) -> Ray<B::Carrier> {
     let r = reflect(ray.dir, hit.normal);
-    B::ray(leaving_origin(hit.point, hit.normal, r, offset(hit.point, ray.origin, error)), r)
+    B::ray(leaving_origin(hit.point, hit.normal, dot(hit.normal, r), offset(hit.point, ray.origin, error)), r)
 }
 
 /// What one light gives a hit before shadowing.
@@ -573,7 +573,7 @@ pub(crate) fn light_term(
     if diffuse <= 0.0 && specular <= 0.0 {
         return None;
     }
-    Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, l, offset) })
+    Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, dot(n, l), offset) })
 }
 
 #[cfg(test)]

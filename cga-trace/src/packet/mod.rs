@@ -19,7 +19,7 @@ use crate::light::{self, Light};
 use crate::material::{Material, power};
 use crate::object::Object;
 use crate::ray::Ray;
-use crate::ray::{in_range, offset};
+use crate::ray::{in_range, leaving_origin, offset};
 #[cfg(doc)]
 use crate::render::light_term;
 use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
@@ -123,14 +123,6 @@ fn select(keep: &[bool; 4], x: [F64x4; 3], other: E3) -> [F64x4; 3] {
     })
 }
 
-/// [`leaving_origin`](crate::ray::leaving_origin) in lanes: `x ± offset n`, on the side of
-/// the ray's direction, `n_dir` being `n · dir`.
-#[inline(always)]
-fn leaving_origin4(x: [F64x4; 3], n: [F64x4; 3], n_dir: F64x4, offset: F64x4) -> [F64x4; 3] {
-    let side = F64x4::new(n_dir.to_array().map(|c| if c >= 0.0 { 1.0 } else { -1.0 }));
-    add(x, scale(n, side * offset))
-}
-
 /// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane, each off its
 /// object's crossing error `errors`); the other lanes keep their ray (a zero normal reflects
 /// nothing).
@@ -148,7 +140,7 @@ fn mirror_packet<B: Packets>(
     let (x, n) = (lanes3(core::array::from_fn(|l| at(l).0)), lanes3(core::array::from_fn(|l| at(l).1)));
     let r = reflect(p.dir, n);
     let offset = offset(x, p.origin, F64x4::new(*errors));
-    B::packet(leaving_origin4(x, n, dot(n, r), offset), r)
+    B::packet(leaving_origin(x, n, dot(n, r), offset), r)
 }
 
 /// A material for lanes without a hit (their terms are not used).
@@ -360,7 +352,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
             if settings.shadows {
                 cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
                 // Unlit lanes cast a harmless ray with an empty range.
-                let origin = select(&lit, leaving_origin4(x, n, diffuse, offset), [0.0; 3]);
+                let origin = select(&lit, leaving_origin(x, n, diffuse, offset), [0.0; 3]);
                 let shadow = B::packet(origin, select(&lit, l, [0.0, 0.0, 1.0]));
                 let t_max = core::array::from_fn(|k| if lit[k] { d[k] } else { 0.0 });
                 let blocked = self.blocked_packet(&shadow, &t_max, own);
@@ -388,16 +380,8 @@ impl<'a, B: Packets> Renderer<'a, B> {
         specular: &[f64; 4],
         s: [f64; 4],
     ) -> [F64x4; 3] {
-        let attenuation = self.scene.settings.attenuation;
-        let [c0, c1, c2] = attenuation.map(F64x4::splat);
         let distance = self.scene.frame.world_length(distance);
-        // `light::attenuation` lane by lane: the same operations where the distance is finite.
-        let near = (F64x4::splat(1.0) / (c0 + c1 * distance + c2 * distance * distance)).to_array();
-        let d = distance.to_array();
-        let f_att: [f64; 4] = core::array::from_fn(|l| {
-            if d[l].is_finite() { near[l].min(1.0) } else { light::attenuation(attenuation, d[l]) }
-        });
-        let sf = F64x4::new(s) * F64x4::new(f_att);
+        let sf = F64x4::new(s) * light::attenuation(self.scene.settings.attenuation, distance);
         let (kd, ks) = (F64x4::new(m.map(|m| m.kd)), F64x4::new(m.map(|m| m.ks)));
         let (facing, shine) = (diffuse.max(F64x4::splat(0.0)), ks * F64x4::new(*specular));
         core::array::from_fn(|k| {
