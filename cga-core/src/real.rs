@@ -140,6 +140,13 @@ pub trait Select: Real {
     fn min_lanes(self, other: Self) -> Self {
         Self::select(self.lt(other), self, other)
     }
+
+    /// The larger of the two, lane by lane, as `f64::max` takes it: `other` where `self` is
+    /// NaN.
+    #[inline(always)]
+    fn max_lanes(self, other: Self) -> Self {
+        Self::select(other.lt(self), self, other)
+    }
 }
 
 macro_rules! impl_select {
@@ -173,6 +180,7 @@ mod tests {
         assert_eq!(f64::select(1.0.lt(2.0), 3.0, 4.0), 3.0);
         assert_eq!(f64::select(f64::NAN.le(0.0), 3.0, 4.0), 4.0);
         assert_eq!((f64::NAN.min_lanes(1.0), 0.5f64.min_lanes(1.0), 2.0f64.min_lanes(1.0)), (1.0, 0.5, 1.0));
+        assert_eq!((f64::NAN.max_lanes(0.0), (-0.5f64).max_lanes(0.0), 2.0f64.max_lanes(0.0)), (0.0, 0.0, 2.0));
         assert!(!Select::finite(f64::INFINITY) && Select::finite(1.0f32));
     }
 

@@ -687,6 +687,7 @@ mod tests {
             assert_eq!(y.finite().0[l], Select::finite(b[l]));
             assert_eq!(F64x4::select(x.lt(y), x, y).0[l].to_bits(), f64::select(a[l] < b[l], a[l], b[l]).to_bits());
             assert_eq!(x.min_lanes(y).0[l].to_bits(), a[l].min(b[l]).to_bits());
+            assert_eq!(x.max_lanes(y).0[l].to_bits(), a[l].max(b[l]).to_bits());
         }
         assert!(F64x4::any(x.lt(y)) && !F64x4::all(x.lt(y)) && F64x4::all(!Mask4::default()));
     }

@@ -48,3 +48,13 @@ pub fn attenuation<T: Select>(c: [f64; 3], d: T) -> T {
     let f = T::select(d.finite(), T::one() / (c0 + c1 * d + c2 * d * d), T::one() / c0);
     f.min_lanes(T::one())
 }
+
+/// One light's Blinn–Phong term (eq. 12 without the ambient and reflected parts), per colour
+/// channel: `s f_att (c k_d max(n·l, 0) + k_s spec) L`, with `sf = s f_att` the shadow and
+/// attenuation factors, `n_l = n·l` and `spec = max(n·h, 0)^q`. Lane by lane for a packet
+/// ([`Select`]): one ray and four take the same steps.
+#[inline(always)]
+pub fn blinn_phong<T: Select>(colour: [T; 3], kd: T, ks: T, n_l: T, spec: T, sf: T, light: [f64; 3]) -> [T; 3] {
+    let (facing, shine) = (n_l.max_lanes(T::zero()), ks * spec);
+    core::array::from_fn(|k| sf * (colour[k] * kd * facing + shine) * T::from_f64(light[k]))
+}

@@ -8,7 +8,7 @@
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
-use crate::light::{Light, attenuation};
+use crate::light::{Light, attenuation, blinn_phong};
 use crate::object::Object;
 use crate::ray::{Ray, crosses, leaving_origin, offset};
 use crate::scene::Scene;
@@ -356,8 +356,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let (settings, m) = (&self.scene.settings, &object.material);
         // Attenuation is in world units; the frame's are `frame.scale` of them.
         let f_att = attenuation(settings.attenuation, self.scene.frame.world_length(term.distance));
-        for ((out, c), l) in colour.iter_mut().zip(m.colour).zip(light.colour) {
-            *out += s * f_att * (c * m.kd * term.diffuse.max(0.0) + m.ks * term.specular) * l;
+        let term = blinn_phong(m.colour, m.kd, m.ks, term.diffuse, term.specular, s * f_att, light.colour);
+        for (out, t) in colour.iter_mut().zip(term) {
+            *out += t;
         }
     }
 

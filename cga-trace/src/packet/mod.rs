@@ -24,7 +24,6 @@ use crate::ray::{in_range, leaving_origin, offset};
 use crate::render::light_term;
 use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
 use crate::shapes::{Crossing, ShadingPoint};
-use cga_core::Real;
 use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, unit};
 use cga_core::simd::F64x4;
 #[cfg(target_arch = "x86_64")]
@@ -383,10 +382,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
         let distance = self.scene.frame.world_length(distance);
         let sf = F64x4::new(s) * light::attenuation(self.scene.settings.attenuation, distance);
         let (kd, ks) = (F64x4::new(m.map(|m| m.kd)), F64x4::new(m.map(|m| m.ks)));
-        let (facing, shine) = (diffuse.max(F64x4::splat(0.0)), ks * F64x4::new(*specular));
-        core::array::from_fn(|k| {
-            let c = F64x4::new(m.map(|m| m.colour[k]));
-            sf * (c * kd * facing + shine) * F64x4::splat(light.colour[k])
-        })
+        let colour = core::array::from_fn(|k| F64x4::new(m.map(|m| m.colour[k])));
+        light::blinn_phong(colour, kd, ks, diffuse, F64x4::new(*specular), sf, light.colour)
     }
 }
