@@ -2,7 +2,7 @@
 //! objects with — the CGA line they lie on for the CGA back ends.
 
 use cga_core::Line;
-use cga_core::euclid::{E3, add, dot, scale, sub, tolerance, unit};
+use cga_core::euclid::{E3, add, dot, reflect, scale, sub, tolerance, unit};
 use cga_core::{Real, Select};
 
 /// A ray `o + t d`, `t > 0`, carried by `line`: by default the normalised CGA line from `o`
@@ -86,6 +86,16 @@ pub fn offset<T: Real>(x: E3<T>, origin: E3<T>, error: T) -> T {
 pub fn leaving_origin<T: Select>(x: E3<T>, n: E3<T>, n_dir: T, offset: T) -> E3<T> {
     let side = T::select(T::zero().le(n_dir), T::one(), -T::one());
     add(x, scale(n, side * offset))
+}
+
+/// The mirror bounce of a ray of direction `dir` from `origin` at its hit `x` (unit normal
+/// `n`) on an object of crossing error `error`: the reflected direction `r = d − 2(d·n)n` and
+/// where the bounce starts, [`leaving_origin`] off the surface by [`offset`]. Lane by lane
+/// for a packet ([`Select`]): one ray and four take the same steps.
+#[inline(always)]
+pub fn mirror<T: Select>(dir: E3<T>, origin: E3<T>, x: E3<T>, n: E3<T>, error: T) -> (E3<T>, E3<T>) {
+    let r = reflect(dir, n);
+    (leaving_origin(x, n, dot(n, r), offset(x, origin, error)), r)
 }
 
 /// Whether the ray passes through the sphere `(centre, radius)` within `(t_min, t_max)`.

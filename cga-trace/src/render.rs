@@ -10,10 +10,11 @@ use crate::bvh::Bvh;
 use crate::film::Film;
 use crate::light::{Light, attenuation, blinn_phong};
 use crate::object::Object;
-use crate::ray::{Ray, crosses, leaving_origin, offset};
+use crate::ray::{Ray, crosses, leaving_origin, mirror, offset};
 use crate::scene::Scene;
 use crate::shapes::{Crossing, ShadingPoint};
-use cga_core::euclid::{E3, dot, reflect, scale, unit};
+use cga_core::Select;
+use cga_core::euclid::{E3, dot, scale, unit};
 use rayon::prelude::*;
 use smallvec::SmallVec;
 use std::ops::Range;
@@ -534,8 +535,16 @@ pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
 /// `dir` and the normal are unit, so the reflected direction is (to rounding), and the ray
 /// starts off the surface ([`leaving_origin`]).
 pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &ShadingPoint, error: f64) -> Ray<B::Carrier> {
-    let r = reflect(ray.dir, hit.normal);
-    B::ray(leaving_origin(hit.point, hit.normal, dot(hit.normal, r), offset(hit.point, ray.origin, error)), r)
+    let (origin, r) = mirror(ray.dir, ray.origin, hit.point, hit.normal, error);
+    B::ray(origin, r)
+}
+
+/// Whether a light adds anything at a hit: it lies ahead (`distance > 0`; not at the hit point,
+/// not NaN) and in front of the surface for the diffuse or the specular term. Lane by lane for
+/// a packet ([`Select`]): one ray and four decide the same way.
+#[inline(always)]
+pub(crate) fn lights<T: Select>(distance: T, diffuse: T, specular: T) -> T::Mask {
+    T::zero().lt(distance) & !(diffuse.le(T::zero()) & specular.le(T::zero()))
 }
 
 /// What one light gives a hit before shadowing.
@@ -566,12 +575,9 @@ pub(crate) fn light_term(
     let (n, v) = (hit.normal, dir.map(|x| -x));
     // One square root for the distance and the direction.
     let (l, distance) = light.toward(hit.point);
-    if distance.is_nan() || distance <= 0.0 {
-        return None;
-    }
     let (diffuse, h) = (dot(n, l), unit([l[0] + v[0], l[1] + v[1], l[2] + v[2]]));
     let specular = h.map_or(0.0, |h| m.specular(dot(n, h)));
-    if diffuse <= 0.0 && specular <= 0.0 {
+    if !lights(distance, diffuse, specular) {
         return None;
     }
     Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, dot(n, l), offset) })

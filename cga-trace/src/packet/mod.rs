@@ -19,12 +19,12 @@ use crate::light::{self, Light};
 use crate::material::{Material, power};
 use crate::object::Object;
 use crate::ray::Ray;
-use crate::ray::{in_range, leaving_origin, offset};
+use crate::ray::{in_range, leaving_origin, mirror, offset};
 #[cfg(doc)]
 use crate::render::light_term;
-use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
+use crate::render::{Layers, RayCounts, Renderer, lights, sample_offset, sum_layers};
 use crate::shapes::{Crossing, ShadingPoint};
-use cga_core::euclid::{E3, add, dot, norm, reflect, scale, sub, unit};
+use cga_core::euclid::{E3, add, dot, norm, scale, sub, unit};
 use cga_core::simd::F64x4;
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
@@ -137,9 +137,8 @@ fn mirror_packet<B: Packets>(
         _ => (p.rays[l].origin, [0.0; 3]),
     };
     let (x, n) = (lanes3(core::array::from_fn(|l| at(l).0)), lanes3(core::array::from_fn(|l| at(l).1)));
-    let r = reflect(p.dir, n);
-    let offset = offset(x, p.origin, F64x4::new(*errors));
-    B::packet(leaving_origin(x, n, dot(n, r), offset), r)
+    let (origin, r) = mirror(p.dir, p.origin, x, n, F64x4::new(*errors));
+    B::packet(origin, r)
 }
 
 /// A material for lanes without a hit (their terms are not used).
@@ -340,10 +339,10 @@ impl<'a, B: Packets> Renderer<'a, B> {
             let (l, distance) = light.toward(x);
             let diffuse = dot(n, l);
             let specular = specular4(&m, n, add(l, v));
-            let (d, c) = (distance.to_array(), diffuse.to_array());
+            let d = distance.to_array();
             // Where `light_term` gives a term.
-            let lit: [bool; 4] =
-                core::array::from_fn(|k| hits[k].is_some() && d[k] > 0.0 && !(c[k] <= 0.0 && specular[k] <= 0.0));
+            let lighting = lights(distance, diffuse, F64x4::new(specular)).0;
+            let lit: [bool; 4] = core::array::from_fn(|k| hits[k].is_some() && lighting[k]);
             if !lit.iter().any(|&b| b) {
                 continue;
             }
