@@ -7,7 +7,7 @@
 //! objects built from parameters take the orientation of the same construction from points.
 
 use crate::euclid::{E3, add, cross, dot, norm, rescaled_differences, scale, sub, tolerance, unit};
-use crate::{Bivector, Circle, Infinity, LeftContraction, Line, Plane, Real, Sphere, Vector};
+use crate::{Bivector, Circle, Infinity, LeftContraction, Line, Plane, Real, Select, Sphere, Vector};
 
 /// Why an object cannot be built or read back.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
@@ -76,6 +76,20 @@ pub fn down<T: Real>(p: Vector<T>) -> Result<E3<T>> {
     let inv = T::one() / weight;
     let point = if inv.is_finite() { scale(x, inv) } else { x.map(|v| v / weight) };
     if weight != T::zero() && point.iter().all(|v| v.is_finite()) { Ok(point) } else { Err(GeometryError::AtInfinity) }
+}
+
+/// [`down`] lane by lane ([`Select`]): the Euclidean point and where there is one (a weight
+/// not zero and a finite quotient, as `down` decides it: where `1/w` overflows, the quotient
+/// `x/w` itself). For one value the mask is `down(p).is_ok()`.
+#[inline(always)]
+pub fn down_lanes<T: Select>(p: Vector<T>) -> (E3<T>, T::Mask) {
+    let x = [p.e1, p.e2, p.e3];
+    let weight = p.eo; // −X · ei
+    let inv = T::one() / weight;
+    let finite = inv.finite();
+    let point = if T::all(finite) { scale(x, inv) } else { x.map(|v| T::select(finite, v * inv, v / weight)) };
+    let nonzero = weight.lt(T::zero()) | T::zero().lt(weight);
+    (point, nonzero & point[0].finite() & point[1].finite() & point[2].finite())
 }
 
 /// `x` of a point of unit weight (`−X · ei = 1`: `up(x)`, and its image under any rigid

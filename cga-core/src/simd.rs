@@ -691,6 +691,36 @@ mod tests {
         }
         assert!(F64x4::any(x.lt(y)) && !F64x4::all(x.lt(y)) && F64x4::all(!Mask4::default()));
     }
+
+    #[test]
+    fn down_in_lanes_is_down_in_each_lane() {
+        use crate::{Select, Vector, down, down_lanes};
+        // Ordinary weights, zero, a weight whose inverse overflows, a NaN, a quotient that
+        // overflows, and a negative weight.
+        let cases = [
+            Vector { e1: 1.0, e2: -2.0, e3: 3.0, eo: 2.0, ei: 0.0 },
+            Vector { e1: 1.0, e2: 0.0, e3: 0.0, eo: 0.0, ei: 1.0 },
+            Vector { e1: 1e-310, e2: 2e-310, e3: 0.0, eo: 1e-310, ei: 0.0 },
+            Vector { e1: 1.0, e2: 0.0, e3: 0.0, eo: f64::NAN, ei: 0.0 },
+            Vector { e1: 1e300, e2: 0.0, e3: 0.0, eo: 1e-300, ei: 0.0 },
+            Vector { e1: 4.0, e2: 6.0, e3: 8.0, eo: -2.0, ei: 0.0 },
+            Vector { e1: 3.0, e2: 1.0, e3: 2.0, eo: 0.5, ei: 0.0 },
+            Vector { e1: 3.0, e2: 1.0, e3: 2.0, eo: 1.0, ei: 0.0 },
+        ];
+        for four in cases.chunks(4) {
+            let (points, ok) = down_lanes(Vector::pack([four[0], four[1], four[2], four[3]]));
+            for (l, v) in four.iter().enumerate() {
+                let (point, valid) = down_lanes(*v);
+                assert_eq!(valid, down(*v).is_ok(), "{v:?}");
+                assert_eq!(ok.0[l], valid, "lane {l}: {v:?}");
+                if let Ok(want) = down(*v) {
+                    assert_eq!(point.map(f64::to_bits), want.map(f64::to_bits));
+                    assert_eq!(points.map(|c| c.0[l].to_bits()), want.map(f64::to_bits), "lane {l}");
+                }
+            }
+            assert_eq!(F64x4::any(ok), ok.0.iter().any(|&b| b));
+        }
+    }
     use crate::{Circle, Even, Line, Motor, Rotor, Sandwich, Sphere, Translator, Vector, up};
 
     struct Sandwiched;

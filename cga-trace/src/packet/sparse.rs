@@ -10,7 +10,7 @@ use crate::ray::Ray;
 use crate::shapes::Crossing;
 use cga_core::euclid::{E3, dot, sub, tolerance};
 use cga_core::simd::{F64x4, Lanes};
-use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, Vector, ei};
+use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, down_lanes, ei};
 
 impl Packets for Sparse {
     type Lanes = Line<F64x4>;
@@ -48,29 +48,6 @@ fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
     dot(sub(x, p.origin), p.dir)
 }
 
-/// `down(X)` in lanes: the Euclidean point and whether there is one, as [`cga_core::down`]
-/// decides it lane by lane (a weight not zero and a finite quotient; where `1/w` overflows,
-/// the quotient `x/w` itself, lane by lane).
-fn down4(x: Vector<F64x4>) -> ([F64x4; 3], [bool; 4]) {
-    let inv = F64x4::splat(1.0) / x.eo;
-    let mut point = [x.e1 * inv, x.e2 * inv, x.e3 * inv];
-    let (w, inv) = (x.eo.to_array(), inv.to_array());
-    if !inv.iter().all(|i| i.is_finite()) {
-        let e = [x.e1.to_array(), x.e2.to_array(), x.e3.to_array()];
-        for (k, p) in point.iter_mut().enumerate() {
-            let mut lanes = p.to_array();
-            for l in (0..4).filter(|&l| !inv[l].is_finite()) {
-                lanes[l] = e[k][l] / w[l];
-            }
-            *p = F64x4::new(lanes);
-        }
-    }
-    // `x · 0` is 0 for a finite x and NaN otherwise: all three finite where the sum is 0.
-    let zero = F64x4::splat(0.0);
-    let finite = (point[0] * zero + point[1] * zero + point[2] * zero).to_array();
-    (point, core::array::from_fn(|l| (w[l] != 0.0) & (finite[l] == 0.0)))
-}
-
 /// `L ∨ S` in lanes, as [`SphereShape::intersect`](crate::shapes::SphereShape) meets it:
 /// classified by the pair's square (rays and spheres normalised: weight 1), its points
 /// `P·e ∓ √(P²) e` with `e = ei ⌋ P`, ordered along the ray, the first within range kept.
@@ -87,7 +64,8 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
     let pe = pair | e;
     // The double point of a tangent meet: `√P² = 0` in the same formula.
     let s = F64x4::new(square.map(|q| if q.abs() <= tol { 0.0 } else { q.sqrt() }));
-    let ((a, a_ok), (b, b_ok)) = (down4(pe - e.scale(s)), down4(pe + e.scale(s)));
+    let ((a, a_ok), (b, b_ok)) = (down_lanes(pe - e.scale(s)), down_lanes(pe + e.scale(s)));
+    let (a_ok, b_ok) = (a_ok.0, b_ok.0);
     let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
     let ab = dot(sub(b, a), p.dir).to_array();
     // Along the ray `b` comes first where `ab < 0`; the first point within range is kept.
