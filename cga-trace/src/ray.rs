@@ -59,10 +59,11 @@ impl<C> Ray<C> {
 }
 
 /// Whether the ray parameter `t` lies in the open range `(t_min, t_max)` a ray is searched
-/// over: the one test of whether a crossing counts, for every shape, back end and lane.
+/// over: the one test of whether a crossing counts, for every shape, back end and lane
+/// ([`Select`]: a `bool` for one ray, a mask for a packet).
 #[inline(always)]
-pub fn in_range(t: f64, t_min: f64, t_max: f64) -> bool {
-    (t > t_min) & (t < t_max)
+pub fn in_range<T: Select>(t: T, t_min: T, t_max: T) -> T::Mask {
+    t_min.lt(t) & t.lt(t_max)
 }
 
 /// How far off a surface a secondary ray starts when it leaves the crossing `x` of a ray from

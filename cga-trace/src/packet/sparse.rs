@@ -3,14 +3,14 @@
 //! [`PlaneShape`](crate::shapes::PlaneShape)'s meets operation for operation, so the same
 //! bits; other shapes one lane at a time through their own code.
 
-use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes_in_range};
+use super::{Crossings, Packet, Packets, crossings, inside_rim, lane};
 use crate::backend::{Backend, Sparse, SparseShape};
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::Crossing;
+use crate::shapes::{Crossing, sphere_crossing};
 use cga_core::euclid::{E3, dot, sub, tolerance};
 use cga_core::simd::{F64x4, Lanes};
-use cga_core::{InnerProduct, LeftContraction, Line, Plane, Sphere, down_lanes, ei};
+use cga_core::{Line, Plane, Select, Sphere};
 
 impl Packets for Sparse {
     type Lanes = Line<F64x4>;
@@ -48,36 +48,20 @@ fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
     dot(sub(x, p.origin), p.dir)
 }
 
-/// `L ∨ S` in lanes, as [`SphereShape::intersect`](crate::shapes::SphereShape) meets it:
-/// classified by the pair's square (rays and spheres normalised: weight 1), its points
-/// `P·e ∓ √(P²) e` with `e = ei ⌋ P`, ordered along the ray, the first within range kept.
+/// `L ∨ S` in lanes: [`sphere_crossing`], which [`SphereShape::intersect`](crate::shapes::SphereShape)
+/// runs for one ray.
 #[inline(always)]
 fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
-    let pair = p.line & *sphere;
-    let square = pair.inner(pair).s.to_array();
-    let tol = tolerance(1.0);
-    let hit = square.map(|q| q.abs() <= tol || q > 0.0);
-    if !hit.iter().any(|&h| h) {
+    let range = (F64x4::new(*t_min), F64x4::new(*t_max));
+    let c = sphere_crossing(&p.line, sphere, (p.origin, p.dir), range);
+    if !F64x4::any(c.found) {
         return [None; 4];
     }
-    let e = ei::<F64x4>().lc(pair);
-    let pe = pair | e;
-    // The double point of a tangent meet: `√P² = 0` in the same formula.
-    let s = F64x4::new(square.map(|q| if q.abs() <= tol { 0.0 } else { q.sqrt() }));
-    let ((a, a_ok), (b, b_ok)) = (down_lanes(pe - e.scale(s)), down_lanes(pe + e.scale(s)));
-    let (a_ok, b_ok) = (a_ok.0, b_ok.0);
-    let (ta, tb) = (t_of4(p, a).to_array(), t_of4(p, b).to_array());
-    let ab = dot(sub(b, a), p.dir).to_array();
-    // Along the ray `b` comes first where `ab < 0`; the first point within range is kept.
-    let (a_in, b_in) = (lanes_in_range(ta, t_min, t_max), lanes_in_range(tb, t_min, t_max));
-    let ok: [bool; 4] = core::array::from_fn(|l| hit[l] & a_ok[l] & b_ok[l] & (a_in[l] | b_in[l]));
-    if !ok.iter().any(|&o| o) {
-        return [None; 4];
-    }
+    let [a, b] = &c.points;
+    let (ta, tb) = (c.t[0].to_array(), c.t[1].to_array());
     core::array::from_fn(|l| {
-        let take_b = if ab[l] < 0.0 { b_in[l] } else { !a_in[l] };
-        ok[l].then(|| {
-            let (t, x) = if take_b { (tb[l], &b) } else { (ta[l], &a) };
+        c.found.0[l].then(|| {
+            let (t, x) = if c.second.0[l] { (tb[l], b) } else { (ta[l], a) };
             Crossing { t, point: lane(x, l), alpha: None }
         })
     })

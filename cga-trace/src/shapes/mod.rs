@@ -23,6 +23,7 @@ use core::fmt::Debug;
 pub use disk::DiskShape;
 pub use plane::PlaneShape;
 pub use sphere::SphereShape;
+pub(crate) use sphere::sphere_crossing;
 pub use triangle::TriangleShape;
 pub(crate) use triangle::inside_triangle;
 
