@@ -19,7 +19,7 @@ use crate::light::{self, Light};
 use crate::material::{Material, power};
 use crate::object::Object;
 use crate::ray::Ray;
-use crate::ray::{in_range, leaving_origin, mirror, offset};
+use crate::ray::{leaving_origin, mirror, offset};
 #[cfg(doc)]
 use crate::render::light_term;
 use crate::render::{Layers, RayCounts, Renderer, lights, sample_offset, sum_layers};
@@ -84,14 +84,6 @@ fn lane(x: &[F64x4; 3], l: usize) -> E3 {
 #[inline(always)]
 fn lanes3(v: [E3; 4]) -> [F64x4; 3] {
     core::array::from_fn(|k| F64x4::new([v[0][k], v[1][k], v[2][k], v[3][k]]))
-}
-
-/// Which lanes' `t` lie within `(t_min, t_max)`: all four tests at once, without short
-/// circuits (they vectorise). For a sphere's two roots; a plane's one root is tested with
-/// its other conditions in one expression (1.4 % fewer instructions in the sparse back end).
-#[inline(always)]
-fn lanes_in_range(t: [f64; 4], t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
-    core::array::from_fn(|l| in_range(t[l], t_min[l], t_max[l]))
 }
 
 /// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where

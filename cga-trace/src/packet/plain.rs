@@ -2,9 +2,10 @@
 //! [`Plain`] in lanes — the same operations in the same order as glam's, so the same bits;
 //! other shapes one lane at a time.
 
-use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes_in_range, lanes3};
+use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes3};
 use crate::backend::{Backend, Plain, PlainShape};
 use crate::camera::Camera;
+use crate::ray::in_range;
 use crate::shapes::Crossing;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::F64x4;
@@ -70,8 +71,10 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
         return [None; 4];
     }
     let s = F64x4::new(d.map(f64::sqrt));
-    let (near, far) = ((-b - s).to_array(), (-b + s).to_array());
-    let (near_in, far_in) = (lanes_in_range(near, t_min, t_max), lanes_in_range(far, t_min, t_max));
+    let (near, far) = (-b - s, -b + s);
+    let range = (F64x4::new(*t_min), F64x4::new(*t_max));
+    let (near_in, far_in) = (in_range(near, range.0, range.1).0, in_range(far, range.0, range.1).0);
+    let (near, far) = (near.to_array(), far.to_array());
     let ok: [bool; 4] = core::array::from_fn(|l| (d[l] >= 0.0) & (near_in[l] | far_in[l]));
     if !ok.iter().any(|&o| o) {
         return [None; 4];
