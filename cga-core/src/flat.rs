@@ -8,6 +8,8 @@
 //! nonzero it is that flat (with `A`'s orientation, unit weight instead of `cos θ`), and where
 //! it vanishes it is the point or line the blade cannot express. Each flat is read back
 //! once and the rest is Euclid's, so the projection is as accurate as the read-backs.
+//! [`Flat::reject_from`] gives the other part, `x − P(x)`, for which the blade formula
+//! `(A ∧ B) B⁻¹` is zero for every pair of flats.
 
 use crate::conformal::{GeometryError, Result, down};
 use crate::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub};
@@ -134,6 +136,43 @@ impl<T: Real> Flat<T> {
         })
     }
 
+    /// The rejection of this flat from the flat `from`, the part of it perpendicular to
+    /// `from`: the image of the flat under `x ↦ x − P(x)`, where `P` is the orthogonal
+    /// projection onto `from` ([`Flat::project_onto`]), so that every point of this flat is
+    /// `P(x) + R(x)` with `P(x)` in the projection and `R(x)` in the rejection. As
+    /// [`Vector::reject_from`] gives a point's offset vector `x − P(x)`, the rejection lives
+    /// in offsets: with `q` a point of `from`, it is `x − q` projected onto the orthogonal
+    /// complement of `from`'s directions through the origin (the plane normal to a line,
+    /// the line along a plane's normal, all of space for a point). A line crossing a plane
+    /// rejects to the line along the normal through the origin, a line parallel to it to
+    /// the one offset vector; a flat parallel to `from` rejects to a point. (The blade
+    /// formula `(A ∧ B) B⁻¹` vanishes for every pair of flats, both holding `∞`.)
+    pub fn reject_from<B: AsFlat<T>>(&self, from: &B) -> Result<Flat<T>> {
+        let target = from.flat()?;
+        let b = target.frame()?;
+        let origin = [T::zero(); 3];
+        let moved = self.translated(sub(origin, b.point))?;
+        match target {
+            Flat::Point(_) => Ok(moved),
+            Flat::Line(_) => moved.project_onto(&Flat::Plane(Plane::from_point_normal(origin, b.dirs[0])?)),
+            Flat::Plane(_) => {
+                moved.project_onto(&Flat::Line(Line::from_point_direction(origin, cross(b.dirs[0], b.dirs[1]))?))
+            }
+        }
+    }
+
+    /// The flat moved by the vector `t`.
+    fn translated(&self, t: E3<T>) -> Result<Flat<T>> {
+        Ok(match self {
+            Flat::Point(x) => Flat::Point(add(*x, t)),
+            Flat::Line(l) => Flat::Line(Line::from_point_direction(add(l.point()?, t), l.direction()?)?),
+            Flat::Plane(p) => {
+                let (n, d) = p.normal_offset()?;
+                Flat::Plane(Plane::from_point_normal(add(scale(n, d), t), n)?)
+            }
+        })
+    }
+
     /// The flat's dimension: 0, 1 or 2.
     pub fn dimension(&self) -> usize {
         match self {
@@ -152,6 +191,13 @@ macro_rules! project_flats {
             /// and the smaller image it cannot express where it vanishes.
             pub fn project_flat_onto<B: AsFlat<T>>(&self, onto: &B) -> Result<Flat<T>> {
                 self.flat()?.project_onto(onto)
+            }
+
+            /// The rejection of this flat from the flat `from` (a point, line or plane), as
+            /// [`Flat::reject_from`]: the image under `x ↦ x − P(x)`, `P` the orthogonal
+            /// projection onto `from`.
+            pub fn reject_flat_from<B: AsFlat<T>>(&self, from: &B) -> Result<Flat<T>> {
+                self.flat()?.reject_from(from)
             }
         }
     )*};
@@ -205,6 +251,29 @@ mod tests {
             panic!("a plane")
         };
         assert_eq!(p.normal_offset().unwrap(), ([0.0, 0.0, -1.0], 0.0));
+    }
+
+    #[test]
+    fn rejections_are_the_offsets_perpendicular_to_the_target() {
+        let plane_z = plane([0.0, 0.0, 2.0], [0.0, 0.0, 1.0]);
+        // A line crossing a plane: every offset along the normal, a line through the origin.
+        let Flat::Line(l) = line([1.0, 2.0, 0.0], [1.0, 0.0, 1.0]).reject_flat_from(&plane_z).unwrap() else {
+            panic!("a line")
+        };
+        assert_eq!((l.point().unwrap(), l.direction().unwrap().map(f64::abs)), ([0.0; 3], [0.0, 0.0, 1.0]));
+        // A line parallel to the plane: its one offset.
+        let Flat::Point(x) = line([1.0, 2.0, 5.0], [1.0, 1.0, 0.0]).reject_flat_from(&plane_z).unwrap() else {
+            panic!("a point")
+        };
+        assert!(crate::distance(x, [0.0, 0.0, 3.0]) < 1e-15, "{x:?}");
+        // A plane from a line in it: the plane's offsets from the line, normal to the line.
+        let Flat::Line(l) = plane_z.reject_flat_from(&line([0.0, 1.0, 2.0], [1.0, 0.0, 0.0])).unwrap() else {
+            panic!("a line")
+        };
+        assert_eq!((l.point().unwrap(), l.direction().unwrap().map(f64::abs)), ([0.0; 3], [0.0, 1.0, 0.0]));
+        // From a point: the flat moved by minus the point.
+        let got = line([1.0, 2.0, 3.0], [0.0, 1.0, 0.0]).reject_flat_from(&[1.0, 0.0, 3.0]).unwrap();
+        assert_eq!(got, Flat::Line(line([0.0, 0.0, 0.0], [0.0, 1.0, 0.0])));
     }
 
     #[test]

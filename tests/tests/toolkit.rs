@@ -665,6 +665,80 @@ fn flats_project_onto_flats_the_same_way_anywhere_and_the_image_lies_in_the_targ
     );
 }
 
+/// A random point of the flat, within about `r` of its own point.
+fn point_on(f: &Flat, rng: &mut Rng, r: f64) -> E3 {
+    match f {
+        Flat::Point(x) => *x,
+        Flat::Line(l) => {
+            let t = rng.range(-r, r);
+            add(l.point().unwrap(), l.direction().unwrap().map(|c| c * t))
+        }
+        Flat::Plane(p) => {
+            let ((n, d), t) = (p.normal_offset().unwrap(), rng.range(-r, r));
+            let along = v(rng.direction()).reject_from(v(n)).to_array();
+            add(n.map(|c| c * d), along.map(|c| c * t))
+        }
+    }
+}
+
+#[test]
+fn flats_split_into_projection_and_rejection_the_same_way_anywhere() {
+    let mut rng = Rng::new(25);
+    let mut dimensions = [[0usize; 3]; 3];
+    for case in 0..600 {
+        let (p, t_dir) = (rng.e3(-3.0, 3.0), rng.direction());
+        let pick = |rng: &mut Rng, n: f64| (rng.unit() * n) as usize;
+        let target = match pick(&mut rng, 3.0) {
+            0 => Flat::Point(rng.e3(-2.0, 2.0)),
+            1 => Flat::Line(Line::new(rng.e3(-2.0, 2.0), t_dir).unwrap()),
+            _ => Flat::Plane(Plane::new(rng.e3(-2.0, 2.0), t_dir).unwrap()),
+        };
+        // A third of the sources exactly along or across the target's direction.
+        let d = match pick(&mut rng, 3.0) {
+            0 => rng.direction(),
+            1 => t_dir,
+            _ => v(t_dir).cross(v(rng.direction())).normalize().to_array(),
+        };
+        let source = match pick(&mut rng, 3.0) {
+            0 => Flat::Point(p),
+            1 => Flat::Line(Line::new(p, d).unwrap()),
+            _ => Flat::Plane(Plane::new(p, d).unwrap()),
+        };
+        let rejection = source.reject_from(&target).unwrap();
+        dimensions[source.dimension()][rejection.dimension()] += 1;
+        // Every point x of the source is P(x) + R(x): x − P(x) lies on the rejection, and
+        // the rejection is perpendicular to the target's directions.
+        for _ in 0..4 {
+            let x = point_on(&source, &mut rng, 5.0);
+            let Flat::Point(foot) = Flat::Point(x).project_onto(&target).unwrap() else { panic!("a point's image") };
+            let offset = (v(x) - v(foot)).to_array();
+            let Flat::Point(on) = Flat::Point(offset).project_onto(&rejection).unwrap() else { panic!("a point") };
+            assert!(distance(on, offset) <= 1e-14 * 20.0, "case {case}: x − P(x) is {:e} off", distance(on, offset));
+            let r = point_on(&rejection, &mut rng, 5.0);
+            let across = match target {
+                Flat::Point(_) => 0.0,
+                Flat::Line(_) => v(r).dot(v(t_dir)).abs(),
+                Flat::Plane(_) => v(r).cross(v(t_dir)).length(),
+            };
+            assert!(
+                across <= 1e-14 * 20.0,
+                "case {case}: the rejection reaches along the target by {across:e}: {rejection:?}"
+            );
+        }
+        // Moved up to 1e3 away and scaled by 1e-3 … 1e3: the rejection, a set of offsets, is
+        // rotated and scaled, not moved.
+        let (m, s) = (random_motor(&mut rng, 1e3), rng.decades(-3.0, 3.0));
+        let far = moved_flat(&source, &m, s).reject_from(&moved_flat(&target, &m, s)).unwrap();
+        let turned = Motor::from_rotor_translation(m.rotor(), [0.0; 3]);
+        same_flat(&far, &moved_flat(&rejection, &turned, s), s * (1e3 + 10.0), 1e-13, "moved and scaled");
+    }
+    // Point → point; line → point, line; plane → point, line, plane.
+    assert!(
+        [(0, 0), (1, 0), (1, 1), (2, 0), (2, 1), (2, 2)].iter().all(|&(a, b)| dimensions[a][b] > 0),
+        "{dimensions:?}"
+    );
+}
+
 #[test]
 fn point_pairs_meet_objects_in_their_points_on_them_the_same_way_anywhere() {
     let mut rng = Rng::new(2024);
