@@ -4,7 +4,7 @@
 //! `DAffine3::transform_point3`), which is what the README's figure quotes: on a shared,
 //! noisy machine only ratios measured side by side mean anything.
 
-use cga_core::simd::{self, F64x4, Kernel};
+use cga_core::simd::{self, F64x4, Kernel, Lane};
 use cga_core::{Motor, Rotor, Sandwich, Vector, down, up};
 use criterion::{Criterion, Throughput};
 use glam::{DAffine3, DQuat, DVec3};
@@ -104,15 +104,15 @@ fn interleaved(m: Motor, points: &[[f64; 3]]) {
     }
 }
 
-/// `M X M̃` on four conformal points at once, the motor given at run time.
-struct MoveBy(Motor<F64x4>);
+/// `M X M̃` on many conformal points at once, the motor given at run time.
+struct MoveBy(Motor);
 
 impl Kernel for MoveBy {
     type Input = Vector;
     type Output = Vector;
     #[inline(always)]
-    fn apply(&self, x: Vector<F64x4>) -> Vector<F64x4> {
-        self.0.sandwich(x)
+    fn apply<L: Lane>(&self, x: Vector<L>) -> Vector<L> {
+        simd::splat::<Motor, L>(self.0).sandwich(x)
     }
 }
 
@@ -122,7 +122,7 @@ type Conformal = (&'static str, Box<dyn Fn(&[Vector], &mut [Vector])>);
 /// `simd::run` with a kernel and through `simd::map` with a closure: the closure form is
 /// meant to cost nothing over the kernel.
 fn conformal_methods(m: Motor) -> Vec<Conformal> {
-    let lanes = simd::splat(m);
+    let lanes = simd::splat::<Motor, F64x4>(m);
     vec![
         (
             "sandwich, one at a time",
@@ -132,10 +132,7 @@ fn conformal_methods(m: Motor) -> Vec<Conformal> {
                 }
             }),
         ),
-        (
-            "simd::run(MoveBy)",
-            Box::new(move |x: &[Vector], out: &mut [Vector]| simd::run(&MoveBy(lanes), x, out).unwrap()),
-        ),
+        ("simd::run(MoveBy)", Box::new(move |x: &[Vector], out: &mut [Vector]| simd::run(&MoveBy(m), x, out).unwrap())),
         (
             "simd::map(|x| m.sandwich(x))",
             Box::new(move |x: &[Vector], out: &mut [Vector]| {

@@ -9,7 +9,7 @@ pub fn scene_path(name: &str) -> std::path::PathBuf {
 /// The six operations of the Versor comparison as [`cga_core::simd::Kernel`]s, for
 /// `peers.rs` and `batch_timing.rs`.
 pub mod kernels {
-    use cga_core::simd::{F64x4, Kernel, Lanes};
+    use cga_core::simd::{Kernel, Lane, Over};
     use cga_core::{Circle, Even, Line, Motor, PointPair, Rotor, Sandwich, Sphere, Vector};
 
     /// A [`Kernel`] named `$name` from `$input` to `$output` computing `$body` over `$x`.
@@ -22,7 +22,7 @@ pub mod kernels {
                 type Input = $input;
                 type Output = $output;
                 #[inline(always)]
-                fn apply(&self, $x: <$input as Lanes>::Packed) -> $output<F64x4> {
+                fn apply<L: Lane>(&self, $x: Over<$input, L>) -> $output<L> {
                     $body
                 }
             }

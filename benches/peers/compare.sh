@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Ours against Versor (github.com/wolftype/versor) on six operations, interleaved: the
-# harness versor.cpp built for baseline x86-64 and with -march=native, and our
+# harness versor.cpp built for baseline x86-64 and with -march=native, in double precision
+# like ours (-DVSR_PRECISION_DOUBLE: Versor's scalar is float unless that is defined, though
+# its header's comment says double), the native build also in Versor's default float for
+# reference, and our
 # examples/batch_timing (baseline build; the packets dispatch to AVX2 at run time), each run
 # ROUNDS times in turn; prints the table of medians for benches/README.md, with each
 # operation's floor (its multiplications at the core's peak rate, from batch_timing) and the
@@ -18,8 +21,9 @@ rounds=${ROUNDS:-5}
 mkdir -p "$out"
 cxx=${CXX:-g++}
 
-"$cxx" -O3 -std=c++14 -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-baseline"
-"$cxx" -O3 -std=c++14 -march=native -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-native"
+"$cxx" -O3 -std=c++14 -DVSR_PRECISION_DOUBLE -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-baseline"
+"$cxx" -O3 -std=c++14 -DVSR_PRECISION_DOUBLE -march=native -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-native"
+"$cxx" -O3 -std=c++14 -march=native -I"$VERSOR_DIR/include" "$here/versor.cpp" -o "$out/versor-native-f32"
 cargo build --quiet --release -p cga-benches --example batch_timing --manifest-path "$root/Cargo.toml"
 ours="${CARGO_TARGET_DIR:-$root/target}/release/examples/batch_timing"
 
@@ -28,6 +32,7 @@ for _ in $(seq "$rounds"); do
     "$ours" >> "$out/raw.txt"
     "$out/versor-baseline" | sed 's/ / versor-baseline /' >> "$out/raw.txt"
     "$out/versor-native" | sed 's/ / versor-native /' >> "$out/raw.txt"
+    "$out/versor-native-f32" | sed 's/ / versor-native-f32 /' >> "$out/raw.txt"
 done
 echo "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, $("$cxx" --version | head -1), $(rustc --version)"
 python3 - "$out/raw.txt" <<'PY'
@@ -38,13 +43,14 @@ for line in open(sys.argv[1]):
     t[(op, form)].append(float(ns))
 m = {k: statistics.median(v) for k, v in t.items()}
 ops = [op for op in dict.fromkeys(op for op, _ in t) if op != "multiply"]
-print("| operation | ours scalar | ours batch | ours packets | Versor x86-64 | Versor native | native / packets | native / batch | multiplications | floor | native / floor |")
-print("|---|---|---|---|---|---|---|---|---|---|---|")
+print("| operation | ours scalar | ours batch | ours packets | Versor x86-64 | Versor native | native / packets | native / batch | multiplications | floor | native / floor | Versor native f32 |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
 for op in ops:
     g = lambda f: m[(op, f)]
     print(f"| {op} | {g('scalar'):.2f} | {g('batch'):.2f} | {g('packets'):.2f} | {g('versor-baseline'):.2f} | "
           f"{g('versor-native'):.2f} | {g('versor-native') / g('packets'):.2f}× | {g('versor-native') / g('batch'):.2f}× | "
-          f"{g('multiplications'):.0f} | {g('floor'):.2f} | {g('versor-native') / g('floor'):.2f}× |")
+          f"{g('multiplications'):.0f} | {g('floor'):.2f} | {g('versor-native') / g('floor'):.2f}× | {g('versor-native-f32'):.2f} |")
 print(f"\nfloor: the multiplications at this core's peak rate, {m[('multiply', 'peak')]:.4f} ns each "
-      "(batch_timing); native / floor is the most any code doing those multiplications can reach against Versor native")
+      "(batch_timing); native / floor is the most any code doing those multiplications can reach against Versor native; "
+      "Versor native f32: Versor's default float scalar, half the bytes per value, not comparable with ours")
 PY

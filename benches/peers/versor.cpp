@@ -2,7 +2,9 @@
 // benches/peers/compare.sh, the same way benches/batch_timing.rs times ours: batches of 256
 // independent operands, `REPS` passes per round, median over rounds, ns per operation.
 // Only this harness is ours; Versor's headers come from the checkout in $VERSOR_DIR.
-// Build: g++ -O3 -std=c++14 [-march=native] -I$VERSOR_DIR/include versor.cpp
+// Build: g++ -O3 -std=c++14 -DVSR_PRECISION_DOUBLE [-march=native] -I$VERSOR_DIR/include versor.cpp
+// (without -DVSR_PRECISION_DOUBLE Versor's scalar is float: compare.sh times that build too,
+// for reference only).
 #include <vsr/space/vsr_cga3D_types.h>
 #include <algorithm>
 #include <chrono>

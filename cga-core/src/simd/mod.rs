@@ -1,0 +1,548 @@
+//! Many f64 lanes as a scalar: every generated type, product and sandwich runs on four or
+//! eight independent operands at once, `Line<F64x4>` being a packet of four lines in
+//! structure-of-arrays form.
+//!
+//! Three ways to run an operation over many operands:
+//!
+//! - [`run_packed`]: over packets (`&[Line<F64x4>]`…), the form a ray tracer keeps its
+//!   packets in;
+//! - [`run`]: over slices of ordinary values, transposed into lanes and back in place:
+//!   eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on [`F64x4`]
+//!   with AVX2 (benches/README.md times both against Versor);
+//! - [`map`]: the same with a closure on four lanes.
+//!
+//! `run` and `run_packed` take the operation as a [`Kernel`] and compile it for each level
+//! the CPU may have (AVX-512, AVX2 + FMA, the baseline SSE2), choosing at run time: no
+//! `target-cpu` flag is needed and the binary runs on any x86-64. Every level gives the
+//! bits of one at a time: no multiply–add is contracted.
+//!
+//! ```
+//! use cga_core::simd::{F64x4, map};
+//! use cga_core::{Line, PointPair, Sphere};
+//! let sphere = Sphere::from_centre_radius([0.0, 0.0, 0.0], 1.0).unwrap();
+//! let line = |k: usize| Line::through([k as f64 * 0.1, 0.0, -3.0], [0.0, 0.0, 3.0]).unwrap();
+//! let input: Vec<(Line, Sphere)> = (0..10).map(|k| (line(k), sphere)).collect();
+//! let mut pairs = vec![PointPair::zero(); 10];
+//! map(&input, &mut pairs, |(l, s): (Line<F64x4>, Sphere<F64x4>)| l & s);
+//! assert_eq!(pairs[7], line(7) & sphere); // the same bits as one at a time
+//! ```
+
+mod pack;
+#[cfg(target_arch = "x86_64")]
+mod transpose;
+mod wide;
+
+pub use pack::{Lanes, splat};
+pub use wide::{F64x4, F64x8, Lane, Mask4, Mask8};
+
+/// The packed form of a [`Lanes`] type on four lanes (`Packed<Line>` is `Line<F64x4>`).
+pub type Packed<X> = <X as Lanes>::Over<F64x4>;
+
+/// `X` over the lanes `L` (`Over<Line, F64x8>` is `Line<F64x8>`).
+pub type Over<X, L> = <X as Lanes>::Over<L>;
+
+/// One operation on lanes, named so that [`run`] can compile it for the CPU it finds and
+/// for the widest lanes it has: `apply` is generic over the lane type, and marked
+/// `#[inline(always)]` it is inlined into each compiled loop (a closure handed to a function
+/// compiled for AVX2 is a call LLVM may decline to inline, as it did for every product
+/// bigger than a rotor's, and a call out of that function runs baseline code). A kernel
+/// may carry state known only at run time (a motor, a sphere): `apply` takes `&self`, and
+/// [`splat`] puts a value into every lane.
+///
+/// ```
+/// use cga_core::simd::{Kernel, Lane, Over, run, splat};
+/// use cga_core::{Line, PointPair, Sphere};
+/// struct Meet;
+/// impl Kernel for Meet {
+///     type Input = (Line, Sphere);
+///     type Output = PointPair;
+///     #[inline(always)]
+///     fn apply<L: Lane>(&self, (l, s): (Line<L>, Sphere<L>)) -> PointPair<L> {
+///         l & s
+///     }
+/// }
+/// let line = Line::through([0.5, 0.0, -3.0], [0.5, 0.0, 3.0]).unwrap();
+/// let input = vec![(line, Sphere::from_centre_radius([0.0; 3], 1.0).unwrap()); 11];
+/// let mut out = vec![PointPair::zero(); 11];
+/// run(&Meet, &input, &mut out).unwrap();
+/// assert_eq!(out[10], line & input[10].1);
+///
+/// // A kernel with state: one sphere, given at run time, met by many lines.
+/// struct MeetSphere(Sphere);
+/// impl Kernel for MeetSphere {
+///     type Input = Line;
+///     type Output = PointPair;
+///     #[inline(always)]
+///     fn apply<L: Lane>(&self, l: Line<L>) -> PointPair<L> {
+///         l & splat::<Sphere, L>(self.0)
+///     }
+/// }
+/// let sphere = Sphere::from_centre_radius([0.0; 3], 1.0).unwrap();
+/// let lines = vec![line; 11];
+/// run(&MeetSphere(sphere), &lines, &mut out).unwrap();
+/// assert_eq!(out[3], line & sphere);
+/// ```
+pub trait Kernel {
+    /// What one operation takes (a type, or a tuple of types).
+    type Input: Lanes;
+    /// What it gives.
+    type Output: Lanes;
+    /// The operation on `L::LANES` operands at once.
+    fn apply<L: Lane>(&self, x: Over<Self::Input, L>) -> Over<Self::Output, L>;
+}
+
+/// An operation on four lanes: a [`Kernel`] at [`F64x4`], or [`map`]'s closure.
+trait Four {
+    type Input: Lanes;
+    type Output: Lanes;
+    fn four(&self, x: Packed<Self::Input>) -> Packed<Self::Output>;
+}
+
+/// A kernel on four lanes.
+struct AtFour<'a, K>(&'a K);
+
+impl<K: Kernel> Four for AtFour<'_, K> {
+    type Input = K::Input;
+    type Output = K::Output;
+    #[inline(always)]
+    fn four(&self, x: Packed<K::Input>) -> Packed<K::Output> {
+        self.0.apply::<F64x4>(x)
+    }
+}
+
+/// A closure on four lanes ([`map`]).
+struct Closure<I, R, F>(F, core::marker::PhantomData<fn(I) -> R>);
+
+impl<I: Lanes, R: Lanes, F: Fn(Packed<I>) -> Packed<R>> Four for Closure<I, R, F> {
+    type Input = I;
+    type Output = R;
+    #[inline(always)]
+    fn four(&self, x: Packed<I>) -> Packed<R> {
+        (self.0)(x)
+    }
+}
+
+/// `out[k] = f(input[k])` for every `k`, four at a time on [`F64x4`] lanes (a tail of
+/// fewer than four is padded with copies of the last input), dispatched to AVX2 and FMA as
+/// [`run`] is, with the same bits. The closure is called from the AVX2 loop; LLVM inlines
+/// it there as it inlines any small function with one caller, and where it declines (a body
+/// of several hundred instructions) a [`Kernel`], whose `apply` is `#[inline(always)]` and
+/// which also runs on eight lanes, is the sure way. `None`, and nothing written, where the
+/// lengths differ.
+#[inline]
+pub fn map<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: impl Fn(Packed<I>) -> Packed<R>) -> Option<()> {
+    if input.len() != out.len() {
+        return None;
+    }
+    let f = Closure(f, core::marker::PhantomData);
+    #[cfg(target_arch = "x86_64")]
+    if avx2() {
+        // SAFETY: the CPU has the features `rows_avx2` is compiled for.
+        unsafe { rows_avx2(&f, input, out) };
+        return Some(());
+    }
+    by_value(&f, input, out);
+    Some(())
+}
+
+/// The baseline loop: four values packed by value, a tail of fewer than four padded with
+/// copies of the last input.
+#[inline(always)]
+fn by_value<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+    let whole = input.len() / 4 * 4;
+    for (x, out) in input.chunks_exact(4).zip(out.chunks_exact_mut(4)) {
+        out.copy_from_slice(&F::Output::unpack(f.four(F::Input::pack([x[0], x[1], x[2], x[3]]))));
+        not_across_iterations();
+    }
+    if whole < input.len() {
+        let last = input.len() - 1;
+        let lanes = F::Output::unpack(f.four(F::Input::pack([0, 1, 2, 3].map(|k| input[(whole + k).min(last)]))));
+        out[whole..].copy_from_slice(&lanes[..input.len() - whole]);
+    }
+}
+
+/// `out[k] = K(input[k])` for every `k`: eight at a time on [`F64x8`] where the CPU has
+/// AVX-512 (F and DQ), four at a time on [`F64x4`] with AVX2 and FMA, four at a time in
+/// baseline code otherwise (detected once, at run time: the build stays baseline x86-64).
+/// The values go into and out of lanes by transposes in place. The results are the same
+/// bits at every level (no multiply–add is contracted). `None`, and nothing written, where
+/// the lengths differ.
+pub fn run<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
+    run_at(Level::detect(), kernel, input, out)
+}
+
+/// What the CPU offers the loops here.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Level {
+    Baseline,
+    #[cfg(target_arch = "x86_64")]
+    Avx2,
+    #[cfg(target_arch = "x86_64")]
+    Avx512,
+}
+
+impl Level {
+    /// The widest level this CPU has (`std` caches the detection).
+    #[inline]
+    fn detect() -> Level {
+        #[cfg(target_arch = "x86_64")]
+        if avx512() {
+            return Level::Avx512;
+        } else if avx2() {
+            return Level::Avx2;
+        }
+        Level::Baseline
+    }
+}
+
+/// [`run`] at a given level (the tests run each one the CPU has).
+fn run_at<K: Kernel>(level: Level, kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
+    if input.len() != out.len() {
+        return None;
+    }
+    match level {
+        // SAFETY: `detect` found the features each loop is compiled for.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { run_avx512(kernel, input, out) },
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { rows_avx2(&AtFour(kernel), input, out) },
+        Level::Baseline => by_value(&AtFour(kernel), input, out),
+    }
+    Some(())
+}
+
+/// The four-lane loop compiled with AVX2 and FMA enabled.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn rows_avx2<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+    // SAFETY: the CPU has AVX2.
+    unsafe { rows4(f, input, out) }
+}
+
+/// Four at a time by AVX transposes in place, the tail by value.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rows4<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+    let whole = input.len() / 4 * 4;
+    for (x, y) in input[..whole].chunks_exact(4).zip(out[..whole].chunks_exact_mut(4)) {
+        let rows = y.as_mut_ptr();
+        // SAFETY: the CPU has AVX; the rows are the chunks' four values.
+        unsafe {
+            let lanes = F::Input::pack_rows([0, 1, 2, 3].map(|i| &raw const x[i]));
+            F::Output::unpack_rows(f.four(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
+        }
+        not_across_iterations();
+    }
+    by_value(f, &input[whole..], &mut out[whole..])
+}
+
+/// [`run`]'s loop compiled with AVX-512 enabled: eight at a time on [`F64x8`], the rest
+/// four at a time.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx2,fma")]
+unsafe fn run_avx512<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) {
+    let whole = input.len() / 8 * 8;
+    for (x, y) in input[..whole].chunks_exact(8).zip(out[..whole].chunks_exact_mut(8)) {
+        let rows = y.as_mut_ptr();
+        // SAFETY: the CPU has AVX-512 F and DQ; the rows are the chunks' eight values.
+        unsafe {
+            let lanes = K::Input::pack_rows8(core::array::from_fn(|i| &raw const x[i]));
+            K::Output::unpack_rows8(kernel.apply::<F64x8>(lanes), core::array::from_fn(|i| rows.add(i)));
+        }
+        not_across_iterations();
+    }
+    // SAFETY: AVX-512 implies AVX.
+    unsafe { rows4(&AtFour(kernel), &input[whole..], &mut out[whole..]) }
+}
+
+/// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
+/// `out[k] = K(input[k])`; dispatched to AVX2 and FMA the same way. `None`, and nothing
+/// written, where the lengths differ.
+pub fn run_packed<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()> {
+    if input.len() != out.len() {
+        return None;
+    }
+    #[cfg(target_arch = "x86_64")]
+    if avx2() {
+        // SAFETY: the CPU has the features `run_packed_avx2` is compiled for.
+        unsafe { run_packed_avx2(kernel, input, out) };
+        return Some(());
+    }
+    packed_loop(kernel, input, out);
+    Some(())
+}
+
+/// Whether this CPU has AVX2 and FMA, which the dispatched loops here (and callers' own,
+/// such as a ray tracer's packet loops) are compiled for; detected once (`std` caches it).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn avx2() -> bool {
+    std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
+}
+
+/// Whether this CPU has AVX-512 F and DQ (and AVX2 and FMA), which [`run`]'s eight-lane
+/// loop is compiled for.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn avx512() -> bool {
+    avx2() && std::is_x86_feature_detected!("avx512f") && std::is_x86_feature_detected!("avx512dq")
+}
+
+/// [`run_packed`]'s loop compiled with AVX2 and FMA enabled.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn run_packed_avx2<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+    packed_loop(kernel, input, out)
+}
+
+#[inline(always)]
+fn packed_loop<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+    for (o, &x) in out.iter_mut().zip(input) {
+        *o = kernel.apply::<F64x4>(x);
+        not_across_iterations();
+    }
+}
+
+/// An empty instruction sequence LLVM cannot see through: it keeps the loop vectoriser from
+/// vectorising a loop of packet operations a second time, across iterations, which it
+/// otherwise does with per-lane loads and shuffles (2–3× slower than the packets alone).
+#[inline(always)]
+fn not_across_iterations() {
+    #[cfg(any(target_arch = "x86_64", target_arch = "x86", target_arch = "aarch64"))]
+    // SAFETY: an empty sequence: it reads, writes and clobbers nothing.
+    unsafe {
+        core::arch::asm!("", options(nomem, nostack, preserves_flags))
+    };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Real;
+
+    #[test]
+    fn lanes_select_each_as_one_value_does() {
+        use crate::Select;
+        let (a, b) = ([1.0, f64::NAN, 3.0, -0.5], [2.0, 0.0, 3.0, f64::INFINITY]);
+        let (x, y) = (F64x4(a), F64x4(b));
+        for l in 0..4 {
+            assert_eq!(x.lt(y).0[l], a[l].lt(b[l]));
+            assert_eq!(x.le(y).0[l], a[l].le(b[l]));
+            assert_eq!(y.finite().0[l], Select::finite(b[l]));
+            assert_eq!(F64x4::select(x.lt(y), x, y).0[l].to_bits(), f64::select(a[l] < b[l], a[l], b[l]).to_bits());
+            assert_eq!(x.min_lanes(y).0[l].to_bits(), a[l].min(b[l]).to_bits());
+            assert_eq!(x.max_lanes(y).0[l].to_bits(), a[l].max(b[l]).to_bits());
+        }
+        assert!(F64x4::any(x.lt(y)) && !F64x4::all(x.lt(y)) && F64x4::all(!Mask4::default()));
+    }
+
+    #[test]
+    fn down_in_lanes_is_down_in_each_lane() {
+        use crate::{Select, Vector, down, down_lanes};
+        // Ordinary weights, zero, a weight whose inverse overflows, a NaN, a quotient that
+        // overflows, and a negative weight.
+        let cases = [
+            Vector { e1: 1.0, e2: -2.0, e3: 3.0, eo: 2.0, ei: 0.0 },
+            Vector { e1: 1.0, e2: 0.0, e3: 0.0, eo: 0.0, ei: 1.0 },
+            Vector { e1: 1e-310, e2: 2e-310, e3: 0.0, eo: 1e-310, ei: 0.0 },
+            Vector { e1: 1.0, e2: 0.0, e3: 0.0, eo: f64::NAN, ei: 0.0 },
+            Vector { e1: 1e300, e2: 0.0, e3: 0.0, eo: 1e-300, ei: 0.0 },
+            Vector { e1: 4.0, e2: 6.0, e3: 8.0, eo: -2.0, ei: 0.0 },
+            Vector { e1: 3.0, e2: 1.0, e3: 2.0, eo: 0.5, ei: 0.0 },
+            Vector { e1: 3.0, e2: 1.0, e3: 2.0, eo: 1.0, ei: 0.0 },
+        ];
+        for four in cases.chunks(4) {
+            let (points, ok) = down_lanes(Vector::pack([four[0], four[1], four[2], four[3]]));
+            for (l, v) in four.iter().enumerate() {
+                let (point, valid) = down_lanes(*v);
+                assert_eq!(valid, down(*v).is_ok(), "{v:?}");
+                assert_eq!(ok.0[l], valid, "lane {l}: {v:?}");
+                if let Ok(want) = down(*v) {
+                    assert_eq!(point.map(f64::to_bits), want.map(f64::to_bits));
+                    assert_eq!(points.map(|c| c.0[l].to_bits()), want.map(f64::to_bits), "lane {l}");
+                }
+            }
+            assert_eq!(F64x4::any(ok), ok.0.iter().any(|&b| b));
+        }
+    }
+    use crate::{Circle, Even, Line, Motor, Rotor, Sandwich, Sphere, Translator, Vector, up};
+
+    struct Sandwiched;
+    impl Kernel for Sandwiched {
+        type Input = (Motor, Vector);
+        type Output = Vector;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, (m, x): (Motor<L>, Vector<L>)) -> Vector<L> {
+            m.sandwich(x)
+        }
+    }
+
+    /// A motor given at run time, in every lane.
+    struct MoveBy(Motor);
+    impl Kernel for MoveBy {
+        type Input = Vector;
+        type Output = Vector;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, x: Vector<L>) -> Vector<L> {
+            splat::<Motor, L>(self.0).sandwich(x)
+        }
+    }
+
+    #[test]
+    fn kernels_carry_run_time_state_and_give_the_bits_of_one_at_a_time() {
+        let m: Motor =
+            Motor::from_rotor_translation(Rotor::from_axis_angle([1.0, 2.0, 3.0], 0.7).unwrap(), [1.0, -2.0, 0.5]);
+        let points: Vec<Vector> = (0..11).map(|k| up([k as f64, 0.5 * k as f64, -1.0])).collect();
+        let mut out = vec![Vector::zero(); points.len()];
+        run(&MoveBy(m), &points, &mut out).unwrap();
+        for (x, y) in points.iter().zip(&out) {
+            assert_eq!(*y, m.sandwich(*x));
+        }
+    }
+
+    struct Product;
+    impl Kernel for Product {
+        type Input = (Circle, Circle);
+        type Output = Even;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, (a, b): (Circle<L>, Circle<L>)) -> Even<L> {
+            a * b
+        }
+    }
+
+    fn point(k: usize, seed: f64) -> Vector {
+        let t = seed + k as f64;
+        up([3.0 * (1.3 * t).sin(), 2.0 * (0.7 * t).cos(), (2.9 * t).sin() - 0.5])
+    }
+
+    fn motor(k: usize) -> Motor {
+        let r = Rotor::from_axis_angle([0.6, -0.48, 0.64], 0.1 * k as f64).unwrap();
+        Motor::from_rotor_translator(r, Translator::from_vector([k as f64, -2.0, 0.5]))
+    }
+
+    /// `pack_rows`/`unpack_rows` (AVX transposes in place) and `pack_rows8`/`unpack_rows8`
+    /// (AVX-512) against packing by value, for types of every size of block and remainder
+    /// (1, 4, 5, 6, 8, 10 and 16 coefficients) and a tuple.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn transposes_in_place_agree_with_packing() {
+        fn check<X: Lanes + PartialEq + core::fmt::Debug>(values: [X; 8], blank: X)
+        where
+            Packed<X>: PartialEq + core::fmt::Debug,
+            Over<X, F64x8>: PartialEq + core::fmt::Debug,
+        {
+            // SAFETY: run only where the CPU has AVX (AVX-512 for the second part); the
+            // pointers are to `values` and `back`.
+            unsafe {
+                let four = [0, 1, 2, 3].map(|l| values[l]);
+                let packed = X::pack_rows(four.each_ref().map(|v| v as *const X));
+                assert_eq!(packed, X::pack(four));
+                let mut back = [blank; 4];
+                X::unpack_rows(packed, back.each_mut().map(|v| v as *mut X));
+                assert_eq!(back, four);
+                if avx512() {
+                    let packed = X::pack_rows8(values.each_ref().map(|v| v as *const X));
+                    assert_eq!(packed, X::pack_lanes::<F64x8>(&values));
+                    let mut back = [blank; 8];
+                    X::unpack_rows8(packed, back.each_mut().map(|v| v as *mut X));
+                    assert_eq!(back, values);
+                }
+            }
+        }
+        if !std::is_x86_feature_detected!("avx") {
+            return;
+        }
+        // Distinct values in every coefficient of every lane.
+        macro_rules! values {
+            ($t:ident, $seed:expr) => {
+                core::array::from_fn::<crate::$t, 8, _>(|l| {
+                    crate::$t::from_array(core::array::from_fn(|k| (100 * l + k) as f64 + $seed))
+                })
+            };
+        }
+        macro_rules! each {
+            ($($t:ident),*) => {$(
+                check(values!($t, 0.5), crate::$t::zero());
+            )*};
+        }
+        each!(Scalar, Plane, Vector, Line, Motor, Circle, Even);
+        let (rotors, points) = (values!(Rotor, 0.25), values!(Vector, 0.75));
+        check(core::array::from_fn(|l| (rotors[l], points[l])), (crate::Rotor::zero(), Vector::zero()));
+    }
+
+    /// Every level this CPU has.
+    fn levels() -> Vec<Level> {
+        let mut levels = vec![Level::Baseline];
+        #[cfg(target_arch = "x86_64")]
+        {
+            if avx2() {
+                levels.push(Level::Avx2);
+            }
+            if avx512() {
+                levels.push(Level::Avx512);
+            }
+        }
+        levels
+    }
+
+    #[test]
+    fn every_path_gives_the_bits_of_one_at_a_time() {
+        for n in [0, 1, 3, 4, 5, 7, 8, 11, 12, 16, 21] {
+            let moved: Vec<_> = (0..n).map(|k| (motor(k), point(k, 0.0))).collect();
+            let want: Vec<Vector> = moved.iter().map(|&(m, x)| m.sandwich(x)).collect();
+            let mut got = vec![Vector::zero(); n];
+            for level in levels() {
+                got.fill(Vector::zero());
+                run_at(level, &Sandwiched, &moved, &mut got).unwrap();
+                assert_eq!(got, want, "run at {level:?}, n = {n}");
+            }
+            got.fill(Vector::zero());
+            map(&moved, &mut got, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)).unwrap();
+            assert_eq!(got, want, "map, n = {n}");
+
+            let circles: Vec<(Circle, Circle)> = (0..n)
+                .map(|k| {
+                    ((point(k, 0.0) ^ point(k, 1.0)) ^ point(k, 2.0), (point(k, 3.0) ^ point(k, 4.0)) ^ point(k, 5.0))
+                })
+                .collect();
+            let packets: Vec<_> =
+                circles.chunks_exact(4).map(|c| <(Circle, Circle)>::pack([c[0], c[1], c[2], c[3]])).collect();
+            let mut out = vec![Even::<F64x4>::zero(); packets.len()];
+            run_packed(&Product, &packets, &mut out).unwrap();
+            for (k, &(a, b)) in circles.iter().enumerate().take(packets.len() * 4) {
+                assert_eq!(Even::unpack(out[k / 4])[k % 4], a * b, "packets, n = {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn lengths_must_agree() {
+        let input = vec![(motor(1), point(1, 0.0)); 3];
+        let mut out = vec![Vector::zero(); 2];
+        assert_eq!(run(&Sandwiched, &input, &mut out), None);
+        assert_eq!(map(&input, &mut out, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)), None);
+        assert_eq!(out, vec![Vector::zero(); 2], "nothing written");
+        let mut packed = vec![Vector::<F64x4>::zero(); 1];
+        assert_eq!(run_packed(&Sandwiched, &[], &mut packed), None);
+    }
+
+    #[test]
+    fn lanes_are_ordered_only_when_all_agree() {
+        let (a, b) = (F64x4::new([1.0, 2.0, 3.0, 4.0]), F64x4::new([2.0, 3.0, 4.0, 5.0]));
+        assert!(a < b);
+        assert!(b > a);
+        assert_ne!(a, b);
+        let mixed = F64x4::new([0.0, 5.0, 3.0, 4.0]);
+        assert_eq!(a.partial_cmp(&mixed), None);
+        assert_eq!(Real::max(a, mixed).to_array(), [1.0, 5.0, 3.0, 4.0]);
+        assert!(F64x4::splat(1.0).is_finite() && !F64x4::new([1.0, f64::NAN, 1.0, 1.0]).is_finite());
+        assert_eq!((-a).to_array(), [-1.0, -2.0, -3.0, -4.0]);
+        assert_eq!(Real::sqrt(F64x4::new([4.0, 9.0, 16.0, 0.25])).to_array(), [2.0, 3.0, 4.0, 0.5]);
+        let (l, s) =
+            (Line::through([0.0; 3], [1.0, 0.0, 0.0]).unwrap(), Sphere::from_centre_radius([0.0; 3], 1.0).unwrap());
+        assert_eq!(crate::PointPair::unpack(Line::pack([l; 4]) & Sphere::pack([s; 4]))[2], l & s);
+    }
+}

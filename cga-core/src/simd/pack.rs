@@ -1,0 +1,212 @@
+//! [`Lanes`]: a generated type (or a tuple of them) over lanes, and the moves between
+//! values and lanes.
+
+#[cfg(target_arch = "x86_64")]
+use super::transpose::{avx, avx512};
+use super::{F64x4, F64x8, Lane};
+
+/// A generated type (or a tuple of them) that runs on lanes, field by field:
+/// `Line<f64>::Over<F64x4>` is `Line<F64x4>`, four lines in structure-of-arrays form.
+pub trait Lanes: Copy {
+    /// The same type over the lanes `L`.
+    type Over<L: Lane>: Copy;
+    /// The values of `x` (one per lane, `L::LANES` of them) as one value whose lane `k` is
+    /// `x[k]`.
+    fn pack_lanes<L: Lane>(x: &[Self]) -> Self::Over<L>;
+    /// The inverse of [`Lanes::pack_lanes`]: lane `k` into `out[k]`.
+    fn unpack_lanes<L: Lane>(p: Self::Over<L>, out: &mut [Self]);
+    /// `[x₀, x₁, x₂, x₃]` as one value whose lane `k` is `x_k`.
+    #[inline(always)]
+    fn pack(x: [Self; 4]) -> Self::Over<F64x4> {
+        Self::pack_lanes(&x)
+    }
+    /// The inverse of [`Lanes::pack`].
+    #[inline(always)]
+    fn unpack(p: Self::Over<F64x4>) -> [Self; 4] {
+        let mut out = [Self::pack_filler(); 4];
+        Self::unpack_lanes(p, &mut out);
+        out
+    }
+    /// Some value of the type, to be overwritten ([`Lanes::unpack`]'s array).
+    fn pack_filler() -> Self;
+    /// [`Lanes::pack`] of the values at `rows`, read in place by AVX shuffles where the
+    /// type allows (the same values).
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `rows` must point to four values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn pack_rows(rows: [*const Self; 4]) -> Self::Over<F64x4> {
+        // SAFETY: the caller's pointers are valid.
+        Self::pack(rows.map(|r| unsafe { *r }))
+    }
+    /// [`Lanes::unpack`] into the values at `rows`, written in place by AVX shuffles where
+    /// the type allows.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `rows` must point to four writable values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn unpack_rows(p: Self::Over<F64x4>, rows: [*mut Self; 4]) {
+        for (r, v) in rows.into_iter().zip(Self::unpack(p)) {
+            // SAFETY: the caller's pointers are valid.
+            unsafe { *r = v };
+        }
+    }
+    /// The eight values at `rows` in eight lanes, read in place by AVX-512 shuffles.
+    ///
+    /// # Safety
+    /// The CPU must have AVX-512 F and DQ, and `rows` must point to eight values.
+    #[cfg(target_arch = "x86_64")]
+    unsafe fn pack_rows8(rows: [*const Self; 8]) -> Self::Over<F64x8>;
+    /// The inverse of [`Lanes::pack_rows8`], written in place.
+    ///
+    /// # Safety
+    /// The CPU must have AVX-512 F and DQ, and `rows` must point to eight writable values.
+    #[cfg(target_arch = "x86_64")]
+    unsafe fn unpack_rows8(p: Self::Over<F64x8>, rows: [*mut Self; 8]);
+}
+
+/// `x` in every lane: a value of any generated type as the packet of `L::LANES` copies (a
+/// kernel's run-time state, such as the motor every point is moved by).
+#[inline(always)]
+pub fn splat<X: Lanes, L: Lane>(x: X) -> X::Over<L> {
+    X::pack_lanes(&[x; 8][..L::LANES])
+}
+
+macro_rules! lanes {
+    ($($t:ident),*) => {$(
+        impl Lanes for crate::$t<f64> {
+            type Over<L: Lane> = crate::$t<L>;
+            #[inline(always)]
+            fn pack_lanes<L: Lane>(x: &[Self]) -> crate::$t<L> {
+                let a: [[f64; Self::BLADES.len()]; 8] = core::array::from_fn(|l| x.get(l).map_or([0.0; Self::BLADES.len()], |v| v.to_array()));
+                crate::$t::from_array(core::array::from_fn(|k| L::from_fn(|l| a[l][k])))
+            }
+            #[inline(always)]
+            fn unpack_lanes<L: Lane>(p: crate::$t<L>, out: &mut [Self]) {
+                let a = p.to_array();
+                for (l, o) in out.iter_mut().enumerate().take(L::LANES) {
+                    *o = crate::$t::from_array(core::array::from_fn(|k| a[k].lane(l)));
+                }
+            }
+            #[inline(always)]
+            fn pack_filler() -> Self {
+                crate::$t::zero()
+            }
+            // The generated types are `#[repr(C)]` structs of their coefficients in field
+            // order: a value is `[T; N]` in memory, a packed one `[F64x4; N]`.
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows(rows: [*const Self; 4]) -> crate::$t<F64x4> {
+                let mut out = core::mem::MaybeUninit::<crate::$t<F64x4>>::uninit();
+                // SAFETY: the caller's CPU has AVX and its rows are valid; `pack` writes
+                // every coefficient of `out`.
+                unsafe {
+                    avx::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    out.assume_init()
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows(p: crate::$t<F64x4>, rows: [*mut Self; 4]) {
+                // SAFETY: as in `pack_rows`.
+                unsafe { avx::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows8(rows: [*const Self; 8]) -> crate::$t<F64x8> {
+                let mut out = core::mem::MaybeUninit::<crate::$t<F64x8>>::uninit();
+                // SAFETY: the caller's CPU has AVX-512 and its rows are valid; `pack` writes
+                // every coefficient of `out`.
+                unsafe {
+                    avx512::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    out.assume_init()
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows8(p: crate::$t<F64x8>, rows: [*mut Self; 8]) {
+                // SAFETY: as in `pack_rows8`.
+                unsafe { avx512::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+            }
+        }
+    )*};
+}
+lanes!(
+    Scalar,
+    Infinity,
+    Vector,
+    Bivector,
+    FlatPoint,
+    Line,
+    Circle,
+    Plane,
+    Sphere,
+    Pseudoscalar,
+    ScalarQuadvector,
+    Rotor,
+    Translator,
+    Motor,
+    Dilator,
+    Transversor,
+    Generator,
+    Even,
+    Odd
+);
+
+macro_rules! tuple_lanes {
+    ($($x:ident $k:tt),*) => {
+        /// Tuples pack element by element.
+        impl<$($x: Lanes),*> Lanes for ($($x,)*) {
+            type Over<L: Lane> = ($($x::Over<L>,)*);
+            #[inline(always)]
+            fn pack_lanes<L: Lane>(x: &[Self]) -> Self::Over<L> {
+                ($({
+                    let part: [$x; 8] = core::array::from_fn(|l| x.get(l).map_or($x::pack_filler(), |t| t.$k));
+                    $x::pack_lanes::<L>(&part[..L::LANES])
+                },)*)
+            }
+            #[inline(always)]
+            fn unpack_lanes<L: Lane>(p: Self::Over<L>, out: &mut [Self]) {
+                $({
+                    let mut part = [$x::pack_filler(); 8];
+                    $x::unpack_lanes::<L>(p.$k, &mut part[..L::LANES]);
+                    for (o, v) in out.iter_mut().zip(part) {
+                        o.$k = v;
+                    }
+                })*
+            }
+            #[inline(always)]
+            fn pack_filler() -> Self {
+                ($($x::pack_filler(),)*)
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows(rows: [*const Self; 4]) -> Self::Over<F64x4> {
+                // SAFETY: the caller's CPU has AVX and its pointers are valid.
+                unsafe { ($($x::pack_rows(rows.map(|r| &raw const (*r).$k)),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows(p: Self::Over<F64x4>, rows: [*mut Self; 4]) {
+                // SAFETY: as in `pack_rows`.
+                unsafe { $($x::unpack_rows(p.$k, rows.map(|r| &raw mut (*r).$k));)* }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows8(rows: [*const Self; 8]) -> Self::Over<F64x8> {
+                // SAFETY: the caller's CPU has AVX-512 and its pointers are valid.
+                unsafe { ($($x::pack_rows8(rows.map(|r| &raw const (*r).$k)),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows8(p: Self::Over<F64x8>, rows: [*mut Self; 8]) {
+                // SAFETY: as in `pack_rows8`.
+                unsafe { $($x::unpack_rows8(p.$k, rows.map(|r| &raw mut (*r).$k));)* }
+            }
+        }
+    };
+}
+tuple_lanes!(A 0, B 1);
+tuple_lanes!(A 0, B 1, C 2);

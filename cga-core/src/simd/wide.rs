@@ -1,0 +1,295 @@
+//! The lane types: [`F64x4`] and [`F64x8`], f64 lanes that are a [`Real`] and a
+//! [`Select`](crate::Select), written once by one macro.
+//!
+//! The lanes are a plain array that LLVM vectorises, not a SIMD crate's type: `wide` (tried
+//! first) picks its width when it is compiled, so under run-time dispatch it stays at two
+//! SSE2 registers. Arithmetic, `sqrt`, `abs` and `max` are lane-wise; the order is the
+//! product order (`a < b` when every lane is), so code that branches on a comparison takes a
+//! branch only when all lanes agree.
+
+use crate::{Real, Select};
+use core::cmp::Ordering;
+use core::ops::{Add, Div, Mul, Neg, Sub};
+
+/// A lane type the generated types run on in [`super::run`]: so many f64 lanes, a
+/// [`Select`] (lane-wise choice) and a [`Real`] (lane-wise arithmetic).
+pub trait Lane: Select + Default {
+    /// How many lanes.
+    const LANES: usize;
+    /// The lane `f(l)` in lane `l`.
+    fn from_fn(f: impl FnMut(usize) -> f64) -> Self;
+    /// Lane `l`.
+    fn lane(self, l: usize) -> f64;
+}
+
+macro_rules! wide {
+    ($(#[$doc:meta])* $t:ident, $(#[$mask_doc:meta])* $mask:ident, $n:literal, [$($l:literal)*], $align:literal) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Default, PartialEq)]
+        #[repr(C, align($align))]
+        pub struct $t(pub [f64; $n]);
+
+        impl $t {
+            /// The lanes `[a₀, a₁, …]`.
+            #[inline(always)]
+            pub fn new(lanes: [f64; $n]) -> Self {
+                $t(lanes)
+            }
+
+            /// The same value in every lane.
+            #[inline(always)]
+            pub fn splat(x: f64) -> Self {
+                $t([x; $n])
+            }
+
+            /// The lanes as an array.
+            #[inline(always)]
+            pub fn to_array(self) -> [f64; $n] {
+                self.0
+            }
+
+            /// `f` applied lane by lane.
+            #[inline(always)]
+            fn map(self, f: impl Fn(f64) -> f64) -> Self {
+                $t(self.0.map(f))
+            }
+
+            /// `f` of the two lanes `l`, lane by lane (written out lane by lane: the form
+            /// LLVM turns into one vector instruction).
+            #[inline(always)]
+            fn zip(self, other: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+                let (a, b) = (self.0, other.0);
+                $t([$(f(a[$l], b[$l])),*])
+            }
+
+            /// Whether `f` holds in every lane (each lane compared, no early exit).
+            #[inline(always)]
+            fn every(self, other: Self, f: impl Fn(f64, f64) -> bool) -> bool {
+                let (a, b) = (self.0, other.0);
+                true $(& f(a[$l], b[$l]))*
+            }
+        }
+
+        impl Add for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn add(self, rhs: $t) -> $t {
+                self.zip(rhs, |a, b| a + b)
+            }
+        }
+        impl Sub for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn sub(self, rhs: $t) -> $t {
+                self.zip(rhs, |a, b| a - b)
+            }
+        }
+        impl Mul for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn mul(self, rhs: $t) -> $t {
+                self.zip(rhs, |a, b| a * b)
+            }
+        }
+        impl Div for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn div(self, rhs: $t) -> $t {
+                self.zip(rhs, |a, b| a / b)
+            }
+        }
+        impl Neg for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn neg(self) -> $t {
+                self.map(|x| -x)
+            }
+        }
+
+        /// The product order: `a < b` when every lane of `a` is below the same lane of `b`;
+        /// lanes that disagree are unordered (`None`), so a comparison is true only for all.
+        impl PartialOrd for $t {
+            fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+                if self.every(*other, |x, y| x == y) {
+                    Some(Ordering::Equal)
+                } else if self.every(*other, |x, y| x <= y) {
+                    Some(Ordering::Less)
+                } else if self.every(*other, |x, y| x >= y) {
+                    Some(Ordering::Greater)
+                } else {
+                    None
+                }
+            }
+
+            /// Every lane `≤` (what `partial_cmp` gives, without branches).
+            #[inline(always)]
+            fn le(&self, other: &Self) -> bool {
+                self.every(*other, |x, y| x <= y)
+            }
+
+            /// Every lane `≥` (what `partial_cmp` gives, without branches).
+            #[inline(always)]
+            fn ge(&self, other: &Self) -> bool {
+                self.every(*other, |x, y| x >= y)
+            }
+        }
+
+        impl Real for $t {
+            /// Lane-wise maximum.
+            #[inline(always)]
+            fn max(self, other: Self) -> Self {
+                self.zip(other, f64::max)
+            }
+            #[inline(always)]
+            fn zero() -> Self {
+                $t::splat(0.0)
+            }
+            #[inline(always)]
+            fn one() -> Self {
+                $t::splat(1.0)
+            }
+            #[inline(always)]
+            fn from_f64(x: f64) -> Self {
+                $t::splat(x)
+            }
+            /// Lane 0 (a scalar view of many values has no better meaning; use `to_array`
+            /// for the lanes).
+            #[inline]
+            fn to_f64(self) -> f64 {
+                self.0[0]
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                self.map(f64::sqrt)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                self.map(f64::abs)
+            }
+            /// Whether every lane is finite.
+            #[inline(always)]
+            fn is_finite(self) -> bool {
+                let a = self.0;
+                true $(& a[$l].is_finite())*
+            }
+            #[inline]
+            fn epsilon() -> Self {
+                $t::splat(f64::EPSILON)
+            }
+            #[inline]
+            fn sin(self) -> Self {
+                self.map(f64::sin)
+            }
+            #[inline]
+            fn cos(self) -> Self {
+                self.map(f64::cos)
+            }
+            #[inline]
+            fn atan2(self, x: Self) -> Self {
+                self.zip(x, f64::atan2)
+            }
+            #[inline]
+            fn min_positive() -> Self {
+                $t::splat(f64::MIN_POSITIVE)
+            }
+            /// Lane by lane.
+            #[inline]
+            fn binade(self) -> Self {
+                self.map(Real::binade)
+            }
+        }
+
+        $(#[$mask_doc])*
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+        pub struct $mask(pub [bool; $n]);
+
+        impl core::ops::BitAnd for $mask {
+            type Output = $mask;
+            #[inline(always)]
+            fn bitand(self, rhs: $mask) -> $mask {
+                let (a, b) = (self.0, rhs.0);
+                $mask([$(a[$l] & b[$l]),*])
+            }
+        }
+        impl core::ops::BitOr for $mask {
+            type Output = $mask;
+            #[inline(always)]
+            fn bitor(self, rhs: $mask) -> $mask {
+                let (a, b) = (self.0, rhs.0);
+                $mask([$(a[$l] | b[$l]),*])
+            }
+        }
+        impl core::ops::Not for $mask {
+            type Output = $mask;
+            #[inline(always)]
+            fn not(self) -> $mask {
+                $mask(self.0.map(|x| !x))
+            }
+        }
+
+        impl Select for $t {
+            type Mask = $mask;
+            #[inline(always)]
+            fn lt(self, other: Self) -> $mask {
+                let (a, b) = (self.0, other.0);
+                $mask([$(a[$l] < b[$l]),*])
+            }
+            #[inline(always)]
+            fn le(self, other: Self) -> $mask {
+                let (a, b) = (self.0, other.0);
+                $mask([$(a[$l] <= b[$l]),*])
+            }
+            #[inline(always)]
+            fn finite(self) -> $mask {
+                $mask(self.0.map(f64::is_finite))
+            }
+            #[inline(always)]
+            fn select(mask: $mask, if_true: Self, if_false: Self) -> Self {
+                let (m, a, b) = (mask.0, if_true.0, if_false.0);
+                $t([$($l),*].map(|l: usize| if m[l] { a[l] } else { b[l] }))
+            }
+            #[inline(always)]
+            fn any(mask: $mask) -> bool {
+                let m = mask.0;
+                false $(| m[$l])*
+            }
+            #[inline(always)]
+            fn all(mask: $mask) -> bool {
+                let m = mask.0;
+                true $(& m[$l])*
+            }
+        }
+
+        impl Lane for $t {
+            const LANES: usize = $n;
+            #[inline(always)]
+            fn from_fn(f: impl FnMut(usize) -> f64) -> Self {
+                $t(core::array::from_fn(f))
+            }
+            #[inline(always)]
+            fn lane(self, l: usize) -> f64 {
+                self.0[l]
+            }
+        }
+    };
+}
+
+wide!(
+    /// Four f64 lanes, a [`Real`] whose arithmetic is lane-wise: AVX2's width, the packets'.
+    F64x4,
+    /// A truth value per lane of an [`F64x4`] ([`Select`]).
+    Mask4,
+    4,
+    [0 1 2 3],
+    32
+);
+wide!(
+    /// Eight f64 lanes, a [`Real`] whose arithmetic is lane-wise: AVX-512's width, what
+    /// [`super::run`] uses where the CPU has it.
+    F64x8,
+    /// A truth value per lane of an [`F64x8`] ([`Select`]).
+    Mask8,
+    8,
+    [0 1 2 3 4 5 6 7],
+    64
+);
