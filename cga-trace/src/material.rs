@@ -2,6 +2,8 @@
 
 use crate::invalid::Invalid;
 use cga_core::Real;
+use cga_core::euclid::{dot, norm, scale, unit};
+use cga_core::simd::Lane;
 
 /// Surface colour and Blinn–Phong coefficients.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,6 +58,67 @@ impl Material {
     #[inline]
     pub fn whole_exponent(&self) -> Option<u32> {
         (self.q.fract() == 0.0 && self.q <= 1024.0).then_some(self.q as u32)
+    }
+}
+
+/// `max(n·h, 0)^q` with `h = unit(l + v)` (`lv = l + v`) at one hit or, lane by lane, at a
+/// packet's (`m[l]` lane `l`'s material), as [`Material::specular`] computes it for each: the
+/// power in lanes where all share a whole `q`, `specular` for the rest, and where `|l + v|`
+/// needs rescaling (or there is no `h`) [`unit`](fn@unit)'s own path.
+#[inline(always)]
+pub fn shine<T: Lane, const N: usize>(m: &[&Material; N], n: [T; 3], lv: [T; 3]) -> T {
+    let at = |x: &[T; 3], l: usize| x.map(|c| c.lane(l));
+    // `unit(lv)` lane by lane, where it rescales (or there is no `h`).
+    let rescaled = |l: usize| unit(at(&lv, l)).map_or(0.0, |h| m[l].specular(cga_core::euclid::dot(at(&n, l), h)));
+    if N == 1 {
+        // One ray: `unit`'s path straight away (the same bits as the lanes' steps below).
+        return T::from_fn(rescaled);
+    }
+    let inv = T::one() / norm(lv);
+    let c = dot(n, scale(lv, inv));
+    // The power only where some lane will take it.
+    let q = m[0].whole_exponent().filter(|_| m.iter().all(|x| x.q == m[0].q) && T::any(T::zero().lt(c)));
+    let powers = q.map(|q| power(c, q));
+    T::from_fn(|l| {
+        let (inv, c) = (inv.lane(l), c.lane(l));
+        match powers {
+            _ if !(inv.is_finite() && inv > 0.0) => rescaled(l),
+            Some(p) if c > 0.0 => p.lane(l),
+            _ => m[l].specular(c),
+        }
+    })
+}
+
+/// The coefficients a light's term takes ([`crate::light::blinn_phong`]): colour, `k_d`
+/// and `k_s` of one material, or of four in lanes for a packet.
+#[derive(Clone, Copy, Debug)]
+pub struct Reflectance<T> {
+    /// Linear RGB.
+    pub colour: [T; 3],
+    /// Diffuse coefficient `k_d`.
+    pub kd: T,
+    /// Specular coefficient `k_s`.
+    pub ks: T,
+}
+
+impl Reflectance<f64> {
+    /// One material's.
+    #[inline]
+    pub fn of(m: &Material) -> Self {
+        Reflectance { colour: m.colour, kd: m.kd, ks: m.ks }
+    }
+}
+
+impl Reflectance<cga_core::simd::F64x4> {
+    /// Four materials', lane `l` being `m[l]`'s.
+    #[inline(always)]
+    pub fn lanes(m: &[&Material; 4]) -> Self {
+        use cga_core::simd::F64x4;
+        Reflectance {
+            colour: core::array::from_fn(|k| F64x4::new(m.map(|m| m.colour[k]))),
+            kd: F64x4::new(m.map(|m| m.kd)),
+            ks: F64x4::new(m.map(|m| m.ks)),
+        }
     }
 }
 

@@ -22,6 +22,19 @@ pub trait Lane: Select + Default {
     fn lane(self, l: usize) -> f64;
 }
 
+/// One value is one lane: code written over lanes runs on a single ray or operand too.
+impl Lane for f64 {
+    const LANES: usize = 1;
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f64) -> Self {
+        f(0)
+    }
+    #[inline(always)]
+    fn lane(self, _: usize) -> f64 {
+        self
+    }
+}
+
 macro_rules! wide {
     ($(#[$doc:meta])* $t:ident, $(#[$mask_doc:meta])* $mask:ident, $n:literal, [$($l:literal)*], $align:literal) => {
         $(#[$doc])*

@@ -15,8 +15,7 @@ mod sparse;
 
 use crate::backend::Backend;
 use crate::camera::Camera;
-use crate::light::{self, Light};
-use crate::material::{Material, power};
+use crate::material::{Material, Reflectance, shine};
 use crate::object::Object;
 use crate::ray::Ray;
 use crate::ray::{leaving_origin, mirror, offset};
@@ -24,7 +23,7 @@ use crate::ray::{leaving_origin, mirror, offset};
 use crate::render::light_term;
 use crate::render::{Layers, RayCounts, Renderer, lights, sample_offset, sum_layers};
 use crate::shapes::{Crossing, ShadingPoint};
-use cga_core::euclid::{E3, add, dot, norm, scale, sub, unit};
+use cga_core::euclid::{E3, add, dot, sub};
 use cga_core::simd::F64x4;
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
@@ -135,27 +134,6 @@ fn mirror_packet<B: Packets>(
 
 /// A material for lanes without a hit (their terms are not used).
 const NO_MATERIAL: Material = Material { colour: [0.0; 3], ka: 0.0, kd: 0.0, ks: 0.0, q: 0.0, kr: 0.0 };
-
-/// `max(n·h, 0)^q` per lane, `h = unit(l + v)`, as [`light_term`] computes it lane by lane:
-/// the power in lanes where all four share a whole `q`, the scalar path for the rest.
-#[inline(always)]
-fn specular4(m: &[&Material; 4], n: [F64x4; 3], lv: [F64x4; 3]) -> [f64; 4] {
-    let inv = F64x4::splat(1.0) / norm(lv);
-    let c = dot(n, scale(lv, inv));
-    let q = m[0].whole_exponent().filter(|_| m.iter().all(|x| x.q == m[0].q));
-    let powers = q.map(|q| power(c, q).to_array());
-    let (c, inv) = (c.to_array(), inv.to_array());
-    core::array::from_fn(|l| {
-        if !(inv[l].is_finite() && inv[l] > 0.0) {
-            // `unit` rescales, or there is no `h`.
-            return unit(lane(&lv, l)).map_or(0.0, |h| m[l].specular(dot(lane(&n, l), h)));
-        }
-        match powers {
-            Some(p) if c[l] > 0.0 => p[l],
-            _ => m[l].specular(c[l]),
-        }
-    })
-}
 
 impl<'a, B: Packets> Renderer<'a, B> {
     /// The crossings of the packet's rays with object `k`.
@@ -304,7 +282,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
     }
 
     /// The ambient and direct light at the lanes' hits, in lanes ([`light_term`] and
-    /// [`Renderer::add_light`] lane by lane, the same bits), the shadow rays towards each
+    /// [`Renderer::light`] lane by lane, the same bits), the shadow rays towards each
     /// light cast as one packet (skipping each lane's `own` object, starting off each hit by
     /// its object's crossing error `errors`); the background where a lane has no hit.
     #[inline(always)]
@@ -330,10 +308,10 @@ impl<'a, B: Packets> Renderer<'a, B> {
         for light in &self.scene.lights {
             let (l, distance) = light.toward(x);
             let diffuse = dot(n, l);
-            let specular = specular4(&m, n, add(l, v));
+            let specular = shine(&m, n, add(l, v));
             let d = distance.to_array();
             // Where `light_term` gives a term.
-            let lighting = lights(distance, diffuse, F64x4::new(specular)).0;
+            let lighting = lights(distance, diffuse, specular).0;
             let lit: [bool; 4] = core::array::from_fn(|k| hits[k].is_some() && lighting[k]);
             if !lit.iter().any(|&b| b) {
                 continue;
@@ -348,7 +326,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
                 let blocked = self.blocked_packet(&shadow, &t_max, own);
                 s = blocked.map(|b| if b { settings.shadow_transmission } else { 1.0 });
             }
-            let term = self.light4(&m, light, distance, diffuse, &specular, s);
+            let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, F64x4::new(s));
             for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
                 for (out, t) in colour.iter_mut().zip(&term) {
                     *out += t.to_array()[k];
@@ -356,24 +334,5 @@ impl<'a, B: Packets> Renderer<'a, B> {
             }
         }
         colours
-    }
-
-    /// One light's term per lane, as [`Renderer::add_light`] adds it:
-    /// `s f_att (c k_d max(n·l, 0) + k_s spec) L`.
-    #[inline(always)]
-    fn light4(
-        &self,
-        m: &[&Material; 4],
-        light: &Light,
-        distance: F64x4,
-        diffuse: F64x4,
-        specular: &[f64; 4],
-        s: [f64; 4],
-    ) -> [F64x4; 3] {
-        let distance = self.scene.frame.world_length(distance);
-        let sf = F64x4::new(s) * light::attenuation(self.scene.settings.attenuation, distance);
-        let (kd, ks) = (F64x4::new(m.map(|m| m.kd)), F64x4::new(m.map(|m| m.ks)));
-        let colour = core::array::from_fn(|k| F64x4::new(m.map(|m| m.colour[k])));
-        light::blinn_phong(colour, kd, ks, diffuse, F64x4::new(*specular), sf, light.colour)
     }
 }
