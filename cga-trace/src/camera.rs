@@ -142,7 +142,7 @@ impl Camera {
     pub fn ray(&self, u: f64, v: f64) -> Option<Ray> {
         let x = up(self.image_point(u, v)).to_array();
         let (line, dir) = unit_line(&self.lines, x)?;
-        Some(Ray { origin: self.position, dir, line })
+        Some(Ray { origin: self.position, dir, carrier: line })
     }
 
     /// [`Camera::ray`] for four points `(u_k, v_k)` at once, on four lanes: the rays, and
@@ -154,7 +154,7 @@ impl Camera {
         let x = up(core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])))).to_array();
         let (line, dir) = unit_line(&self.lanes, x)?;
         let (lines, dir) = (Line::unpack(line), dir.map(F64x4::to_array));
-        let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: dir.map(|c| c[l]), line: lines[l] });
+        let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: dir.map(|c| c[l]), carrier: lines[l] });
         Some((rays, line))
     }
 

@@ -5,7 +5,7 @@ use cga_core::Line;
 use cga_core::euclid::{E3, add, dot, reflect, scale, sub, tolerance, unit};
 use cga_core::{Real, Select};
 
-/// A ray `o + t d`, `t > 0`, carried by `line`: by default the normalised CGA line from `o`
+/// A ray `o + t d`, `t > 0`, met by its `carrier`: by default the normalised CGA line from `o`
 /// along `d` (the dense back end carries a dense multivector, the plain one nothing).
 #[derive(Clone, Copy, Debug)]
 pub struct Ray<C = Line> {
@@ -14,7 +14,7 @@ pub struct Ray<C = Line> {
     /// Unit direction.
     pub dir: E3,
     /// The carrier: `up(o) ∧ up(o + d) ∧ ei`, normalised, for the CGA back ends.
-    pub line: C,
+    pub carrier: C,
 }
 
 impl Ray {
@@ -24,14 +24,14 @@ impl Ray {
         origin.iter().all(|x| x.is_finite()).then(|| Ray {
             origin,
             dir,
-            line: Line::from_point_unit_direction(origin, dir),
+            carrier: Line::from_point_unit_direction(origin, dir),
         })
     }
 
     /// The ray from `origin` along `dir`, which the caller knows to be a unit vector and
     /// finite (reflected and light directions): not normalised again.
     pub fn unit(origin: E3, dir: E3) -> Self {
-        Ray { origin, dir, line: Line::from_point_unit_direction(origin, dir) }
+        Ray { origin, dir, carrier: Line::from_point_unit_direction(origin, dir) }
     }
 
     /// A secondary ray leaving a surface point `x` with unit normal `n` along `dir`, starting
@@ -42,7 +42,7 @@ impl Ray {
 
     /// The ray from `origin` along the normalised line `line` (which must pass through it).
     pub fn from_line(origin: E3, line: Line) -> Option<Self> {
-        Some(Ray { origin, dir: line.direction().ok()?, line })
+        Some(Ray { origin, dir: line.direction().ok()?, carrier: line })
     }
 }
 

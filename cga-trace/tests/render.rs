@@ -369,7 +369,7 @@ fn camera_rays_match_eq_2_term_by_term() {
         let camera = Camera::new(pose, 1.3, 2.0, 1.5, 64, 48).unwrap();
         for (u, v) in [(0.5, 0.5), (31.7, 20.2), (63.5, 47.5), (10.0, 40.0)] {
             let (fast, literal) = (camera.ray(u, v).unwrap(), camera.ray_by_sandwich(u, v).unwrap());
-            for (a, b) in fast.line.to_array().iter().zip(literal.line.to_array()) {
+            for (a, b) in fast.carrier.to_array().iter().zip(literal.carrier.to_array()) {
                 approx::assert_abs_diff_eq!(*a, b, epsilon = 1e-12 * (1.0 + norm(position)));
             }
             assert!(norm(sub(fast.dir, literal.dir)) < 1e-12 && fast.origin == literal.origin);
@@ -497,7 +497,7 @@ fn primitive_normals_are_the_reflected_lines_direction() {
             let Some(c) = shape.intersect(&ray, 1e-9, f64::INFINITY) else { continue };
             let mirror =
                 mirror.unwrap_or_else(|| Plane::from_point_normal(c.point, sub(c.point, sphere.centre)).unwrap());
-            let reflected = (ray.line.reflect_in_plane(&mirror) - ray.line).direction().unwrap();
+            let reflected = (ray.carrier.reflect_in_plane(&mirror) - ray.carrier).direction().unwrap();
             let n = shape.normal(&ray, &c);
             let along = reflected[0] * n[0] + reflected[1] * n[1] + reflected[2] * n[2];
             assert!((along.abs() - 1.0).abs() < 1e-12, "ray {k}: {n:?} against {reflected:?}");

@@ -134,7 +134,7 @@ impl Backend for Dense {
         // that the line is as well conditioned as the sparse one (`d` is unit and finite, `o`
         // finite: the points are distinct and the line exists).
         let line = line_through(origin, add(origin, scale(dir, magnitude(&[origin])))).unwrap_or_default();
-        Ray { origin, dir, line }
+        Ray { origin, dir, carrier: line }
     }
 
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<Multivector>> {
@@ -142,7 +142,7 @@ impl Backend for Dense {
         let p = pose.sandwich(&dense_up(camera.image_point(u, v)));
         let line = normalise((Multivector::from(camera.cam()) ^ p) ^ dense_ei())?;
         let dir = Line::from_dense(&line).direction().ok()?;
-        Some(Ray { origin: camera.position(), dir, line })
+        Some(Ray { origin: camera.position(), dir, carrier: line })
     }
 
     fn prepare(shape: &Arc<dyn Shape>) -> DenseShape {
@@ -162,13 +162,15 @@ impl Backend for Dense {
     fn intersect(shape: &DenseShape, ray: &Ray<Multivector>, t_min: f64, t_max: f64) -> Option<Crossing> {
         let in_range = point_in_range(ray, t_min, t_max);
         let point = match shape {
-            DenseShape::Sphere { sphere, .. } => meet_sphere(&ray.line, sphere, ray.dir)?.into_iter().find(in_range)?,
-            DenseShape::Plane(plane) => meet_plane(&ray.line, plane).filter(in_range)?,
+            DenseShape::Sphere { sphere, .. } => {
+                meet_sphere(&ray.carrier, sphere, ray.dir)?.into_iter().find(in_range)?
+            }
+            DenseShape::Plane(plane) => meet_plane(&ray.carrier, plane).filter(in_range)?,
             DenseShape::Disk { plane, centre, radius } => {
-                meet_plane(&ray.line, plane).filter(|x| in_range(x) && norm(sub(*x, *centre)) <= *radius)?
+                meet_plane(&ray.carrier, plane).filter(|x| in_range(x) && norm(sub(*x, *centre)) <= *radius)?
             }
             DenseShape::Triangle { plane, corners } => {
-                meet_plane(&ray.line, plane).filter(|x| in_range(x) && inside_triangle(*x, corners))?
+                meet_plane(&ray.carrier, plane).filter(|x| in_range(x) && inside_triangle(*x, corners))?
             }
             DenseShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
@@ -190,7 +192,7 @@ impl Backend for Dense {
         };
         // L' − L, the reflected minus the incident line, is the normal line.
         let from_lines = mirror
-            .and_then(|m| normalise((m * ray.line) * m - ray.line))
+            .and_then(|m| normalise((m * ray.carrier) * m - ray.carrier))
             .and_then(|n| Line::from_dense(&n).direction().ok());
         facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
     }

@@ -63,7 +63,7 @@ impl Backend for Plain {
     const PACKETS: bool = true;
 
     fn ray(origin: E3, dir: E3) -> Ray<()> {
-        Ray { origin, dir, line: () }
+        Ray { origin, dir, carrier: () }
     }
 
     fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray<()>> {

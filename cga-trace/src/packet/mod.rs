@@ -31,7 +31,7 @@ use cga_core::simd::avx2;
 /// A back end's geometry for packets: its rays four at a time and its meets in lanes.
 pub trait Packets: Backend {
     /// What four rays carry in lanes (the sparse back end: their CGA lines).
-    type Lanes: Copy;
+    type CarrierLanes: Copy;
     /// Four rays from origins along unit directions given in lanes (secondary rays), as
     /// [`Backend::ray`] makes each.
     fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Self>
@@ -61,15 +61,15 @@ pub struct Packet<B: Packets> {
     /// Their unit directions in lanes.
     pub dir: [F64x4; 3],
     /// Their carriers in lanes (the sparse back end: their lines).
-    pub line: B::Lanes,
+    pub carrier: B::CarrierLanes,
 }
 
 impl<B: Packets> Packet<B> {
     /// Four rays whose carriers are already in lanes.
     #[inline(always)]
-    pub fn with_line(rays: [Ray<B::Carrier>; 4], line: B::Lanes) -> Self {
+    pub fn with_carrier(rays: [Ray<B::Carrier>; 4], carrier: B::CarrierLanes) -> Self {
         let lanes = |f: fn(&Ray<B::Carrier>) -> E3| lanes3(rays.each_ref().map(f));
-        Packet { origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), rays, line }
+        Packet { origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), rays, carrier }
     }
 }
 

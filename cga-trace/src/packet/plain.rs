@@ -12,12 +12,12 @@ use cga_core::simd::F64x4;
 use glam::DVec3;
 
 impl Packets for Plain {
-    type Lanes = ();
+    type CarrierLanes = ();
 
     #[inline(always)]
     fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Plain> {
         let rays = core::array::from_fn(|l| Plain::ray(lane(&origin, l), lane(&dir, l)));
-        Packet { rays, origin, dir, line: () }
+        Packet { rays, origin, dir, carrier: () }
     }
 
     /// `unit(x a + y b + z c)` from the camera's position, `(x, y, z)` the image-plane point

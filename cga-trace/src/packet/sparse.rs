@@ -13,20 +13,20 @@ use cga_core::simd::{F64x4, Lanes};
 use cga_core::{Line, Plane, Select, Sphere};
 
 impl Packets for Sparse {
-    type Lanes = Line<F64x4>;
+    type CarrierLanes = Line<F64x4>;
 
     #[inline(always)]
     fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Sparse> {
         let line = Line::from_point_unit_direction(origin, dir);
         let lines = Line::unpack(line);
-        let rays = core::array::from_fn(|l| Ray { origin: lane(&origin, l), dir: lane(&dir, l), line: lines[l] });
-        Packet { rays, origin, dir, line }
+        let rays = core::array::from_fn(|l| Ray { origin: lane(&origin, l), dir: lane(&dir, l), carrier: lines[l] });
+        Packet { rays, origin, dir, carrier: line }
     }
 
     #[inline(always)]
     fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Sparse>> {
         let (rays, line) = camera.rays4(u, v)?;
-        Some(Packet::with_line(rays, line))
+        Some(Packet::with_carrier(rays, line))
     }
 
     #[inline(always)]
@@ -53,7 +53,7 @@ fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
 #[inline(always)]
 fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
     let range = (F64x4::new(*t_min), F64x4::new(*t_max));
-    let c = sphere_crossing(&p.line, sphere, (p.origin, p.dir), range);
+    let c = sphere_crossing(&p.carrier, sphere, (p.origin, p.dir), range);
     if !F64x4::any(c.found) {
         return [None; 4];
     }
@@ -77,7 +77,7 @@ fn meet_plane(
     t_min: &[f64; 4],
     t_max: &[f64; 4],
 ) -> Crossings {
-    let flat = p.line & *plane;
+    let flat = p.carrier & *plane;
     let inv = F64x4::splat(1.0) / flat.eoi;
     let x = [flat.e1i * inv, flat.e2i * inv, flat.e3i * inv];
     let t = t_of4(p, x).to_array();

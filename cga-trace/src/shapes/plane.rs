@@ -27,7 +27,7 @@ impl PlaneShape {
 
 /// Where a normalised ray crosses a normalised plane (weight 1, as `Line::meet_plane`).
 pub(super) fn cross_plane(ray: &Ray, plane: &Plane) -> Option<E3> {
-    (ray.line & *plane).point()
+    (ray.carrier & *plane).point()
 }
 
 /// The normal of a flat shape: from the line reflected in its plane.

@@ -151,14 +151,14 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
             return None;
         }
         let o = sub(ray.origin, self.origin);
-        Some(Ray { origin: o, dir: ray.dir, line: Line::from_point_unit_direction(o, ray.dir) })
+        Some(Ray { origin: o, dir: ray.dir, carrier: Line::from_point_unit_direction(o, ray.dir) })
     }
 
     /// Candidate α for a ray in the local frame: what the method's root finder returns over
     /// the α-intervals it reaches, in increasing α per interval.
     pub fn candidates(&self, local: &Ray, t_min: f64, t_max: f64) -> Roots<f64> {
         let mut out = Roots::new();
-        let line = &local.line;
+        let line = &local.carrier;
         match &self.cells {
             Some(cells) => {
                 let intervals = cells.intervals(local, t_min, t_max);
@@ -188,7 +188,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     pub fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let alphas = self.candidates(local, t_min, t_max);
         let polish = self.method.finder(1).polishes();
-        let ray = (local.origin, local.dir, &local.line);
+        let ray = (local.origin, local.dir, &local.carrier);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;
         Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })
     }

@@ -155,7 +155,7 @@ impl Shape for SplineSurface {
             }
             let local = local.get_or_insert_with(|| {
                 let o = sub(ray.origin, self.origin);
-                Ray { origin: o, dir: ray.dir, line: Line::from_point_unit_direction(o, ray.dir) }
+                Ray { origin: o, dir: ray.dir, carrier: Line::from_point_unit_direction(o, ray.dir) }
             });
             if let Some(c) = segment.intersect_local(local, t_min, t_max) {
                 t_max = c.t;
