@@ -26,6 +26,7 @@ pub mod ray;
 pub mod render;
 pub mod scene;
 pub mod settings;
+pub mod shade;
 pub mod shapes;
 pub mod surface;
 

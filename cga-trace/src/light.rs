@@ -58,3 +58,11 @@ pub fn blinn_phong<T: Select>(colour: [T; 3], kd: T, ks: T, n_l: T, spec: T, sf:
     let (facing, shine) = (n_l.max_lanes(T::zero()), ks * spec);
     core::array::from_fn(|k| sf * (colour[k] * kd * facing + shine) * T::from_f64(light[k]))
 }
+
+/// Whether a light adds anything at a hit: it lies ahead (`distance > 0`; not at the hit point,
+/// not NaN) and in front of the surface for the diffuse or the specular term. Lane by lane for
+/// a packet ([`Select`]): one ray and four decide the same way.
+#[inline(always)]
+pub(crate) fn lights<T: Select>(distance: T, diffuse: T, specular: T) -> T::Mask {
+    T::zero().lt(distance) & !(diffuse.le(T::zero()) & specular.le(T::zero()))
+}

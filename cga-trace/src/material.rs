@@ -101,23 +101,14 @@ pub struct Reflectance<T> {
     pub ks: T,
 }
 
-impl Reflectance<f64> {
-    /// One material's.
-    #[inline]
-    pub fn of(m: &Material) -> Self {
-        Reflectance { colour: m.colour, kd: m.kd, ks: m.ks }
-    }
-}
-
-impl Reflectance<cga_core::simd::F64x4> {
-    /// Four materials', lane `l` being `m[l]`'s.
+impl<T: Lane> Reflectance<T> {
+    /// The materials of a ray's hit or of a packet's, lane `l` being `m[l]`'s.
     #[inline(always)]
-    pub fn lanes(m: &[&Material; 4]) -> Self {
-        use cga_core::simd::F64x4;
+    pub fn lanes<const W: usize>(m: &[&Material; W]) -> Self {
         Reflectance {
-            colour: core::array::from_fn(|k| F64x4::new(m.map(|m| m.colour[k]))),
-            kd: F64x4::new(m.map(|m| m.kd)),
-            ks: F64x4::new(m.map(|m| m.ks)),
+            colour: core::array::from_fn(|k| T::from_fn(|l| m[l].colour[k])),
+            kd: T::from_fn(|l| m[l].kd),
+            ks: T::from_fn(|l| m[l].ks),
         }
     }
 }

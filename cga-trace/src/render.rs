@@ -9,10 +9,11 @@ use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
 use crate::light::{Light, attenuation, blinn_phong};
-use crate::material::{Reflectance, shine};
+use crate::material::Reflectance;
 use crate::object::Object;
-use crate::ray::{Ray, crosses, leaving_origin, mirror, offset};
+use crate::ray::{Ray, crosses, mirror, offset};
 use crate::scene::Scene;
+use crate::shade::lit;
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Select;
 use cga_core::euclid::{E3, dot, scale};
@@ -225,7 +226,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// Whether anything but object `skip` lies on the ray before `t_max`: stops at the first
     /// blocker, and computes no normals.
-    fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64, skip: Option<usize>) -> bool {
+    pub(crate) fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64, skip: Option<usize>) -> bool {
         if let Some(bvh) = &self.bvh {
             let mut blocked = false;
             bvh.traverse(ray.origin, ray.dir, 0.0, t_max, |k, t| {
@@ -259,10 +260,12 @@ impl<'a, B: Backend> Renderer<'a, B> {
                     };
                     out.push((ray, f64::INFINITY));
                     let Some((hit, k)) = self.hit(&ray, 0.0, f64::INFINITY) else { continue };
+                    // The shadow rays `shade` casts.
                     let offset = offset(hit.point, ray.origin, self.errors[k]);
+                    let at = (hit.point, hit.normal, ray.dir.map(|d| -d));
                     for light in &self.scene.lights {
                         let material = &self.scene.objects[k].material;
-                        if let Some(term) = light_term(ray.dir, &hit, material, light, offset) {
+                        if let Some(term) = lit(light, at, &[material], &[true], offset) {
                             out.push((B::ray(term.shadow_origin, term.l), term.distance));
                         }
                     }
@@ -291,7 +294,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let Some((hit, k)) = self.hit(ray, 0.0, f64::INFINITY) else {
             return self.scene.settings.background;
         };
-        let local = self.shade(ray, &hit, k, cast);
+        let [local] = self.shade(ray, &[Some((hit, k))], cast);
         self.reflect_from(ray, &hit, k, local, depth, cast)
     }
 
@@ -321,45 +324,15 @@ impl<'a, B: Backend> Renderer<'a, B> {
             let Some((next, next_k)) = self.hit(&ray, 0.0, f64::INFINITY) else {
                 break settings.background;
             };
-            local = self.shade(&ray, &next, next_k, cast);
+            [local] = self.shade(&ray, &[Some((next, next_k))], cast);
             (hit, object, k) = (next, &self.scene.objects[next_k], next_k);
         };
         sum_layers(&layers, deepest)
     }
 
-    /// The ambient and direct light at a hit (eq. 12 without the reflected term), casting a
-    /// shadow ray towards each light that could reach it.
-    fn shade(&self, ray: &Ray<B::Carrier>, hit: &ShadingPoint, k: usize, cast: &mut RayCounts) -> [f64; 3] {
-        let (settings, object) = (&self.scene.settings, &self.scene.objects[k]);
-        let mut colour = self.ambient(object);
-        let offset = offset(hit.point, ray.origin, self.errors[k]);
-        for light in &self.scene.lights {
-            let Some(term) = light_term(ray.dir, hit, &object.material, light, offset) else { continue };
-            let mut s = 1.0;
-            if settings.shadows {
-                cast.shadow += 1;
-                if self.blocked(&B::ray(term.shadow_origin, term.l), term.distance, self.skip_own(k)) {
-                    s = settings.shadow_transmission;
-                }
-            }
-            self.add_light(&mut colour, object, light, &term, s);
-        }
-        colour
-    }
-
     /// `c k_a A`: the ambient light on an object.
     pub(crate) fn ambient(&self, object: &Object) -> [f64; 3] {
         scale(object.material.colour, object.material.ka * self.scene.settings.ambient)
-    }
-
-    /// Adds one light's term to `colour`, `s` the shadow factor.
-    #[inline]
-    pub(crate) fn add_light(&self, colour: &mut [f64; 3], object: &Object, light: &Light, term: &LightTerm, s: f64) {
-        let m = Reflectance::of(&object.material);
-        let term = self.light(&m, light, term.distance, term.diffuse, term.specular, s);
-        for (out, t) in colour.iter_mut().zip(term) {
-            *out += t;
-        }
     }
 
     /// One light's term, `s f_att (c k_d max(n·l, 0) + k_s spec) L`, at `distance` (frame
@@ -554,50 +527,6 @@ pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
 pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &ShadingPoint, error: f64) -> Ray<B::Carrier> {
     let (origin, r) = mirror(ray.dir, ray.origin, hit.point, hit.normal, error);
     B::ray(origin, r)
-}
-
-/// Whether a light adds anything at a hit: it lies ahead (`distance > 0`; not at the hit point,
-/// not NaN) and in front of the surface for the diffuse or the specular term. Lane by lane for
-/// a packet ([`Select`]): one ray and four decide the same way.
-#[inline(always)]
-pub(crate) fn lights<T: Select>(distance: T, diffuse: T, specular: T) -> T::Mask {
-    T::zero().lt(distance) & !(diffuse.le(T::zero()) & specular.le(T::zero()))
-}
-
-/// What one light gives a hit before shadowing.
-pub(crate) struct LightTerm {
-    /// Unit direction to the light.
-    pub l: E3,
-    /// Distance to it (frame units; ∞ for a directional light).
-    pub distance: f64,
-    /// `n · l`.
-    pub diffuse: f64,
-    /// `max(n · h, 0)^q`.
-    pub specular: f64,
-    /// Where the shadow ray towards it starts ([`leaving_origin`]).
-    pub shadow_origin: E3,
-}
-
-/// The unshadowed terms of `light` at `hit` seen along `dir`, the shadow ray starting
-/// `offset` off the surface; `None` where it adds nothing (behind the surface for both
-/// terms, or a point light at the hit point).
-#[inline]
-pub(crate) fn light_term(
-    dir: E3,
-    hit: &ShadingPoint,
-    m: &crate::material::Material,
-    light: &Light,
-    offset: f64,
-) -> Option<LightTerm> {
-    let (n, v) = (hit.normal, dir.map(|x| -x));
-    // One square root for the distance and the direction.
-    let (l, distance) = light.toward(hit.point);
-    let diffuse = dot(n, l);
-    let specular = shine(&[m], n, [l[0] + v[0], l[1] + v[1], l[2] + v[2]]);
-    if !lights(distance, diffuse, specular) {
-        return None;
-    }
-    Some(LightTerm { l, distance, diffuse, specular, shadow_origin: leaving_origin(hit.point, n, dot(n, l), offset) })
 }
 
 #[cfg(test)]

@@ -20,6 +20,8 @@ pub trait Lane: Select + Default {
     fn from_fn(f: impl FnMut(usize) -> f64) -> Self;
     /// Lane `l`.
     fn lane(self, l: usize) -> f64;
+    /// Lane `l` of a mask.
+    fn mask_lane(mask: Self::Mask, l: usize) -> bool;
 }
 
 /// One value is one lane: code written over lanes runs on a single ray or operand too.
@@ -32,6 +34,10 @@ impl Lane for f64 {
     #[inline(always)]
     fn lane(self, _: usize) -> f64 {
         self
+    }
+    #[inline(always)]
+    fn mask_lane(mask: bool, _: usize) -> bool {
+        mask
     }
 }
 
@@ -282,6 +288,10 @@ macro_rules! wide {
             #[inline(always)]
             fn lane(self, l: usize) -> f64 {
                 self.0[l]
+            }
+            #[inline(always)]
+            fn mask_lane(mask: $mask, l: usize) -> bool {
+                mask.0[l]
             }
         }
     };

@@ -5,8 +5,9 @@
 //! formulas (`packet/plain.rs`) — with the same operations as its scalar path, so the same
 //! bits; other shapes are met one lane at a time through their own code.
 //!
-//! Shading (light directions, Blinn–Phong terms, attenuation) and the secondary rays run in
-//! lanes too; normals and keeping the nearest crossing stay per lane (they branch). A scene
+//! The shading is the one ray's code run on four lanes ([`crate::shade`], through
+//! [`RayLanes`] for packets); the secondary rays run in lanes too; normals and keeping the
+//! nearest crossing stay per lane (they branch). A scene
 //! whose rays do not come four to a row (a crop narrower than four, the last pixels of a
 //! row) uses the scalar path for the remainder.
 
@@ -15,15 +16,11 @@ mod sparse;
 
 use crate::backend::Backend;
 use crate::camera::Camera;
-use crate::material::{Material, Reflectance, shine};
-use crate::object::Object;
-use crate::ray::Ray;
-use crate::ray::{leaving_origin, mirror, offset};
-#[cfg(doc)]
-use crate::render::light_term;
-use crate::render::{Layers, RayCounts, Renderer, lights, sample_offset, sum_layers};
+use crate::ray::{Ray, mirror};
+use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
+use crate::shade::{RayLanes, lanes3};
 use crate::shapes::{Crossing, ShadingPoint};
-use cga_core::euclid::{E3, add, dot, sub};
+use cga_core::euclid::{E3, dot, sub};
 use cga_core::simd::F64x4;
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
@@ -79,12 +76,6 @@ fn lane(x: &[F64x4; 3], l: usize) -> E3 {
     [x[0].to_array()[l], x[1].to_array()[l], x[2].to_array()[l]]
 }
 
-/// Four points (or vectors) as three coordinates in lanes.
-#[inline(always)]
-fn lanes3(v: [E3; 4]) -> [F64x4; 3] {
-    core::array::from_fn(|k| F64x4::new([v[0][k], v[1][k], v[2][k], v[3][k]]))
-}
-
 /// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where
 /// there is no rim (a plane).
 #[inline(always)]
@@ -104,22 +95,13 @@ fn crossings(ok: [bool; 4], t: [f64; 4], x: &[F64x4; 3]) -> Crossings {
     core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(x, l), alpha: None }))
 }
 
-/// `x` in the lanes where `keep`, `other` elsewhere.
-#[inline(always)]
-fn select(keep: &[bool; 4], x: [F64x4; 3], other: E3) -> [F64x4; 3] {
-    core::array::from_fn(|k| {
-        let x = x[k].to_array();
-        F64x4::new(core::array::from_fn(|l| if keep[l] { x[l] } else { other[k] }))
-    })
-}
-
 /// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane, each off its
 /// object's crossing error `errors`); the other lanes keep their ray (a zero normal reflects
 /// nothing).
 #[inline(always)]
 fn mirror_packet<B: Packets>(
     p: &Packet<B>,
-    hits: &[Option<(ShadingPoint, &Object)>; 4],
+    hits: &[Option<(ShadingPoint, usize)>; 4],
     errors: &[f64; 4],
     bounce: &[bool; 4],
 ) -> Packet<B> {
@@ -127,13 +109,11 @@ fn mirror_packet<B: Packets>(
         Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
         _ => (p.rays[l].origin, [0.0; 3]),
     };
-    let (x, n) = (lanes3(core::array::from_fn(|l| at(l).0)), lanes3(core::array::from_fn(|l| at(l).1)));
+    let (x, n): ([F64x4; 3], [F64x4; 3]) =
+        (lanes3::<F64x4, 4>(core::array::from_fn(|l| at(l).0)), lanes3::<F64x4, 4>(core::array::from_fn(|l| at(l).1)));
     let (origin, r) = mirror(p.dir, p.origin, x, n, F64x4::new(*errors));
     B::packet(origin, r)
 }
-
-/// A material for lanes without a hit (their terms are not used).
-const NO_MATERIAL: Material = Material { colour: [0.0; 3], ka: 0.0, kd: 0.0, ks: 0.0, q: 0.0, kr: 0.0 };
 
 impl<'a, B: Packets> Renderer<'a, B> {
     /// The crossings of the packet's rays with object `k`.
@@ -165,7 +145,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
     /// `skip` (a lane with `t_max = 0` is inactive and never blocked): stops once every
     /// active lane is blocked, and skips an object no lane tests.
     #[inline(always)]
-    fn blocked_packet(&self, p: &Packet<B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
+    pub(crate) fn blocked_packet(&self, p: &Packet<B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
         let mut blocked = t_max.map(|t| t.is_nan() || t <= 0.0);
         let active = blocked.map(|b| !b);
         for k in 0..self.shapes.len() {
@@ -246,25 +226,24 @@ impl<'a, B: Packets> Renderer<'a, B> {
         let mut depth = 0;
         while active.iter().any(|&a| a) {
             let nearest = self.nearest_packet(&packet, &active);
-            let own = nearest.map(|n| n.and_then(|(_, k)| self.skip_own(k)));
-            let hits: [Option<(ShadingPoint, &Object)>; 4] = core::array::from_fn(|l| {
+            let hits: [Option<(ShadingPoint, usize)>; 4] = core::array::from_fn(|l| {
                 nearest[l].map(|(c, k)| {
                     let normal = B::normal(&self.shapes[k], &packet.rays[l], &c);
-                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, &self.scene.objects[k])
+                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
                 })
             });
             let errors = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
-            let local = self.shade_packet(&packet, &hits, &own, &errors, cast);
+            let local = self.shade(&packet, &hits, cast);
             let mut bounce = [false; 4];
             for l in 0..4 {
                 if !active[l] {
                     continue;
                 }
-                let Some((_, object)) = hits[l] else {
+                let Some((_, k)) = hits[l] else {
                     (deepest[l], active[l]) = (settings.background, false);
                     continue;
                 };
-                let kr = object.material.kr;
+                let kr = self.scene.objects[k].material.kr;
                 if !(kr > 0.0 && depth < settings.max_depth) {
                     (deepest[l], active[l]) = (local[l], false);
                     continue;
@@ -280,59 +259,25 @@ impl<'a, B: Packets> Renderer<'a, B> {
         }
         Some(core::array::from_fn(|l| sum_layers(&layers[l], deepest[l])))
     }
+}
 
-    /// The ambient and direct light at the lanes' hits, in lanes ([`light_term`] and
-    /// [`Renderer::light`] lane by lane, the same bits), the shadow rays towards each
-    /// light cast as one packet (skipping each lane's `own` object, starting off each hit by
-    /// its object's crossing error `errors`); the background where a lane has no hit.
+/// Four rays in lanes, for the shading ([`crate::shade`]).
+impl<B: Packets> RayLanes<B, 4> for Packet<B> {
+    type T = F64x4;
     #[inline(always)]
-    fn shade_packet(
-        &self,
-        p: &Packet<B>,
-        hits: &[Option<(ShadingPoint, &Object)>; 4],
-        own: &[Option<usize>; 4],
-        errors: &[f64; 4],
-        cast: &mut RayCounts,
-    ) -> [[f64; 3]; 4] {
-        let settings = &self.scene.settings;
-        let mut colours: [[f64; 3]; 4] =
-            core::array::from_fn(|l| hits[l].map_or(settings.background, |(_, o)| self.ambient(o)));
-        if !hits.iter().any(Option::is_some) {
-            return colours;
-        }
-        let x = lanes3(hits.map(|h| h.map_or([0.0; 3], |(h, _)| h.point)));
-        let n = lanes3(hits.map(|h| h.map_or([0.0; 3], |(h, _)| h.normal)));
-        let v = p.dir.map(|d| -d);
-        let m = hits.map(|h| h.map_or(&NO_MATERIAL, |(_, o)| &o.material));
-        let offset = offset(x, p.origin, F64x4::new(*errors));
-        for light in &self.scene.lights {
-            let (l, distance) = light.toward(x);
-            let diffuse = dot(n, l);
-            let specular = shine(&m, n, add(l, v));
-            let d = distance.to_array();
-            // Where `light_term` gives a term.
-            let lighting = lights(distance, diffuse, specular).0;
-            let lit: [bool; 4] = core::array::from_fn(|k| hits[k].is_some() && lighting[k]);
-            if !lit.iter().any(|&b| b) {
-                continue;
-            }
-            let mut s = [1.0; 4];
-            if settings.shadows {
-                cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
-                // Unlit lanes cast a harmless ray with an empty range.
-                let origin = select(&lit, leaving_origin(x, n, diffuse, offset), [0.0; 3]);
-                let shadow = B::packet(origin, select(&lit, l, [0.0, 0.0, 1.0]));
-                let t_max = core::array::from_fn(|k| if lit[k] { d[k] } else { 0.0 });
-                let blocked = self.blocked_packet(&shadow, &t_max, own);
-                s = blocked.map(|b| if b { settings.shadow_transmission } else { 1.0 });
-            }
-            let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, F64x4::new(s));
-            for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
-                for (out, t) in colour.iter_mut().zip(&term) {
-                    *out += t.to_array()[k];
-                }
-            }
-        }
-        colours
+    fn origin(&self) -> E3<F64x4> {
+        self.origin
+    }
+    #[inline(always)]
+    fn dir(&self) -> E3<F64x4> {
+        self.dir
+    }
+    #[inline(always)]
+    fn cast(origin: E3<F64x4>, dir: E3<F64x4>) -> Self {
+        B::packet(origin, dir)
+    }
+    #[inline(always)]
+    fn blocked(&self, renderer: &Renderer<'_, B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
+        renderer.blocked_packet(self, t_max, skip)
     }
 }

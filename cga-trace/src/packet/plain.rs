@@ -2,10 +2,11 @@
 //! [`Plain`] in lanes — the same operations in the same order as glam's, so the same bits;
 //! other shapes one lane at a time.
 
-use super::{Crossings, Packet, Packets, crossings, inside_rim, lane, lanes3};
+use super::{Crossings, Packet, Packets, crossings, inside_rim, lane};
 use crate::backend::{Backend, Plain, PlainShape};
 use crate::camera::Camera;
 use crate::ray::in_range;
+use crate::shade::lanes3;
 use crate::shapes::Crossing;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::F64x4;
@@ -24,7 +25,7 @@ impl Packets for Plain {
     /// and `(a, b, c)` the camera's axes, as [`Plain::camera_ray`] computes it.
     #[inline(always)]
     fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Plain>> {
-        let points = lanes3(core::array::from_fn(|k| camera.image_point(u[k], v[k])));
+        let points: [F64x4; 3] = lanes3::<F64x4, 4>(core::array::from_fn(|k| camera.image_point(u[k], v[k])));
         let [a, b, c] = camera.axes();
         let d: [F64x4; 3] = core::array::from_fn(|k| {
             let axis = |e: E3| F64x4::splat(e[k]);

@@ -1,0 +1,170 @@
+//! Shading written once for one ray and for a packet of four: the ambient term, and per
+//! light the direction, Blinn–Phong terms, the shadow rays (cast together) and attenuation
+//! (eq. 12 without the reflected term), over lanes ([`RayLanes`]: a [`Ray`] is one lane, a
+//! [`Packet`](crate::packet::Packet) four). One ray and four take the same steps, so
+//! `--no-packets` gives the same bits.
+
+use crate::backend::Backend;
+use crate::light::{Light, lights};
+use crate::material::{Material, Reflectance, shine};
+use crate::ray::{Ray, leaving_origin, offset};
+use crate::render::{RayCounts, Renderer};
+use crate::shapes::ShadingPoint;
+use cga_core::Real;
+use cga_core::euclid::{E3, add, dot};
+use cga_core::simd::Lane;
+
+/// `W` rays in lanes of `Self::T`: what the shading casts its shadow rays as.
+pub trait RayLanes<B: Backend, const W: usize>: Sized {
+    /// The lanes: `f64` for one ray, `F64x4` for four.
+    type T: Lane;
+    /// The rays' origins.
+    fn origin(&self) -> E3<Self::T>;
+    /// Their unit directions.
+    fn dir(&self) -> E3<Self::T>;
+    /// Rays from `origin` along unit directions `dir` (secondary rays), as [`Backend::ray`]
+    /// makes each.
+    fn cast(origin: E3<Self::T>, dir: E3<Self::T>) -> Self;
+    /// Which rays are blocked before their `t_max` by an object other than their `skip`;
+    /// a lane with `t_max = 0` is not tested.
+    fn blocked(&self, renderer: &Renderer<'_, B>, t_max: &[f64; W], skip: &[Option<usize>; W]) -> [bool; W];
+}
+
+impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
+    type T = f64;
+    #[inline(always)]
+    fn origin(&self) -> E3 {
+        self.origin
+    }
+    #[inline(always)]
+    fn dir(&self) -> E3 {
+        self.dir
+    }
+    #[inline(always)]
+    fn cast(origin: E3, dir: E3) -> Self {
+        B::ray(origin, dir)
+    }
+    #[inline(always)]
+    fn blocked(&self, renderer: &Renderer<'_, B>, t_max: &[f64; 1], skip: &[Option<usize>; 1]) -> [bool; 1] {
+        [t_max[0] != 0.0 && renderer.blocked(self, t_max[0], skip[0])]
+    }
+}
+
+/// Points (or vectors), one per lane, as three coordinates in lanes.
+#[inline(always)]
+pub(crate) fn lanes3<T: Lane, const W: usize>(v: [E3; W]) -> E3<T> {
+    core::array::from_fn(|k| T::from_fn(|l| v[l][k]))
+}
+
+/// `x` in the lanes where `keep`, `other` elsewhere.
+#[inline(always)]
+fn select3<T: Lane, const W: usize>(keep: &[bool; W], x: E3<T>, other: E3) -> E3<T> {
+    let pick = |k: usize| T::from_fn(|l| if keep[l] { x[k].lane(l) } else { other[k] });
+    [pick(0), pick(1), pick(2)]
+}
+
+/// What one light gives hits in lanes before shadowing.
+pub(crate) struct Lit<T, const W: usize> {
+    /// Which lanes it lights: a hit, the light ahead of it and in front of the surface for
+    /// the diffuse or the specular term.
+    pub lit: [bool; W],
+    /// Unit direction to the light.
+    pub l: E3<T>,
+    /// Distance to it (frame units; ∞ for a directional light).
+    pub distance: T,
+    /// `n · l`.
+    pub diffuse: T,
+    /// `max(n · h, 0)^q`.
+    pub specular: T,
+    /// Where the shadow rays towards it start ([`leaving_origin`]).
+    pub shadow_origin: E3<T>,
+}
+
+/// The unshadowed terms of `light` at hits `x` (unit normals `n`, materials `m`, `hit` where
+/// a lane has one) seen from `v`, shadow rays starting `offset` off the surfaces; `None`
+/// where it lights no lane.
+#[inline(always)]
+pub(crate) fn lit<T: Lane, const W: usize>(
+    light: &Light,
+    (x, n, v): (E3<T>, E3<T>, E3<T>),
+    m: &[&Material; W],
+    hit: &[bool; W],
+    offset: T,
+) -> Option<Lit<T, W>> {
+    // One square root for the distance and the direction.
+    let (l, distance) = light.toward(x);
+    let diffuse = dot(n, l);
+    let specular = shine(m, n, add(l, v));
+    let lighting = lights(distance, diffuse, specular);
+    let lit: [bool; W] = core::array::from_fn(|k| hit[k] && T::mask_lane(lighting, k));
+    let shadow_origin = leaving_origin(x, n, diffuse, offset);
+    lit.iter().any(|&b| b).then_some(Lit { lit, l, distance, diffuse, specular, shadow_origin })
+}
+
+/// `f` of each lane's hit and object, 0 where a lane has none.
+#[inline(always)]
+fn by_lane<T: Lane, const W: usize>(
+    hits: &[Option<(ShadingPoint, usize)>; W],
+    f: impl Fn(&ShadingPoint, usize) -> f64,
+) -> T {
+    T::from_fn(|l| hits[l].as_ref().map_or(0.0, |(h, k)| f(h, *k)))
+}
+
+/// A material for lanes without a hit (their terms are not used).
+const NO_MATERIAL: Material = Material { colour: [0.0; 3], ka: 0.0, kd: 0.0, ks: 0.0, q: 0.0, kr: 0.0 };
+
+impl<B: Backend> Renderer<'_, B> {
+    /// The ambient and direct light at the rays' hits (object index per lane), the shadow
+    /// rays towards each light cast together (a flat object's own skipped, each starting off
+    /// its hit by the object's crossing error); the background where a lane has no hit:
+    /// `c k_a A + Σ_i S_i f_att,i (c k_d max(n·l_i, 0) + k_s max(n·h_i, 0)^q) L_i`.
+    #[inline(always)]
+    pub(crate) fn shade<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        rays: &R,
+        hits: &[Option<(ShadingPoint, usize)>; W],
+        cast: &mut RayCounts,
+    ) -> [[f64; 3]; W] {
+        let (settings, objects) = (&self.scene.settings, &self.scene.objects);
+        // Arrays built by index, not by `map`: LLVM leaves `map` over these arrays out of
+        // line, outside the AVX2 code.
+        let mut colours: [[f64; 3]; W] =
+            core::array::from_fn(|l| hits[l].as_ref().map_or(settings.background, |(_, k)| self.ambient(&objects[*k])));
+        if !hits.iter().any(Option::is_some) {
+            return colours;
+        }
+        let x: E3<R::T> =
+            [by_lane(hits, |h, _| h.point[0]), by_lane(hits, |h, _| h.point[1]), by_lane(hits, |h, _| h.point[2])];
+        let n: E3<R::T> =
+            [by_lane(hits, |h, _| h.normal[0]), by_lane(hits, |h, _| h.normal[1]), by_lane(hits, |h, _| h.normal[2])];
+        let v = rays.dir().map(|d| -d);
+        let m: [&Material; W] =
+            core::array::from_fn(|l| hits[l].as_ref().map_or(&NO_MATERIAL, |(_, k)| &objects[*k].material));
+        let own: [Option<usize>; W] = core::array::from_fn(|l| hits[l].as_ref().and_then(|(_, k)| self.skip_own(*k)));
+        let offset = offset(x, rays.origin(), by_lane(hits, |_, k| self.errors[k]));
+        let hit: [bool; W] = core::array::from_fn(|l| hits[l].is_some());
+        for light in &self.scene.lights {
+            let Some(Lit { lit, l, distance, diffuse, specular, shadow_origin }) =
+                lit(light, (x, n, v), &m, &hit, offset)
+            else {
+                continue;
+            };
+            let mut s = R::T::one();
+            if settings.shadows {
+                cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
+                // Unlit lanes cast a harmless ray with an empty range.
+                let shadow = R::cast(select3(&lit, shadow_origin, [0.0; 3]), select3(&lit, l, [0.0, 0.0, 1.0]));
+                let t_max = core::array::from_fn(|k| if lit[k] { distance.lane(k) } else { 0.0 });
+                let blocked = shadow.blocked(self, &t_max, &own);
+                s = R::T::from_fn(|k| if blocked[k] { settings.shadow_transmission } else { 1.0 });
+            }
+            let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, s);
+            for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
+                for (out, t) in colour.iter_mut().zip(&term) {
+                    *out += t.lane(k);
+                }
+            }
+        }
+        colours
+    }
+}
