@@ -19,6 +19,7 @@ pub mod limits;
 pub mod material;
 #[cfg(feature = "evolved")]
 pub mod mesh;
+mod nearest;
 pub mod object;
 pub mod output;
 pub mod packet;

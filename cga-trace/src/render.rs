@@ -11,7 +11,7 @@ use crate::film::Film;
 use crate::light::{Light, attenuation, blinn_phong};
 use crate::material::Reflectance;
 use crate::object::Object;
-use crate::ray::{Ray, crosses, mirror, offset};
+use crate::ray::{Ray, mirror, offset};
 use crate::scene::Scene;
 use crate::shade::lit;
 use crate::shapes::{Crossing, ShadingPoint};
@@ -110,9 +110,9 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// off or the scene has a hierarchy.
     pub(crate) packets: bool,
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
-    bounds: Vec<Option<(E3, f64)>>,
+    pub(crate) bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
-    bvh: Option<Bvh>,
+    pub(crate) bvh: Option<Bvh>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
     pub(crate) flat: Vec<bool>,
     /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
@@ -182,27 +182,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// The nearest crossing with `t_min < t < t_max` over all objects (each beyond its own
     /// [crossing error](Renderer::t_min)), and the object's index.
-    fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, mut t_max: f64) -> Option<(Crossing, usize)> {
-        let mut best = None;
-        if let Some(bvh) = &self.bvh {
-            bvh.traverse(ray.origin, ray.dir, t_min, t_max, |k, t_max| {
-                let c = B::intersect(&self.shapes[k], ray, self.t_min(k, t_min), t_max);
-                Some(c.map_or(t_max, |c| {
-                    best = Some((c, k));
-                    c.t
-                }))
-            });
-            return best;
-        }
-        for (k, shape) in self.shapes.iter().enumerate() {
-            if self.bounds[k].is_some_and(|(c, r)| !crosses(ray, c, r, t_min, t_max)) {
-                continue;
-            }
-            if let Some(c) = B::intersect(shape, ray, self.t_min(k, t_min), t_max) {
-                t_max = c.t;
-                best = Some((c, k));
-            }
-        }
+    fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Crossing, usize)> {
+        let [best] = self.crossings(ray, t_min, [t_max]);
         best
     }
 
@@ -222,24 +203,6 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// Object `k` if its shape is flat (its own shadow rays need not test it).
     pub(crate) fn skip_own(&self, k: usize) -> Option<usize> {
         self.flat[k].then_some(k)
-    }
-
-    /// Whether anything but object `skip` lies on the ray before `t_max`: stops at the first
-    /// blocker, and computes no normals.
-    pub(crate) fn blocked(&self, ray: &Ray<B::Carrier>, t_max: f64, skip: Option<usize>) -> bool {
-        if let Some(bvh) = &self.bvh {
-            let mut blocked = false;
-            bvh.traverse(ray.origin, ray.dir, 0.0, t_max, |k, t| {
-                blocked = Some(k) != skip && B::intersect(&self.shapes[k], ray, self.t_min(k, 0.0), t).is_some();
-                (!blocked).then_some(t)
-            });
-            return blocked;
-        }
-        self.shapes.iter().zip(&self.bounds).enumerate().any(|(k, (shape, bound))| {
-            Some(k) != skip
-                && bound.is_none_or(|(c, r)| crosses(ray, c, r, 0.0, t_max))
-                && B::intersect(shape, ray, self.t_min(k, 0.0), t_max).is_some()
-        })
     }
 
     /// The rays a one-sample render of `window` casts before any reflection: each pixel

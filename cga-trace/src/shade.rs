@@ -9,7 +9,7 @@ use crate::light::{Light, lights};
 use crate::material::{Material, Reflectance, shine};
 use crate::ray::{Ray, leaving_origin, offset};
 use crate::render::{RayCounts, Renderer};
-use crate::shapes::ShadingPoint;
+use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Real;
 use cga_core::euclid::{E3, add, dot};
 use cga_core::simd::Lane;
@@ -25,9 +25,11 @@ pub trait RayLanes<B: Backend, const W: usize>: Sized {
     /// Rays from `origin` along unit directions `dir` (secondary rays), as [`Backend::ray`]
     /// makes each.
     fn cast(origin: E3<Self::T>, dir: E3<Self::T>) -> Self;
-    /// Which rays are blocked before their `t_max` by an object other than their `skip`;
-    /// a lane with `t_max = 0` is not tested.
-    fn blocked(&self, renderer: &Renderer<'_, B>, t_max: &[f64; W], skip: &[Option<usize>; W]) -> [bool; W];
+    /// Lane `l`'s ray (for what runs per lane: a BVH's traversal, bounding spheres, normals).
+    fn ray(&self, l: usize) -> &Ray<B::Carrier>;
+    /// The crossings of the rays with `shape` within their ranges, as [`Backend::intersect`]
+    /// finds each; a lane with `t_max = −∞` finds nothing.
+    fn cross(&self, shape: &B::Shape, t_min: &[f64; W], t_max: &[f64; W]) -> [Option<Crossing>; W];
 }
 
 impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
@@ -45,8 +47,12 @@ impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
         B::ray(origin, dir)
     }
     #[inline(always)]
-    fn blocked(&self, renderer: &Renderer<'_, B>, t_max: &[f64; 1], skip: &[Option<usize>; 1]) -> [bool; 1] {
-        [t_max[0] != 0.0 && renderer.blocked(self, t_max[0], skip[0])]
+    fn ray(&self, _: usize) -> &Ray<B::Carrier> {
+        self
+    }
+    #[inline(always)]
+    fn cross(&self, shape: &B::Shape, t_min: &[f64; 1], t_max: &[f64; 1]) -> [Option<Crossing>; 1] {
+        [B::intersect(shape, self, t_min[0], t_max[0])]
     }
 }
 
@@ -155,7 +161,7 @@ impl<B: Backend> Renderer<'_, B> {
                 // Unlit lanes cast a harmless ray with an empty range.
                 let shadow = R::cast(select3(&lit, shadow_origin, [0.0; 3]), select3(&lit, l, [0.0, 0.0, 1.0]));
                 let t_max = core::array::from_fn(|k| if lit[k] { distance.lane(k) } else { 0.0 });
-                let blocked = shadow.blocked(self, &t_max, &own);
+                let blocked = self.blocked(&shadow, &t_max, &own);
                 s = R::T::from_fn(|k| if blocked[k] { settings.shadow_transmission } else { 1.0 });
             }
             let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, s);

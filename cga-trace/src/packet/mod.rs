@@ -116,55 +116,6 @@ fn mirror_packet<B: Packets>(
 }
 
 impl<'a, B: Packets> Renderer<'a, B> {
-    /// The crossings of the packet's rays with object `k`.
-    #[inline(always)]
-    fn cross(&self, k: usize, p: &Packet<B>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
-        B::cross4(&self.shapes[k], p, t_min, t_max)
-    }
-
-    /// The nearest crossing per active lane over all objects (each beyond its crossing error,
-    /// [`Renderer::t_min`]), and its object.
-    #[inline(always)]
-    fn nearest_packet(&self, p: &Packet<B>, active: &[bool; 4]) -> [Option<(Crossing, usize)>; 4] {
-        // An inactive lane's range is empty: it finds nothing.
-        let mut t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
-        let mut best = [None; 4];
-        for k in 0..self.shapes.len() {
-            let t_min = [self.t_min(k, 0.0); 4];
-            for (l, c) in self.cross(k, p, &t_min, &t_max).into_iter().enumerate() {
-                if let Some(c) = c {
-                    t_max[l] = c.t;
-                    best[l] = Some((c, k));
-                }
-            }
-        }
-        best
-    }
-
-    /// Which lanes' rays are blocked before their `t_max` by an object other than the lane's
-    /// `skip` (a lane with `t_max = 0` is inactive and never blocked): stops once every
-    /// active lane is blocked, and skips an object no lane tests.
-    #[inline(always)]
-    pub(crate) fn blocked_packet(&self, p: &Packet<B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
-        let mut blocked = t_max.map(|t| t.is_nan() || t <= 0.0);
-        let active = blocked.map(|b| !b);
-        for k in 0..self.shapes.len() {
-            let t_min = [self.t_min(k, 0.0); 4];
-            if blocked.iter().all(|&b| b) {
-                break;
-            }
-            let tests: [bool; 4] = core::array::from_fn(|l| !blocked[l] && skip[l] != Some(k));
-            if !tests.iter().any(|&b| b) {
-                continue;
-            }
-            let limit: [f64; 4] = core::array::from_fn(|l| if tests[l] { t_max[l] } else { f64::NEG_INFINITY });
-            for (l, c) in self.cross(k, p, &t_min, &limit).into_iter().enumerate() {
-                blocked[l] |= c.is_some();
-            }
-        }
-        core::array::from_fn(|l| active[l] && blocked[l])
-    }
-
     /// Four neighbouring pixels of a row, `(i₀ + k, j)`, through packets, sample by sample
     /// (sample `s` of the four pixels is one packet) — the camera rays, the mirror bounces of
     /// those that hit mirrors (lanes whose ray has ended ride along, inactive), and at every
@@ -225,7 +176,9 @@ impl<'a, B: Packets> Renderer<'a, B> {
         let mut layers: [Layers; 4] = Default::default();
         let mut depth = 0;
         while active.iter().any(|&a| a) {
-            let nearest = self.nearest_packet(&packet, &active);
+            // An inactive lane's range is empty: it finds nothing.
+            let nearest =
+                self.crossings(&packet, 0.0, active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY }));
             let hits: [Option<(ShadingPoint, usize)>; 4] = core::array::from_fn(|l| {
                 nearest[l].map(|(c, k)| {
                     let normal = B::normal(&self.shapes[k], &packet.rays[l], &c);
@@ -277,7 +230,11 @@ impl<B: Packets> RayLanes<B, 4> for Packet<B> {
         B::packet(origin, dir)
     }
     #[inline(always)]
-    fn blocked(&self, renderer: &Renderer<'_, B>, t_max: &[f64; 4], skip: &[Option<usize>; 4]) -> [bool; 4] {
-        renderer.blocked_packet(self, t_max, skip)
+    fn ray(&self, l: usize) -> &Ray<B::Carrier> {
+        &self.rays[l]
+    }
+    #[inline(always)]
+    fn cross(&self, shape: &B::Shape, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+        B::cross4(shape, self, t_min, t_max)
     }
 }

@@ -1,0 +1,100 @@
+//! The nearest crossing along rays, and whether anything blocks them, written once for one
+//! ray and for a packet ([`RayLanes`]): one ray through the BVH where the scene has one;
+//! otherwise every object in turn, in lanes (packets run only in scenes without a BVH, and
+//! would meet every object in one).
+
+use crate::backend::Backend;
+use crate::ray::crosses;
+use crate::render::Renderer;
+use crate::shade::RayLanes;
+use crate::shapes::Crossing;
+
+impl<B: Backend> Renderer<'_, B> {
+    /// The nearest crossing per lane with `t_min < t < t_max[l]` over all objects (each
+    /// beyond its own [crossing error](Renderer::t_min)), and its object; a lane with
+    /// `t_max = −∞` finds nothing.
+    #[inline(always)]
+    pub(crate) fn crossings<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        rays: &R,
+        t_min: f64,
+        mut t_max: [f64; W],
+    ) -> [Option<(Crossing, usize)>; W] {
+        let mut best = [None; W];
+        if let Some(bvh) = self.bvh.as_ref().filter(|_| W == 1) {
+            for (l, best) in best.iter_mut().enumerate() {
+                let ray = rays.ray(l);
+                bvh.traverse(ray.origin, ray.dir, t_min, t_max[l], |k, t_max| {
+                    let c = B::intersect(&self.shapes[k], ray, self.t_min(k, t_min), t_max);
+                    Some(c.map_or(t_max, |c| {
+                        *best = Some((c, k));
+                        c.t
+                    }))
+                });
+            }
+            return best;
+        }
+        for k in 0..self.shapes.len() {
+            if self.culled(rays, k, t_min, &t_max) {
+                continue;
+            }
+            for (l, c) in rays.cross(&self.shapes[k], &[self.t_min(k, t_min); W], &t_max).into_iter().enumerate() {
+                if let Some(c) = c {
+                    t_max[l] = c.t;
+                    best[l] = Some((c, k));
+                }
+            }
+        }
+        best
+    }
+
+    /// Which rays are blocked before their `t_max` by an object other than the lane's
+    /// `skip` (a lane with `t_max ≤ 0` or NaN is inactive and never blocked): stops at the
+    /// first blocker (once every active lane is blocked), and computes no normals.
+    #[inline(always)]
+    pub(crate) fn blocked<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        rays: &R,
+        t_max: &[f64; W],
+        skip: &[Option<usize>; W],
+    ) -> [bool; W] {
+        // Inactive lanes count as blocked while the objects are met, and are not at the end.
+        let active = t_max.map(|t| t > 0.0);
+        let mut blocked = active.map(|a| !a);
+        if let Some(bvh) = self.bvh.as_ref().filter(|_| W == 1) {
+            for l in (0..W).filter(|&l| active[l]) {
+                let ray = rays.ray(l);
+                bvh.traverse(ray.origin, ray.dir, 0.0, t_max[l], |k, t| {
+                    blocked[l] =
+                        Some(k) != skip[l] && B::intersect(&self.shapes[k], ray, self.t_min(k, 0.0), t).is_some();
+                    (!blocked[l]).then_some(t)
+                });
+            }
+            return core::array::from_fn(|l| active[l] && blocked[l]);
+        }
+        for k in 0..self.shapes.len() {
+            if blocked.iter().all(|&b| b) {
+                break;
+            }
+            let tests: [bool; W] = core::array::from_fn(|l| !blocked[l] && skip[l] != Some(k));
+            if !tests.iter().any(|&b| b) {
+                continue;
+            }
+            let range = core::array::from_fn(|l| if tests[l] { t_max[l] } else { f64::NEG_INFINITY });
+            if self.culled(rays, k, 0.0, &range) {
+                continue;
+            }
+            for (l, c) in rays.cross(&self.shapes[k], &[self.t_min(k, 0.0); W], &range).into_iter().enumerate() {
+                blocked[l] |= c.is_some();
+            }
+        }
+        core::array::from_fn(|l| active[l] && blocked[l])
+    }
+
+    /// Whether one ray cannot cross object `k`'s bounding sphere within `(t_min, t_max)`.
+    /// A packet meets every object (its meets in lanes cost less than four such tests).
+    #[inline(always)]
+    fn culled<R: RayLanes<B, W>, const W: usize>(&self, rays: &R, k: usize, t_min: f64, t_max: &[f64; W]) -> bool {
+        W == 1 && self.bounds[k].is_some_and(|(c, r)| !crosses(rays.ray(0), c, r, t_min, t_max[0]))
+    }
+}
