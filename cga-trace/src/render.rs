@@ -11,9 +11,9 @@ use crate::film::Film;
 use crate::light::{Light, attenuation, blinn_phong};
 use crate::material::Reflectance;
 use crate::object::Object;
-use crate::ray::{Ray, mirror, offset};
+use crate::ray::{Ray, offset};
 use crate::scene::Scene;
-use crate::shade::lit;
+use crate::shade::{lit, mirrored};
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Select;
 use cga_core::euclid::{E3, dot, scale};
@@ -283,7 +283,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             }
             cast.reflection += 1;
             layers.push((local, kr));
-            (ray, depth) = (mirror_ray::<B>(&ray, &hit, self.errors[k]), depth + 1);
+            (ray, depth) = (mirrored::<B, _, 1>(&ray, &[Some((hit, k))], &[self.errors[k]], &[true]), depth + 1);
             let Some((next, next_k)) = self.hit(&ray, 0.0, f64::INFINITY) else {
                 break settings.background;
             };
@@ -482,14 +482,6 @@ pub(crate) type Layers = SmallVec<[([f64; 3], f64); 8]>;
 /// `I = I_local + k_r I_below` from the deepest bounce up, as recursion would sum it.
 pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
     layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
-}
-
-/// The mirror bounce of `ray` at `hit` on a shape whose crossings lie within `error` of it:
-/// `dir` and the normal are unit, so the reflected direction is (to rounding), and the ray
-/// starts off the surface ([`leaving_origin`]).
-pub(crate) fn mirror_ray<B: Backend>(ray: &Ray<B::Carrier>, hit: &ShadingPoint, error: f64) -> Ray<B::Carrier> {
-    let (origin, r) = mirror(ray.dir, ray.origin, hit.point, hit.normal, error);
-    B::ray(origin, r)
 }
 
 #[cfg(test)]

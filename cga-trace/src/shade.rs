@@ -7,7 +7,7 @@
 use crate::backend::Backend;
 use crate::light::{Light, lights};
 use crate::material::{Material, Reflectance, shine};
-use crate::ray::{Ray, leaving_origin, offset};
+use crate::ray::{Ray, leaving_origin, mirror, offset};
 use crate::render::{RayCounts, Renderer};
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Real;
@@ -54,6 +54,26 @@ impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
     fn cross(&self, shape: &B::Shape, t_min: &[f64; 1], t_max: &[f64; 1]) -> [Option<Crossing>; 1] {
         [B::intersect(shape, self, t_min[0], t_max[0])]
     }
+}
+
+/// The mirror bounces of the lanes that `bounce` at their hits (object index per lane), each
+/// off its object's crossing error `errors` ([`mirror`] in lanes: the reflected direction,
+/// starting off the surface); the other lanes keep their ray (a zero normal reflects nothing).
+#[inline(always)]
+pub(crate) fn mirrored<B: Backend, R: RayLanes<B, W>, const W: usize>(
+    rays: &R,
+    hits: &[Option<(ShadingPoint, usize)>; W],
+    errors: &[f64; W],
+    bounce: &[bool; W],
+) -> R {
+    let at = |l: usize| match hits[l] {
+        Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
+        _ => (rays.ray(l).origin, [0.0; 3]),
+    };
+    let x: E3<R::T> = lanes3::<R::T, W>(core::array::from_fn(|l| at(l).0));
+    let n: E3<R::T> = lanes3::<R::T, W>(core::array::from_fn(|l| at(l).1));
+    let (origin, r) = mirror(rays.dir(), rays.origin(), x, n, R::T::from_fn(|l| errors[l]));
+    R::cast(origin, r)
 }
 
 /// Points (or vectors), one per lane, as three coordinates in lanes.

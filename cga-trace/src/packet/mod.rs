@@ -16,9 +16,9 @@ mod sparse;
 
 use crate::backend::Backend;
 use crate::camera::Camera;
-use crate::ray::{Ray, mirror};
+use crate::ray::Ray;
 use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
-use crate::shade::{RayLanes, lanes3};
+use crate::shade::{RayLanes, lanes3, mirrored};
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::simd::F64x4;
@@ -93,26 +93,6 @@ fn crossings(ok: [bool; 4], t: [f64; 4], x: &[F64x4; 3]) -> Crossings {
         return [None; 4];
     }
     core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(x, l), alpha: None }))
-}
-
-/// The mirror bounces of the lanes that `bounce` (`mirror_ray` lane by lane, each off its
-/// object's crossing error `errors`); the other lanes keep their ray (a zero normal reflects
-/// nothing).
-#[inline(always)]
-fn mirror_packet<B: Packets>(
-    p: &Packet<B>,
-    hits: &[Option<(ShadingPoint, usize)>; 4],
-    errors: &[f64; 4],
-    bounce: &[bool; 4],
-) -> Packet<B> {
-    let at = |l: usize| match hits[l] {
-        Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
-        _ => (p.rays[l].origin, [0.0; 3]),
-    };
-    let (x, n): ([F64x4; 3], [F64x4; 3]) =
-        (lanes3::<F64x4, 4>(core::array::from_fn(|l| at(l).0)), lanes3::<F64x4, 4>(core::array::from_fn(|l| at(l).1)));
-    let (origin, r) = mirror(p.dir, p.origin, x, n, F64x4::new(*errors));
-    B::packet(origin, r)
 }
 
 impl<'a, B: Packets> Renderer<'a, B> {
@@ -206,7 +186,7 @@ impl<'a, B: Packets> Renderer<'a, B> {
                 bounce[l] = true;
             }
             if bounce.iter().any(|&b| b) {
-                packet = mirror_packet(&packet, &hits, &errors, &bounce);
+                packet = mirrored(&packet, &hits, &errors, &bounce);
             }
             depth += 1;
         }
