@@ -14,6 +14,7 @@ pub mod film;
 pub mod format;
 pub mod frame;
 pub mod invalid;
+pub mod lanes;
 pub mod light;
 pub mod limits;
 pub mod material;

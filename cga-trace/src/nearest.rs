@@ -4,9 +4,9 @@
 //! would meet every object in one).
 
 use crate::backend::Backend;
+use crate::lanes::RayLanes;
 use crate::ray::crosses;
 use crate::render::Renderer;
-use crate::shade::RayLanes;
 use crate::shapes::Crossing;
 
 impl<B: Backend> Renderer<'_, B> {

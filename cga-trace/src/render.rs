@@ -8,12 +8,12 @@
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
+use crate::lanes::{lit, mirrored};
 use crate::light::{Light, attenuation, blinn_phong};
 use crate::material::Reflectance;
 use crate::object::Object;
 use crate::ray::{Ray, offset};
 use crate::scene::Scene;
-use crate::shade::{lit, mirrored};
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::Select;
 use cga_core::euclid::{E3, dot, scale};

@@ -16,9 +16,9 @@ mod sparse;
 
 use crate::backend::Backend;
 use crate::camera::Camera;
+use crate::lanes::{RayLanes, lanes3, mirrored};
 use crate::ray::Ray;
 use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
-use crate::shade::{RayLanes, lanes3, mirrored};
 use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::simd::F64x4;

@@ -5,8 +5,8 @@
 use super::{Crossings, Packet, Packets, crossings, inside_rim, lane};
 use crate::backend::{Backend, Plain, PlainShape};
 use crate::camera::Camera;
+use crate::lanes::lanes3;
 use crate::ray::in_range;
-use crate::shade::lanes3;
 use crate::shapes::Crossing;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::F64x4;
