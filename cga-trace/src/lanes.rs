@@ -3,6 +3,7 @@
 //! what one light gives the hits (`lit`), and the mirror bounce (`mirrored`).
 
 use crate::backend::Backend;
+use crate::camera::Camera;
 use crate::light::{Light, lights};
 use crate::material::{Material, shine};
 use crate::ray::{Ray, leaving_origin, mirror};
@@ -21,6 +22,9 @@ pub trait RayLanes<B: Backend, const W: usize>: Sized {
     /// Rays from `origin` along unit directions `dir` (secondary rays), as [`Backend::ray`]
     /// makes each.
     fn cast(origin: E3<Self::T>, dir: E3<Self::T>) -> Self;
+    /// The camera rays through continuous pixel coordinates `(u_l, v_l)`, as
+    /// [`Backend::camera_ray`] makes each; `None` where one cannot be formed.
+    fn camera(camera: &Camera, u: [f64; W], v: [f64; W]) -> Option<Self>;
     /// Lane `l`'s ray (for what runs per lane: a BVH's traversal, bounding spheres, normals).
     fn ray(&self, l: usize) -> &Ray<B::Carrier>;
     /// The crossings of the rays with `shape` within their ranges, as [`Backend::intersect`]
@@ -41,6 +45,10 @@ impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
     #[inline(always)]
     fn cast(origin: E3, dir: E3) -> Self {
         B::ray(origin, dir)
+    }
+    #[inline(always)]
+    fn camera(camera: &Camera, u: [f64; 1], v: [f64; 1]) -> Option<Self> {
+        B::camera_ray(camera, u[0], v[0])
     }
     #[inline(always)]
     fn ray(&self, _: usize) -> &Ray<B::Carrier> {

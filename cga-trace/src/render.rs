@@ -8,7 +8,7 @@
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
 use crate::film::Film;
-use crate::lanes::{lit, mirrored};
+use crate::lanes::{RayLanes, lit, mirrored};
 use crate::light::{Light, attenuation, blinn_phong};
 use crate::material::Reflectance;
 use crate::object::Object;
@@ -241,56 +241,69 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// The colour seen along `ray`, `depth` bounces deep.
     pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
         let mut cast = RayCounts::default();
-        let colour = self.trace_counted(ray, depth, &mut cast);
+        let [colour] = self.trace_lanes(*ray, depth, &mut cast);
         self.count(&cast);
         colour
     }
 
-    /// [`Renderer::trace`], counting the rays cast into `cast` (shared counters would be
-    /// contended by every thread on every ray).
+    /// The colours seen along rays in lanes, `depth` bounces already made, counting the
+    /// rays cast into `cast` (shared counters would be contended by every thread on every
+    /// ray): nearest hit, normal, shading, and the mirror bounces of the lanes whose hit
+    /// reflects (lanes whose ray has ended ride along with an empty range).
     ///
     /// Bounces are followed in a loop, not by recursion, so that no depth can overflow the
     /// stack: each hit's own colour and `k_r` are kept, and summed from the deepest up as
     /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
     /// order, so the same bits).
-    fn trace_counted(&self, ray: &Ray<B::Carrier>, depth: u32, cast: &mut RayCounts) -> [f64; 3] {
-        let Some((hit, k)) = self.hit(ray, 0.0, f64::INFINITY) else {
-            return self.scene.settings.background;
-        };
-        let [local] = self.shade(ray, &[Some((hit, k))], cast);
-        self.reflect_from(ray, &hit, k, local, depth, cast)
-    }
-
-    /// `I = I_local + k_r I_reflected` at a hit of `ray` whose own colour is `local`,
-    /// following the mirror bounces from it (`depth` already made).
-    pub(crate) fn reflect_from(
+    #[inline(always)]
+    pub(crate) fn trace_lanes<R: RayLanes<B, W>, const W: usize>(
         &self,
-        ray: &Ray<B::Carrier>,
-        hit: &ShadingPoint,
-        k: usize,
-        local: [f64; 3],
-        depth: u32,
+        mut rays: R,
+        mut depth: u32,
         cast: &mut RayCounts,
-    ) -> [f64; 3] {
+    ) -> [[f64; 3]; W] {
         let settings = &self.scene.settings;
-        let mut layers = Layers::new();
-        let (mut ray, mut hit, mut k, mut local, mut depth) = (*ray, *hit, k, local, depth);
-        let mut object = &self.scene.objects[k];
-        let deepest = loop {
-            let kr = object.material.kr;
-            if !(kr > 0.0 && depth < settings.max_depth) {
-                break local;
+        let mut active = [true; W];
+        let mut deepest = [settings.background; W];
+        let mut layers: [Layers; W] = core::array::from_fn(|_| Layers::new());
+        while active.iter().any(|&a| a) {
+            // An inactive lane's range is empty: it finds nothing. (`map`, not `from_fn`,
+            // here and for `errors`: LLVM leaves `from_fn` over them out of line, 7 % more
+            // instructions on the anchor scene.)
+            let t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
+            let nearest = self.crossings(&rays, 0.0, t_max);
+            let hits: [Option<(ShadingPoint, usize)>; W] = core::array::from_fn(|l| {
+                nearest[l].map(|(c, k)| {
+                    let normal = B::normal(&self.shapes[k], rays.ray(l), &c);
+                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
+                })
+            });
+            let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
+            let local = self.shade(&rays, &hits, cast);
+            let mut bounce = [false; W];
+            for l in 0..W {
+                if !active[l] {
+                    continue;
+                }
+                let Some((_, k)) = hits[l] else {
+                    (deepest[l], active[l]) = (settings.background, false);
+                    continue;
+                };
+                let kr = self.scene.objects[k].material.kr;
+                if !(kr > 0.0 && depth < settings.max_depth) {
+                    (deepest[l], active[l]) = (local[l], false);
+                    continue;
+                }
+                cast.reflection += 1;
+                layers[l].push((local[l], kr));
+                bounce[l] = true;
             }
-            cast.reflection += 1;
-            layers.push((local, kr));
-            (ray, depth) = (mirrored::<B, _, 1>(&ray, &[Some((hit, k))], &[self.errors[k]], &[true]), depth + 1);
-            let Some((next, next_k)) = self.hit(&ray, 0.0, f64::INFINITY) else {
-                break settings.background;
-            };
-            [local] = self.shade(&ray, &[Some((next, next_k))], cast);
-            (hit, object, k) = (next, &self.scene.objects[next_k], next_k);
-        };
-        sum_layers(&layers, deepest)
+            if bounce.iter().any(|&b| b) {
+                rays = mirrored(&rays, &hits, &errors, &bounce);
+            }
+            depth += 1;
+        }
+        core::array::from_fn(|l| sum_layers(&layers[l], deepest[l]))
     }
 
     /// `c k_a A`: the ambient light on an object.
@@ -325,39 +338,88 @@ impl<'a, B: Backend> Renderer<'a, B> {
     }
 
     /// One pixel, averaged over the scene's `spp` samples ([`sample_offset`]; the centre
-    /// alone for one sample).
+    /// alone for one sample); the background where the camera forms no ray.
     fn pixel_counted(&self, i: u32, j: u32, aov: Aov, cast: &mut RayCounts) -> [f64; 3] {
-        let spp = self.scene.settings.spp.max(1);
-        if spp == 1 {
-            return self.sample(f64::from(i) + 0.5, f64::from(j) + 0.5, aov, cast);
-        }
-        let mut sum = [0.0; 3];
-        for s in 0..spp {
-            let (du, dv) = sample_offset(i, j, s);
-            let c = self.sample(f64::from(i) + du, f64::from(j) + dv, aov, cast);
-            sum = [0, 1, 2].map(|k| sum[k] + c[k]);
-        }
-        sum.map(|x| x / f64::from(spp))
+        self.pixels::<Ray<B::Carrier>, 1>(i, j, aov, cast).map_or(self.scene.settings.background, |[c]| c)
     }
 
-    /// The colour (or AOV) seen at continuous pixel coordinates `(u, v)`.
-    fn sample(&self, u: f64, v: f64, aov: Aov, cast: &mut RayCounts) -> [f64; 3] {
-        let Some(ray) = B::camera_ray(&self.scene.camera, u, v) else {
-            return self.scene.settings.background;
-        };
-        cast.primary += 1;
-        match aov {
-            Aov::Shaded => self.trace_counted(&ray, 0, cast),
-            Aov::Normal => {
-                self.nearest(&ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
+    /// `W` neighbouring pixels of a row, `(i₀ + k, j)`, each averaged over the scene's
+    /// `spp` samples, sample `s` of the `W` pixels cast as one set of rays in lanes; `None`
+    /// where the camera forms no ray (nothing is counted then).
+    #[inline(always)]
+    pub(crate) fn pixels<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        i0: u32,
+        j: u32,
+        aov: Aov,
+        cast: &mut RayCounts,
+    ) -> Option<[[f64; 3]; W]> {
+        let spp = self.scene.settings.spp.max(1);
+        let mut counted = RayCounts::default();
+        let colours = if spp == 1 {
+            let u = core::array::from_fn(|k| f64::from(i0 + k as u32) + 0.5);
+            self.samples::<R, W>(u, [f64::from(j) + 0.5; W], aov, &mut counted)?
+        } else {
+            let mut sum = [[0.0; 3]; W];
+            for s in 0..spp {
+                let (mut u, mut v) = ([0.0; W], [0.0; W]);
+                for k in 0..W {
+                    let (du, dv) = sample_offset(i0 + k as u32, j, s);
+                    (u[k], v[k]) = (f64::from(i0 + k as u32) + du, f64::from(j) + dv);
+                }
+                let colours = self.samples::<R, W>(u, v, aov, &mut counted)?;
+                for (sum, c) in sum.iter_mut().zip(colours) {
+                    *sum = [sum[0] + c[0], sum[1] + c[1], sum[2] + c[2]];
+                }
             }
-            Aov::Alpha => match self.nearest(&ray, 0.0, f64::INFINITY) {
+            let n = f64::from(spp);
+            for c in &mut sum {
+                *c = [c[0] / n, c[1] / n, c[2] / n];
+            }
+            sum
+        };
+        cast.add(&counted);
+        Some(colours)
+    }
+
+    /// The colours (or AOVs, lane by lane) seen at continuous pixel coordinates
+    /// `(u_k, v_k)`.
+    #[inline(always)]
+    fn samples<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        u: [f64; W],
+        v: [f64; W],
+        aov: Aov,
+        cast: &mut RayCounts,
+    ) -> Option<[[f64; 3]; W]> {
+        if aov != Aov::Shaded {
+            let mut out = [[0.0; 3]; W];
+            for l in 0..W {
+                let ray = B::camera_ray(&self.scene.camera, u[l], v[l])?;
+                cast.primary += 1;
+                out[l] = self.aov(&ray, aov);
+            }
+            return Some(out);
+        }
+        let rays = R::camera(&self.scene.camera, u, v)?;
+        cast.primary += W as u64;
+        Some(self.trace_lanes(rays, 0, cast))
+    }
+
+    /// What AOV `aov` shows along `ray`.
+    fn aov(&self, ray: &Ray<B::Carrier>, aov: Aov) -> [f64; 3] {
+        match aov {
+            Aov::Shaded => self.trace(ray, 0),
+            Aov::Normal => {
+                self.nearest(ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
+            }
+            Aov::Alpha => match self.nearest(ray, 0.0, f64::INFINITY) {
                 Some((ShadingPoint { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
                 _ => [0.0; 3],
             },
             // (value, 1) where the surface has a curvature, (0, 0) elsewhere: averaged over
             // samples, value / weight is the mean over the samples that had one.
-            _ => match self.nearest(&ray, 0.0, f64::INFINITY) {
+            _ => match self.nearest(ray, 0.0, f64::INFINITY) {
                 Some((hit, object)) => {
                     let crossing = Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
                     let scale = self.scene.frame.scale;

@@ -16,10 +16,10 @@ mod sparse;
 
 use crate::backend::Backend;
 use crate::camera::Camera;
-use crate::lanes::{RayLanes, lanes3, mirrored};
+use crate::lanes::{RayLanes, lanes3};
 use crate::ray::Ray;
-use crate::render::{Layers, RayCounts, Renderer, sample_offset, sum_layers};
-use crate::shapes::{Crossing, ShadingPoint};
+use crate::render::{Aov, RayCounts, Renderer};
+use crate::shapes::Crossing;
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::simd::F64x4;
 #[cfg(target_arch = "x86_64")]
@@ -110,87 +110,13 @@ impl<'a, B: Packets> Renderer<'a, B> {
             // SAFETY: the CPU has the features the function is compiled for.
             return unsafe { self.pixels4_avx2(i0, j, cast) };
         }
-        self.pixels4_lanes(i0, j, cast)
+        self.pixels::<Packet<B>, 4>(i0, j, Aov::Shaded, cast)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     unsafe fn pixels4_avx2(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        self.pixels4_lanes(i0, j, cast)
-    }
-
-    #[inline(always)]
-    fn pixels4_lanes(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        let spp = self.scene.settings.spp.max(1);
-        let pixels = [0, 1, 2, 3].map(|k| i0 + k);
-        let mut counted = RayCounts::default();
-        if spp == 1 {
-            let centre = |i: u32| f64::from(i) + 0.5;
-            let colours = self.samples4(pixels.map(centre), [centre(j); 4], &mut counted)?;
-            cast.add(&counted);
-            return Some(colours);
-        }
-        // As `Renderer::pixel` sums them: sample by sample, then divided by their number.
-        let mut sum = [[0.0; 3]; 4];
-        for s in 0..spp {
-            let offsets = pixels.map(|i| sample_offset(i, j, s));
-            let u = core::array::from_fn(|k| f64::from(pixels[k]) + offsets[k].0);
-            let v = offsets.map(|o| f64::from(j) + o.1);
-            let colours = self.samples4(u, v, &mut counted)?;
-            for (sum, c) in sum.iter_mut().zip(colours) {
-                *sum = [0, 1, 2].map(|k| sum[k] + c[k]);
-            }
-        }
-        cast.add(&counted);
-        Some(sum.map(|c| c.map(|x| x / f64::from(spp))))
-    }
-
-    /// The colours seen at continuous pixel coordinates `(u_k, v_k)`, one packet.
-    #[inline(always)]
-    fn samples4(&self, u: [f64; 4], v: [f64; 4], cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        let (camera, settings) = (&self.scene.camera, &self.scene.settings);
-        let mut packet = B::camera_packet(camera, u, v)?;
-        cast.primary += 4;
-        let mut active = [true; 4];
-        let mut deepest = [settings.background; 4];
-        let mut layers: [Layers; 4] = Default::default();
-        let mut depth = 0;
-        while active.iter().any(|&a| a) {
-            // An inactive lane's range is empty: it finds nothing.
-            let nearest =
-                self.crossings(&packet, 0.0, active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY }));
-            let hits: [Option<(ShadingPoint, usize)>; 4] = core::array::from_fn(|l| {
-                nearest[l].map(|(c, k)| {
-                    let normal = B::normal(&self.shapes[k], &packet.rays[l], &c);
-                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
-                })
-            });
-            let errors = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
-            let local = self.shade(&packet, &hits, cast);
-            let mut bounce = [false; 4];
-            for l in 0..4 {
-                if !active[l] {
-                    continue;
-                }
-                let Some((_, k)) = hits[l] else {
-                    (deepest[l], active[l]) = (settings.background, false);
-                    continue;
-                };
-                let kr = self.scene.objects[k].material.kr;
-                if !(kr > 0.0 && depth < settings.max_depth) {
-                    (deepest[l], active[l]) = (local[l], false);
-                    continue;
-                }
-                cast.reflection += 1;
-                layers[l].push((local[l], kr));
-                bounce[l] = true;
-            }
-            if bounce.iter().any(|&b| b) {
-                packet = mirrored(&packet, &hits, &errors, &bounce);
-            }
-            depth += 1;
-        }
-        Some(core::array::from_fn(|l| sum_layers(&layers[l], deepest[l])))
+        self.pixels::<Packet<B>, 4>(i0, j, Aov::Shaded, cast)
     }
 }
 
@@ -208,6 +134,10 @@ impl<B: Packets> RayLanes<B, 4> for Packet<B> {
     #[inline(always)]
     fn cast(origin: E3<F64x4>, dir: E3<F64x4>) -> Self {
         B::packet(origin, dir)
+    }
+    #[inline(always)]
+    fn camera(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Self> {
+        B::camera_packet(camera, u, v)
     }
     #[inline(always)]
     fn ray(&self, l: usize) -> &Ray<B::Carrier> {
