@@ -28,7 +28,7 @@ fn scene(name: &str, w: u32, h: u32) -> Scene {
 fn rays(scene: &Scene) -> u64 {
     let renderer = Renderer::new(scene);
     renderer.render(Aov::Shaded, &|| {});
-    let cga_trace::render::RayCounts { primary: p, shadow: s, reflection: r } = renderer.counts();
+    let cga_trace::integrator::RayCounts { primary: p, shadow: s, reflection: r } = renderer.counts();
     p + s + r
 }
 

@@ -22,7 +22,7 @@ fn time(scene: &Scene, threads: usize, runs: usize, bvh: bool) -> (f64, u64) {
         let start = Instant::now();
         std::hint::black_box(pool.install(|| renderer.render(Aov::Shaded, &|| {})));
         times.push(start.elapsed().as_secs_f64());
-        let cga_trace::render::RayCounts { primary: p, shadow: s, reflection: r } = renderer.counts();
+        let cga_trace::integrator::RayCounts { primary: p, shadow: s, reflection: r } = renderer.counts();
         rays = p + s + r;
     }
     times.sort_by(f64::total_cmp);

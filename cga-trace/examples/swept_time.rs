@@ -9,8 +9,8 @@
 //! load does not change, `SWEPT_PASSES=1 valgrind --tool=callgrind` on it.
 
 use cga_trace::Renderer;
+use cga_trace::integrator::Window;
 use cga_trace::ray::{Ray, crosses};
-use cga_trace::render::Window;
 use cga_trace::scene::Scene;
 use cga_trace::shapes::Shape;
 use cga_trace::surface::{EvolvedSurface, Method, RuledSurface, SplineSurface};

@@ -146,7 +146,7 @@ impl Camera {
     }
 
     /// [`Camera::ray`] for four points `(u_k, v_k)` at once, on four lanes: the rays, and
-    /// their lines in lanes (for a [`Packet`](crate::packet::Packet)); the same operations
+    /// their lines in lanes (for a [`Packet`](crate::backend::Packet)); the same operations
     /// lane by lane, so the same bits. `None` where a ray cannot be formed.
     #[inline(always)]
     pub fn rays4(&self, u: [f64; 4], v: [f64; 4]) -> Option<([Ray; 4], Line<F64x4>)> {

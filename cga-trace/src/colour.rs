@@ -3,7 +3,7 @@
 //! image, and the scale — quantity, unit, the values at the bar's ends — for a file beside it.
 
 use crate::film::Film;
-use crate::render::Aov;
+use crate::integrator::Aov;
 
 /// What the colours of a false-colour image mean.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]

@@ -3,9 +3,9 @@
 use anyhow::Context;
 use cga_trace::backend::{Backend, Dense, Plain, Sparse, holds};
 use cga_trace::film::Output;
+use cga_trace::integrator::{RayCounts, Window};
 use cga_trace::limits::MAX_THREADS;
 use cga_trace::output::OutputFile;
-use cga_trace::render::{RayCounts, Window};
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};

@@ -2,7 +2,7 @@
 //! samples per pixel grow; the bytes do not depend on the thread count; windows of a frame
 //! assemble into it byte for byte.
 
-use cga_trace::render::Window;
+use cga_trace::integrator::Window;
 use cga_trace::{Aov, Film, Renderer, Scene};
 use std::path::Path;
 

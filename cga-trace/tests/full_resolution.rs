@@ -54,7 +54,7 @@ fn rays(scene: &Scene, window: &Window) -> Vec<TestRay> {
     let renderer: Renderer = Renderer::new(scene);
     // Rows from the top, as an image viewer counts them; the film's from the bottom.
     let rows = window.height - window.rows.end..window.height - window.rows.start;
-    renderer.first_rays(&cga_trace::render::Window { columns: window.columns.clone(), rows })
+    renderer.first_rays(&cga_trace::integrator::Window { columns: window.columns.clone(), rows })
 }
 
 /// One method's agreement with the reference on one surface.

@@ -3,13 +3,14 @@
 //! are made from Euclidean data the same way (`up(x)` has no products); coefficients are read
 //! back through the typed views, which only copy.
 
-use super::Backend;
+use super::{Backend, Packet};
 use crate::camera::Camera;
 use crate::ray::Ray;
 use crate::shapes::{
     Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle, point_in_range,
 };
 use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
+use cga_core::simd::F64x4;
 use cga_core::{FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
 use std::sync::Arc;
 
@@ -195,5 +196,12 @@ impl Backend for Dense {
             .and_then(|m| normalise((m * ray.carrier) * m - ray.carrier))
             .and_then(|n| Line::from_dense(&n).direction().ok());
         facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
+    }
+
+    type CarrierLanes = ();
+
+    #[inline(always)]
+    fn packet(origin: E3<F64x4>, dir: E3<F64x4>) -> Packet<Dense> {
+        Packet::per_lane(origin, dir, ())
     }
 }

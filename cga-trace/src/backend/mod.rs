@@ -11,23 +11,28 @@
 //! downcasting) and hand every other shape — evolved surfaces, and any kind added later —
 //! to its own sparse geometry, so a new shape needs nothing here.
 //!
-//! A back end turns rays into what it meets objects with (its carrier), prepares each
-//! scene object once, and intersects and shades them; the integrator
-//! ([`Renderer`]) is shared.
+//! A back end turns rays into what it meets objects with (its carrier), one at a time or
+//! four in lanes ([`Packet`]), prepares each scene object once, and intersects them and
+//! gives their normals; the integrator ([`Renderer`](crate::Renderer)) is shared and
+//! generic over the lanes ([`RayLanes`]).
 
 mod dense;
+mod lanes;
 mod plain;
+mod sparse;
 
 use crate::camera::Camera;
 use crate::frame::RANGE;
 use crate::ray::Ray;
-use crate::render::{RayCounts, Renderer};
 use crate::scene::Scene;
-use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
-use cga_core::Line;
+use crate::shapes::{Crossing, Shape};
 use cga_core::euclid::{E3, norm};
+use cga_core::simd::F64x4;
 pub use dense::{Dense, DenseShape};
+pub use lanes::{Crossings, Packet, RayLanes};
+pub(crate) use lanes::{crossings, inside_rim, lane, lanes3};
 pub use plain::{Plain, PlainShape};
+pub use sparse::{Sparse, SparseShape};
 use std::sync::Arc;
 
 /// Geometry code the renderer runs on.
@@ -49,8 +54,34 @@ pub trait Backend: Send + Sync + 'static {
     fn intersect(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> Option<Crossing>;
     /// The unit normal at a crossing, facing the ray.
     fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
-    /// Whether the back end traces ray packets ([`crate::packet::Packets`]).
+    /// Whether the renderer should trace this back end's rays four at a time ([`Packet`]):
+    /// where it meets primitives in lanes ([`Backend::cross4`]).
     const PACKETS: bool = false;
+    /// What four rays carry in lanes (the sparse back end: their CGA lines).
+    type CarrierLanes: Copy;
+    /// Four rays from origins along unit directions given in lanes (secondary rays), as
+    /// [`Backend::ray`] makes each.
+    fn packet(origin: E3<F64x4>, dir: E3<F64x4>) -> Packet<Self>
+    where
+        Self: Sized;
+    /// The camera rays through `(u_k, v_k)`, as [`Backend::camera_ray`] makes each; `None`
+    /// where one cannot be formed, and for a back end without packets (the renderer then
+    /// traces one ray at a time).
+    fn camera_packet(_camera: &Camera, _u: [f64; 4], _v: [f64; 4]) -> Option<Packet<Self>>
+    where
+        Self: Sized,
+    {
+        None
+    }
+    /// The crossings of the packet's rays with a shape within their ranges, as
+    /// [`Backend::intersect`] finds each (by default one lane at a time).
+    #[inline(always)]
+    fn cross4(shape: &Self::Shape, p: &Packet<Self>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings
+    where
+        Self: Sized,
+    {
+        core::array::from_fn(|l| Self::intersect(shape, &p.rays[l], t_min[l], t_max[l]))
+    }
     /// How far this back end's crossings of `shape` may lie from it ([`Shape::crossing_error`],
     /// which fits the null basis and plain vectors; a back end with other arithmetic says
     /// its own).
@@ -61,15 +92,6 @@ pub trait Backend: Send + Sync + 'static {
     /// for this back end to render it as it is ([`holds`]): the frame's own [`RANGE`] where
     /// the arithmetic is scale-free (the null basis, plain vectors).
     const SPAN: i32 = RANGE;
-    /// Four neighbouring pixels `(i₀ + k, j)` of a renderer whose packets are on
-    /// ([`crate::packet`]); `None` where the back end has none or a camera ray cannot be
-    /// formed (the scalar path takes over).
-    fn pixels4(_renderer: &Renderer<'_, Self>, _i0: u32, _j: u32, _cast: &mut RayCounts) -> Option<[[f64; 3]; 4]>
-    where
-        Self: Sized,
-    {
-        None
-    }
 }
 
 /// Whether back end `B` renders every object of `scene` as it is ([`Backend::SPAN`]): `Err`
@@ -88,83 +110,6 @@ pub fn holds<B: Backend>(scene: &Scene) -> Result<(), String> {
         B::SPAN,
         limit
     ))
-}
-
-/// The generated grade-sparse types (the default back end).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Sparse;
-
-/// A scene object for the sparse back end: the built-in primitives by value, so that their
-/// meets are inlined into the integrator's loop (rather than a call through `dyn Shape` per
-/// object and ray), any other shape through its trait.
-#[derive(Clone, Debug)]
-pub enum SparseShape {
-    /// A sphere.
-    Sphere(SphereShape),
-    /// An infinite plane.
-    Plane(PlaneShape),
-    /// A disk.
-    Disk(DiskShape),
-    /// A triangle.
-    Triangle(TriangleShape),
-    /// Any other shape (evolved, spline and ruled surfaces, kinds added later).
-    Other(Arc<dyn Shape>),
-}
-
-/// `$body` with `$s` bound to the shape inside a [`SparseShape`], whatever its kind.
-macro_rules! each_kind {
-    ($shape:expr, $s:ident => $body:expr) => {
-        match $shape {
-            SparseShape::Sphere($s) => $body,
-            SparseShape::Plane($s) => $body,
-            SparseShape::Disk($s) => $body,
-            SparseShape::Triangle($s) => $body,
-            SparseShape::Other($s) => $body,
-        }
-    };
-}
-
-impl Backend for Sparse {
-    type Carrier = Line;
-    type Shape = SparseShape;
-    const NAME: &'static str = "sparse";
-    const PACKETS: bool = true;
-
-    fn ray(origin: E3, dir: E3) -> Ray {
-        Ray::unit(origin, dir)
-    }
-
-    fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray> {
-        camera.ray(u, v)
-    }
-
-    fn prepare(shape: &Arc<dyn Shape>) -> SparseShape {
-        let any: &dyn Shape = &**shape;
-        if let Some(s) = any.downcast_ref::<SphereShape>() {
-            SparseShape::Sphere(s.clone())
-        } else if let Some(p) = any.downcast_ref::<PlaneShape>() {
-            SparseShape::Plane(p.clone())
-        } else if let Some(d) = any.downcast_ref::<DiskShape>() {
-            SparseShape::Disk(d.clone())
-        } else if let Some(t) = any.downcast_ref::<TriangleShape>() {
-            SparseShape::Triangle(t.clone())
-        } else {
-            SparseShape::Other(shape.clone())
-        }
-    }
-
-    #[inline(always)]
-    fn intersect(shape: &SparseShape, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        each_kind!(shape, s => s.intersect(ray, t_min, t_max))
-    }
-
-    fn normal(shape: &SparseShape, ray: &Ray, crossing: &Crossing) -> E3 {
-        each_kind!(shape, s => s.normal(ray, crossing))
-    }
-
-    fn pixels4(renderer: &Renderer<'_, Sparse>, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        renderer.pixels4(i0, j, cast)
-    }
 }
 
 /// Which back end renders (for the CLI and benches).

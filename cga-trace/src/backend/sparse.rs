@@ -1,18 +1,89 @@
-//! The sparse back end's packets: spheres, planes and disks met on the generated types
-//! instantiated on four f64 lanes — [`SphereShape`](crate::shapes::SphereShape)'s and
-//! [`PlaneShape`](crate::shapes::PlaneShape)'s meets operation for operation, so the same
-//! bits; other shapes one lane at a time through their own code.
+//! The generated grade-sparse types: rays carry their CGA lines, and the built-in
+//! primitives are met as [`crate::shapes`] meets them — in packets on the generated types
+//! instantiated on four f64 lanes, operation for operation, so the same bits; other shapes
+//! one lane at a time through their own code.
 
-use super::{Crossings, Packet, Packets, crossings, inside_rim, lane};
-use crate::backend::{Backend, Sparse, SparseShape};
+use super::{Backend, Crossings, Packet, crossings, inside_rim, lane};
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::{Crossing, sphere_crossing};
+use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, sphere_crossing};
 use cga_core::euclid::{E3, dot, sub, tolerance};
 use cga_core::simd::{F64x4, Lanes};
 use cga_core::{Line, Plane, Select, Sphere};
+use std::sync::Arc;
 
-impl Packets for Sparse {
+/// The generated grade-sparse types (the default back end).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Sparse;
+
+/// A scene object for the sparse back end: the built-in primitives by value, so that their
+/// meets are inlined into the integrator's loop (rather than a call through `dyn Shape` per
+/// object and ray), any other shape through its trait.
+#[derive(Clone, Debug)]
+pub enum SparseShape {
+    /// A sphere.
+    Sphere(SphereShape),
+    /// An infinite plane.
+    Plane(PlaneShape),
+    /// A disk.
+    Disk(DiskShape),
+    /// A triangle.
+    Triangle(TriangleShape),
+    /// Any other shape (evolved, spline and ruled surfaces, kinds added later).
+    Other(Arc<dyn Shape>),
+}
+
+/// `$body` with `$s` bound to the shape inside a [`SparseShape`], whatever its kind.
+macro_rules! each_kind {
+    ($shape:expr, $s:ident => $body:expr) => {
+        match $shape {
+            SparseShape::Sphere($s) => $body,
+            SparseShape::Plane($s) => $body,
+            SparseShape::Disk($s) => $body,
+            SparseShape::Triangle($s) => $body,
+            SparseShape::Other($s) => $body,
+        }
+    };
+}
+
+impl Backend for Sparse {
+    type Carrier = Line;
+    type Shape = SparseShape;
+    const NAME: &'static str = "sparse";
+    const PACKETS: bool = true;
+
+    fn ray(origin: E3, dir: E3) -> Ray {
+        Ray::unit(origin, dir)
+    }
+
+    fn camera_ray(camera: &Camera, u: f64, v: f64) -> Option<Ray> {
+        camera.ray(u, v)
+    }
+
+    fn prepare(shape: &Arc<dyn Shape>) -> SparseShape {
+        let any: &dyn Shape = &**shape;
+        if let Some(s) = any.downcast_ref::<SphereShape>() {
+            SparseShape::Sphere(s.clone())
+        } else if let Some(p) = any.downcast_ref::<PlaneShape>() {
+            SparseShape::Plane(p.clone())
+        } else if let Some(d) = any.downcast_ref::<DiskShape>() {
+            SparseShape::Disk(d.clone())
+        } else if let Some(t) = any.downcast_ref::<TriangleShape>() {
+            SparseShape::Triangle(t.clone())
+        } else {
+            SparseShape::Other(shape.clone())
+        }
+    }
+
+    #[inline(always)]
+    fn intersect(shape: &SparseShape, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        each_kind!(shape, s => s.intersect(ray, t_min, t_max))
+    }
+
+    fn normal(shape: &SparseShape, ray: &Ray, crossing: &Crossing) -> E3 {
+        each_kind!(shape, s => s.normal(ray, crossing))
+    }
+
     type CarrierLanes = Line<F64x4>;
 
     #[inline(always)]

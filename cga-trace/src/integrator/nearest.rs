@@ -3,13 +3,33 @@
 //! otherwise every object in turn, in lanes (packets run only in scenes without a BVH, and
 //! would meet every object in one).
 
-use crate::backend::Backend;
-use crate::lanes::RayLanes;
-use crate::ray::crosses;
-use crate::render::Renderer;
-use crate::shapes::Crossing;
+use super::Renderer;
+use crate::backend::{Backend, RayLanes};
+use crate::object::Object;
+use crate::ray::{Ray, crosses};
+use crate::shapes::{Crossing, ShadingPoint};
 
-impl<B: Backend> Renderer<'_, B> {
+impl<'a, B: Backend> Renderer<'a, B> {
+    /// The nearest crossing with `t_min < t < t_max` over all objects (each beyond its own
+    /// [crossing error](Renderer::t_min)), and the object's index.
+    fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Crossing, usize)> {
+        let [best] = self.crossings(ray, t_min, [t_max]);
+        best
+    }
+
+    /// The nearest hit with `t_min < t < t_max`, and its object: the nearest crossing over
+    /// all objects, then its normal, once.
+    pub fn nearest(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(ShadingPoint, &'a Object)> {
+        self.hit(ray, t_min, t_max).map(|(hit, k)| (hit, &self.scene.objects[k]))
+    }
+
+    /// [`Renderer::nearest`] with the object's index.
+    pub(super) fn hit(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(ShadingPoint, usize)> {
+        let (c, k) = self.crossing(ray, t_min, t_max)?;
+        let hit = ShadingPoint { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
+        Some((hit, k))
+    }
+
     /// The nearest crossing per lane with `t_min < t < t_max[l]` over all objects (each
     /// beyond its own [crossing error](Renderer::t_min)), and its object; a lane with
     /// `t_max = −∞` finds nothing.

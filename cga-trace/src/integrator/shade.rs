@@ -3,15 +3,16 @@
 //! (eq. 12 without the reflected term), over lanes ([`RayLanes`]). One ray and four take
 //! the same steps, so `--no-packets` gives the same bits.
 
-use crate::backend::Backend;
-use crate::lanes::{Lit, RayLanes, lit};
-use crate::material::{Material, Reflectance};
-use crate::ray::offset;
-use crate::render::{RayCounts, Renderer};
+use super::{RayCounts, Renderer};
+use crate::backend::{Backend, RayLanes};
+use crate::light::{Light, attenuation, blinn_phong, lights};
+use crate::material::{Material, Reflectance, shine};
+use crate::object::Object;
+use crate::ray::{leaving_origin, offset};
 use crate::shapes::ShadingPoint;
-use cga_core::Real;
-use cga_core::euclid::E3;
+use cga_core::euclid::{E3, add, dot, scale};
 use cga_core::simd::Lane;
+use cga_core::{Real, Select};
 
 /// `x` in the lanes where `keep`, `other` elsewhere.
 #[inline(always)]
@@ -86,4 +87,65 @@ impl<B: Backend> Renderer<'_, B> {
         }
         colours
     }
+
+    /// `c k_a A`: the ambient light on an object.
+    pub(crate) fn ambient(&self, object: &Object) -> [f64; 3] {
+        scale(object.material.colour, object.material.ka * self.scene.settings.ambient)
+    }
+
+    /// One light's term, `s f_att (c k_d max(n·l, 0) + k_s spec) L`, at `distance` (frame
+    /// units) with `diffuse = n·l`, `specular = max(n·h, 0)^q` and shadow factor `s`: for one
+    /// ray, or lane by lane for a packet (the same steps, so the same bits).
+    #[inline(always)]
+    pub(crate) fn light<T: Select>(
+        &self,
+        m: &Reflectance<T>,
+        light: &Light,
+        distance: T,
+        diffuse: T,
+        specular: T,
+        s: T,
+    ) -> [T; 3] {
+        // Attenuation is in world units; the frame's are `frame.scale` of them.
+        let f_att = attenuation(self.scene.settings.attenuation, self.scene.frame.world_length(distance));
+        blinn_phong(m.colour, m.kd, m.ks, diffuse, specular, s * f_att, light.colour)
+    }
+}
+
+/// What one light gives hits in lanes before shadowing.
+pub(crate) struct Lit<T, const W: usize> {
+    /// Which lanes it lights: a hit, the light ahead of it and in front of the surface for
+    /// the diffuse or the specular term.
+    pub lit: [bool; W],
+    /// Unit direction to the light.
+    pub l: E3<T>,
+    /// Distance to it (frame units; ∞ for a directional light).
+    pub distance: T,
+    /// `n · l`.
+    pub diffuse: T,
+    /// `max(n · h, 0)^q`.
+    pub specular: T,
+    /// Where the shadow rays towards it start ([`leaving_origin`]).
+    pub shadow_origin: E3<T>,
+}
+
+/// The unshadowed terms of `light` at hits `x` (unit normals `n`, materials `m`, `hit` where
+/// a lane has one) seen from `v`, shadow rays starting `offset` off the surfaces; `None`
+/// where it lights no lane.
+#[inline(always)]
+pub(crate) fn lit<T: Lane, const W: usize>(
+    light: &Light,
+    (x, n, v): (E3<T>, E3<T>, E3<T>),
+    m: &[&Material; W],
+    hit: &[bool; W],
+    offset: T,
+) -> Option<Lit<T, W>> {
+    // One square root for the distance and the direction.
+    let (l, distance) = light.toward(x);
+    let diffuse = dot(n, l);
+    let specular = shine(m, n, add(l, v));
+    let lighting = lights(distance, diffuse, specular);
+    let lit: [bool; W] = core::array::from_fn(|k| hit[k] && T::mask_lane(lighting, k));
+    let shadow_origin = leaving_origin(x, n, diffuse, offset);
+    lit.iter().any(|&b| b).then_some(Lit { lit, l, distance, diffuse, specular, shadow_origin })
 }

@@ -1,0 +1,151 @@
+//! Rays in lanes, for code written once for one ray and for a packet of four:
+//! [`RayLanes`], which a [`Ray`] is with one lane and a [`Packet`] with four, and the
+//! helpers back ends meet packets with.
+
+use super::Backend;
+use crate::camera::Camera;
+use crate::ray::Ray;
+use crate::shapes::Crossing;
+use cga_core::euclid::{E3, dot, sub};
+use cga_core::simd::{F64x4, Lane};
+
+/// `W` rays in lanes of `Self::T`: what the shading casts its shadow rays as.
+pub trait RayLanes<B: Backend, const W: usize>: Sized {
+    /// The lanes: `f64` for one ray, `F64x4` for four.
+    type T: Lane;
+    /// The rays' origins.
+    fn origin(&self) -> E3<Self::T>;
+    /// Their unit directions.
+    fn dir(&self) -> E3<Self::T>;
+    /// Rays from `origin` along unit directions `dir` (secondary rays), as [`Backend::ray`]
+    /// makes each.
+    fn cast(origin: E3<Self::T>, dir: E3<Self::T>) -> Self;
+    /// The camera rays through continuous pixel coordinates `(u_l, v_l)`, as
+    /// [`Backend::camera_ray`] makes each; `None` where one cannot be formed.
+    fn camera(camera: &Camera, u: [f64; W], v: [f64; W]) -> Option<Self>;
+    /// Lane `l`'s ray (for what runs per lane: a BVH's traversal, bounding spheres, normals).
+    fn ray(&self, l: usize) -> &Ray<B::Carrier>;
+    /// The crossings of the rays with `shape` within their ranges, as [`Backend::intersect`]
+    /// finds each; a lane with `t_max = −∞` finds nothing.
+    fn cross(&self, shape: &B::Shape, t_min: &[f64; W], t_max: &[f64; W]) -> [Option<Crossing>; W];
+}
+
+impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
+    type T = f64;
+    #[inline(always)]
+    fn origin(&self) -> E3 {
+        self.origin
+    }
+    #[inline(always)]
+    fn dir(&self) -> E3 {
+        self.dir
+    }
+    #[inline(always)]
+    fn cast(origin: E3, dir: E3) -> Self {
+        B::ray(origin, dir)
+    }
+    #[inline(always)]
+    fn camera(camera: &Camera, u: [f64; 1], v: [f64; 1]) -> Option<Self> {
+        B::camera_ray(camera, u[0], v[0])
+    }
+    #[inline(always)]
+    fn ray(&self, _: usize) -> &Ray<B::Carrier> {
+        self
+    }
+    #[inline(always)]
+    fn cross(&self, shape: &B::Shape, t_min: &[f64; 1], t_max: &[f64; 1]) -> [Option<Crossing>; 1] {
+        [B::intersect(shape, self, t_min[0], t_max[0])]
+    }
+}
+
+/// Points (or vectors), one per lane, as three coordinates in lanes.
+#[inline(always)]
+pub(crate) fn lanes3<T: Lane, const W: usize>(v: [E3; W]) -> E3<T> {
+    core::array::from_fn(|k| T::from_fn(|l| v[l][k]))
+}
+
+/// A crossing per lane, `None` where the lane's ray misses.
+pub type Crossings = [Option<Crossing>; 4];
+
+/// Four rays, lane `k` being ray `k`.
+pub struct Packet<B: Backend> {
+    /// The scalar rays (for the per-lane steps).
+    pub rays: [Ray<B::Carrier>; 4],
+    /// Their origins in lanes.
+    pub origin: [F64x4; 3],
+    /// Their unit directions in lanes.
+    pub dir: [F64x4; 3],
+    /// Their carriers in lanes (the sparse back end: their lines).
+    pub carrier: B::CarrierLanes,
+}
+
+impl<B: Backend> Packet<B> {
+    /// Four rays from origins along unit directions in lanes, each made by [`Backend::ray`],
+    /// with `carrier` (for a back end whose rays carry nothing in lanes).
+    #[inline(always)]
+    pub fn per_lane(origin: [F64x4; 3], dir: [F64x4; 3], carrier: B::CarrierLanes) -> Self {
+        let rays = core::array::from_fn(|l| B::ray(lane(&origin, l), lane(&dir, l)));
+        Packet { rays, origin, dir, carrier }
+    }
+
+    /// Four rays whose carriers are already in lanes.
+    #[inline(always)]
+    pub fn with_carrier(rays: [Ray<B::Carrier>; 4], carrier: B::CarrierLanes) -> Self {
+        let lanes = |f: fn(&Ray<B::Carrier>) -> E3| lanes3(rays.each_ref().map(f));
+        Packet { origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), rays, carrier }
+    }
+}
+
+/// Lane `l` of a point in lanes.
+#[inline(always)]
+pub(crate) fn lane(x: &[F64x4; 3], l: usize) -> E3 {
+    [x[0].to_array()[l], x[1].to_array()[l], x[2].to_array()[l]]
+}
+
+/// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where
+/// there is no rim (a plane).
+#[inline(always)]
+pub(crate) fn inside_rim(x: &[F64x4; 3], rim: Option<(E3, f64)>) -> [bool; 4] {
+    rim.map_or([true; 4], |(c, r)| {
+        let d = sub(*x, c.map(F64x4::splat));
+        dot(d, d).to_array().map(|q| q <= r * r)
+    })
+}
+
+/// The crossings at `t` and points `x` of the lanes that are `ok`, the others `None`.
+#[inline(always)]
+pub(crate) fn crossings(ok: [bool; 4], t: [f64; 4], x: &[F64x4; 3]) -> Crossings {
+    if !ok.iter().any(|&b| b) {
+        return [None; 4];
+    }
+    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(x, l), alpha: None }))
+}
+
+/// Four rays in lanes.
+impl<B: Backend> RayLanes<B, 4> for Packet<B> {
+    type T = F64x4;
+    #[inline(always)]
+    fn origin(&self) -> E3<F64x4> {
+        self.origin
+    }
+    #[inline(always)]
+    fn dir(&self) -> E3<F64x4> {
+        self.dir
+    }
+    #[inline(always)]
+    fn cast(origin: E3<F64x4>, dir: E3<F64x4>) -> Self {
+        B::packet(origin, dir)
+    }
+    #[inline(always)]
+    fn camera(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Self> {
+        B::camera_packet(camera, u, v)
+    }
+    #[inline(always)]
+    fn ray(&self, l: usize) -> &Ray<B::Carrier> {
+        &self.rays[l]
+    }
+    #[inline(always)]
+    fn cross(&self, shape: &B::Shape, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+        B::cross4(shape, self, t_min, t_max)
+    }
+}

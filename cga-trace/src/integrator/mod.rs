@@ -1,0 +1,210 @@
+//! The integrator: nearest hits, Blinn–Phong shading with shadows and attenuation, and
+//! recursive mirror reflection (the paper's eq. 12), in linear RGB, written once over rays in
+//! lanes ([`RayLanes`](crate::backend::RayLanes)): one ray, or a packet of four.
+//!
+//! `I = c k_a A + Σ_i S_i f_att,i (c k_d max(n·l_i, 0) + k_s max(n·h_i, 0)^q) L_i + k_r I_r`,
+//! `A` the ambient intensity, `L_i` the light colours, `S_i` 1 or the scene's shadow
+//! transmission when something lies between the point and light `i`, `h_i = unit(l_i + v)`.
+//!
+//! - this file: the [`Renderer`], the image and its rows ([`Window`]);
+//! - `sampler.rs`: pixels, their samples ([`sample_offset`]) and the camera rays;
+//! - `trace.rs`: the bounce loop, the sum of layers;
+//! - `nearest.rs`: the nearest crossing and the shadow test;
+//! - `shade.rs`: the ambient and each light's term;
+//! - `aov.rs`: what an image shows ([`Aov`]);
+//! - `counts.rs`: the rays cast ([`RayCounts`]).
+
+mod aov;
+mod counts;
+mod nearest;
+mod sampler;
+mod shade;
+mod trace;
+
+pub use aov::Aov;
+pub use counts::RayCounts;
+pub use sampler::sample_offset;
+
+use crate::backend::{Backend, Sparse};
+use crate::bvh::Bvh;
+use crate::film::Film;
+use crate::object::Object;
+use crate::scene::Scene;
+use cga_core::euclid::E3;
+use rayon::prelude::*;
+use std::ops::Range;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+
+/// Scenes with at least this many bounded objects are traversed through a [`Bvh`]; fewer
+/// are tested one by one (cheaper than any traversal).
+const BVH_FROM: usize = 8;
+
+/// Renders a scene with the geometry of back end `B` (by default the generated sparse types).
+pub struct Renderer<'a, B: Backend = Sparse> {
+    pub(crate) scene: &'a Scene,
+    /// The objects in `B`'s form, in scene order.
+    pub(crate) shapes: Vec<B::Shape>,
+    /// Whether rays go four at a time through packets: where `B` has them, unless switched
+    /// off or the scene has a hierarchy.
+    pub(crate) packets: bool,
+    /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
+    pub(crate) bounds: Vec<Option<(E3, f64)>>,
+    /// For scenes of many objects, a hierarchy over all bounded ones.
+    pub(crate) bvh: Option<Bvh>,
+    /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
+    pub(crate) flat: Vec<bool>,
+    /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
+    /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
+    pub(crate) errors: Vec<f64>,
+    /// Rays cast so far, `[primary, shadow, reflection]`: each thread adds its row's
+    /// [`RayCounts`] once.
+    counted: [AtomicU64; 3],
+}
+
+impl<'a> Renderer<'a> {
+    /// A renderer for `scene` on the sparse back end.
+    pub fn new(scene: &'a Scene) -> Self {
+        Renderer::with_backend(scene)
+    }
+}
+
+impl<'a, B: Backend> Renderer<'a, B> {
+    /// A renderer for `scene` on back end `B`: every object prepared once.
+    pub fn with_backend(scene: &'a Scene) -> Self {
+        let shapes: Vec<_> = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
+        let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
+        let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
+        let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
+        let bounds = scene.objects.iter().zip(&all).map(cull).collect();
+        // Packets test every object: for scenes with a hierarchy, single rays through it.
+        let packets = B::PACKETS && bvh.is_none();
+        let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
+        let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
+        Renderer { scene, shapes, packets, bounds, bvh, flat, errors, counted: Default::default() }
+    }
+
+    /// The rays cast so far, by kind.
+    pub fn counts(&self) -> RayCounts {
+        let [primary, shadow, reflection] = self.counted.each_ref().map(|c| c.load(Relaxed));
+        RayCounts { primary, shadow, reflection }
+    }
+
+    /// Adds one thread's tally.
+    fn count(&self, cast: &RayCounts) {
+        for (total, n) in self.counted.iter().zip(cast.to_array()) {
+            total.fetch_add(n, Relaxed);
+        }
+    }
+
+    /// The same renderer tracing one ray at a time, without packets (to compare them).
+    pub fn without_packets(mut self) -> Self {
+        self.packets = false;
+        self
+    }
+
+    /// The same renderer testing every object for every ray, without the hierarchy (to
+    /// measure what the hierarchy saves).
+    pub fn without_bvh(mut self) -> Self {
+        self.bvh = None;
+        self
+    }
+
+    /// Where object `k`'s crossings start to count on a ray whose range starts at `t_min`:
+    /// beyond the object's own crossing error (a ray leaving it, or a camera standing on it,
+    /// meets it there only by rounding).
+    #[inline(always)]
+    pub(crate) fn t_min(&self, k: usize, t_min: f64) -> f64 {
+        let e = self.errors[k];
+        if e > t_min { e } else { t_min }
+    }
+
+    /// Object `k` if its shape is flat (its own shadow rays need not test it).
+    pub(crate) fn skip_own(&self, k: usize) -> Option<usize> {
+        self.flat[k].then_some(k)
+    }
+
+    /// The whole image, rows in parallel on rayon's pool; `on_row` is called as each row
+    /// finishes (for a progress bar).
+    pub fn render(&self, aov: Aov, on_row: &(dyn Fn() + Sync)) -> Film {
+        let camera = &self.scene.camera;
+        self.render_window(aov, Window::full(camera.width, camera.height), on_row)
+    }
+
+    /// The pixels of `window` only, as an image of its size. Every pixel depends on its
+    /// position alone, so windows of a frame rendered anywhere assemble into the frame,
+    /// byte for byte, and any thread count gives the same bytes.
+    pub fn render_window(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
+        let (width, height) = (window.columns.len(), window.rows.len());
+        // One allocation, each row written in place by whichever thread renders it.
+        let mut pixels = vec![[0.0; 3]; width * height];
+        // One row per task: rayon otherwise splits the image into few large pieces, and rows
+        // differ in cost (mirrors, surfaces), so one thread idles at the end.
+        pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
+            let mut cast = RayCounts::default();
+            let mut done = 0;
+            if aov == Aov::Shaded && self.packets {
+                for (four, i0) in row.chunks_exact_mut(4).zip(window.columns.clone().step_by(4)) {
+                    let Some(colours) = self.pixels4(i0, j, &mut cast) else { break };
+                    four.copy_from_slice(&colours);
+                    done += 4;
+                }
+            }
+            for (pixel, i) in row.iter_mut().zip(window.columns.clone()).skip(done) {
+                *pixel = self.pixel_counted(i, j, aov, &mut cast);
+            }
+            self.count(&cast);
+            on_row();
+        });
+        Film { width: width as u32, height: height as u32, pixels }
+    }
+}
+
+/// A rectangle of pixels: `columns` from the left, `rows` from the bottom (the film's
+/// `(0, 0)` is bottom-left).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// Pixel columns `i`.
+    pub columns: Range<u32>,
+    /// Pixel rows `j`, counted from the bottom.
+    pub rows: Range<u32>,
+}
+
+impl Window {
+    /// The whole `width × height` image.
+    pub fn full(width: u32, height: u32) -> Self {
+        Window { columns: 0..width, rows: 0..height }
+    }
+
+    /// pbrt's crop window: the fractions `[x0, x1] × [y0, y1]` of a `width × height` image,
+    /// `x` from the left and `y` from the top, as pixels `⌈x0 w⌉ .. ⌈x1 w⌉` and
+    /// `⌈y0 h⌉ .. ⌈y1 h⌉` (so windows that share an edge share no pixel and miss none).
+    pub fn crop(width: u32, height: u32, [x0, x1, y0, y1]: [f64; 4]) -> Result<Self, &'static str> {
+        let ok = |a: f64, b: f64| (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && a < b;
+        if !(ok(x0, x1) && ok(y0, y1)) {
+            return Err("a crop window is x0,x1,y0,y1 with 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1");
+        }
+        let at = |f: f64, n: u32| (f * f64::from(n)).ceil() as u32;
+        let (columns, top) = (at(x0, width)..at(x1, width), at(y0, height)..at(y1, height));
+        if columns.is_empty() || top.is_empty() {
+            return Err("the crop window holds no pixel centre at this image size");
+        }
+        // Rows from the top to rows from the bottom.
+        Ok(Window { columns, rows: height - top.end..height - top.start })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crop_windows_tile_the_image() {
+        let w = Window::crop(10, 7, [0.0, 0.5, 0.0, 1.0 / 3.0]).unwrap();
+        assert_eq!(w, Window { columns: 0..5, rows: 4..7 });
+        let rest = Window::crop(10, 7, [0.5, 1.0, 1.0 / 3.0, 1.0]).unwrap();
+        assert_eq!(rest, Window { columns: 5..10, rows: 0..4 });
+        assert!(Window::crop(10, 7, [0.5, 0.5, 0.0, 1.0]).is_err());
+        assert!(Window::crop(10, 7, [0.0, 1.0, 0.0, 1.1]).is_err());
+        assert!(Window::crop(10, 7, [0.0, 1.0, f64::NAN, 1.0]).is_err());
+    }
+}

@@ -1,0 +1,144 @@
+//! Tracing rays in lanes: the nearest hit, its normal and shading, the mirror bounces, and
+//! the sum of the layers from the deepest up.
+
+use super::shade::lit;
+use super::{RayCounts, Renderer, Window};
+use crate::backend::{Backend, RayLanes, lanes3};
+use crate::ray::{Ray, mirror, offset};
+use crate::shapes::ShadingPoint;
+use cga_core::euclid::E3;
+use cga_core::simd::Lane;
+use rayon::prelude::*;
+use smallvec::SmallVec;
+
+impl<B: Backend> Renderer<'_, B> {
+    /// The rays a one-sample render of `window` casts before any reflection: each pixel
+    /// centre's primary ray, and from its nearest hit the shadow ray towards every light that
+    /// lights it (as [`Renderer::trace`] casts them, shadows on or off), each with the end of
+    /// its range (∞ for primary rays). For checking and timing shapes on a scene's own rays.
+    pub fn first_rays(&self, window: &Window) -> Vec<(Ray<B::Carrier>, f64)>
+    where
+        B::Carrier: Send,
+    {
+        let rows: Vec<u32> = window.rows.clone().collect();
+        rows.par_iter()
+            .flat_map_iter(|&j| {
+                let mut out = Vec::new();
+                for i in window.columns.clone() {
+                    let Some(ray) = B::camera_ray(&self.scene.camera, f64::from(i) + 0.5, f64::from(j) + 0.5) else {
+                        continue;
+                    };
+                    out.push((ray, f64::INFINITY));
+                    let Some((hit, k)) = self.hit(&ray, 0.0, f64::INFINITY) else { continue };
+                    // The shadow rays `shade` casts.
+                    let offset = offset(hit.point, ray.origin, self.errors[k]);
+                    let at = (hit.point, hit.normal, ray.dir.map(|d| -d));
+                    for light in &self.scene.lights {
+                        let material = &self.scene.objects[k].material;
+                        if let Some(term) = lit(light, at, &[material], &[true], offset) {
+                            out.push((B::ray(term.shadow_origin, term.l), term.distance));
+                        }
+                    }
+                }
+                out
+            })
+            .collect()
+    }
+
+    /// The colour seen along `ray`, `depth` bounces deep.
+    pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
+        let mut cast = RayCounts::default();
+        let [colour] = self.trace_lanes(*ray, depth, &mut cast);
+        self.count(&cast);
+        colour
+    }
+
+    /// The colours seen along rays in lanes, `depth` bounces already made, counting the
+    /// rays cast into `cast` (shared counters would be contended by every thread on every
+    /// ray): nearest hit, normal, shading, and the mirror bounces of the lanes whose hit
+    /// reflects (lanes whose ray has ended ride along with an empty range).
+    ///
+    /// Bounces are followed in a loop, not by recursion, so that no depth can overflow the
+    /// stack: each hit's own colour and `k_r` are kept, and summed from the deepest up as
+    /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
+    /// order, so the same bits).
+    #[inline(always)]
+    pub(crate) fn trace_lanes<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        mut rays: R,
+        mut depth: u32,
+        cast: &mut RayCounts,
+    ) -> [[f64; 3]; W] {
+        let settings = &self.scene.settings;
+        let mut active = [true; W];
+        let mut deepest = [settings.background; W];
+        let mut layers: [Layers; W] = core::array::from_fn(|_| Layers::new());
+        while active.iter().any(|&a| a) {
+            // An inactive lane's range is empty: it finds nothing. (`map`, not `from_fn`,
+            // here and for `errors`: LLVM leaves `from_fn` over them out of line, 7 % more
+            // instructions on the anchor scene.)
+            let t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
+            let nearest = self.crossings(&rays, 0.0, t_max);
+            let hits: [Option<(ShadingPoint, usize)>; W] = core::array::from_fn(|l| {
+                nearest[l].map(|(c, k)| {
+                    let normal = B::normal(&self.shapes[k], rays.ray(l), &c);
+                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
+                })
+            });
+            let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
+            let local = self.shade(&rays, &hits, cast);
+            let mut bounce = [false; W];
+            for l in 0..W {
+                if !active[l] {
+                    continue;
+                }
+                let Some((_, k)) = hits[l] else {
+                    (deepest[l], active[l]) = (settings.background, false);
+                    continue;
+                };
+                let kr = self.scene.objects[k].material.kr;
+                if !(kr > 0.0 && depth < settings.max_depth) {
+                    (deepest[l], active[l]) = (local[l], false);
+                    continue;
+                }
+                cast.reflection += 1;
+                layers[l].push((local[l], kr));
+                bounce[l] = true;
+            }
+            if bounce.iter().any(|&b| b) {
+                rays = mirrored(&rays, &hits, &errors, &bounce);
+            }
+            depth += 1;
+        }
+        core::array::from_fn(|l| sum_layers(&layers[l], deepest[l]))
+    }
+}
+
+/// The colours and `k_r` of the hits along a ray's mirror bounces, nearest first, summed
+/// from the deepest up.
+pub(crate) type Layers = SmallVec<[([f64; 3], f64); 8]>;
+
+/// `I = I_local + k_r I_below` from the deepest bounce up, as recursion would sum it.
+pub(crate) fn sum_layers(layers: &Layers, deepest: [f64; 3]) -> [f64; 3] {
+    layers.iter().rev().fold(deepest, |below, (local, kr)| [0, 1, 2].map(|k| local[k] + kr * below[k]))
+}
+
+/// The mirror bounces of the lanes that `bounce` at their hits (object index per lane), each
+/// off its object's crossing error `errors` ([`mirror`] in lanes: the reflected direction,
+/// starting off the surface); the other lanes keep their ray (a zero normal reflects nothing).
+#[inline(always)]
+pub(crate) fn mirrored<B: Backend, R: RayLanes<B, W>, const W: usize>(
+    rays: &R,
+    hits: &[Option<(ShadingPoint, usize)>; W],
+    errors: &[f64; W],
+    bounce: &[bool; W],
+) -> R {
+    let at = |l: usize| match hits[l] {
+        Some((hit, _)) if bounce[l] => (hit.point, hit.normal),
+        _ => (rays.ray(l).origin, [0.0; 3]),
+    };
+    let x: E3<R::T> = lanes3::<R::T, W>(core::array::from_fn(|l| at(l).0));
+    let n: E3<R::T> = lanes3::<R::T, W>(core::array::from_fn(|l| at(l).1));
+    let (origin, r) = mirror(rays.dir(), rays.origin(), x, n, R::T::from_fn(|l| errors[l]));
+    R::cast(origin, r)
+}
