@@ -34,6 +34,14 @@
 //! orphan rule forbids `impl<T> Mul<X<T>> for T`, so for each listed `S` and type `X` the
 //! macro emits `S * X<S>`, and where `X + s` exists (below) `S + X<S>` and `S − X<S>`.
 //!
+//! `signature = (p, q, r)` declares a degenerate metric: after the p vectors that square to
+//! +1 and the q to −1 come r null vectors (`e_i² = 0`), e.g. 3D PGA is `signature =
+//! (3, 0, 1); basis = [e0 = e4, e1, e2, e3];` (the null vector renamed and listed first).
+//! Products drop every term through a null square; the regressive product is metric-free
+//! already; `dual` is then the right complement `∁A` (`e_S ∧ ∁e_S = I` blade by blade, `I`
+//! the orthonormal `e1 ∧ … ∧ en`) and `undual` its inverse, since `I² = 0` has no `I⁻¹`.
+//! `(p, q)` is `(p, q, 0)`.
+//!
 //! `basis` is optional (default: the orthonormal `e1..en`); each storage vector is named
 //! `e` plus one label character and may be any linear combination of `e1..en`, so a
 //! non-diagonal metric (the null vectors of CGA) is handled here, not at run time. Blades
@@ -128,11 +136,13 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
     })?;
     let sig = input.signature.ok_or_else(|| Error::new(call_site, "missing `signature = (p, q);`"))?;
     let (p, q): (usize, usize) = (sig.p.base10_parse()?, sig.q.base10_parse()?);
-    let n = p + q;
+    let r: usize = sig.r.as_ref().map_or(Ok(0), syn::LitInt::base10_parse)?;
+    let n = p.saturating_add(q).saturating_add(r);
     if n == 0 || n > MAX_DIM {
+        let r = sig.r.as_ref().map_or(String::new(), |_| format!(", {r}"));
         return Err(Error::new(
             sig.span,
-            format!("bad signature ({p}, {q}): the algebra needs 1 to {MAX_DIM} basis vectors, this has {n}"),
+            format!("bad signature ({p}, {q}{r}): the algebra needs 1 to {MAX_DIM} basis vectors, this has {n}"),
         ));
     }
     let (labels, rows, basis_span) = match input.basis {
@@ -142,7 +152,7 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         }
         None => ((1..=n).map(|i| char::from_digit(i as u32, 10).unwrap_or('?')).collect(), identity(n), sig.span),
     };
-    let algebra = Algebra::new(p, q, labels, rows).map_err(|e| match e {
+    let algebra = Algebra::new([p, q, r], labels, rows).map_err(|e| match e {
         ModelError::DegenerateBasis => {
             Error::new(basis_span, "the basis vectors are linearly dependent: they do not span the algebra")
         }
@@ -378,6 +388,9 @@ mod tests {
             "signature = (4, 1);",
             "signature = (0, 0);",
             "signature = (2, 1, 0);",
+            "signature = (3, 0, 1);",
+            "signature = (0, 0, 2);",
+            "signature = (1, 1, 1, 1);",
             "signature = (99999999999999999999, 1);",
             "basis = [e1, e2, e3];",
             "basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];",

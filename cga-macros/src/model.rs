@@ -66,7 +66,8 @@ pub enum Unary {
 pub struct Algebra {
     /// Number of basis vectors.
     pub n: usize,
-    /// Squares of the orthonormal vectors `e1..en` (+1 or −1).
+    /// Squares of the orthonormal vectors `e1..en`: +1 (the first p), −1 (the next q), 0
+    /// (the last r, null).
     pub metric: Vec<f64>,
     /// One-character label of each storage vector (`e1` → "1", `eo` → "o").
     pub labels: Vec<char>,
@@ -86,10 +87,20 @@ pub enum ModelError {
 }
 
 impl Algebra {
-    /// An algebra of signature (p, q) whose storage vectors are `basis[a] = Σ_i B[a][i] e_i`.
-    pub fn new(p: usize, q: usize, labels: Vec<char>, basis: Vec<Vec<f64>>) -> Result<Self, ModelError> {
-        let n = p + q;
-        let metric: Vec<f64> = (0..n).map(|i| if i < p { 1.0 } else { -1.0 }).collect();
+    /// An algebra of signature (p, q, r) whose storage vectors are `basis[a] = Σ_i B[a][i] e_i`.
+    pub fn new([p, q, r]: [usize; 3], labels: Vec<char>, basis: Vec<Vec<f64>>) -> Result<Self, ModelError> {
+        let n = p + q + r;
+        let metric: Vec<f64> = (0..n)
+            .map(|i| {
+                if i < p {
+                    1.0
+                } else if i < p + q {
+                    -1.0
+                } else {
+                    0.0
+                }
+            })
+            .collect();
         let finite = |m: &[Vec<f64>]| m.iter().flatten().all(|x| x.is_finite() && x.abs() <= 1e100);
         if !finite(&basis) {
             return Err(ModelError::NonFinite);
@@ -175,15 +186,54 @@ impl Algebra {
                 let (w, sw) = wedge_blades(ca, cb)?;
                 let r = w ^ full;
                 let sign = complement_sign(a, full) * complement_sign(b, full) * sw * complement_sign(r, full);
-                return Some((r, sign));
+                return Some((r, sign * self.orientation()));
             }
             Product::Commutator => {
                 // ½(s − s') with s' = ±s: s where the blades anticommute, nothing where they commute.
                 let ((r, s), (_, s_swapped)) = (self.ortho_gp(a, b), self.ortho_gp(b, a));
-                return (s != s_swapped).then_some((r, s));
+                return (s != s_swapped && s != 0.0).then_some((r, s));
             }
         };
-        keep.then(|| self.ortho_gp(a, b))
+        // A shared null vector makes the product zero.
+        keep.then(|| self.ortho_gp(a, b)).filter(|&(_, s)| s != 0.0)
+    }
+
+    /// Whether some basis vector is null: `I² = 0`, so no dual is a product with `I⁻¹`.
+    pub fn degenerate(&self) -> bool {
+        self.metric.contains(&0.0)
+    }
+
+    /// The sign of the unit pseudoscalar `I` the complements are taken against, relative to
+    /// the orthonormal `e1 ∧ … ∧ en`: +1, except in a degenerate metric, where `I` has the
+    /// orientation of the declared basis (3D PGA's `e0123` with `e0` listed first, as kingdon
+    /// and bivector.net take it).
+    fn orientation(&self) -> f64 {
+        let full = self.full_mask();
+        match self.to_ortho[full].get(&full) {
+            Some(c) if self.degenerate() && *c < 0.0 => -1.0,
+            _ => 1.0,
+        }
+    }
+
+    /// The dual of an orthonormal blade: `e_S I⁻¹`, or in a degenerate metric the right
+    /// complement `∁e_S = σ e_(S^c)` with `e_S ∧ ∁e_S = I` (metric-free: Poincaré duality).
+    pub fn ortho_dual(&self, a: usize) -> (usize, f64) {
+        let full = self.full_mask();
+        if self.degenerate() {
+            return (a ^ full, complement_sign(a, full) * self.orientation());
+        }
+        let (r, s) = self.ortho_gp(a, full);
+        (r, s * self.pseudo_inverse_sign())
+    }
+
+    /// The inverse of [`Algebra::ortho_dual`]: `e_S I`, or the left complement
+    /// `∁⁻¹e_T = σ(T^c) e_(T^c)`.
+    pub fn ortho_undual(&self, a: usize) -> (usize, f64) {
+        let full = self.full_mask();
+        if self.degenerate() {
+            return (a ^ full, complement_sign(a ^ full, full) * self.orientation());
+        }
+        self.ortho_gp(a, full)
     }
 
     /// `e_a e_b = sign e_(a xor b)` for orthonormal blades: reordering sign times the
@@ -229,11 +279,10 @@ impl Algebra {
             Unary::Involute => grade_sign(k),
             Unary::Conjugate => grade_sign(k * (k + 1) / 2),
             Unary::Dual | Unary::Undual => {
-                let inv = if kind == Unary::Dual { self.pseudo_inverse_sign() } else { 1.0 };
                 let mut ortho = Mv::new();
                 for (&i, &ci) in &self.to_ortho[a] {
-                    let (r, s) = self.ortho_gp(i, self.full_mask());
-                    *ortho.entry(r).or_insert(0.0) += ci * s * inv;
+                    let (r, s) = if kind == Unary::Dual { self.ortho_dual(i) } else { self.ortho_undual(i) };
+                    *ortho.entry(r).or_insert(0.0) += ci * s;
                 }
                 return self.ortho_to_storage(&ortho);
             }
@@ -449,7 +498,7 @@ mod tests {
             vec![0.0, 0.0, 0.0, -0.5, 0.5],
             vec![0.0, 0.0, 0.0, 1.0, 1.0],
         ];
-        Algebra::new(4, 1, vec!['1', '2', '3', 'o', 'i'], basis).unwrap()
+        Algebra::new([4, 1, 0], vec!['1', '2', '3', 'o', 'i'], basis).unwrap()
     }
 
     #[test]
@@ -479,7 +528,7 @@ mod tests {
     #[test]
     fn singular_basis_is_rejected() {
         let basis = vec![vec![1.0, 1.0], vec![2.0, 2.0]];
-        assert_eq!(Algebra::new(2, 0, vec!['a', 'b'], basis).unwrap_err(), ModelError::DegenerateBasis);
+        assert_eq!(Algebra::new([2, 0, 0], vec!['a', 'b'], basis).unwrap_err(), ModelError::DegenerateBasis);
     }
 
     #[test]

@@ -34,10 +34,12 @@ pub struct Approx {
     pub path: Path,
 }
 
-/// `signature = (p, q);`
+/// `signature = (p, q);` or `signature = (p, q, r);`
 pub struct Signature {
     pub p: LitInt,
     pub q: LitInt,
+    /// Null vectors (a degenerate metric), when given.
+    pub r: Option<LitInt>,
     pub span: Span,
 }
 
@@ -116,10 +118,17 @@ impl Parse for Input {
                     let p = content.parse()?;
                     content.parse::<Token![,]>()?;
                     let q = content.parse()?;
+                    let r = if content.is_empty() {
+                        None
+                    } else {
+                        content.parse::<Token![,]>()?;
+                        Some(content.parse()?)
+                    };
                     if !content.is_empty() {
-                        return Err(content.error("a signature is `(p, q)`: p vectors square to +1, q to −1"));
+                        return Err(content
+                            .error("a signature is `(p, q)` or `(p, q, r)`: p vectors square to +1, q to −1, r to 0"));
                     }
-                    set_once(&mut out.signature, Signature { p, q, span: parens.span.join() }, &key)?;
+                    set_once(&mut out.signature, Signature { p, q, r, span: parens.span.join() }, &key)?;
                 }
                 "basis" => {
                     input.parse::<Token![=]>()?;

@@ -79,13 +79,9 @@ impl Gen<'_> {
                 })
                 .collect()
         };
-        let full = dim - 1;
-        let inv_sign = self.a.ortho_gp(full, full).1;
-        let dual_t = unary_table(&|m| {
-            let (r, s) = self.a.ortho_gp(m, full);
-            (r, s * inv_sign)
-        });
-        let undual_t = unary_table(&|m| self.a.ortho_gp(m, full));
+        let dual_t = unary_table(&|m| self.a.ortho_dual(m));
+        let (dual_doc, undual_doc) = self.dual_docs();
+        let undual_t = unary_table(&|m| self.a.ortho_undual(m));
         let grade_sign = |e: i64| if e % 2 == 0 { 1.0 } else { -1.0 };
         let sign_t = |f: &dyn Fn(i64) -> f64| -> Vec<TokenStream> {
             order
@@ -237,13 +233,13 @@ impl Gen<'_> {
                     self.signed(&#tables.4)
                 }
 
-                /// Dual `A I⁻¹`.
+                #[doc = #dual_doc]
                 #[inline]
                 pub fn dual(&self) -> Self {
                     self.permuted(&#tables.0)
                 }
 
-                /// Undual `A I`.
+                #[doc = #undual_doc]
                 #[inline]
                 pub fn undual(&self) -> Self {
                     self.permuted(&#tables.1)

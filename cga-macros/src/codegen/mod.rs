@@ -1,7 +1,7 @@
 //! Tables → Rust. Every generated function is straight-line code over named fields: one
 //! expression per nonzero output blade, one multiplication per nonzero table term.
 
-use crate::model::{Algebra, Bilinear, Product, Term, Unary, cover};
+use crate::model::{Algebra, Bilinear, Mv, Product, Term, Unary, cover};
 use crate::{Spec, TypeSpec};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
@@ -124,6 +124,21 @@ impl<'a> Gen<'a> {
         (g.plans, g.scalar_plans) = g.product_plan();
         g.sandwich_plans = g.all_sandwich_plans();
         g
+    }
+
+    /// The docs of `dual` and `undual`: multiplication by `I⁻¹` and `I`, or in a degenerate
+    /// metric (`I² = 0`) the right complement and its inverse.
+    pub(super) fn dual_docs(&self) -> (String, String) {
+        if self.a.degenerate() {
+            (
+                " The dual: the right complement `∁A`, `e_S ∧ ∁e_S = I` blade by blade (the metric is \
+                 degenerate, `I² = 0`: no `I⁻¹`)."
+                    .into(),
+                " The undual: the left complement, inverse of `dual`.".into(),
+            )
+        } else {
+            (" The dual `A I⁻¹` (I the unit pseudoscalar).".into(), " The undual `A I`, inverse of `dual`.".into())
+        }
     }
 
     pub(super) fn field(&self, blade: usize) -> syn::Ident {

@@ -194,8 +194,9 @@ impl Gen<'_> {
                 .collect()
         };
         let (rev, inv, conj) = (signs(Unary::Reverse), signs(Unary::Involute), signs(Unary::Conjugate));
-        let dual = self.linear_map(t, Unary::Dual, "dual", "The dual `A I⁻¹` (I the unit pseudoscalar).");
-        let undual = self.linear_map(t, Unary::Undual, "undual", "The undual `A I`, inverse of `dual`.");
+        let (dual_doc, undual_doc) = self.dual_docs();
+        let dual = self.linear_map(t, Unary::Dual, "dual", &dual_doc);
+        let undual = self.linear_map(t, Unary::Undual, "undual", &undual_doc);
         let grades = self.grade_projections(t);
         let norm = self.norm_squared(t);
 
@@ -512,13 +513,23 @@ impl Gen<'_> {
 
     /// Terms of `⟨A Ã⟩₀` with `a_i a_j` and `a_j a_i` merged: `(coeff, i, j)`, i ≤ j.
     pub(super) fn norm_terms(&self, t: &TypeSpec) -> Vec<(f64, usize, usize)> {
+        self.quadratic_terms(t, &|b| Mv::from([(b, 1.0)]))
+    }
+
+    /// `⟨f(A) f(A)~⟩₀` for a linear map `f` given blade by blade, as terms `c · a_i a_j`
+    /// over the type's coefficients (`i ≤ j`, symmetric terms merged, cancelled ones gone).
+    fn quadratic_terms(&self, t: &TypeSpec, f: &dyn Fn(usize) -> Mv) -> Vec<(f64, usize, usize)> {
         let blades = &t.model.blades;
         let mut merged: BTreeMap<(usize, usize), f64> = BTreeMap::new();
         for (i, &x) in blades.iter().enumerate() {
             for (j, &y) in blades.iter().enumerate() {
-                let rev = self.a.unary(Unary::Reverse, y).get(&y).copied().unwrap_or(1.0);
-                if let Some(c) = self.a.product(Product::Geometric, x, y).get(&0) {
-                    *merged.entry((i.min(j), i.max(j))).or_insert(0.0) += c * rev;
+                for (&fx, &cx) in &f(x) {
+                    for (&fy, &cy) in &f(y) {
+                        let rev = self.a.unary(Unary::Reverse, fy).get(&fy).copied().unwrap_or(1.0);
+                        if let Some(c) = self.a.product(Product::Geometric, fx, fy).get(&0) {
+                            *merged.entry((i.min(j), i.max(j))).or_insert(0.0) += cx * cy * c * rev;
+                        }
+                    }
                 }
             }
         }
@@ -526,10 +537,61 @@ impl Gen<'_> {
     }
 
     pub(super) fn norm_squared(&self, t: &TypeSpec) -> TokenStream {
-        let real = self.real;
         let terms = self.norm_terms(t);
+        let body = self.quadratic(t, &terms);
+        let doc = format!(
+            " The squared norm `⟨A Ã⟩₀`: {} multiplications (symmetric terms merged). Zero for null elements such as points; its sign depends on the object.",
+            terms.len()
+        );
+        let weight = if self.a.degenerate() { self.weight_norm(t) } else { TokenStream::new() };
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn norm_squared(self) -> T {
+                #body
+            }
+
+            #weight
+        }
+    }
+
+    /// In a degenerate metric: the bulk norm `‖A‖ = √|⟨A Ã⟩₀|` (the blades without a null
+    /// vector) and the weight norm `‖∁A‖` (those with one), each squared too.
+    fn weight_norm(&self, t: &TypeSpec) -> TokenStream {
+        let terms = self.quadratic_terms(t, &|b| self.a.unary(Unary::Dual, b));
+        let body = self.quadratic(t, &terms);
+        let doc = format!(
+            " The squared weight norm `⟨∁A (∁A)~⟩₀` (`∁` the dual, a complement): the part of `A` on blades that hold a null vector, which `norm_squared` (the bulk) does not see; {} multiplications.",
+            terms.len()
+        );
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn weight_norm_squared(self) -> T {
+                #body
+            }
+
+            /// The weight norm `√|⟨∁A (∁A)~⟩₀|` (for a plane `a e1 + b e2 + c e3 + d e0` of
+            /// 3D PGA, `|d|`).
+            #[inline]
+            pub fn weight_norm(self) -> T {
+                self.weight_norm_squared().abs().sqrt()
+            }
+
+            /// The bulk norm `√|⟨A Ã⟩₀|`, `norm` by its degenerate-metric name (for a plane
+            /// `a e1 + b e2 + c e3 + d e0` of 3D PGA, `√(a² + b² + c²)`).
+            #[inline]
+            pub fn bulk_norm(self) -> T {
+                self.norm()
+            }
+        }
+    }
+
+    /// The sum `Σ c a_i a_j` of quadratic terms over the type's coefficients.
+    fn quadratic(&self, t: &TypeSpec, terms: &[(f64, usize, usize)]) -> TokenStream {
+        let real = self.real;
         let blades = &t.model.blades;
-        let body = if terms.is_empty() {
+        if terms.is_empty() {
             quote!(<T as #real>::zero())
         } else {
             self.sum(terms.iter().map(|&(c, i, j)| {
@@ -541,17 +603,6 @@ impl Gen<'_> {
                     (c, quote!(self.#x * self.#y))
                 }
             }))
-        };
-        let doc = format!(
-            " The squared norm `⟨A Ã⟩₀`: {} multiplications (symmetric terms merged). Zero for null elements such as points; its sign depends on the object.",
-            terms.len()
-        );
-        quote! {
-            #[doc = #doc]
-            #[inline]
-            pub fn norm_squared(self) -> T {
-                #body
-            }
         }
     }
 
