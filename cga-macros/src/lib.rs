@@ -42,6 +42,13 @@
 //! the orthonormal `e1 ∧ … ∧ en`) and `undual` its inverse, since `I² = 0` has no `I⁻¹`.
 //! `(p, q)` is `(p, q, 0)`.
 //!
+//! An algebra has 1 to 12 basis vectors. Products are tabulated pair by pair of declared
+//! types (never the full 4ⁿ Cayley table, except for a `dense` type); what bounds n is that
+//! every type converts to and from the 2ⁿ-coefficient storage array, which at n = 14 makes
+//! even a few small types slow to compile. The default labels are `1`…`9`, then `a`, `b`, `c`
+//! (the tenth vector is `ea`, as kingdon's `eA`). Expansion time per dimension:
+//! `cargo test --release -p cga-macros -- --ignored --nocapture expansion_per_dimension`.
+//!
 //! `basis` is optional (default: the orthonormal `e1..en`); each storage vector is named
 //! `e` plus one label character and may be any linear combination of `e1..en`, so a
 //! non-diagonal metric (the null vectors of CGA) is handled here, not at run time. Blades
@@ -126,8 +133,11 @@ pub(crate) struct TypeSpec {
     pub attrs: Vec<syn::Attribute>,
 }
 
-/// Largest supported dimension: 2^6 = 64 blades already makes 4096-entry tables.
-const MAX_DIM: usize = 6;
+/// Largest supported dimension. The products are built pair by pair of declared types, but
+/// every type converts to and from the 2ⁿ-coefficient storage array: at n = 14 an algebra of
+/// four small types takes 37 s and 2.5 GB to compile, at n = 12 1.5 s (and a dense type's
+/// tables are 4ⁿ entries).
+const MAX_DIM: usize = 12;
 
 fn resolve(input: parse::Input) -> syn::Result<Spec> {
     let call_site = proc_macro2::Span::call_site();
@@ -150,7 +160,7 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
             let (labels, rows) = resolve_basis(&basis, n)?;
             (labels, rows, basis.span)
         }
-        None => ((1..=n).map(|i| char::from_digit(i as u32, 10).unwrap_or('?')).collect(), identity(n), sig.span),
+        None => ((1..=n).map(|i| char::from_digit(i as u32, 36).unwrap_or('?')).collect(), identity(n), sig.span),
     };
     let algebra = Algebra::new([p, q, r], labels, rows).map_err(|e| match e {
         ModelError::DegenerateBasis => {
@@ -378,6 +388,54 @@ fn resolve_blades(algebra: &Algebra, decl: &parse::TypeDecl) -> syn::Result<Vec<
 
 #[cfg(test)]
 mod tests {
+    use std::alloc::{GlobalAlloc, Layout, System};
+    use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
+
+    /// The test binary's allocator, counting the bytes it hands out (for the expansion's
+    /// memory per dimension).
+    struct Counting;
+    static ALLOCATED: AtomicUsize = AtomicUsize::new(0);
+
+    // SAFETY: every call is passed on to the system allocator unchanged.
+    unsafe impl GlobalAlloc for Counting {
+        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+            ALLOCATED.fetch_add(layout.size(), Relaxed);
+            // SAFETY: the caller's layout, as `GlobalAlloc::alloc` requires.
+            unsafe { System.alloc(layout) }
+        }
+        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+            // SAFETY: `ptr` came from `alloc` with this layout.
+            unsafe { System.dealloc(ptr, layout) }
+        }
+    }
+
+    #[global_allocator]
+    static ALLOCATOR: Counting = Counting;
+
+    /// Expansion time, bytes allocated and output size per dimension, for an algebra of
+    /// vectors, bivectors, rotors and the pseudoscalar (no dense type: its tables are 4ⁿ).
+    /// `cargo test --release -p cga-macros -- --ignored --nocapture expansion_per_dimension`
+    #[test]
+    #[ignore = "a measurement: run it by name"]
+    fn expansion_per_dimension() {
+        println!("| n | blades | expansion ms | allocated MiB | output KiB |\n|---:|---:|---:|---:|---:|");
+        for n in [4, 6, 8, 10, 12] {
+            let input = format!(
+                "scalar = cga_core::Real; signature = ({}, 1); type Scalar = [s]; type Vector = [grade(1)]; \
+                 type Bivector = [grade(2)]; versor Rotor = [s, grade(2)]; type Pseudoscalar = [grade({n})];",
+                n - 1
+            );
+            let before = ALLOCATED.load(Relaxed);
+            let start = std::time::Instant::now();
+            let input: super::parse::Input = syn::parse_str(&input).expect("parses");
+            let spec = super::resolve(input).expect("resolves");
+            let out = super::codegen::generate(&spec).to_string();
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let allocated = (ALLOCATED.load(Relaxed) - before) as f64 / (1 << 20) as f64;
+            println!("| {n} | {} | {ms:.0} | {allocated:.0} | {} |", 1 << n, out.len() / 1024);
+        }
+    }
+
     /// Random, mostly malformed invocations: each must expand or give an error, never panic.
     #[test]
     fn random_input_never_panics() {

@@ -75,6 +75,9 @@ pub struct Algebra {
     to_ortho: Vec<Mv>,
     /// Orthonormal blade → storage multivector.
     from_ortho: Vec<Mv>,
+    /// Every blade in canonical order, and each blade's position in it.
+    order: Vec<usize>,
+    rank: Vec<usize>,
 }
 
 /// Why an algebra cannot be built.
@@ -111,7 +114,13 @@ impl Algebra {
         }
         let to_ortho = (0..1 << n).map(|m| outermorphism(m, &basis)).collect();
         let from_ortho = (0..1 << n).map(|m| outermorphism(m, &inverse)).collect();
-        Ok(Algebra { n, metric, labels, to_ortho, from_ortho })
+        let mut order: Vec<usize> = (0..1 << n).collect();
+        order.sort_by_cached_key(|&m| (m.count_ones(), index_tuple(m)));
+        let mut rank = vec![0; order.len()];
+        for (pos, &m) in order.iter().enumerate() {
+            rank[m] = pos;
+        }
+        Ok(Algebra { n, metric, labels, to_ortho, from_ortho, order, rank })
     }
 
     /// Number of blades, 2^n.
@@ -122,9 +131,7 @@ impl Algebra {
     /// All blades in canonical order: by grade, then lexicographically by vector index
     /// (`1, e1, …, en, e12, e13, …`), the order of the golden files.
     pub fn canonical_order(&self) -> Vec<usize> {
-        let mut masks: Vec<usize> = (0..self.dim()).collect();
-        masks.sort_by_key(|&m| (m.count_ones(), index_tuple(m)));
-        masks
+        self.order.clone()
     }
 
     /// Name of a storage blade: `s` for the scalar, else `e` and the vector labels.
@@ -166,7 +173,7 @@ impl Algebra {
 
     /// Blades of grade `k` in canonical order.
     pub fn grade_blades(&self, k: usize) -> Vec<usize> {
-        self.canonical_order().into_iter().filter(|m| m.count_ones() as usize == k).collect()
+        self.order.iter().copied().filter(|m| m.count_ones() as usize == k).collect()
     }
 
     /// Orthonormal-basis product of two orthonormal blades, `None` when it vanishes.
@@ -378,12 +385,8 @@ impl Algebra {
     }
 
     /// Position of every blade in canonical order.
-    pub fn rank(&self) -> Vec<usize> {
-        let mut rank = vec![0; self.dim()];
-        for (pos, m) in self.canonical_order().into_iter().enumerate() {
-            rank[m] = pos;
-        }
-        rank
+    pub fn rank(&self) -> &[usize] {
+        &self.rank
     }
 }
 

@@ -115,7 +115,7 @@ impl<'a> Gen<'a> {
             a,
             real: &spec.scalar,
             dim: a.dim(),
-            rank: a.rank(),
+            rank: a.rank().to_vec(),
             plans: vec![],
             sandwich_plans: vec![],
             scalar_plans: vec![],

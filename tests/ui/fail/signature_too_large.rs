@@ -1,6 +1,6 @@
 cga_macros::algebra! {
     scalar = cga_core::Real;
-    signature = (6, 3);
+    signature = (9, 6);
     type Scalar = [s];
 }
 

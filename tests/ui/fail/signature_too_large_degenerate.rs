@@ -1,6 +1,6 @@
 cga_macros::algebra! {
     scalar = cga_core::Real;
-    signature = (4, 1, 2);
+    signature = (10, 2, 1);
     type Scalar = [s];
 }
 
