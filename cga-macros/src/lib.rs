@@ -327,14 +327,20 @@ fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
         .map(|rest| rest.chars().map(|c| algebra.labels.iter().position(|&l| l == c)).collect())
         .unwrap_or(None);
     if let Some(mut positions) = positions.filter(|p| !p.is_empty()) {
+        // Each pair out of order is one swap of anticommuting vectors.
+        let swaps = (0..positions.len())
+            .map(|i| positions[i + 1..].iter().filter(|&&j| j < positions[i]).count())
+            .sum::<usize>();
         positions.sort_unstable();
         let mask = positions.iter().fold(0usize, |m, &i| m | 1 << i);
         if positions.windows(2).all(|w| w[0] < w[1]) {
             let canonical = algebra.blade_name(mask);
-            return Error::new(
-                ident.span(),
-                format!("blade `{name}` has its labels out of basis order: write `{canonical}`"),
-            );
+            let relation = if swaps % 2 == 1 {
+                format!("`{name}` = −`{canonical}`: declare `{canonical}`, whose coefficient is minus `{name}`'s")
+            } else {
+                format!("`{name}` = `{canonical}`: declare `{canonical}`, the same coefficient")
+            };
+            return Error::new(ident.span(), format!("blade `{name}` has its labels out of basis order; {relation}"));
         }
     }
     let labels: Vec<String> = algebra.labels.iter().map(|c| c.to_string()).collect();
