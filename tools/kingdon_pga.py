@@ -3,7 +3,7 @@
 
 Writes tests/data/kingdon_pga.json: for random multivectors a, b (every blade, coefficients
 uniform in [-2, 2] from random.Random(SEED), SEED = 20261202) kingdon's geometric product,
-outer product, left contraction, regressive product (`a & b`), dual and undual of a, and the
+outer product, left and right contractions, regressive product (`a & b`), dual and undual of a, and the
 join of two points and the meet of two planes given by Euclidean parameters. Coefficients are
 listed in the canonical order of `tests/tests/pga.rs` (grade, then basis order, e0 first):
 s, e0, e1, e2, e3, e01, e02, e03, e12, e13, e23, e012, e013, e023, e123, e0123 — kingdon's
@@ -50,7 +50,7 @@ for _ in range(40):
     A, B = make(a), make(b)
     cases.append({
         "a": a, "b": b,
-        "gp": read(A * B), "op": read(A ^ B), "lc": read(A.lc(B)), "rp": read(A & B),
+        "gp": read(A * B), "op": read(A ^ B), "lc": read(A.lc(B)), "rc": read(A.rc(B)), "rp": read(A & B),
         "dual": read(A.dual()), "undual": read(A.undual()),
     })
 

@@ -59,8 +59,9 @@
 //! For every type a `struct Name<T = f64>` with one named field per blade; for every
 //! ordered pair of types the products whose Cayley table is not identically zero, as
 //! traits (`GeometricProduct::gp`, `OuterProduct::wedge`, `InnerProduct::inner` (Hestenes),
-//! `LeftContraction::lc`, `RegressiveProduct::vee`, the regressive product
-//! `∁⁻¹(∁A ∧ ∁B)` with the right complement `e_S ∧ ∁e_S = I`, and
+//! `LeftContraction::lc` (`A ⌋ B`, grade s − r), `RightContraction::rc` (`A ⌊ B`, grade
+//! r − s), `RegressiveProduct::vee`, the regressive product `∁⁻¹(∁A ∧ ∁B)` with the right
+//! complement `e_S ∧ ∁e_S = I`, and
 //! `CommutatorProduct::commutator`, `A × B = ½(A B − B A)`) and operators (`*`, `^`, `|`,
 //! `&`); the result type is the smallest declared type holding every nonzero output blade
 //! (else the dense type). `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
@@ -95,6 +96,14 @@
 //! that compare against the dense type. Besides the types, the invocation's module gets the
 //! traits above, `TruncationError`, `NormaliseError`, the registry and, with `dense`, the
 //! dense type's tables (hidden).
+//!
+//! # Seeing the generated code
+//!
+//! `cargo expand` (or, on nightly, `cargo rustc --profile=check -- -Zunpretty=expanded`) in the
+//! crate that invokes the macro prints the expansion; `cargo test -p cga-macros
+//! expand_cga_core` writes cga-core's, formatted, to `target/cga-core-expanded.rs`.
+//! `docs/ALGEBRA_PEERS.md` compares the macro with GARAMON, ganja.js, kingdon and
+//! Lichtso/geometric_algebra.
 
 mod codegen;
 mod model;

@@ -26,6 +26,8 @@ pub enum Product {
     Inner,
     /// Left contraction `A ⌋ B`: grade s − r of `A_r B_s`, zero if r > s.
     LeftContraction,
+    /// Right contraction `A ⌊ B`: grade r − s of `A_r B_s`, zero if s > r.
+    RightContraction,
     /// Regressive product `A ∨ B = ∁⁻¹(∁A ∧ ∁B)`, `∁` the metric-free right complement
     /// (`e_S ∧ ∁e_S = I`): the meet of OPNS objects. It equals `undual(dual A ∧ dual B)`
     /// with `dual(X) = X I⁻¹` up to a sign that depends only on the grades.
@@ -36,11 +38,12 @@ pub enum Product {
 }
 
 impl Product {
-    pub const ALL: [Product; 6] = [
+    pub const ALL: [Product; 7] = [
         Product::Geometric,
         Product::Outer,
         Product::Inner,
         Product::LeftContraction,
+        Product::RightContraction,
         Product::Regressive,
         Product::Commutator,
     ];
@@ -186,6 +189,7 @@ impl Algebra {
             Product::Outer => a & b == 0,
             Product::Inner => ga > 0 && gb > 0 && go == (ga - gb).abs(),
             Product::LeftContraction => ga <= gb && go == gb - ga,
+            Product::RightContraction => gb <= ga && go == ga - gb,
             Product::Regressive => {
                 // ∁⁻¹(∁a ∧ ∁b) with the right complement e_S ∧ ∁e_S = I (metric-free).
                 let full = self.full_mask();

@@ -6,7 +6,7 @@ mod common;
 
 use cga_core::{
     CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, ProductKind,
-    RegressiveProduct, UnaryKind, product_table, unary_table,
+    RegressiveProduct, RightContraction, UnaryKind, product_table, unary_table,
 };
 use common::{grade_at, max_rel_diff};
 use proptest::prelude::*;
@@ -26,6 +26,7 @@ fn dense_product(kind: ProductKind, a: Multivector, b: Multivector) -> Multivect
         ProductKind::Outer => a.wedge(b),
         ProductKind::Inner => a.inner(b),
         ProductKind::LeftContraction => a.lc(b),
+        ProductKind::RightContraction => a.rc(b),
         ProductKind::Regressive => a.vee(b),
         ProductKind::Commutator => a.commutator(b),
         ProductKind::ScalarProduct => a.gp(b).grade(0),

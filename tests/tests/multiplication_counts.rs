@@ -27,6 +27,7 @@ fn support(m: &Multivector) -> Vec<usize> {
 fn dense(kind: ProductKind, a: Multivector, b: Multivector) -> Multivector {
     use cga_core::{
         CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, OuterProduct, RegressiveProduct,
+        RightContraction,
     };
     match kind {
         ProductKind::Geometric | ProductKind::Sandwich => a.gp(b),
@@ -35,6 +36,7 @@ fn dense(kind: ProductKind, a: Multivector, b: Multivector) -> Multivector {
         ProductKind::Outer => a.wedge(b),
         ProductKind::Inner => a.inner(b),
         ProductKind::LeftContraction => a.lc(b),
+        ProductKind::RightContraction => a.rc(b),
         ProductKind::Regressive => a.vee(b),
     }
 }

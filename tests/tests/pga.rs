@@ -26,7 +26,7 @@ mod pga {
 
 use pga::{
     CommutatorProduct, Dense, GeometricProduct, InnerProduct, LeftContraction, OuterProduct, Plane, Point, ProductKind,
-    RegressiveProduct, UnaryKind,
+    RegressiveProduct, RightContraction, UnaryKind,
 };
 
 /// The point `(x, y, z)`.
@@ -49,6 +49,7 @@ fn dense_product(kind: ProductKind, a: Dense<f64>, b: Dense<f64>) -> Dense<f64> 
         ProductKind::Outer => a.wedge(b),
         ProductKind::Inner => a.inner(b),
         ProductKind::LeftContraction => a.lc(b),
+        ProductKind::RightContraction => a.rc(b),
         ProductKind::Regressive => a.vee(b),
         ProductKind::Commutator => a.commutator(b),
         ProductKind::ScalarProduct => a.gp(b).grade(0),
@@ -269,6 +270,7 @@ fn the_dense_type_agrees_with_kingdon() {
             ("gp", a.gp(b)),
             ("op", a.wedge(b)),
             ("lc", a.lc(b)),
+            ("rc", a.rc(b)),
             ("rp", a.vee(b)),
             ("dual", a.dual()),
             ("undual", a.undual()),

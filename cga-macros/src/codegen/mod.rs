@@ -73,6 +73,7 @@ fn names(kind: Product) -> ProductNames {
         Product::Outer => ("OuterProduct", "wedge", Some(("BitXor", "bitxor")), "A ∧ B", "Outer"),
         Product::Inner => ("InnerProduct", "inner", Some(("BitOr", "bitor")), "A · B (Hestenes)", "Inner"),
         Product::LeftContraction => ("LeftContraction", "lc", None, "A ⌋ B", "LeftContraction"),
+        Product::RightContraction => ("RightContraction", "rc", None, "A ⌊ B", "RightContraction"),
         Product::Regressive => ("RegressiveProduct", "vee", Some(("BitAnd", "bitand")), "A ∨ B", "Regressive"),
         Product::Commutator => ("CommutatorProduct", "commutator", None, "A × B = ½(A B − B A)", "Commutator"),
     };

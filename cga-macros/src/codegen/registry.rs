@@ -133,6 +133,8 @@ impl Gen<'_> {
                 Inner,
                 /// `A ⌋ B`
                 LeftContraction,
+                /// `A ⌊ B`
+                RightContraction,
                 /// `A ∨ B`
                 Regressive,
                 /// `A × B = ½(A B − B A)`

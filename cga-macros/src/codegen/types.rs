@@ -91,6 +91,7 @@ impl Gen<'_> {
             (Product::Inner, "A \\| B"),
             (Product::Regressive, "A & B"),
             (Product::LeftContraction, "A.lc(B)"),
+            (Product::RightContraction, "A.rc(B)"),
             (Product::Commutator, "A.commutator(B)"),
         ];
         let link = |target: Target| format!("[`{}`]", self.target_name(target));
