@@ -1,6 +1,7 @@
-//! A degenerate metric: 3D projective geometric algebra G(3,0,1) declared with
-//! `signature = (3, 0, 1)` and the null vector renamed `e0` and listed first. Its generated
-//! maps are checked against its dense type, and its geometry against Euclidean formulas:
+//! A degenerate metric: 3D projective geometric algebra G(3,0,1) as `cga_algebras::pga`
+//! declares it (`signature = (3, 0, 1)`, the null vector renamed `e0` and listed first). Its
+//! generated maps are checked against its dense type and kingdon, and its geometry against
+//! Euclidean formulas:
 //! a plane `a e1 + b e2 + c e3 + d e0` is `a x + b y + c z + d = 0`, a point `(x, y, z)` is
 //! `e123 − x e023 + y e013 − z e012` (bivector.net's `e123 + x e032 + y e013 + z e021`).
 
@@ -9,41 +10,27 @@ mod common;
 use common::max_rel_diff;
 use proptest::prelude::*;
 
-mod pga {
-    cga_macros::algebra! {
-        scalar = cga_core::Real;
-        signature = (3, 0, 1);
-        basis = [e0 = e4, e1, e2, e3];
-        dense Dense;
-        type Scalar = [s];
-        type Plane = [grade(1)];
-        type Line = [grade(2)];
-        type Point = [grade(3)];
-        type Pseudoscalar = [grade(4)];
-        versor Motor = [s, grade(2), grade(4)];
-    }
-}
-
+use cga_algebras::pga;
 use pga::{
-    CommutatorProduct, Dense, GeometricProduct, InnerProduct, LeftContraction, OuterProduct, Plane, Point, ProductKind,
-    RegressiveProduct, RightContraction, UnaryKind,
+    CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector, OuterProduct, Plane, Point,
+    ProductKind, RegressiveProduct, RightContraction, UnaryKind,
 };
 
 /// The point `(x, y, z)`.
-fn point([x, y, z]: [f64; 3]) -> Point<f64> {
-    Point { e012: -z, e013: y, e023: -x, e123: 1.0 }
+fn point(x: [f64; 3]) -> Point<f64> {
+    Point::at(x)
 }
 
 /// The plane `a x + b y + c z + d = 0`.
 fn plane([a, b, c, d]: [f64; 4]) -> Plane<f64> {
-    Plane { e0: d, e1: a, e2: b, e3: c }
+    Plane::new(a, b, c, d)
 }
 
-fn dense(c: &[f64; 16]) -> Dense<f64> {
-    Dense::from_storage(c)
+fn dense(c: &[f64; 16]) -> Multivector<f64> {
+    Multivector::from_storage(c)
 }
 
-fn dense_product(kind: ProductKind, a: Dense<f64>, b: Dense<f64>) -> Dense<f64> {
+fn dense_product(kind: ProductKind, a: Multivector<f64>, b: Multivector<f64>) -> Multivector<f64> {
     match kind {
         ProductKind::Geometric => a.gp(b),
         ProductKind::Outer => a.wedge(b),
@@ -299,5 +286,45 @@ fn joins_and_meets_agree_with_kingdon() {
         let want: [f64; 16] = coeffs(&case["meet"]);
         let d = max_rel_diff(&line.to_storage(), &want);
         assert!(d <= 1e-12, "meet differs by {d:e}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// The shipped projections against Euclid: onto the plane `n·x + d = 0` (unit n) the
+    /// point goes to `x − (n·x + d) n`; onto the line through `p` along unit `u`, to
+    /// `p + ((x − p)·u) u`.
+    #[test]
+    fn projections_are_the_euclidean_ones(
+        x in prop::array::uniform3(-10.0f64..10.0),
+        p in prop::array::uniform3(-5.0f64..5.0),
+        n in prop::array::uniform3(-1.0f64..1.0),
+        d in -5.0f64..5.0,
+    ) {
+        let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        prop_assume!(len > 0.2);
+        let u = n.map(|c| c / len);
+        let dist = u[0] * x[0] + u[1] * x[1] + u[2] * x[2] + d;
+        let want: [f64; 3] = core::array::from_fn(|k| x[k] - dist * u[k]);
+        let got = point(x).project_onto_plane(plane([u[0], u[1], u[2], d])).position().unwrap();
+        prop_assert!(max_rel_diff(&got, &want) <= 1e-12, "{got:?} vs {want:?}");
+        let q: [f64; 3] = core::array::from_fn(|k| p[k] + 2.0 * u[k]);
+        let line = point(p).vee(point(q));
+        let along = (0..3).map(|k| (x[k] - p[k]) * u[k]).sum::<f64>();
+        let want: [f64; 3] = core::array::from_fn(|k| p[k] + along * u[k]);
+        let got = point(x).project_onto_line(line).position().unwrap();
+        prop_assert!(max_rel_diff(&got, &want) <= 1e-11, "{got:?} vs {want:?}");
+    }
+
+    /// The product `q p` of two parallel planes `x = 0` and `x = h` is a translation by `2h`
+    /// along x, applied by the motor's sandwich.
+    #[test]
+    fn two_parallel_planes_make_a_translation(x in prop::array::uniform3(-10.0f64..10.0), h in -3.0f64..3.0) {
+        use pga::Sandwich;
+        let m: pga::Motor<f64> = plane([1.0, 0.0, 0.0, -h]) * plane([1.0, 0.0, 0.0, 0.0]);
+        let got = m.sandwich(point(x)).position().unwrap();
+        let want = [x[0] + 2.0 * h, x[1], x[2]];
+        prop_assert!(max_rel_diff(&got, &want) <= 1e-12, "{got:?} vs {want:?}");
     }
 }

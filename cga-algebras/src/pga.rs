@@ -1,0 +1,73 @@
+//! 3D projective geometric algebra G(3,0,1), in the conventions of bivector.net and kingdon:
+//! `e0² = 0`, `e1² = e2² = e3² = 1`, the pseudoscalar `e0123`.
+//!
+//! - A plane `a x + b y + c z + d = 0` is the vector `a e1 + b e2 + c e3 + d e0`.
+//! - A point `(x, y, z)` is the trivector `e123 − x e023 + y e013 − z e012` (bivector.net's
+//!   `e123 + x e032 + y e013 + z e021`): weight `e123`, position over it.
+//! - A line is a bivector: `P & Q` (the join, regressive product) through two points,
+//!   `p ^ q` (the meet, outer product) of two planes.
+//! - `dual` is the right complement against `e0123`; `norm` (= `bulk_norm`) and
+//!   `weight_norm` are the bulk and weight norms.
+//! - A motor `[s, grade(2), e0123]` moves by `M X M̃` (`sandwich`); two planes' product
+//!   `q p` reflects in `p` then `q`: a rotation about their line, or a translation by twice
+//!   their distance when parallel.
+
+use crate::Real;
+
+cga_macros::algebra! {
+    scalar = crate::Real;
+    scalars = [f32, f64];
+    signature = (3, 0, 1);
+    basis = [e0 = e4, e1, e2, e3];
+
+    /// All 16 coefficients in the orthonormal basis `e1, e2, e3, e4 = e0`.
+    dense Multivector;
+
+    /// A scalar.
+    type Scalar = [s];
+    /// A plane `a e1 + b e2 + c e3 + d e0`: `a x + b y + c z + d = 0`. A versor too: it
+    /// reflects by `p X p̃` (up to the grade sign).
+    versor Plane = [grade(1)];
+    /// A line: the join of two points or the meet of two planes.
+    type Line = [grade(2)];
+    /// A point `w (e123 − x e023 + y e013 − z e012)`.
+    type Point = [grade(3)];
+    /// The pseudoscalar `e0123`.
+    type Pseudoscalar = [grade(4)];
+    /// A motor (rotation, translation, screw): the even subalgebra.
+    versor Motor = [s, grade(2), grade(4)];
+}
+
+impl<T: Real> Plane<T> {
+    /// The plane `a x + b y + c z + d = 0`.
+    pub fn new(a: T, b: T, c: T, d: T) -> Self {
+        Plane { e0: d, e1: a, e2: b, e3: c }
+    }
+}
+
+impl<T: Real> Point<T> {
+    /// The point `(x, y, z)`, of weight 1: `e123 − x e023 + y e013 − z e012`.
+    pub fn at([x, y, z]: [T; 3]) -> Self {
+        Point { e012: -z, e013: y, e023: -x, e123: T::one() }
+    }
+
+    /// Its Euclidean position `(−e023, e013, −e012) / e123`; `None` for an ideal point
+    /// (a direction: `e123 = 0`) or where the division is not finite.
+    pub fn position(self) -> Option<[T; 3]> {
+        let w = self.e123;
+        let x = [-self.e023 / w, self.e013 / w, -self.e012 / w];
+        x.iter().all(|c| c.is_finite()).then_some(x)
+    }
+
+    /// The point's orthogonal projection onto `plane`: `(P · p) ∧ p`, the meet of the plane
+    /// with the line through the point perpendicular to it.
+    pub fn project_onto_plane(self, plane: Plane<T>) -> Point<T> {
+        self.inner(plane) ^ plane
+    }
+
+    /// The point's orthogonal projection onto `line`: `(P · L) ∧ L`, the meet of the line
+    /// with the plane through the point perpendicular to it.
+    pub fn project_onto_line(self, line: Line<T>) -> Point<T> {
+        self.inner(line) ^ line
+    }
+}

@@ -1,0 +1,30 @@
+//! The spacetime algebra G(1,3): `γ0..γ3` are `e0..e3`, with `γ0² = 1` and `γk² = −1` (the
+//! signature (+, −, −, −)); the pseudoscalar `I = e0123`, `I² = −1`.
+//!
+//! - An event or four-velocity is a [`Vector`]; `v * v` is its squared interval.
+//! - Lorentz transformations are even [`Rotor`]s: a boost along `γk` with rapidity `φ` is
+//!   `cosh(φ/2) + sinh(φ/2) e0k` (moving by `R v R̃`), a rotation `cos(θ/2) − sin(θ/2) e_jk`.
+//! - The electromagnetic field is a [`Bivector`].
+
+cga_macros::algebra! {
+    scalar = crate::Real;
+    scalars = [f32, f64];
+    signature = (1, 3);
+    basis = [e0 = e1, e1 = e2, e2 = e3, e3 = e4];
+
+    /// All 16 coefficients in the orthonormal basis `e1..e4` (`e1 = γ0`).
+    dense Multivector;
+
+    /// A scalar.
+    type Scalar = [s];
+    /// A spacetime vector.
+    versor Vector = [grade(1)];
+    /// A bivector: a field, or a boost or rotation generator.
+    type Bivector = [grade(2)];
+    /// A trivector.
+    type Trivector = [grade(3)];
+    /// The pseudoscalar `e0123`.
+    type Pseudoscalar = [grade(4)];
+    /// A rotor: the even subalgebra.
+    versor Rotor = [s, grade(2), grade(4)];
+}
