@@ -64,7 +64,9 @@
 //! complement `e_S ∧ ∁e_S = I`, and
 //! `CommutatorProduct::commutator`, `A × B = ½(A B − B A)`) and operators (`*`, `^`, `|`,
 //! `&`); the result type is the smallest declared type holding every nonzero output blade
-//! (else the dense type). `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
+//! (ties: the first declared), else the dense type; with no dense type the product is not
+//! generated, and the left type's `# Products` table says `none` and names the grades a
+//! type must hold to get it. `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
 //! multiplication per scalar term) for every pair whose geometric product has a scalar part.
 //! The traits carry `#[diagnostic::on_unimplemented]` messages saying why a pair has none.
 //! Their impls are hidden from rustdoc; each type's page has a `# Products` table of the
@@ -426,6 +428,18 @@ mod tests {
 
     #[global_allocator]
     static ALLOCATOR: Counting = Counting;
+
+    /// A product no declared type holds is not generated, and the type's docs say which
+    /// grades a type must hold to get it.
+    #[test]
+    fn uncovered_products_are_named_with_their_grades() {
+        let input =
+            "scalar = cga_core::Real; signature = (3, 0); type Vector = [grade(1)]; versor Rotor = [s, grade(2)];";
+        let input: super::parse::Input = syn::parse_str(input).expect("parses");
+        let out = super::codegen::generate(&super::resolve(input).expect("resolves")).to_string();
+        assert!(out.contains("`A B` with [`Rotor`]: grades [1, 3], e.g. `type … = [grade(1), grade(3)];`"), "{out}");
+        assert!(!out.contains("GeometricProduct < Rotor < T > > for Vector"), "not generated");
+    }
 
     /// Expansion time, bytes allocated and output size per dimension, for an algebra of
     /// vectors, bivectors, rotors and the pseudoscalar (no dense type: its tables are 4ⁿ).

@@ -80,6 +80,24 @@ fn names(kind: Product) -> ProductNames {
     ProductNames { trait_name, method, operator, formula, kind_variant }
 }
 
+/// A nonzero product of two types that no declared type holds: not generated; the docs name
+/// the grades a type must hold to get it.
+struct Uncovered {
+    kind: Product,
+    lhs: usize,
+    rhs: usize,
+    /// The grades of its nonzero blades, increasing.
+    grades: Vec<u32>,
+}
+
+impl Uncovered {
+    /// `[grade(1), grade(3)]`: the blades a type must hold for this product.
+    fn declaration(&self) -> String {
+        let grades: Vec<String> = self.grades.iter().map(|g| format!("grade({g})")).collect();
+        format!("[{}]", grades.join(", "))
+    }
+}
+
 /// The two stages of a versor's sandwich on a type (see `Gen::sandwich_plan`).
 struct SandwichPlan {
     versor: usize,
@@ -103,6 +121,8 @@ struct Gen<'a> {
     sandwich_plans: Vec<SandwichPlan>,
     /// Every nonzero scalar part of a geometric product of two types.
     scalar_plans: Vec<ScalarPlan>,
+    /// Every nonzero product whose result no declared type holds (with no dense type).
+    uncovered: Vec<Uncovered>,
     /// Per type: whether `X X̃` is identically a (not identically zero) scalar.
     invertible: Vec<bool>,
 }
@@ -120,9 +140,10 @@ impl<'a> Gen<'a> {
             plans: vec![],
             sandwich_plans: vec![],
             scalar_plans: vec![],
+            uncovered: vec![],
             invertible,
         };
-        (g.plans, g.scalar_plans) = g.product_plan();
+        (g.plans, g.scalar_plans, g.uncovered) = g.product_plan();
         g.sandwich_plans = g.all_sandwich_plans();
         g
     }

@@ -4,11 +4,12 @@
 use super::*;
 
 impl Gen<'_> {
-    /// One entry per nonzero product of an ordered pair of types, and one per nonzero scalar
-    /// part of their geometric product.
-    pub(super) fn product_plan(&self) -> (Vec<Planned>, Vec<ScalarPlan>) {
+    /// One entry per nonzero product of an ordered pair of types, one per nonzero scalar
+    /// part of their geometric product, and the nonzero products no type holds.
+    pub(super) fn product_plan(&self) -> (Vec<Planned>, Vec<ScalarPlan>, Vec<Uncovered>) {
         let mut plan = Vec::new();
         let mut scalars = Vec::new();
+        let mut uncovered = Vec::new();
         for (l, lt) in self.spec.types.iter().enumerate() {
             for (r, rt) in self.spec.types.iter().enumerate() {
                 for kind in Product::ALL {
@@ -22,13 +23,19 @@ impl Gen<'_> {
                     if outs.is_empty() {
                         continue;
                     }
-                    if let Some(target) = self.target_for(&outs) {
-                        plan.push(Planned { kind, lhs: l, rhs: r, target, table });
+                    match self.target_for(&outs) {
+                        Some(target) => plan.push(Planned { kind, lhs: l, rhs: r, target, table }),
+                        None => {
+                            let mut grades: Vec<u32> = outs.iter().map(|b| b.count_ones()).collect();
+                            grades.sort_unstable();
+                            grades.dedup();
+                            uncovered.push(Uncovered { kind, lhs: l, rhs: r, grades });
+                        }
                     }
                 }
             }
         }
-        (plan, scalars)
+        (plan, scalars, uncovered)
     }
 
     /// `ScalarProduct` for every pair of types whose geometric product has a scalar part.

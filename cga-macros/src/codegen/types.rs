@@ -19,7 +19,8 @@ impl Gen<'_> {
             let note = format!(
                 "`{}` is generated for every ordered pair of declared types whose table for it is not identically \
                  zero: if both are declared types, the product of `{{Self}}` and `{{Rhs}}` is identically zero in \
-                 this algebra (or, with no `dense` type declared, no declared type holds its result)",
+                 this algebra, or (with no `dense` type declared) no declared type holds its result: the `# Products` \
+                 table on `{{Self}}`'s page then names the grades a type must hold",
                 n.trait_name
             );
             out.extend(quote! {
@@ -113,8 +114,10 @@ impl Gen<'_> {
             "# Products".to_string(),
             String::new(),
             "The type of every product of this type `A` with a declared type `B` (`—`: identically zero in this \
-             algebra, so not generated); one multiplication per nonzero term of the Cayley table. Their trait \
-             impls (`GeometricProduct`, `Mul`, `OuterProduct`, `BitXor`, … `Sandwich`) are hidden from this page."
+             algebra, so not generated; `none`: no declared type holds the result, so not generated either, \
+             the grades a type must hold follow the table); one multiplication per nonzero term of the Cayley \
+             table. Their trait impls (`GeometricProduct`, `Mul`, `OuterProduct`, `BitXor`, … `Sandwich`) are \
+             hidden from this page."
                 .to_string(),
             String::new(),
             header,
@@ -124,7 +127,10 @@ impl Gen<'_> {
             let mut row = format!("| [`{}`] |", rt.ident);
             for (kind, _) in kinds {
                 let plan = self.plans.iter().find(|p| p.kind == kind && p.lhs == pos && p.rhs == r);
-                row.push_str(&format!(" {} |", plan.map_or("—".to_string(), |p| link(p.target))));
+                let none = self.uncovered.iter().any(|u| u.kind == kind && u.lhs == pos && u.rhs == r);
+                let cell =
+                    plan.map_or_else(|| if none { "none".to_string() } else { "—".to_string() }, |p| link(p.target));
+                row.push_str(&format!(" {cell} |"));
             }
             let scalar = self.scalar_plans.iter().any(|p| p.lhs == pos && p.rhs == r);
             row.push_str(if scalar { " `T` |" } else { " — |" });
@@ -133,6 +139,21 @@ impl Gen<'_> {
                 row.push_str(&format!(" {} |", plan.map_or("—".to_string(), |p| link(p.target))));
             }
             lines.push(row);
+        }
+        let missing: Vec<&Uncovered> = self.uncovered.iter().filter(|u| u.lhs == pos).collect();
+        if !missing.is_empty() {
+            lines.push(String::new());
+            lines.push("Not generated, for want of a type that holds the result (declare one to get it):".into());
+            lines.push(String::new());
+            for u in missing {
+                lines.push(format!(
+                    "- `{}` with [`{}`]: grades {:?}, e.g. `type … = {};`",
+                    names(u.kind).formula,
+                    self.spec.types[u.rhs].ident,
+                    u.grades,
+                    u.declaration()
+                ));
+            }
         }
         let mut with_scalar = self.spec.types[pos].model.blades.clone();
         with_scalar.push(0);
