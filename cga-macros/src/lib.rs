@@ -77,7 +77,8 @@
 //! `try_normalise` (`Option`), scale, `cast::<U>()` (through `f64`: a dual number's derivative
 //! is dropped), `from_storage` (drops other blades) and `try_from_storage` (refuses to), and
 //! the arithmetic: `+`, `−`, unary `−`, `x * s`, `x / s` (each coefficient divided), `*=`,
-//! `/=`. With the scalar on the right, generically: `x + s` and `x − s` into `X` when it holds
+//! `/=`; `A + B` and `A − B` of two different types into the smallest declared type holding
+//! the blades of both (none if no type does; the impls are hidden from rustdoc). With the scalar on the right, generically: `x + s` and `x − s` into `X` when it holds
 //! the scalar blade `s` (then also `+=`, `−=` and `X::one()`), else into the smallest declared
 //! type holding `s` and `X`'s blades (none if no type does).
 //!

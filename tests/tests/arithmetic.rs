@@ -364,3 +364,31 @@ fn normalise_names_its_failures() {
         assert_eq!(v.normalise().ok(), v.try_normalise());
     }
 }
+
+/// `A + B` and `A − B` of two types land in the smallest declared type holding both, and
+/// agree with the dense type's sum and difference.
+macro_rules! mixed_sums {
+    ($rng:expr, $(($a:ident, $b:ident, $out:ident)),*) => {$({
+        let (x, y) = (random($rng, $a::from_array), random($rng, $b::from_array));
+        let (sum, difference): ($out, $out) = (x + y, x - y);
+        let (dx, dy) = (Multivector::from(x), Multivector::from(y));
+        let name = concat!(stringify!($a), " ± ", stringify!($b));
+        assert!(max_rel_diff(&Multivector::from(sum).coeffs, &(dx + dy).coeffs) < 1e-15, "{name}");
+        assert!(max_rel_diff(&Multivector::from(difference).coeffs, &(dx - dy).coeffs) < 1e-15, "{name}");
+    })*};
+}
+
+#[test]
+fn sums_of_different_types_land_in_the_covering_type() {
+    let rng = &mut Rng::new(12);
+    mixed_sums!(
+        rng,
+        (Rotor, Translator, Motor),
+        (Translator, Rotor, Motor),
+        (Scalar, Bivector, Even),
+        (Vector, Circle, Odd),
+        (FlatPoint, Bivector, Bivector),
+        (Line, Circle, Circle),
+        (Plane, Sphere, Sphere)
+    );
+}

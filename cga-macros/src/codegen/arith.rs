@@ -97,6 +97,64 @@ impl Gen<'_> {
     /// blade, else into the smallest declared type holding it and `X`'s blades, if any), and
     /// `X += s`, `X −= s` when `X` holds it. For every concrete scalar of the `scalars`
     /// option: `s * X`, `s + X`, `s − X` (the orphan rule forbids these generically).
+    /// `A + B` and `A − B` of two different declared types, into the smallest declared type
+    /// holding the blades of both (none where no type does). Hidden from the docs, as the
+    /// products are.
+    pub(super) fn mixed_sums(&self) -> TokenStream {
+        let real = self.real;
+        let mut out = TokenStream::new();
+        for (l, lt) in self.spec.types.iter().enumerate() {
+            for (r, rt) in self.spec.types.iter().enumerate() {
+                let (a, b) = (&lt.model.blades, &rt.model.blades);
+                let mut blades = a.clone();
+                blades.extend(b.iter().filter(|x| !a.contains(x)));
+                let Some(target) = self.declared_cover(&blades).filter(|_| l != r) else { continue };
+                let exprs = |negate: bool| -> BTreeMap<usize, TokenStream> {
+                    blades
+                        .iter()
+                        .map(|&x| {
+                            let f = self.field(x);
+                            let e = match (a.contains(&x), b.contains(&x), negate) {
+                                (true, true, false) => quote!(a.#f + b.#f),
+                                (true, true, true) => quote!(a.#f - b.#f),
+                                (true, false, _) => quote!(a.#f),
+                                (false, _, false) => quote!(b.#f),
+                                (false, _, true) => quote!(-b.#f),
+                            };
+                            (x, e)
+                        })
+                        .collect()
+                };
+                let (add, sub) = (
+                    self.construct(Target::Type(target), &exprs(false)),
+                    self.construct(Target::Type(target), &exprs(true)),
+                );
+                let (li, ri, out_ty) = (&lt.ident, &rt.ident, self.target_ty(Target::Type(target)));
+                out.extend(quote! {
+                    #[doc(hidden)]
+                    impl<T: #real> core::ops::Add<#ri<T>> for #li<T> {
+                        type Output = #out_ty;
+                        #[inline]
+                        fn add(self, b: #ri<T>) -> #out_ty {
+                            let a = self;
+                            #add
+                        }
+                    }
+                    #[doc(hidden)]
+                    impl<T: #real> core::ops::Sub<#ri<T>> for #li<T> {
+                        type Output = #out_ty;
+                        #[inline]
+                        fn sub(self, b: #ri<T>) -> #out_ty {
+                            let a = self;
+                            #sub
+                        }
+                    }
+                });
+            }
+        }
+        out
+    }
+
     pub(super) fn scalar_ops(&self, t: &TypeSpec) -> TokenStream {
         let real = self.real;
         let ident = &t.ident;

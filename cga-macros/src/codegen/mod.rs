@@ -24,6 +24,7 @@ pub fn generate(spec: &Spec) -> TokenStream {
         out.extend(g.inverse(pos, t));
     }
     out.extend(g.embeddings());
+    out.extend(g.mixed_sums());
     out.extend(g.truncations());
     out.extend(g.products());
     out.extend(g.scalar_products());
