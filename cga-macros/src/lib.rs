@@ -50,9 +50,11 @@
 //! `cargo test --release -p cga-macros -- --ignored --nocapture expansion_per_dimension`.
 //!
 //! `basis` is optional (default: the orthonormal `e1..en`); each storage vector is named
-//! `e` plus one label character and may be any linear combination of `e1..en`, so a
-//! non-diagonal metric (the null vectors of CGA) is handled here, not at run time. Blades
-//! are `s` (the scalar) or `e` followed by labels in basis order (`e1oi`).
+//! `e` plus a label of letters and digits (`eo`, `einf`, `e10`) and may be any linear
+//! combination of `e1..en`, so a non-diagonal metric (the null vectors of CGA) is handled
+//! here, not at run time. Blades are `s` (the scalar) or `e` followed by labels in basis order
+//! (`e1oi`, `e1oinf`); labels that would make a blade's name read two ways (`1`, `2` and
+//! `12`) are refused. A blade written out of order is refused with its sign (`e31 = −e13`).
 //!
 //! # Output
 //!
@@ -172,7 +174,11 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
             let (labels, rows) = resolve_basis(&basis, n)?;
             (labels, rows, basis.span)
         }
-        None => ((1..=n).map(|i| char::from_digit(i as u32, 36).unwrap_or('?')).collect(), identity(n), sig.span),
+        None => (
+            (1..=n).map(|i| char::from_digit(i as u32, 36).unwrap_or('?').to_string()).collect(),
+            identity(n),
+            sig.span,
+        ),
     };
     let algebra = Algebra::new([p, q, r], labels, rows).map_err(|e| match e {
         ModelError::DegenerateBasis => {
@@ -180,6 +186,14 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         }
         ModelError::NonFinite => Error::new(basis_span, "the basis coefficients overflow: keep them within ±1e100"),
     })?;
+    if let Some(name) = algebra.ambiguous_blade() {
+        return Err(Error::new(
+            basis_span,
+            format!(
+                "the basis labels make blade `{name}` read two ways: rename a basis vector so that no label is a run of others"
+            ),
+        ));
+    }
 
     let mut names: Vec<Ident> = input.dense.iter().map(|d| d.name.clone()).collect();
     let mut types = Vec::new();
@@ -233,7 +247,7 @@ fn identity(n: usize) -> Vec<Vec<f64>> {
 }
 
 /// Storage vectors: labels from the names, rows from the expressions.
-fn resolve_basis(basis: &parse::Basis, n: usize) -> syn::Result<(Vec<char>, Vec<Vec<f64>>)> {
+fn resolve_basis(basis: &parse::Basis, n: usize) -> syn::Result<(Vec<String>, Vec<Vec<f64>>)> {
     if basis.vectors.len() != n {
         return Err(Error::new(
             basis.span,
@@ -244,12 +258,12 @@ fn resolve_basis(basis: &parse::Basis, n: usize) -> syn::Result<(Vec<char>, Vec<
     let mut rows = Vec::new();
     for v in &basis.vectors {
         let name = v.name.to_string();
-        let label = match name.strip_prefix('e').map(|l| l.chars().collect::<Vec<_>>()).as_deref() {
-            Some([c]) if c.is_ascii_alphanumeric() => *c,
+        let label = match name.strip_prefix('e') {
+            Some(l) if !l.is_empty() && l.chars().all(|c| c.is_ascii_alphanumeric()) => l.to_string(),
             _ => {
                 return Err(Error::new(
                     v.name.span(),
-                    format!("basis vector `{name}` must be named `e` plus one letter or digit, e.g. `eo`"),
+                    format!("basis vector `{name}` must be named `e` plus letters or digits, e.g. `eo` or `einf`"),
                 ));
             }
         };
@@ -334,11 +348,8 @@ fn eval(expr: &Expr, n: usize) -> syn::Result<Value> {
 /// Why a blade name is not one: labels out of order (with the canonical spelling), or unknown.
 fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
     let name = ident.to_string();
-    let positions: Option<Vec<usize>> = name
-        .strip_prefix('e')
-        .map(|rest| rest.chars().map(|c| algebra.labels.iter().position(|&l| l == c)).collect())
-        .unwrap_or(None);
-    if let Some(mut positions) = positions.filter(|p| !p.is_empty()) {
+    let positions = name.strip_prefix('e').and_then(|rest| algebra.label_parses(rest, false).into_iter().next());
+    if let Some(mut positions) = positions {
         // Each pair out of order is one swap of anticommuting vectors.
         let swaps = (0..positions.len())
             .map(|i| positions[i + 1..].iter().filter(|&&j| j < positions[i]).count())
@@ -355,7 +366,7 @@ fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
             return Error::new(ident.span(), format!("blade `{name}` has its labels out of basis order; {relation}"));
         }
     }
-    let labels: Vec<String> = algebra.labels.iter().map(|c| c.to_string()).collect();
+    let labels = &algebra.labels;
     Error::new(
         ident.span(),
         format!(

@@ -72,8 +72,8 @@ pub struct Algebra {
     /// Squares of the orthonormal vectors `e1..en`: +1 (the first p), −1 (the next q), 0
     /// (the last r, null).
     pub metric: Vec<f64>,
-    /// One-character label of each storage vector (`e1` → "1", `eo` → "o").
-    pub labels: Vec<char>,
+    /// The label of each storage vector, its name after `e` (`e1` → "1", `einf` → "inf").
+    pub labels: Vec<String>,
     /// Storage blade (bitmask over storage vectors) → orthonormal multivector.
     to_ortho: Vec<Mv>,
     /// Orthonormal blade → storage multivector.
@@ -94,7 +94,7 @@ pub enum ModelError {
 
 impl Algebra {
     /// An algebra of signature (p, q, r) whose storage vectors are `basis[a] = Σ_i B[a][i] e_i`.
-    pub fn new([p, q, r]: [usize; 3], labels: Vec<char>, basis: Vec<Vec<f64>>) -> Result<Self, ModelError> {
+    pub fn new([p, q, r]: [usize; 3], labels: Vec<String>, basis: Vec<Vec<f64>>) -> Result<Self, ModelError> {
         let n = p + q + r;
         let metric: Vec<f64> = (0..n)
             .map(|i| {
@@ -142,7 +142,7 @@ impl Algebra {
         if mask == 0 {
             return "s".into();
         }
-        let labels: String = (0..self.n).filter(|i| mask >> i & 1 == 1).map(|i| self.labels[i]).collect();
+        let labels: String = (0..self.n).filter(|i| mask >> i & 1 == 1).map(|i| self.labels[i].as_str()).collect();
         format!("e{labels}")
     }
 
@@ -155,23 +155,50 @@ impl Algebra {
         format!("e{digits}")
     }
 
-    /// The storage blade named `name`, if the name is canonical (labels in basis order).
+    /// The storage blade named `name`, if the name is canonical (labels in basis order) and
+    /// reads one way only.
     pub fn parse_blade(&self, name: &str) -> Option<usize> {
         if name == "s" {
             return Some(0);
         }
         let rest = name.strip_prefix('e')?;
-        let mut mask = 0usize;
-        let mut last = None;
-        for c in rest.chars() {
-            let i = self.labels.iter().position(|&l| l == c)?;
-            if last.is_some_and(|l| i <= l) {
-                return None;
-            }
-            last = Some(i);
-            mask |= 1 << i;
+        match self.label_parses(rest, true).as_slice() {
+            [one] => Some(one.iter().fold(0, |m, &i| m | 1 << i)),
+            _ => None,
         }
-        (mask != 0).then_some(mask)
+    }
+
+    /// The ways `rest` reads as distinct labels (vector indices, in the order written), at
+    /// most two; with `increasing`, only those in basis order.
+    pub fn label_parses(&self, rest: &str, increasing: bool) -> Vec<Vec<usize>> {
+        fn walk(a: &Algebra, rest: &str, increasing: bool, path: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
+            if out.len() >= 2 {
+                return;
+            }
+            if rest.is_empty() {
+                if !path.is_empty() {
+                    out.push(path.clone());
+                }
+                return;
+            }
+            for (i, label) in a.labels.iter().enumerate() {
+                let fresh = !path.contains(&i) && (!increasing || path.last().is_none_or(|&l| i > l));
+                if let Some(tail) = rest.strip_prefix(label.as_str()).filter(|_| fresh) {
+                    path.push(i);
+                    walk(a, tail, increasing, path, out);
+                    path.pop();
+                }
+            }
+        }
+        let mut out = Vec::new();
+        walk(self, rest, increasing, &mut Vec::new(), &mut out);
+        out
+    }
+
+    /// A blade whose canonical name also reads as another blade's, if the labels allow one
+    /// (`1`, `2` and `12` make `e12` two blades).
+    pub fn ambiguous_blade(&self) -> Option<String> {
+        (1..self.dim()).map(|m| self.blade_name(m)).find(|name| self.label_parses(&name[1..], true).len() != 1)
     }
 
     /// Blades of grade `k` in canonical order.
@@ -505,7 +532,7 @@ mod tests {
             vec![0.0, 0.0, 0.0, -0.5, 0.5],
             vec![0.0, 0.0, 0.0, 1.0, 1.0],
         ];
-        Algebra::new([4, 1, 0], vec!['1', '2', '3', 'o', 'i'], basis).unwrap()
+        Algebra::new([4, 1, 0], ['1', '2', '3', 'o', 'i'].map(String::from).to_vec(), basis).unwrap()
     }
 
     #[test]
@@ -535,7 +562,10 @@ mod tests {
     #[test]
     fn singular_basis_is_rejected() {
         let basis = vec![vec![1.0, 1.0], vec![2.0, 2.0]];
-        assert_eq!(Algebra::new([2, 0, 0], vec!['a', 'b'], basis).unwrap_err(), ModelError::DegenerateBasis);
+        assert_eq!(
+            Algebra::new([2, 0, 0], ['a', 'b'].map(String::from).to_vec(), basis).unwrap_err(),
+            ModelError::DegenerateBasis
+        );
     }
 
     #[test]
@@ -580,6 +610,22 @@ mod tests {
             assert_eq!(a.parse_blade(&a.blade_name(m)), Some(m));
         }
         assert_eq!(a.parse_blade("eo1"), None, "labels out of order");
+        let labels = ["1", "2", "3", "o", "inf"].map(String::from).to_vec();
+        let cga = Algebra::new(
+            [4, 1, 0],
+            labels,
+            (0..5).map(|i| (0..5).map(|j| f64::from(u8::from(i == j))).collect()).collect(),
+        )
+        .unwrap();
+        assert_eq!(cga.parse_blade("e1oinf"), Some(0b11001));
+        assert_eq!(cga.blade_name(0b11001), "e1oinf");
+        assert_eq!(cga.ambiguous_blade(), None);
+        let clash = Algebra::new(
+            [3, 0, 0],
+            ["1", "2", "12"].map(String::from).to_vec(),
+            vec![vec![1.0, 0.0, 0.0], vec![0.0, 1.0, 0.0], vec![0.0, 0.0, 1.0]],
+        );
+        assert_eq!(clash.unwrap().ambiguous_blade().as_deref(), Some("e12"), "e1 ∧ e2 or e12");
         assert_eq!(a.parse_blade("e4"), None, "unknown label");
     }
 }
