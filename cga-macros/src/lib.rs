@@ -66,9 +66,9 @@
 //! complement `e_S ∧ ∁e_S = I`, and
 //! `CommutatorProduct::commutator`, `A × B = ½(A B − B A)`) and operators (`*`, `^`, `|`,
 //! `&`); the result type is the smallest declared type holding every nonzero output blade
-//! (ties: the first declared), else the dense type; with no dense type the product is not
-//! generated, and the left type's `# Products` table says `none` and names the grades a
-//! type must hold to get it. `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
+//! (ties: the first declared); else, for a result that is a scalar only, the scalar type `T`
+//! itself; else the dense type; with no dense type the product is not generated, and the
+//! left type's `# Products` table says `none` and names the grades a type must hold to get it. `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
 //! multiplication per scalar term) for every pair whose geometric product has a scalar part.
 //! The traits carry `#[diagnostic::on_unimplemented]` messages saying why a pair has none.
 //! Their impls are hidden from rustdoc; each type's page has a `# Products` table of the

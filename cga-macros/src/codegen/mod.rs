@@ -36,10 +36,12 @@ pub fn generate(spec: &Spec) -> TokenStream {
     out
 }
 
-/// Where a map's result goes: a declared type, or the dense type when none covers it.
+/// Where a map's result goes: a declared type; the scalar type `T` itself for a scalar no
+/// declared type holds; or the dense type when none covers it.
 #[derive(Clone, Copy)]
 enum Target {
     Type(usize),
+    Scalar,
     Dense,
 }
 
@@ -171,7 +173,21 @@ impl<'a> Gen<'a> {
     pub(super) fn target_for(&self, blades: &[usize]) -> Option<Target> {
         match self.declared_cover(blades) {
             Some(t) => Some(Target::Type(t)),
+            None if blades == [0] => Some(Target::Scalar),
             None => self.spec.dense.as_ref().map(|_| Target::Dense),
+        }
+    }
+
+    /// A value of `target` as a storage array, for the registry's function pointers.
+    pub(super) fn to_storage(&self, target: Target, value: TokenStream) -> TokenStream {
+        let (real, dim) = (self.real, self.dim);
+        match target {
+            Target::Scalar => quote!({
+                let mut out = [<T as #real>::zero(); #dim];
+                out[0] = #value;
+                out
+            }),
+            _ => quote!((#value).to_storage()),
         }
     }
 
@@ -184,6 +200,7 @@ impl<'a> Gen<'a> {
     pub(super) fn target_ty(&self, target: Target) -> TokenStream {
         let ident = match target {
             Target::Type(t) => &self.spec.types[t].ident,
+            Target::Scalar => return quote!(T),
             Target::Dense => &self.dense_ident(),
         };
         quote!(#ident<T>)
@@ -192,6 +209,7 @@ impl<'a> Gen<'a> {
     pub(super) fn target_name(&self, target: Target) -> String {
         match target {
             Target::Type(t) => self.spec.types[t].ident.to_string(),
+            Target::Scalar => "T".to_string(),
             Target::Dense => self.dense_ident().to_string(),
         }
     }
@@ -203,6 +221,7 @@ impl<'a> Gen<'a> {
                 let ranks = self.spec.types[t].model.blades.iter().map(|&b| self.rank[b]);
                 quote!(&[#(#ranks),*])
             }
+            Target::Scalar => quote!(&[0]),
             Target::Dense => {
                 let all = 0..self.dim;
                 quote!(&[#(#all),*])
@@ -230,6 +249,7 @@ impl<'a> Gen<'a> {
                 });
                 quote!(#ident { #(#fields),* })
             }
+            Target::Scalar => exprs.get(&0).cloned().unwrap_or_else(|| quote!(<T as #real>::zero())),
             Target::Dense => {
                 let dense = self.dense_ident();
                 let dim = self.dim;

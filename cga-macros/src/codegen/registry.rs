@@ -19,11 +19,12 @@ impl Gen<'_> {
             let (ls, rs, os) = (li.to_string(), ri.to_string(), self.target_name(target));
             let (lb, rb, ob) =
                 (self.target_index(Target::Type(l)), self.target_index(Target::Type(r)), self.target_index(target));
+            let value = self.to_storage(target, quote!(#tr::#m(#li::<T>::from_storage(a), #ri::<T>::from_storage(b))));
             products.push(quote! {
                 ProductEntry {
                     kind: ProductKind::#variant, lhs: #ls, rhs: #rs, output: #os, terms: #terms,
                     lhs_blades: #lb, rhs_blades: #rb, output_blades: #ob,
-                    eval: |a, b| #tr::#m(#li::<T>::from_storage(a), #ri::<T>::from_storage(b)).to_storage(),
+                    eval: |a, b| #value,
                 }
             });
         }
@@ -53,11 +54,13 @@ impl Gen<'_> {
             let terms: usize = s1.iter().chain(s2).map(|(_, t)| t.len()).sum();
             let (vi, xi) = (&v.ident, &x.ident);
             let (vs, xs, os) = (vi.to_string(), xi.to_string(), self.target_name(target));
+            let value = self
+                .to_storage(target, quote!(Sandwich::sandwich(#vi::<T>::from_storage(a), #xi::<T>::from_storage(b))));
             products.push(quote! {
                 ProductEntry {
                     kind: ProductKind::Sandwich, lhs: #vs, rhs: #xs, output: #os, terms: #terms,
                     lhs_blades: #vb, rhs_blades: #xb, output_blades: #ob,
-                    eval: |a, b| Sandwich::sandwich(#vi::<T>::from_storage(a), #xi::<T>::from_storage(b)).to_storage(),
+                    eval: |a, b| #value,
                 }
             });
         }
@@ -90,10 +93,11 @@ impl Gen<'_> {
                 if let Some((target, _, terms)) = self.unary_exprs(t, kind) {
                     let (v, m, os) = (format_ident!("{variant}"), format_ident!("{m}"), self.target_name(target));
                     let ob = self.target_index(target);
+                    let value = self.to_storage(target, quote!(#ty::<T>::from_storage(a).#m()));
                     unaries.push(quote! {
                         UnaryEntry { kind: UnaryKind::#v, input: #ts, output: #os, terms: #terms,
                             input_blades: #ib, output_blades: #ob,
-                            eval: |a| #ty::<T>::from_storage(a).#m().to_storage() }
+                            eval: |a| #value }
                     });
                 }
             }
@@ -101,10 +105,11 @@ impl Gen<'_> {
                 if let Some(target) = self.target_for(&blades) {
                     let (m, os, terms) = (format_ident!("grade{k}"), self.target_name(target), blades.len());
                     let ob = self.target_index(target);
+                    let value = self.to_storage(target, quote!(#ty::<T>::from_storage(a).#m()));
                     unaries.push(quote! {
                         UnaryEntry { kind: UnaryKind::Grade(#k), input: #ts, output: #os, terms: #terms,
                             input_blades: #ib, output_blades: #ob,
-                            eval: |a| #ty::<T>::from_storage(a).#m().to_storage() }
+                            eval: |a| #value }
                     });
                 }
             }

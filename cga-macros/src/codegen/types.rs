@@ -95,7 +95,10 @@ impl Gen<'_> {
             (Product::RightContraction, "A.rc(B)"),
             (Product::Commutator, "A.commutator(B)"),
         ];
-        let link = |target: Target| format!("[`{}`]", self.target_name(target));
+        let link = |target: Target| match target {
+            Target::Scalar => "`T`".to_string(),
+            _ => format!("[`{}`]", self.target_name(target)),
+        };
         let versor = self.spec.types[pos].model.versor;
         let mut header = String::from("| B |");
         let mut rule = String::from("|---|");
