@@ -74,7 +74,9 @@
 //! Their impls are hidden from rustdoc; each type's page has a `# Products` table of the
 //! result types instead.
 //!
-//! Per type: reverse, involute, conjugate, dual, undual, grade projections, norm,
+//! Per type: reverse, involute, conjugate, dual, undual, grade projections, norm (`⟨A Ã⟩₀`,
+//! and in a degenerate metric `bulk_norm` and `weight_norm`), `magnitude` (`√Σ c_I²` over the
+//! orthonormal coefficients: positive definite in every signature),
 //! `normalise` (`Result<Self, NormaliseError>`: zero, null or not finite) and
 //! `try_normalise` (`Option`), scale, `cast::<U>()` (through `f64`: a dual number's derivative
 //! is dropped), `from_storage` (drops other blades) and `try_from_storage` (refuses to), and

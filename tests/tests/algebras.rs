@@ -155,3 +155,22 @@ proptest! {
         prop_assert!(g0.e2 == 0.0 && g0.e3 == 0.0);
     }
 }
+
+mod quaternions {
+    cga_macros::algebra! {
+        scalar = cga_core::Real;
+        signature = (0, 2);
+        /// `a + b e1 + c e2 + d e12`, every basis element squaring to −1: the quaternions.
+        type Quaternion = [s, e1, e2, e12];
+    }
+}
+
+/// The example: `⟨q q̃⟩₀` of `1 + 2 e1 + 3 e2 + 4 e12` in G(0,2) is 4, the magnitude
+/// `Σ c²` is 30.
+#[test]
+fn magnitude_is_positive_definite_where_the_norm_is_not() {
+    let q = quaternions::Quaternion { s: 1.0, e1: 2.0, e2: 3.0, e12: 4.0 };
+    assert_eq!(q.norm_squared(), 4.0);
+    assert_eq!(q.magnitude_squared(), 30.0);
+    assert_eq!(q.magnitude(), 30f64.sqrt());
+}

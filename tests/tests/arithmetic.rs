@@ -392,3 +392,20 @@ fn sums_of_different_types_land_in_the_covering_type() {
         (Plane, Sphere, Sphere)
     );
 }
+
+/// `magnitude_squared` is the sum of the squares of the orthonormal-basis coefficients (the
+/// dense type's), through the null basis's change of basis.
+#[test]
+fn magnitude_is_the_orthonormal_coefficients_length() {
+    let rng = &mut Rng::new(13);
+    macro_rules! check {
+        ($($ty:ident),*) => {$({
+            let x = random(rng, $ty::from_array);
+            let want: f64 = Multivector::from(x).coeffs.iter().map(|c| c * c).sum();
+            let got = x.magnitude_squared();
+            assert!((got - want).abs() <= 1e-13 * want, "{}: {got} vs {want}", stringify!($ty));
+            assert!(x.magnitude_squared() > 0.0);
+        })*};
+    }
+    check!(Vector, Line, Circle, Plane, Sphere, Motor, FlatPoint, Bivector, Even, Odd);
+}

@@ -569,6 +569,7 @@ impl Gen<'_> {
             terms.len()
         );
         let weight = if self.a.degenerate() { self.weight_norm(t) } else { TokenStream::new() };
+        let magnitude = self.magnitude(t);
         quote! {
             #[doc = #doc]
             #[inline]
@@ -577,6 +578,44 @@ impl Gen<'_> {
             }
 
             #weight
+            #magnitude
+        }
+    }
+
+    /// `Σ c_I²` over the orthonormal-basis coefficients: positive definite in every signature,
+    /// where `⟨A Ã⟩₀` is not (a quaternion of G(0,2) has `⟨q q̃⟩₀ = a² − b² − c² + d²`).
+    fn magnitude(&self, t: &TypeSpec) -> TokenStream {
+        let blades = &t.model.blades;
+        let mut merged: BTreeMap<(usize, usize), f64> = BTreeMap::new();
+        for (i, &x) in blades.iter().enumerate() {
+            for (j, &y) in blades.iter().enumerate().skip(i) {
+                let (ox, oy) = (self.a.storage_to_ortho(x), self.a.storage_to_ortho(y));
+                let dot: f64 = ox.iter().filter_map(|(b, cx)| oy.get(b).map(|cy| cx * cy)).sum();
+                if dot.abs() > 1e-9 {
+                    merged.insert((i, j), if i == j { dot } else { 2.0 * dot });
+                }
+            }
+        }
+        let terms: Vec<(f64, usize, usize)> = merged.into_iter().map(|((i, j), c)| (c, i, j)).collect();
+        let body = self.quadratic(t, &terms);
+        let doc = format!(
+            " `Σ c_I²` over the coefficients in the orthonormal basis `e1..en` (the storage basis carried there): \
+             positive for every nonzero value in every signature, unlike `norm_squared` (for a quaternion \
+             `a + b e1 + c e2 + d e12` of G(0,2), `a² + b² + c² + d²`); {} multiplications.",
+            terms.len()
+        );
+        quote! {
+            #[doc = #doc]
+            #[inline]
+            pub fn magnitude_squared(self) -> T {
+                #body
+            }
+
+            /// `√(Σ c_I²)`, the square root of [`magnitude_squared`](Self::magnitude_squared).
+            #[inline]
+            pub fn magnitude(self) -> T {
+                self.magnitude_squared().sqrt()
+            }
         }
     }
 
