@@ -115,9 +115,9 @@ impl Gen<'_> {
             sets
         };
         let to_ortho =
-            convert(&|m| self.a.storage_to_ortho(m).iter().map(|(&k, &v)| (k, v)).collect(), &self.rank, &pos);
+            convert(&|m| self.a.storage_to_ortho(m).iter().map(|(&k, &v)| (k, v)).collect(), self.a.rank(), &pos);
         let from_ortho =
-            convert(&|m| self.a.ortho_blade_to_storage(m).iter().map(|(&k, &v)| (k, v)).collect(), &pos, &self.rank);
+            convert(&|m| self.a.ortho_blade_to_storage(m).iter().map(|(&k, &v)| (k, v)).collect(), &pos, self.a.rank());
         let tables = format_ident!("__{}_UNARY", upper);
         let summary = format!(
             " {dim} coefficients in the orthonormal basis, in canonical order: `{}`.",

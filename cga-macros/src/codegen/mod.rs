@@ -115,8 +115,6 @@ struct Gen<'a> {
     a: &'a Algebra,
     real: &'a syn::Path,
     dim: usize,
-    /// Canonical position of every storage blade: its index in storage arrays.
-    rank: Vec<usize>,
     /// Every nonzero product of an ordered pair of types, planned once (the products and
     /// the registry both read it).
     plans: Vec<Planned>,
@@ -139,7 +137,6 @@ impl<'a> Gen<'a> {
             a,
             real: &spec.scalar,
             dim: a.dim(),
-            rank: a.rank().to_vec(),
             plans: vec![],
             sandwich_plans: vec![],
             scalar_plans: vec![],
@@ -218,7 +215,7 @@ impl<'a> Gen<'a> {
     pub(super) fn target_index(&self, target: Target) -> TokenStream {
         match target {
             Target::Type(t) => {
-                let ranks = self.spec.types[t].model.blades.iter().map(|&b| self.rank[b]);
+                let ranks = self.spec.types[t].model.blades.iter().map(|&b| self.a.rank()[b]);
                 quote!(&[#(#ranks),*])
             }
             Target::Scalar => quote!(&[0]),
@@ -254,7 +251,7 @@ impl<'a> Gen<'a> {
                 let dense = self.dense_ident();
                 let dim = self.dim;
                 let sets = exprs.iter().map(|(b, e)| {
-                    let i = self.rank[*b];
+                    let i = self.a.rank()[*b];
                     quote!(c[#i] = #e;)
                 });
                 quote!({

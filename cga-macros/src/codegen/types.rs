@@ -184,7 +184,7 @@ impl Gen<'_> {
         let fields: Vec<_> = blades.iter().map(|&b| self.field(b)).collect();
         let blade_names: Vec<String> = blades.iter().map(|&b| self.a.blade_name(b)).collect();
         let field_docs = blade_names.iter().map(|b| format!(" Coefficient of `{b}`."));
-        let ranks = blades.iter().map(|&b| self.rank[b]);
+        let ranks = blades.iter().map(|&b| self.a.rank()[b]);
         let ranks2 = ranks.clone();
         let dim = self.dim;
         let summary = format!(" {n} coefficients: `{}`.", blade_names.join("`, `"));
@@ -192,7 +192,7 @@ impl Gen<'_> {
         let name = ident.to_string();
         // Blades of a storage array this type lacks: what `try_from_storage` refuses to drop.
         let lacking: Vec<(usize, String)> =
-            (0..dim).filter(|b| !blades.contains(b)).map(|b| (self.rank[b], self.a.blade_name(b))).collect();
+            (0..dim).filter(|b| !blades.contains(b)).map(|b| (self.a.rank()[b], self.a.blade_name(b))).collect();
         let (lacking_index, lacking_name): (Vec<usize>, Vec<String>) = lacking.into_iter().unzip();
         let one = blades.contains(&0).then(|| {
             let fields = blades.iter().map(|&b| {
