@@ -5,9 +5,10 @@ Writes tests/data/kingdon_pga.json: for random multivectors a, b (every blade, c
 uniform in [-2, 2] from random.Random(SEED), SEED = 20261202) kingdon's geometric product,
 outer product, left and right contractions, regressive product (`a & b`), dual and undual of a, and the
 join of two points and the meet of two planes given by Euclidean parameters. Coefficients are
-listed in the canonical order of `tests/tests/pga.rs` (grade, then basis order, e0 first):
-s, e0, e1, e2, e3, e01, e02, e03, e12, e13, e23, e012, e013, e023, e123, e0123 — kingdon's
-own blade names, so no sign is converted. kingdon takes the pseudoscalar as e0123 and the dual
+listed in canonical order (grade, then basis order, e0 first): s, e0, e1, e2, e3, e01, e02,
+e03, e12, e13, e23, e012, e013, e023, e123, e0123, kingdon's own blade names. `cga_algebras::pga`
+spells three of them as bivector.net does (e31, e021, e032), and `tests/tests/pga.rs` carries
+the data over with those blades' signs. kingdon takes the pseudoscalar as e0123 and the dual
 as the right complement (`e0.dual() = e123`).
 
 Run (as made):

@@ -2,8 +2,10 @@
 //! `e0² = 0`, `e1² = e2² = e3² = 1`, the pseudoscalar `e0123`.
 //!
 //! - A plane `a x + b y + c z + d = 0` is the vector `a e1 + b e2 + c e3 + d e0`.
-//! - A point `(x, y, z)` is the trivector `e123 − x e023 + y e013 − z e012` (bivector.net's
-//!   `e123 + x e032 + y e013 + z e021`): weight `e123`, position over it.
+//! - Blades are spelled as bivector.net and klein spell them: `e31 = −e13`, `e021 = −e012`,
+//!   `e032 = −e023`; each field is the coefficient of the blade as spelled.
+//! - A point `(x, y, z)` is the trivector `e123 + x e032 + y e013 + z e021`: weight `e123`,
+//!   position over it.
 //! - A line is a bivector: `P & Q` (the join, regressive product) through two points,
 //!   `p ^ q` (the meet, outer product) of two planes.
 //! - `dual` is the right complement against `e0123`; `norm` (= `bulk_norm`) and
@@ -28,14 +30,15 @@ cga_macros::algebra! {
     /// A plane `a e1 + b e2 + c e3 + d e0`: `a x + b y + c z + d = 0`. A versor too: it
     /// reflects by `p X p̃` (up to the grade sign).
     versor Plane = [grade(1)];
-    /// A line: the join of two points or the meet of two planes.
-    type Line = [grade(2)];
-    /// A point `w (e123 − x e023 + y e013 − z e012)`.
-    type Point = [grade(3)];
+    /// A line: the join of two points or the meet of two planes; direction `e12, e31, e23`,
+    /// moment `e01, e02, e03`.
+    type Line = [e01, e02, e03, e12, e31, e23];
+    /// A point `w (e123 + x e032 + y e013 + z e021)`.
+    type Point = [e021, e013, e032, e123];
     /// The pseudoscalar `e0123`.
     type Pseudoscalar = [grade(4)];
     /// A motor (rotation, translation, screw): the even subalgebra.
-    versor Motor = [s, grade(2), grade(4)];
+    versor Motor = [s, e01, e02, e03, e12, e31, e23, e0123];
 }
 
 impl<T: Real> Plane<T> {
@@ -46,16 +49,16 @@ impl<T: Real> Plane<T> {
 }
 
 impl<T: Real> Point<T> {
-    /// The point `(x, y, z)`, of weight 1: `e123 − x e023 + y e013 − z e012`.
+    /// The point `(x, y, z)`, of weight 1: `e123 + x e032 + y e013 + z e021`.
     pub fn at([x, y, z]: [T; 3]) -> Self {
-        Point { e012: -z, e013: y, e023: -x, e123: T::one() }
+        Point { e021: z, e013: y, e032: x, e123: T::one() }
     }
 
-    /// Its Euclidean position `(−e023, e013, −e012) / e123`; `None` for an ideal point
+    /// Its Euclidean position `(e032, e013, e021) / e123`; `None` for an ideal point
     /// (a direction: `e123 = 0`) or where the division is not finite.
     pub fn position(self) -> Option<[T; 3]> {
         let w = self.e123;
-        let x = [-self.e023 / w, self.e013 / w, -self.e012 / w];
+        let x = [self.e032 / w, self.e013 / w, self.e021 / w];
         x.iter().all(|c| c.is_finite()).then_some(x)
     }
 

@@ -54,7 +54,11 @@
 //! combination of `e1..en`, so a non-diagonal metric (the null vectors of CGA) is handled
 //! here, not at run time. Blades are `s` (the scalar) or `e` followed by labels in basis order
 //! (`e1oi`, `e1oinf`); labels that would make a blade's name read two ways (`1`, `2` and
-//! `12`) are refused. A blade written out of order is refused with its sign (`e31 = −e13`).
+//! `12`) are refused. A blade may also be written with its labels in any order, as PGA's
+//! `e31`, `e021`, `e032`: the field is then the coefficient of that blade, `e31 = −e13` (the
+//! sign of the permutation is folded into every table, so it costs nothing at run time), and
+//! the storage array holds it in the canonical blade's slot. A blade is spelled one way in the
+//! whole algebra (a `grade(k)` selector uses that spelling too); two spellings are refused.
 //!
 //! # Output
 //!
@@ -118,6 +122,7 @@ mod parse;
 
 use model::{Algebra, ModelError, TypeModel};
 use proc_macro::TokenStream;
+use std::collections::BTreeMap;
 use syn::spanned::Spanned;
 use syn::{Error, Expr, Ident};
 
@@ -182,7 +187,7 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
             sig.span,
         ),
     };
-    let algebra = Algebra::new([p, q, r], labels, rows).map_err(|e| match e {
+    let mut algebra = Algebra::new([p, q, r], labels, rows).map_err(|e| match e {
         ModelError::DegenerateBasis => {
             Error::new(basis_span, "the basis vectors are linearly dependent: they do not span the algebra")
         }
@@ -197,6 +202,7 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         ));
     }
 
+    resolve_spellings(&mut algebra, &input.types)?;
     let mut names: Vec<Ident> = input.dense.iter().map(|d| d.name.clone()).collect();
     let mut types = Vec::new();
     for decl in input.types {
@@ -347,32 +353,67 @@ fn eval(expr: &Expr, n: usize) -> syn::Result<Value> {
     }
 }
 
-/// Why a blade name is not one: labels out of order (with the canonical spelling), or unknown.
-fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
-    let name = ident.to_string();
-    let positions = name.strip_prefix('e').and_then(|rest| algebra.label_parses(rest, false).into_iter().next());
-    if let Some(mut positions) = positions {
-        // Each pair out of order is one swap of anticommuting vectors.
-        let swaps = (0..positions.len())
-            .map(|i| positions[i + 1..].iter().filter(|&&j| j < positions[i]).count())
-            .sum::<usize>();
-        positions.sort_unstable();
-        let mask = positions.iter().fold(0usize, |m, &i| m | 1 << i);
-        if positions.windows(2).all(|w| w[0] < w[1]) {
-            let canonical = algebra.blade_name(mask);
-            let relation = if swaps % 2 == 1 {
-                format!("`{name}` = −`{canonical}`: declare `{canonical}`, whose coefficient is minus `{name}`'s")
-            } else {
-                format!("`{name}` = `{canonical}`: declare `{canonical}`, the same coefficient")
+/// Blades written with their labels out of basis order (`e31`, `e021`): each becomes its
+/// type's field, with the sign carried into every table (`e31 = −e13`). A blade has one
+/// spelling in the whole algebra, so that every type names a coefficient the same way.
+fn resolve_spellings(algebra: &mut Algebra, decls: &[parse::TypeDecl]) -> syn::Result<()> {
+    let mut seen: BTreeMap<usize, (String, String)> = BTreeMap::new();
+    for decl in decls {
+        for elem in &decl.elems {
+            let parse::Elem::Blade(ident) = elem else { continue };
+            let name = ident.to_string();
+            // Names that are no blade are reported with their type (`resolve_blades`).
+            let Some(mask) = algebra.parse_blade(&name).or_else(|| algebra.permuted_blade(&name).map(|(m, _)| m))
+            else {
+                continue;
             };
-            return Error::new(ident.span(), format!("blade `{name}` has its labels out of basis order; {relation}"));
+            match seen.get(&mask) {
+                Some((other, ty)) if *other != name => {
+                    let relation = relation(algebra, &name, other);
+                    return Err(Error::new(
+                        ident.span(),
+                        format!(
+                            "blade `{name}` is written `{other}` in `{ty}` ({relation}): spell each blade one way in the whole algebra"
+                        ),
+                    ));
+                }
+                _ => {
+                    seen.insert(mask, (name, decl.name.to_string()));
+                }
+            }
         }
     }
+    for (mask, (name, _)) in seen {
+        if let Some((_, sign)) = algebra.permuted_blade(&name).filter(|_| name != algebra.canonical_name(mask)) {
+            algebra.respell(mask, name, sign);
+        }
+    }
+    Ok(())
+}
+
+/// `a = −b` or `a = b` for two spellings of one blade.
+fn relation(algebra: &Algebra, a: &str, b: &str) -> String {
+    let sign = |n: &str| algebra.permuted_blade(n).map_or(1.0, |(_, s)| s);
+    if sign(a) * sign(b) < 0.0 { format!("`{a}` = −`{b}`") } else { format!("`{a}` = `{b}`") }
+}
+
+/// Why a blade name is not one: labels that read two ways, or unknown.
+fn unknown_blade(algebra: &Algebra, ident: &Ident) -> Error {
+    let name = ident.to_string();
     let labels = &algebra.labels;
+    if name.strip_prefix('e').is_some_and(|rest| algebra.label_parses(rest, false).len() > 1) {
+        return Error::new(
+            ident.span(),
+            format!(
+                "blade `{name}` reads as more than one run of the basis labels ({}): write the labels in basis order",
+                labels.join(", ")
+            ),
+        );
+    }
     Error::new(
         ident.span(),
         format!(
-            "unknown blade `{name}`: a blade is `s` (the scalar) or `e` followed by basis labels in basis order ({}), e.g. `{}`",
+            "unknown blade `{name}`: a blade is `s` (the scalar) or `e` followed by distinct basis labels ({}), e.g. `{}`",
             labels.join(", "),
             algebra.blade_name(0b11)
         ),

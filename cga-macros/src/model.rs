@@ -81,6 +81,10 @@ pub struct Algebra {
     /// Every blade in canonical order, and each blade's position in it.
     order: Vec<usize>,
     rank: Vec<usize>,
+    /// Blades declared with their labels out of basis order (`e31`): name and sign relative
+    /// to the canonical blade (`e31 = −e13`). The sign is folded into `to_ortho` and
+    /// `from_ortho`, so every table treats the declared blade as the storage blade.
+    spelled: BTreeMap<usize, String>,
 }
 
 /// Why an algebra cannot be built.
@@ -123,7 +127,7 @@ impl Algebra {
         for (pos, &m) in order.iter().enumerate() {
             rank[m] = pos;
         }
-        Ok(Algebra { n, metric, labels, to_ortho, from_ortho, order, rank })
+        Ok(Algebra { n, metric, labels, to_ortho, from_ortho, order, rank, spelled: BTreeMap::new() })
     }
 
     /// Number of blades, 2^n.
@@ -137,11 +141,20 @@ impl Algebra {
         self.order.clone()
     }
 
-    /// Name of a storage blade: `s` for the scalar, else `e` and the vector labels.
+    /// Name of a storage blade: `s` for the scalar, its declared spelling, else `e` and the
+    /// vector labels in basis order.
     pub fn blade_name(&self, mask: usize) -> String {
         if mask == 0 {
             return "s".into();
         }
+        if let Some(name) = self.spelled.get(&mask) {
+            return name.clone();
+        }
+        self.canonical_name(mask)
+    }
+
+    /// `e` and the vector labels in basis order, whatever the declared spelling.
+    pub fn canonical_name(&self, mask: usize) -> String {
         let labels: String = (0..self.n).filter(|i| mask >> i & 1 == 1).map(|i| self.labels[i].as_str()).collect();
         format!("e{labels}")
     }
@@ -155,17 +168,51 @@ impl Algebra {
         format!("e{digits}")
     }
 
-    /// The storage blade named `name`, if the name is canonical (labels in basis order) and
-    /// reads one way only.
+    /// The storage blade named `name`: its declared spelling, or the canonical name (labels
+    /// in basis order, read one way only) of a blade not spelled otherwise.
     pub fn parse_blade(&self, name: &str) -> Option<usize> {
         if name == "s" {
             return Some(0);
         }
+        if let Some((&mask, _)) = self.spelled.iter().find(|(_, n)| *n == name) {
+            return Some(mask);
+        }
         let rest = name.strip_prefix('e')?;
         match self.label_parses(rest, true).as_slice() {
-            [one] => Some(one.iter().fold(0, |m, &i| m | 1 << i)),
+            [one] => Some(one.iter().fold(0, |m, &i| m | 1 << i)).filter(|m| !self.spelled.contains_key(m)),
             _ => None,
         }
+    }
+
+    /// A name whose labels are distinct basis labels in some order (`e31`), read one way
+    /// only: its blade and the sign relative to the canonical blade (`e31 = −e13`: −1, one
+    /// swap of anticommuting vectors per pair out of order).
+    pub fn permuted_blade(&self, name: &str) -> Option<(usize, f64)> {
+        let rest = name.strip_prefix('e')?;
+        let [positions] = self.label_parses(rest, false).try_into().ok()?;
+        let swaps: usize =
+            (0..positions.len()).map(|i| positions[i + 1..].iter().filter(|&&j| j < positions[i]).count()).sum();
+        let mask = positions.iter().fold(0, |m, &i| m | 1 << i);
+        Some((mask, if swaps.is_multiple_of(2) { 1.0 } else { -1.0 }))
+    }
+
+    /// Declare blade `mask` as `name = sign · (canonical blade)`: its coefficient is then the
+    /// one of `name`, and every table carries the sign (a diagonal change of storage basis).
+    pub fn respell(&mut self, mask: usize, name: String, sign: f64) {
+        if sign < 0.0 {
+            self.to_ortho[mask].values_mut().for_each(|c| *c = -*c);
+            for image in &mut self.from_ortho {
+                if let Some(c) = image.get_mut(&mask) {
+                    *c = -*c;
+                }
+            }
+        }
+        self.spelled.insert(mask, name);
+    }
+
+    /// The sign of a declared spelling relative to the canonical blade (+1 if none).
+    pub fn spelling_sign(&self, mask: usize) -> f64 {
+        self.spelled.get(&mask).and_then(|n| self.permuted_blade(n)).map_or(1.0, |(_, s)| s)
     }
 
     /// The ways `rest` reads as distinct labels (vector indices, in the order written), at
@@ -198,7 +245,7 @@ impl Algebra {
     /// A blade whose canonical name also reads as another blade's, if the labels allow one
     /// (`1`, `2` and `12` make `e12` two blades).
     pub fn ambiguous_blade(&self) -> Option<String> {
-        (1..self.dim()).map(|m| self.blade_name(m)).find(|name| self.label_parses(&name[1..], true).len() != 1)
+        (1..self.dim()).map(|m| self.canonical_name(m)).find(|name| self.label_parses(&name[1..], true).len() != 1)
     }
 
     /// Blades of grade `k` in canonical order.
@@ -627,5 +674,37 @@ mod tests {
         );
         assert_eq!(clash.unwrap().ambiguous_blade().as_deref(), Some("e12"), "e1 ∧ e2 or e12");
         assert_eq!(a.parse_blade("e4"), None, "unknown label");
+    }
+
+    /// A blade declared out of basis order is a diagonal change of storage basis: every
+    /// product and unary map is the canonical one with the spellings' signs applied.
+    #[test]
+    fn respelled_blades_conjugate_every_table() {
+        let canonical = cga_null();
+        let mut a = cga_null();
+        let mut sign = vec![1.0; a.dim()];
+        for name in ["eio", "e31", "e2o1", "e321i"] {
+            let (mask, s) = a.permuted_blade(name).unwrap();
+            a.respell(mask, name.into(), s);
+            sign[mask] = s;
+        }
+        assert_eq!((sign[0b11000], sign[0b101], sign[0b1011], sign[0b10111]), (-1.0, -1.0, 1.0, -1.0));
+        assert_eq!(a.parse_blade("e31"), Some(0b101));
+        assert_eq!(a.parse_blade("e13"), None, "one spelling per blade");
+        assert_eq!(a.blade_name(0b11000), "eio");
+        let signed = |mv: Mv| -> Mv { mv.into_iter().map(|(r, c)| (r, c * sign[r])).collect() };
+        for x in 0..a.dim() {
+            for y in 0..a.dim() {
+                for kind in Product::ALL {
+                    let want =
+                        signed(canonical.product(kind, x, y)).into_iter().map(|(r, c)| (r, c * sign[x] * sign[y]));
+                    assert_eq!(a.product(kind, x, y), want.collect::<Mv>(), "{kind:?} {x} {y}");
+                }
+            }
+            for kind in [Unary::Reverse, Unary::Dual, Unary::Undual] {
+                let want = signed(canonical.unary(kind, x)).into_iter().map(|(r, c)| (r, c * sign[x]));
+                assert_eq!(a.unary(kind, x), want.collect::<Mv>(), "{kind:?} {x}");
+            }
+        }
     }
 }

@@ -3,7 +3,8 @@
 //! generated maps are checked against its dense type and kingdon, and its geometry against
 //! Euclidean formulas:
 //! a plane `a e1 + b e2 + c e3 + d e0` is `a x + b y + c z + d = 0`, a point `(x, y, z)` is
-//! `e123 − x e023 + y e013 − z e012` (bivector.net's `e123 + x e032 + y e013 + z e021`).
+//! `e123 + x e032 + y e013 + z e021`, the blades spelled as bivector.net spells them (`e031 =
+//! −e013`…): kingdon's canonical coefficients are carried over with each blade's sign.
 
 mod common;
 
@@ -216,33 +217,84 @@ fn products_through_the_null_vector_vanish() {
     assert_eq!(e01.commutator(dense(&v)).to_storage(), [0.0; 16]);
 }
 
-/// `tests/data/kingdon_pga.json` (made by `tools/kingdon_pga.py`, kingdon 3.0.0), in our
-/// storage order.
+/// `tests/data/kingdon_pga.json` (made by `tools/kingdon_pga.py`, kingdon 3.0.0), in
+/// canonical blade order.
 fn kingdon() -> serde_json::Value {
     let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/kingdon_pga.json");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
     let value: serde_json::Value = serde_json::from_str(&text).expect("kingdon_pga.json parses");
     let blades: Vec<&str> = value["blades"].as_array().expect("blades").iter().map(|b| b.as_str().unwrap()).collect();
-    assert_eq!(blades, STORAGE, "kingdon_pga.json: blade order differs from ours");
+    assert_eq!(blades, CANONICAL, "kingdon_pga.json: blade order differs from ours");
     value
 }
 
-/// The storage blades in canonical order (`e` the scalar, as kingdon names it).
-const STORAGE: [&str; 16] =
+/// The blades in canonical order (`e` the scalar, as kingdon names them).
+const CANONICAL: [&str; 16] =
     ["e", "e0", "e1", "e2", "e3", "e01", "e02", "e03", "e12", "e13", "e23", "e012", "e013", "e023", "e123", "e0123"];
 
+/// Our storage blades, position by position: the canonical ones spelled as `pga` declares
+/// them, and the sign of each spelling (`e31 = −e13`).
+const STORAGE: [(&str, f64); 16] = [
+    ("s", 1.0),
+    ("e0", 1.0),
+    ("e1", 1.0),
+    ("e2", 1.0),
+    ("e3", 1.0),
+    ("e01", 1.0),
+    ("e02", 1.0),
+    ("e03", 1.0),
+    ("e12", 1.0),
+    ("e31", -1.0),
+    ("e23", 1.0),
+    ("e021", -1.0),
+    ("e013", 1.0),
+    ("e032", -1.0),
+    ("e123", 1.0),
+    ("e0123", 1.0),
+];
+
 #[test]
-fn the_storage_order_is_the_canonical_one() {
-    let at = |c: [f64; 16]| c.iter().position(|&x| x != 0.0).map(|k| STORAGE[k]);
-    assert_eq!(at(Plane { e0: 1.0, e1: 0.0, e2: 0.0, e3: 0.0 }.to_storage()), Some("e0"));
-    assert_eq!(at(Point { e012: 0.0, e013: 1.0, e023: 0.0, e123: 0.0 }.to_storage()), Some("e013"));
-    assert_eq!(at(Point { e012: 0.0, e013: 0.0, e023: 0.0, e123: 1.0 }.to_storage()), Some("e123"));
-    assert_eq!(at(pga::Pseudoscalar { e0123: 1.0 }.to_storage()), Some("e0123"));
+fn the_storage_order_is_the_canonical_one_with_the_declared_spellings() {
+    let at = |c: [f64; 16]| c.iter().position(|&x| x != 0.0).map(|k| (STORAGE[k].0, c[k]));
+    assert_eq!(at(Plane { e0: 1.0, e1: 0.0, e2: 0.0, e3: 0.0 }.to_storage()), Some(("e0", 1.0)));
+    assert_eq!(at(Point { e021: 0.0, e013: 1.0, e032: 0.0, e123: 0.0 }.to_storage()), Some(("e013", 1.0)));
+    assert_eq!(at(Point { e021: 0.0, e013: 0.0, e032: 2.0, e123: 0.0 }.to_storage()), Some(("e032", 2.0)));
+    assert_eq!(at(pga::Pseudoscalar { e0123: 1.0 }.to_storage()), Some(("e0123", 1.0)));
+    assert_eq!(pga::Line::<f64>::BLADES, ["e01", "e02", "e03", "e12", "e31", "e23"]);
+    assert_eq!(Point::<f64>::BLADES, ["e021", "e013", "e032", "e123"]);
 }
 
+/// `e3 ∧ e1 = e31` and `e1 ∧ e3 = −e31`; `e0 ∧ e2 ∧ e1 = e021`, `e0 ∧ e3 ∧ e2 = e032`: each
+/// field holds the blade as spelled.
+#[test]
+fn spelled_blades_carry_their_sign() {
+    let e = |k: usize| {
+        let mut c = [0.0; 4];
+        c[k] = 1.0;
+        Plane { e0: c[0], e1: c[1], e2: c[2], e3: c[3] }
+    };
+    assert_eq!((e(3) ^ e(1)).e31, 1.0);
+    assert_eq!((e(1) ^ e(3)).e31, -1.0);
+    assert_eq!((e(0) ^ e(2) ^ e(1)).e021, 1.0);
+    assert_eq!((e(0) ^ e(3) ^ e(2)).e032, 1.0);
+    assert_eq!((e(0) ^ e(1) ^ e(3)).e013, 1.0);
+    // The dense type is orthonormal (e4 = e0): e31 = −e13 there, in its e13 slot.
+    let line = pga::Line { e01: 0.0, e02: 0.0, e03: 0.0, e12: 0.0, e31: 1.0, e23: 0.0 };
+    let d = dense(&line.to_storage());
+    let e13 = Multivector::<f64>::BLADES.iter().position(|&b| b == "e13").unwrap();
+    assert_eq!(d.coeffs[e13], -1.0);
+}
+
+/// A list of numbers from the golden file.
 fn coeffs<const N: usize>(v: &serde_json::Value) -> [f64; N] {
     let list = v.as_array().expect("a list of numbers");
     core::array::from_fn(|k| list[k].as_f64().expect("a number"))
+}
+
+/// Kingdon's canonical coefficients in our storage basis: each times its spelling's sign.
+fn ours(v: &serde_json::Value) -> [f64; 16] {
+    let c: [f64; 16] = coeffs(v);
+    core::array::from_fn(|k| c[k] * STORAGE[k].1)
 }
 
 /// Every product, the dual (right complement against `e0123`) and the undual agree with
@@ -252,7 +304,7 @@ fn the_dense_type_agrees_with_kingdon() {
     let data = kingdon();
     let cases = data["cases"].as_array().expect("cases");
     for (n, case) in cases.iter().enumerate() {
-        let (a, b) = (dense(&coeffs(&case["a"])), dense(&coeffs(&case["b"])));
+        let (a, b) = (dense(&ours(&case["a"])), dense(&ours(&case["b"])));
         for (key, got) in [
             ("gp", a.gp(b)),
             ("op", a.wedge(b)),
@@ -262,7 +314,7 @@ fn the_dense_type_agrees_with_kingdon() {
             ("dual", a.dual()),
             ("undual", a.undual()),
         ] {
-            let want: [f64; 16] = coeffs(&case[key]);
+            let want = ours(&case[key]);
             let d = max_rel_diff(&got.to_storage(), &want);
             assert!(d <= 1e-12, "case {n}: {key} differs from kingdon's by {d:e}");
         }
@@ -277,13 +329,13 @@ fn joins_and_meets_agree_with_kingdon() {
     let data = kingdon();
     for case in data["joins"].as_array().expect("joins") {
         let line = point(coeffs(&case["p"])).vee(point(coeffs(&case["q"])));
-        let want: [f64; 16] = coeffs(&case["join"]);
+        let want = ours(&case["join"]);
         let d = max_rel_diff(&line.to_storage(), &want);
         assert!(d <= 1e-12, "join differs by {d:e}");
     }
     for case in data["meets"].as_array().expect("meets") {
         let line = plane(coeffs(&case["m"])).wedge(plane(coeffs(&case["n"])));
-        let want: [f64; 16] = coeffs(&case["meet"]);
+        let want = ours(&case["meet"]);
         let d = max_rel_diff(&line.to_storage(), &want);
         assert!(d <= 1e-12, "meet differs by {d:e}");
     }

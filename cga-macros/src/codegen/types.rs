@@ -183,7 +183,14 @@ impl Gen<'_> {
         let n = blades.len();
         let fields: Vec<_> = blades.iter().map(|&b| self.field(b)).collect();
         let blade_names: Vec<String> = blades.iter().map(|&b| self.a.blade_name(b)).collect();
-        let field_docs = blade_names.iter().map(|b| format!(" Coefficient of `{b}`."));
+        let field_docs = blades.iter().zip(&blade_names).map(|(&b, name)| {
+            let canonical = self.a.canonical_name(b);
+            match self.a.spelling_sign(b) {
+                _ if b == 0 || *name == canonical => format!(" Coefficient of `{name}`."),
+                s if s < 0.0 => format!(" Coefficient of `{name}` = −`{canonical}`."),
+                _ => format!(" Coefficient of `{name}` = `{canonical}`."),
+            }
+        });
         let ranks = blades.iter().map(|&b| self.a.rank()[b]);
         let ranks2 = ranks.clone();
         let dim = self.dim;

@@ -1,7 +1,8 @@
 cga_macros::algebra! {
     scalar = cga_core::Real;
     signature = (3, 0);
-    type Trivector = [e312];
+    type Bivector = [e12, e13, e23];
+    type Plane = [e12, e31, e23];
 }
 
 fn main() {}

@@ -1,8 +1,0 @@
-cga_macros::algebra! {
-    scalar = cga_core::Real;
-    signature = (4, 1);
-    basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];
-    type FlatPoint = [e1i, e2i, e3i, eio];
-}
-
-fn main() {}
