@@ -109,6 +109,27 @@ impl<T: Real> Real for Dual<T> {
     fn cos(self) -> Self {
         Dual { re: self.re.cos(), du: -(self.du * self.re.sin()) }
     }
+    /// `exp(a + a'ε) = eᵃ + a' eᵃ ε`.
+    fn exp(self) -> Self {
+        let e = self.re.exp();
+        Dual { re: e, du: self.du * e }
+    }
+    /// `ln(a + a'ε) = ln a + (a'/a) ε`.
+    fn ln(self) -> Self {
+        Dual { re: self.re.ln(), du: self.du / self.re }
+    }
+    /// `sinh(a + a'ε) = sinh a + a' cosh a ε`.
+    fn sinh(self) -> Self {
+        Dual { re: self.re.sinh(), du: self.du * self.re.cosh() }
+    }
+    /// `cosh(a + a'ε) = cosh a + a' sinh a ε`.
+    fn cosh(self) -> Self {
+        Dual { re: self.re.cosh(), du: self.du * self.re.sinh() }
+    }
+    /// `ln(1 + a + a'ε) = ln(1 + a) + a'/(1 + a) ε`.
+    fn ln_1p(self) -> Self {
+        Dual { re: self.re.ln_1p(), du: self.du / (T::one() + self.re) }
+    }
     fn min_positive() -> Self {
         Self::constant(T::min_positive())
     }

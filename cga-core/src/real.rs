@@ -45,6 +45,43 @@ pub trait Real:
     fn cos(self) -> Self;
     /// The angle of the point `(x, self)`, in `(−π, π]`.
     fn atan2(self, x: Self) -> Self;
+    /// `eˣ`.
+    fn exp(self) -> Self;
+    /// `ln x`, the natural logarithm.
+    fn ln(self) -> Self;
+    /// `sinh x`. The default sums `x + x³/3! + … + x¹³/13!` for `|x| < ½` (where
+    /// `(eˣ − e⁻ˣ)/2` would cancel; the next term is below `2⁻⁵⁴ |x|`) and takes
+    /// `(eˣ − e⁻ˣ)/2` above.
+    #[inline]
+    fn sinh(self) -> Self {
+        let half = Self::from_f64(0.5);
+        if self.abs() < half {
+            let x2 = self * self;
+            let mut term = self;
+            let mut sum = self;
+            for k in [2.0, 4.0, 6.0, 8.0, 10.0, 12.0] {
+                term = term * x2 / Self::from_f64(k * (k + 1.0));
+                sum = sum + term;
+            }
+            sum
+        } else {
+            let e = self.exp();
+            (e - Self::one() / e) * half
+        }
+    }
+    /// `cosh x = (eˣ + e⁻ˣ)/2` (no cancellation: both terms are positive).
+    #[inline]
+    fn cosh(self) -> Self {
+        let e = self.exp();
+        (e + Self::one() / e) * Self::from_f64(0.5)
+    }
+    /// `ln(1 + x)`, accurate for small `x`: with `u = 1 + x` rounded, `ln u · x / (u − 1)`
+    /// (Goldberg's correction: the rounding of `u` cancels in the quotient), `x` when `u = 1`.
+    #[inline]
+    fn ln_1p(self) -> Self {
+        let u = Self::one() + self;
+        if u == Self::one() { self } else { u.ln() * self / (u - Self::one()) }
+    }
     /// The smallest positive normal number of the type's precision (below it, products lose
     /// digits to underflow).
     #[inline]
@@ -99,6 +136,16 @@ macro_rules! impl_real {
             fn cos(self) -> Self { <$t>::cos(self) }
             #[inline]
             fn atan2(self, x: Self) -> Self { <$t>::atan2(self, x) }
+            #[inline]
+            fn exp(self) -> Self { <$t>::exp(self) }
+            #[inline]
+            fn ln(self) -> Self { <$t>::ln(self) }
+            #[inline]
+            fn sinh(self) -> Self { <$t>::sinh(self) }
+            #[inline]
+            fn cosh(self) -> Self { <$t>::cosh(self) }
+            #[inline]
+            fn ln_1p(self) -> Self { <$t>::ln_1p(self) }
             #[inline]
             fn min_positive() -> Self { <$t>::MIN_POSITIVE }
             #[inline]

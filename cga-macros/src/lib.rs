@@ -25,9 +25,12 @@
 //!
 //! `scalar` names the trait every coefficient type `T` implements. The generated code calls
 //! its `zero()`, `one()`, `from_f64(f64)`, `to_f64(self) -> f64` (for `cast` and the values
-//! in `TruncationError`), `sqrt`, `abs` and `is_finite` as associated functions, and needs
-//! `Copy + PartialEq + Add + Sub + Mul + Div + Neg` (all with `Output = Self`) and `Debug`:
-//! declare those in the trait (`cga_core::Real` does).
+//! in `TruncationError`), `sqrt`, `abs`, `is_finite` and `epsilon()` as associated
+//! functions, and for `Exp` and `Log` also `max`, `binade` (a power of two near the value:
+//! `|B|` of a tiny bivector without underflow), `sin`, `cos`, `atan2`, `sinh`, `cosh` and
+//! `ln_1p` (`cga_core::Real` documents each); it needs `Copy + PartialEq + PartialOrd + Add +
+//! Sub + Mul + Div + Neg` (all with `Output = Self`) and `Debug`: declare those in the trait
+//! (`cga_core::Real` does).
 //!
 //! `scalars` (optional) lists concrete coefficient types (`f32`, `f64`, any type that
 //! implements the `scalar` trait) that get the operators with the scalar on the left: the
@@ -90,12 +93,28 @@
 //! the scalar blade `s` (then also `+=`, `−=` and `X::one()`), else into the smallest declared
 //! type holding `s` and `X`'s blades (none if no type does).
 //!
-//! Inverses: `try_inverse` (`Option`) and `inverse` (unchecked), `X⁻¹ = X̃ / ⟨X X̃⟩₀`, for every
-//! type whose `X X̃` is a scalar for all values of its coefficients, decided at expansion time
-//! from the Cayley table (every non-scalar blade's polynomial in the coefficients cancels),
-//! and whose `⟨X X̃⟩₀` is not identically zero. Other types get none: a motor of CGA has
-//! `M M̃ = s + p e123i`, so its inverse is for the algebra's crate to write by hand.
-//! `inverse_table` lists the types that have one.
+//! Inverses: `try_inverse` (`Option`) and `inverse` (unchecked), `X⁻¹ = X̃ / ⟨X X̃⟩₀`, as
+//! inherent methods of every type whose `X X̃` is a scalar for all values of its
+//! coefficients, decided at expansion time from the Cayley table (every non-scalar blade's
+//! polynomial in the coefficients cancels), and whose `⟨X X̃⟩₀` is not identically zero
+//! (`inverse_table` lists them). The trait `Inverse` has the same two methods on every type
+//! whose `⟨X X̃⟩₀` is not identically zero: those methods, or for the other types a run-time
+//! check that `X X̃` is a scalar to rounding (`Σ |⟨X X̃⟩ₖ| ≤ 64 ε Σ c_I²` over k ≠ 0), which
+//! holds for blades and versors: a 2-blade `a ∧ b` of CGA's `Bivector` inverts, `e12 + e3o`
+//! does not. A CGA motor (`M M̃ = s + p e123i`) needs an inverse of its own, written by hand.
+//!
+//! Exponentials and logarithms, per metric: `Exp::exp` on every type of bivectors whose
+//! `1 + B` a declared type holds (the smallest), with `B² = β`: `cos √−β + B sin √−β / √−β`
+//! (β < 0, a rotation), `cosh √β + B sinh √β / √β` (β > 0, a boost), `1 + B` (β = 0, a
+//! translation). Where every value of the type is simple (`B ∧ B` identically zero, as for
+//! any bivector in three dimensions) it returns the rotor type, else a `Result` whose
+//! `ExpError::NotSimple` gives `|⟨B²⟩₄|` relative to `Σ c_I²`. `Log::log` on every type of a
+//! scalar and bivectors (a rotor, a translator) whose bivectors a declared type holds: the
+//! principal logarithm `B θ/|B|` (θ = atan2(|B|, s)), `B asinh|B| / |B|` or `B / s`;
+//! `LogError` names a non-simple `B`, a rotor more than `√ε` from unit (`NotUnit`, with
+//! `R R̃ − 1`; closer ones are normalised first), `−1` and `−exp(B)` of a boost or
+//! translation (`NoLogarithm`: no bivector gives them), and non-finite coefficients. Small
+//! angles and rapidities keep full relative precision (`sin θ/θ`, `ln_1p`).
 //!
 //! Conversions: `From<A> for B` where `A`'s blades are all `B`'s; `TryFrom<A> for B` where
 //! some but not all are, and from the dense type into every type, returning a

@@ -410,6 +410,10 @@ pub struct Term {
 /// canonical blade order. Blades whose terms all cancel are absent.
 pub type Bilinear = Vec<(usize, Vec<Term>)>;
 
+/// A quadratic form per output blade: blade → monomial `(i, j)` (i ≤ j, indices into the
+/// operand's blades) → coefficient.
+pub type Quadratic = BTreeMap<usize, BTreeMap<(usize, usize), f64>>;
+
 /// A declared type: a name and the storage blades it holds, in field order.
 #[derive(Clone, Debug)]
 pub struct TypeModel {
@@ -438,11 +442,17 @@ impl Algebra {
     /// `X X̃` for a type holding `blades`, as polynomials in its coefficients: per output
     /// blade, the coefficient of every monomial `c_i c_j` (i ≤ j, the `(i, j)` and `(j, i)`
     /// terms combined), monomials and blades that cancel removed.
-    pub fn reverse_square(&self, blades: &[usize]) -> BTreeMap<usize, BTreeMap<(usize, usize), f64>> {
-        let mut out: BTreeMap<usize, BTreeMap<(usize, usize), f64>> = BTreeMap::new();
+    pub fn reverse_square(&self, blades: &[usize]) -> Quadratic {
+        self.square(blades, true)
+    }
+
+    /// `X X` (or with `reverse`, `X X̃`) for a type holding `blades`, as polynomials in its
+    /// coefficients, as [`Algebra::reverse_square`] gives them.
+    pub fn square(&self, blades: &[usize], reverse: bool) -> Quadratic {
+        let mut out: Quadratic = BTreeMap::new();
         for (i, &x) in blades.iter().enumerate() {
             for (j, &y) in blades.iter().enumerate() {
-                let rev = self.unary(Unary::Reverse, y).get(&y).copied().unwrap_or(1.0);
+                let rev = if reverse { self.unary(Unary::Reverse, y).get(&y).copied().unwrap_or(1.0) } else { 1.0 };
                 for (r, c) in self.product(Product::Geometric, x, y) {
                     *out.entry(r).or_default().entry((i.min(j), i.max(j))).or_insert(0.0) += c * rev;
                 }

@@ -208,6 +208,26 @@ macro_rules! wide {
                 self.zip(x, f64::atan2)
             }
             #[inline]
+            fn exp(self) -> Self {
+                self.map(f64::exp)
+            }
+            #[inline]
+            fn ln(self) -> Self {
+                self.map(f64::ln)
+            }
+            #[inline]
+            fn sinh(self) -> Self {
+                self.map(f64::sinh)
+            }
+            #[inline]
+            fn cosh(self) -> Self {
+                self.map(f64::cosh)
+            }
+            #[inline]
+            fn ln_1p(self) -> Self {
+                self.map(f64::ln_1p)
+            }
+            #[inline]
             fn min_positive() -> Self {
                 $t::splat(f64::MIN_POSITIVE)
             }

@@ -10,6 +10,7 @@ use std::collections::BTreeMap;
 mod approx;
 mod arith;
 mod dense;
+mod functions;
 mod products;
 mod registry;
 mod types;
@@ -18,10 +19,14 @@ pub fn generate(spec: &Spec) -> TokenStream {
     let g = Gen::new(spec);
     let mut out = g.traits();
     out.extend(g.error_types());
+    out.extend(g.function_traits());
     for (pos, t) in spec.types.iter().enumerate() {
         out.extend(g.type_items(pos, t));
         out.extend(g.scalar_ops(t));
         out.extend(g.inverse(pos, t));
+        out.extend(g.inverse_trait(pos, t));
+        out.extend(g.exp(t));
+        out.extend(g.log(t));
     }
     out.extend(g.embeddings());
     out.extend(g.mixed_sums());

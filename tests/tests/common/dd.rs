@@ -70,6 +70,12 @@ impl Real for Dd {
     fn atan2(self, x: Self) -> Self {
         Dd(self.0.atan2(x.0))
     }
+    fn exp(self) -> Self {
+        Dd(self.0.exp())
+    }
+    fn ln(self) -> Self {
+        Dd(self.0.ln())
+    }
 }
 
 /// An f64 vector as double-double.

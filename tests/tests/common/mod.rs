@@ -191,6 +191,12 @@ impl Real for Counted {
     fn atan2(self, x: Self) -> Self {
         Counted { x: self.x.atan2(x.x), constant: self.constant && x.constant }
     }
+    fn exp(self) -> Self {
+        Counted { x: self.x.exp(), ..self }
+    }
+    fn ln(self) -> Self {
+        Counted { x: self.x.ln(), ..self }
+    }
 }
 
 /// The point at angle θ on a circle (from the perpendicular of its normal).
