@@ -1,8 +1,8 @@
 //! The generated `Exp`, `Log` and `Inverse`, in three metrics at once: G(2,1), whose
 //! bivectors are rotations (`e12² = −1`), boosts (`e13² = e23² = +1`) and translations
-//! (`(e12 + e13)² = 0`); STA and PGA from `cga-algebras`; cga-core's G(4,1). References: the
-//! exponential series summed on the dense type, `exp(log R) = R`, Euclidean rotation and
-//! Minkowski boost formulas, and `X X⁻¹ = 1`.
+//! (`(e12 + e13)² = 0`); STA and PGA from `cga-algebras`; cga-core's G(4,1). References:
+//! kingdon 3.0.0's `exp` (`tools/kingdon_exp.py`), the exponential series summed on the dense
+//! type, `exp(log R) = R`, Euclidean rotation and Minkowski boost formulas, and `X X⁻¹ = 1`.
 
 mod common;
 
@@ -197,4 +197,41 @@ fn blades_invert_where_their_type_does_not_always() {
     assert_eq!(Inverse::try_inverse(two_planes), None, "e12 + e3o squares to a grade-4 part");
     let g = g21::Vector { e1: 1.0, e2: 2.0, e3: 0.5 };
     assert!(max_rel_diff(&(g * g21::Inverse::try_inverse(g).unwrap()).to_storage(), &[1.0, 0.0, 0.0, 0.0]) <= 1e-15);
+}
+
+/// `tests/data/kingdon_exp.json` (made by `tools/kingdon_exp.py`, kingdon 3.0.0): per
+/// algebra, bivectors and kingdon's `exp`, canonical blades.
+fn kingdon(name: &str) -> Vec<(Vec<f64>, Vec<f64>)> {
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/kingdon_exp.json");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+    let data: serde_json::Value = serde_json::from_str(&text).expect("kingdon_exp.json parses");
+    let list = |v: &serde_json::Value| -> Vec<f64> {
+        v.as_array().expect("a list").iter().map(|x| x.as_f64().expect("a number")).collect()
+    };
+    let cases = data[name].as_array().expect("cases");
+    assert_eq!(cases.len(), 20);
+    cases.iter().map(|c| (list(&c["b"]), list(&c["exp"]))).collect()
+}
+
+/// Our `exp` against kingdon's in three metrics: coefficients of size ≤ 4, both f64: 1e-13
+/// relative (kingdon's rounding and ours).
+#[test]
+fn exp_agrees_with_kingdon() {
+    for (b, want) in kingdon("g21") {
+        let got = g21::Bivector::from_storage(&b.clone().try_into().unwrap()).exp().to_storage();
+        assert!(max_rel_diff(&got, &want) <= 1e-13, "g21 {b:?}: {got:?} vs {want:?}");
+    }
+    {
+        use cga_algebras::sta::{Bivector, Exp};
+        for (b, want) in kingdon("sta") {
+            let got = Bivector::from_storage(&b.clone().try_into().unwrap()).exp().unwrap().to_storage();
+            assert!(max_rel_diff(&got, &want) <= 1e-13, "sta {b:?}: {got:?} vs {want:?}");
+        }
+    }
+    use cga_algebras::pga::{Exp, Line};
+    let ours = |c: &[f64]| -> [f64; 16] { core::array::from_fn(|k| c[k] * common::PGA_STORAGE[k].1) };
+    for (b, want) in kingdon("pga") {
+        let got = Line::from_storage(&ours(&b)).exp().unwrap().to_storage();
+        assert!(max_rel_diff(&got, &ours(&want)) <= 1e-13, "pga {b:?}: {got:?} vs {want:?}");
+    }
 }

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::max_rel_diff;
+use common::{PGA_STORAGE as STORAGE, max_rel_diff};
 use proptest::prelude::*;
 
 use cga_algebras::pga;
@@ -231,27 +231,6 @@ fn kingdon() -> serde_json::Value {
 /// The blades in canonical order (`e` the scalar, as kingdon names them).
 const CANONICAL: [&str; 16] =
     ["e", "e0", "e1", "e2", "e3", "e01", "e02", "e03", "e12", "e13", "e23", "e012", "e013", "e023", "e123", "e0123"];
-
-/// Our storage blades, position by position: the canonical ones spelled as `pga` declares
-/// them, and the sign of each spelling (`e31 = −e13`).
-const STORAGE: [(&str, f64); 16] = [
-    ("s", 1.0),
-    ("e0", 1.0),
-    ("e1", 1.0),
-    ("e2", 1.0),
-    ("e3", 1.0),
-    ("e01", 1.0),
-    ("e02", 1.0),
-    ("e03", 1.0),
-    ("e12", 1.0),
-    ("e31", -1.0),
-    ("e23", 1.0),
-    ("e021", -1.0),
-    ("e013", 1.0),
-    ("e032", -1.0),
-    ("e123", 1.0),
-    ("e0123", 1.0),
-];
 
 #[test]
 fn the_storage_order_is_the_canonical_one_with_the_declared_spellings() {

@@ -301,3 +301,25 @@ impl Ratios {
         );
     }
 }
+
+/// `cga_algebras::pga`'s storage blades, position by position: the canonical ones spelled as
+/// it declares them, and the sign of each spelling (`e31 = −e13`).
+#[allow(dead_code)]
+pub const PGA_STORAGE: [(&str, f64); 16] = [
+    ("s", 1.0),
+    ("e0", 1.0),
+    ("e1", 1.0),
+    ("e2", 1.0),
+    ("e3", 1.0),
+    ("e01", 1.0),
+    ("e02", 1.0),
+    ("e03", 1.0),
+    ("e12", 1.0),
+    ("e31", -1.0),
+    ("e23", 1.0),
+    ("e021", -1.0),
+    ("e013", 1.0),
+    ("e032", -1.0),
+    ("e123", 1.0),
+    ("e0123", 1.0),
+];
