@@ -74,8 +74,16 @@
 //! `CommutatorProduct::commutator`, `A × B = ½(A B − B A)`) and operators (`*`, `^`, `|`,
 //! `&`); the result type is the smallest declared type holding every nonzero output blade
 //! (ties: the first declared); else, for a result that is a scalar only, the scalar type `T`
-//! itself; else the dense type; with no dense type the product is not generated, and the
-//! left type's `# Products` table says `none` and names the grades a type must hold to get it. `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
+//! itself; else the dense type. With no dense type, the macro declares a grade-mixed type of
+//! its own for each set of grades that some product, sandwich, dual or grade part of the
+//! declared types gives and no declared type holds: every blade of those grades, named after
+//! them (`Grades1_3` for a vector times a rotor in G(3,0), `Grade9` for a vector's dual in
+//! G(9,1)), documented with the maps that need it, and then a type like any other (its
+//! products with every type, once: what they give that no type holds is not generated). It
+//! is a result type only where no type the user declared holds the result. Beyond 32 blades
+//! (G(4,1)'s whole algebra) none is declared: such a product is not generated, and the left
+//! type's `# Products` table says `none` and names the grades a type must hold to get it.
+//! `ScalarProduct::scalar_product` gives `⟨A B⟩₀` alone (one
 //! multiplication per scalar term) for every pair whose geometric product has a scalar part.
 //! The traits carry `#[diagnostic::on_unimplemented]` messages saying why a pair has none.
 //! Their impls are hidden from rustdoc; each type's page has a `# Products` table of the
@@ -156,6 +164,7 @@ pub fn algebra(input: TokenStream) -> TokenStream {
 }
 
 /// The checked declaration: a model plus what codegen needs to name things.
+#[derive(Clone)]
 pub(crate) struct Spec {
     pub algebra: Algebra,
     pub scalar: syn::Path,
@@ -167,8 +176,12 @@ pub(crate) struct Spec {
     pub scalars: Vec<syn::Type>,
 }
 
+#[derive(Clone)]
 pub(crate) struct TypeSpec {
     pub model: TypeModel,
+    /// Declared by the generator, not the user (a grade-mixed result type): a result type
+    /// only where no type the user declared holds the result.
+    pub generated: bool,
     pub ident: Ident,
     pub attrs: Vec<syn::Attribute>,
 }
@@ -229,7 +242,7 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         names.push(decl.name.clone());
         let blades = resolve_blades(&algebra, &decl)?;
         let model = TypeModel { blades, versor: decl.versor };
-        types.push(TypeSpec { model, ident: decl.name, attrs: decl.attrs });
+        types.push(TypeSpec { model, generated: false, ident: decl.name, attrs: decl.attrs });
     }
     for alias in &input.aliases {
         check_new_name(&names, &alias.name)?;
@@ -503,16 +516,30 @@ mod tests {
     #[global_allocator]
     static ALLOCATOR: Counting = Counting;
 
-    /// A product no declared type holds is not generated, and the type's docs say which
+    /// A product no declared type holds gets a grade-mixed type of its own (`Grades1_3`), up
+    /// to `MAX_MIXED` blades; beyond, it is not generated, and the type's docs say which
     /// grades a type must hold to get it.
     #[test]
-    fn uncovered_products_are_named_with_their_grades() {
-        let input =
-            "scalar = cga_core::Real; signature = (3, 0); type Vector = [grade(1)]; versor Rotor = [s, grade(2)];";
-        let input: super::parse::Input = syn::parse_str(input).expect("parses");
-        let out = super::codegen::generate(&super::resolve(input).expect("resolves")).to_string();
-        assert!(out.contains("`A B` with [`Rotor`]: grades [1, 3], e.g. `type … = [grade(1), grade(3)];`"), "{out}");
-        assert!(!out.contains("GeometricProduct < Rotor < T > > for Vector"), "not generated");
+    fn uncovered_products_get_a_type_or_are_named_with_their_grades() {
+        let expand = |input: &str| {
+            let input: super::parse::Input = syn::parse_str(input).expect("parses");
+            super::codegen::generate(&super::resolve(input).expect("resolves")).to_string()
+        };
+        let vga = expand(
+            "scalar = cga_core::Real; signature = (3, 0); type Vector = [grade(1)]; versor Rotor = [s, grade(2)];",
+        );
+        assert!(
+            vga.contains("pub struct Grades1_3 < T = f64 > { # [doc = \" Coefficient of `e1`.\"] pub e1 : T"),
+            "{vga}"
+        );
+        assert!(vga.contains("GeometricProduct < Rotor < T >> for Vector < T > { type Output = Grades1_3 < T >"));
+        // G(7,0): grades 1 and 3 are 7 + 35 = 42 blades, more than MAX_MIXED.
+        let g7 = expand(
+            "scalar = cga_core::Real; signature = (7, 0); type Vector = [grade(1)]; versor Rotor = [s, grade(2)];",
+        );
+        assert!(g7.contains("`A B` with [`Rotor`]: grades [1, 3], e.g. `type … = [grade(1), grade(3)];`"));
+        assert!(!g7.contains("GeometricProduct < Rotor < T >> for Vector"), "not generated");
+        assert!(!g7.contains("Grades1_3"));
     }
 
     /// Expansion time, bytes allocated and output size per dimension, for an algebra of

@@ -478,16 +478,6 @@ impl Algebra {
     }
 }
 
-/// The smallest declared type holding every blade of `needed` (ties: the first declared).
-pub fn cover(types: &[TypeModel], needed: &[usize]) -> Option<usize> {
-    types
-        .iter()
-        .enumerate()
-        .filter(|(_, t)| needed.iter().all(|b| t.blades.contains(b)))
-        .min_by_key(|(pos, t)| (t.blades.len(), *pos))
-        .map(|(pos, _)| pos)
-}
-
 /// The sign in `∁e_S = sign · e_(S^c)`: `e_S ∧ e_(S^c) = sign · I` read backwards (±1).
 fn complement_sign(s: usize, full: usize) -> f64 {
     wedge_blades(s, s ^ full).map_or(1.0, |(_, sign)| sign)

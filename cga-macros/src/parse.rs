@@ -29,6 +29,7 @@ pub struct Scalars {
 /// `#[cfg(…)] approx = path::to::approx;`: implement the `approx` crate's comparison traits
 /// for every type, each impl carrying the item's attributes (so a crate can gate them behind
 /// a feature).
+#[derive(Clone)]
 pub struct Approx {
     pub attrs: Vec<Attribute>,
     pub path: Path,
@@ -57,6 +58,7 @@ pub struct BasisVector {
 }
 
 /// `dense Multivector;`
+#[derive(Clone)]
 pub struct Named {
     pub attrs: Vec<Attribute>,
     pub name: Ident,
@@ -79,6 +81,7 @@ pub enum Elem {
 }
 
 /// `alias PointPair = Bivector;`
+#[derive(Clone)]
 pub struct Alias {
     pub attrs: Vec<Attribute>,
     pub name: Ident,

@@ -1,7 +1,7 @@
 //! Tables → Rust. Every generated function is straight-line code over named fields: one
 //! expression per nonzero output blade, one multiplication per nonzero table term.
 
-use crate::model::{Algebra, Bilinear, Mv, Product, Term, Unary, cover};
+use crate::model::{Algebra, Bilinear, Mv, Product, Term, Unary};
 use crate::{Spec, TypeSpec};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
@@ -11,12 +11,25 @@ mod approx;
 mod arith;
 mod dense;
 mod functions;
+mod mixed;
 mod products;
 mod registry;
 mod types;
 
 pub fn generate(spec: &Spec) -> TokenStream {
     let g = Gen::new(spec);
+    let mixed = g.mixed_types();
+    if mixed.is_empty() {
+        return emit(&g);
+    }
+    let mut extended = spec.clone();
+    extended.types.extend(mixed);
+    emit(&Gen::new(&extended))
+}
+
+/// Every item of an algebra whose types are final.
+fn emit(g: &Gen) -> TokenStream {
+    let spec = g.spec;
     let mut out = g.traits();
     out.extend(g.error_types());
     out.extend(g.function_traits());
@@ -172,11 +185,16 @@ impl<'a> Gen<'a> {
         format_ident!("{}", self.a.blade_name(blade))
     }
 
+    /// Where a result holding `blades` goes: the smallest type the user declared; else `T`
+    /// for a scalar; else the smallest generated grade-mixed type; else the dense type.
     pub(super) fn target_for(&self, blades: &[usize]) -> Option<Target> {
-        match self.declared_cover(blades) {
+        match self.cover_among(blades, false) {
             Some(t) => Some(Target::Type(t)),
             None if blades == [0] => Some(Target::Scalar),
-            None => self.spec.dense.as_ref().map(|_| Target::Dense),
+            None => match self.cover_among(blades, true) {
+                Some(t) => Some(Target::Type(t)),
+                None => self.spec.dense.as_ref().map(|_| Target::Dense),
+            },
         }
     }
 
@@ -193,10 +211,19 @@ impl<'a> Gen<'a> {
         }
     }
 
-    /// The smallest declared type holding `blades` (never the dense type).
+    /// The smallest declared type holding `blades` (never the dense type): among the user's
+    /// types first, then among the generated ones.
     pub(super) fn declared_cover(&self, blades: &[usize]) -> Option<usize> {
-        let models: Vec<_> = self.spec.types.iter().map(|t| t.model.clone()).collect();
-        cover(&models, blades)
+        self.cover_among(blades, false).or_else(|| self.cover_among(blades, true))
+    }
+
+    /// The smallest user-declared (or generated) type holding `blades`; ties: the first.
+    fn cover_among(&self, blades: &[usize], generated: bool) -> Option<usize> {
+        let types = self.spec.types.iter().enumerate().filter(|(_, t)| t.generated == generated);
+        types
+            .filter(|(_, t)| blades.iter().all(|b| t.model.blades.contains(b)))
+            .min_by_key(|(pos, t)| (t.model.blades.len(), *pos))
+            .map(|(pos, _)| pos)
     }
 
     pub(super) fn target_ty(&self, target: Target) -> TokenStream {

@@ -121,6 +121,14 @@ impl Gen<'_> {
     /// stage two multiplies by `Ṽ` (reverse signs folded into the coefficients) and keeps
     /// only the grades of `X`, which a versor preserves.
     pub(super) fn sandwich_plan(&self, v: &TypeSpec, x: &TypeSpec) -> Option<(Bilinear, Bilinear, Target)> {
+        let (stage1, stage2) = self.sandwich_stages(v, x);
+        let outs: Vec<usize> = stage2.iter().map(|(b, _)| *b).collect();
+        let target = self.target_for(&outs)?;
+        Some((stage1, stage2, target))
+    }
+
+    /// The two stages of `V X Ṽ` (see [`Gen::sandwich_plan`]).
+    pub(super) fn sandwich_stages(&self, v: &TypeSpec, x: &TypeSpec) -> (Bilinear, Bilinear) {
         let stage1 = self.a.bilinear(Product::Geometric, &v.model.blades, &x.model.blades);
         let mids: Vec<usize> = stage1.iter().map(|(b, _)| *b).collect();
         let rev: Vec<f64> =
@@ -135,9 +143,7 @@ impl Gen<'_> {
                 (b, terms)
             })
             .collect::<Bilinear>();
-        let outs: Vec<usize> = stage2.iter().map(|(b, _)| *b).collect();
-        let target = self.target_for(&outs)?;
-        Some((stage1, stage2, target))
+        (stage1, stage2)
     }
 
     /// Every sandwich of a versor type on a type, in declaration order.
