@@ -54,6 +54,10 @@ impl Gen<'_> {
     /// The types to add: one per grade set of [`Gen::missing_grades`] with at most
     /// [`MAX_MIXED`] blades and a name no declared item has.
     pub(super) fn mixed_types(&self) -> Vec<TypeSpec> {
+        if self.spec.dense.is_some() {
+            // Every result has a type: the dense one.
+            return Vec::new();
+        }
         let taken: Vec<String> = (self.spec.types.iter().map(|t| t.ident.to_string()))
             .chain(self.spec.aliases.iter().map(|a| a.name.to_string()))
             .chain(self.spec.dense.iter().map(|d| d.name.to_string()))
