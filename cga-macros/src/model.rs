@@ -5,7 +5,8 @@
 //! and carried to the storage basis through the outermorphism of the basis change, so a
 //! non-diagonal metric such as the null basis `eo, ei` of CGA costs nothing at run time.
 
-use std::collections::BTreeMap;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, HashMap};
 
 /// Coefficients smaller than this are taken as exact zeros: every table entry is a small
 /// dyadic rational (the change of basis only involves halves), so real entries are far
@@ -16,7 +17,7 @@ const ZERO: f64 = 1e-9;
 pub type Mv = BTreeMap<usize, f64>;
 
 /// The products the generator emits for every pair of types.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Product {
     /// `A B`
     Geometric,
@@ -85,6 +86,9 @@ pub struct Algebra {
     /// to the canonical blade (`e31 = −e13`). The sign is folded into `to_ortho` and
     /// `from_ortho`, so every table treats the declared blade as the storage blade.
     spelled: BTreeMap<usize, String>,
+    /// Every table [`Algebra::bilinear`] has built, so that planning again with more types
+    /// (the grade-mixed ones) rebuilds none; cloned with the algebra.
+    tables: RefCell<HashMap<(Product, Vec<usize>, Vec<usize>), Bilinear>>,
 }
 
 /// Why an algebra cannot be built.
@@ -127,7 +131,17 @@ impl Algebra {
         for (pos, &m) in order.iter().enumerate() {
             rank[m] = pos;
         }
-        Ok(Algebra { n, metric, labels, to_ortho, from_ortho, order, rank, spelled: BTreeMap::new() })
+        Ok(Algebra {
+            n,
+            metric,
+            labels,
+            to_ortho,
+            from_ortho,
+            order,
+            rank,
+            spelled: BTreeMap::new(),
+            tables: RefCell::default(),
+        })
     }
 
     /// Number of blades, 2^n.
@@ -425,6 +439,16 @@ pub struct TypeModel {
 impl Algebra {
     /// The product `kind` of operands holding blades `lhs` and `rhs`, term by term.
     pub fn bilinear(&self, kind: Product, lhs: &[usize], rhs: &[usize]) -> Bilinear {
+        let key = (kind, lhs.to_vec(), rhs.to_vec());
+        if let Some(table) = self.tables.borrow().get(&key) {
+            return table.clone();
+        }
+        let table = self.tabulate(kind, lhs, rhs);
+        self.tables.borrow_mut().insert(key, table.clone());
+        table
+    }
+
+    fn tabulate(&self, kind: Product, lhs: &[usize], rhs: &[usize]) -> Bilinear {
         let mut outputs: BTreeMap<usize, Vec<Term>> = BTreeMap::new();
         for (i, &a) in lhs.iter().enumerate() {
             for (j, &b) in rhs.iter().enumerate() {
