@@ -65,6 +65,9 @@ pub enum Unary {
     Undual,
 }
 
+/// A product table's key: the product and the blades of its two operands.
+type TableKey = (Product, Vec<usize>, Vec<usize>);
+
 /// The algebra: an orthonormal signature and a storage basis expressed in it.
 #[derive(Clone, Debug)]
 pub struct Algebra {
@@ -88,7 +91,7 @@ pub struct Algebra {
     spelled: BTreeMap<usize, String>,
     /// Every table [`Algebra::bilinear`] has built, so that planning again with more types
     /// (the grade-mixed ones) rebuilds none; cloned with the algebra.
-    tables: RefCell<HashMap<(Product, Vec<usize>, Vec<usize>), Bilinear>>,
+    tables: RefCell<HashMap<TableKey, Bilinear>>,
 }
 
 /// Why an algebra cannot be built.
