@@ -34,7 +34,26 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["height"],
         ),
         ("wrong type", format!("{CAMERA}[render]\nmax_depth = \"deep\"\n"), vec!["bad.toml:7:", "max_depth"]),
-        ("unknown object type", with_object("type = \"torus\"\n"), vec!["torus"]),
+        ("unknown object type", with_object("type = \"teapot\"\n"), vec!["teapot"]),
+        (
+            "torus without a tube",
+            with_object("type = \"torus\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nradius = 1.0\n"),
+            vec!["`thing`", "a torus takes `centre`, `normal`, `radius`", "`tube`"],
+        ),
+        (
+            "torus with a zero tube",
+            with_object(
+                "type = \"torus\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nradius = 1.0\ntube = 0.0\n",
+            ),
+            vec!["bad.toml:13:", "`thing`", "tube", "positive"],
+        ),
+        (
+            "torus with a zero normal",
+            with_object(
+                "type = \"torus\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 0.0]\nradius = 1.0\ntube = 0.2\n",
+            ),
+            vec!["bad.toml:11:", "normal"],
+        ),
         (
             "unknown object field",
             with_object("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmass = 3.0\n"),

@@ -21,7 +21,7 @@ use crate::light::{Light, Source};
 use crate::limits::MAX_SIDE;
 use crate::material::Material;
 use crate::object::Object;
-use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TriangleShape};
+use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
@@ -175,6 +175,7 @@ pub(crate) enum Kind {
     Sphere,
     Plane,
     Disk,
+    Torus,
     Triangle,
     Evolved,
     Spline,
@@ -228,6 +229,10 @@ impl Kind {
                 &["centre", "normal", "radius", "points"],
                 "a disk takes `centre`, `normal` and `radius`, or `points` (three)",
             ),
+            Kind::Torus => (
+                &["centre", "normal", "radius", "tube"],
+                "a torus takes `centre`, `normal`, `radius` (of its core circle) and `tube` (the tube's radius)",
+            ),
             Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
             Kind::Evolved => (&["c1", "c2"], "an evolved surface takes `c1` and `c2`"),
             Kind::Ruled => (
@@ -253,6 +258,7 @@ pub(crate) struct ObjectSpec {
     material: MaterialSpec,
     centre: Option<Spanned<V3>>,
     radius: Option<Spanned<Num>>,
+    tube: Option<Spanned<Num>>,
     normal: Option<Spanned<V3>>,
     point: Option<Spanned<V3>>,
     corners: Option<Spanned<Vec<V3>>>,
@@ -374,6 +380,7 @@ impl ObjectSpec {
         [
             span("centre", self.centre.as_ref().map(Spanned::span)),
             span("radius", self.radius.as_ref().map(Spanned::span)),
+            span("tube", self.tube.as_ref().map(Spanned::span)),
             span("normal", self.normal.as_ref().map(Spanned::span)),
             span("point", self.point.as_ref().map(Spanned::span)),
             span("corners", self.corners.as_ref().map(Spanned::span)),
@@ -469,6 +476,18 @@ impl ObjectSpec {
                     _ => return Err(form()),
                 };
                 Arc::new(DiskShape::new(place.point(c)?, place.direction(n), place.length(r))?)
+            }
+            Kind::Torus => {
+                let (Some(c), Some(n), Some(r), Some(tube)) = (centre, normal, radius, self.tube.as_ref()) else {
+                    return Err(form());
+                };
+                if !(tube.get_ref().0 > 0.0 && tube.get_ref().0.is_finite()) {
+                    return Err(Invalid::at("tube", tube.span(), Invalid::Value("the tube's radius must be positive")));
+                }
+                TorusShape::new(c, n, r, tube.get_ref().0)?;
+                let (c, n, r, tube) =
+                    (place.point(c)?, place.direction(n), place.length(r), place.length(tube.get_ref().0));
+                Arc::new(TorusShape::new(c, n, r, tube)?)
             }
             Kind::Triangle => {
                 let corners = self.corners.as_ref().ok_or_else(form)?;

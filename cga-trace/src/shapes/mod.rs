@@ -13,6 +13,7 @@
 mod disk;
 mod plane;
 mod sphere;
+mod torus;
 mod triangle;
 
 use crate::ray::{Ray, in_range};
@@ -24,6 +25,7 @@ pub use disk::DiskShape;
 pub use plane::PlaneShape;
 pub use sphere::SphereShape;
 pub(crate) use sphere::sphere_crossing;
+pub use torus::TorusShape;
 pub use triangle::TriangleShape;
 pub(crate) use triangle::inside_triangle;
 

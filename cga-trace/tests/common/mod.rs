@@ -66,8 +66,10 @@ impl Similarity {
                     self.point(v);
                 }
             }
-            if let Some(v) = object.get_mut("radius") {
-                self.length(v);
+            for key in ["radius", "tube"] {
+                if let Some(v) = object.get_mut(key) {
+                    self.length(v);
+                }
             }
             if let Some(Value::Array(corners)) = object.get_mut("corners") {
                 corners.iter_mut().for_each(|c| self.point(c));
