@@ -318,7 +318,9 @@ impl ObjectSpec {
     /// points; 0 for a plane), if the file says; `None` for what only a blade gives.
     pub(crate) fn extent(&self) -> Option<(E3, f64)> {
         let spread = |p: &[V3]| p.iter().map(|x| norm(sub(x.0, p[0].0))).fold(0.0, f64::max);
-        let radius = self.radius.as_ref().map_or(0.0, |r| r.get_ref().0);
+        // A torus reaches its tube's radius beyond its core circle's.
+        let tube = self.tube.as_ref().map_or(0.0, |r| r.get_ref().0);
+        let radius = self.radius.as_ref().map_or(0.0, |r| r.get_ref().0) + tube;
         let circle = |c: &CircleSpec| c.centre.map(|x| (x.0, c.radius.map_or(0.0, |r| r.0)));
         let (point, extent) = if self.kind == Kind::Plane {
             let p =
@@ -349,12 +351,13 @@ impl ObjectSpec {
     /// (what else it holds is checked when it is built).
     pub(crate) fn extent_of(value: &Spanned<toml::de::DeValue<'_>>) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 14] = [
+        const READ: [&str; 15] = [
             "type",
             "material",
             "centre",
             "point",
             "radius",
+            "tube",
             "points",
             "corners",
             "p1",
