@@ -80,26 +80,27 @@ fn depressed_quartic(q2: f64, a: f64, b: f64, r: f64, rho: f64) -> ([f64; 4], us
     let p2 = 2.0 * big_a - r4 * (1.0 - b * b);
     let p1 = 2.0 * r4 * a * b;
     let p0 = big_a * big_a - r4 * (q2 - a * a);
-    let f = |s: f64| ((s * s + p2) * s + p1) * s + p0;
-    let df = |s: f64| (4.0 * s * s + 2.0 * p2) * s + p1;
-    let ddf = |s: f64| 12.0 * s * s + 2.0 * p2;
+    let f = move |s: f64| ((s * s + p2) * s + p1) * s + p0;
+    let df = move |s: f64| (4.0 * s * s + 2.0 * p2) * s + p1;
+    let ddf = move |s: f64| 12.0 * s * s + 2.0 * p2;
     // Every root is in [−1, 1]; a little beyond, f > 0 (outside the torus), so that a root at
     // ±1 itself (a ray through the outer equator) keeps its sign change whatever the rounding.
     const REACH: f64 = 1.0 + 1.0 / 1024.0;
     // f'' vanishes at ±√(−p₂/6): f' is monotone between those; its roots split f likewise.
-    let mut cuts = vec![-REACH];
+    // Fixed arrays: this runs per ray.
+    let mut cuts = Bounds::new(-REACH);
     if p2 < 0.0 {
         let c = (-p2 / 6.0).sqrt();
-        cuts.extend([-c, c].into_iter().filter(|c| c.abs() < REACH));
+        [-c, c].into_iter().filter(|c| c.abs() < REACH).for_each(|c| cuts.push(c));
     }
     cuts.push(REACH);
-    let mut critical = vec![-REACH];
-    critical.extend(cuts.windows(2).filter_map(|w| bracketed_root(&df, &ddf, w[0], w[1])));
+    let mut critical = Bounds::new(-REACH);
+    cuts.windows().filter_map(|(lo, hi)| bracketed_root(df, ddf, lo, hi)).for_each(|c| critical.push(c));
     critical.push(REACH);
     let mut roots = [0.0; 4];
     let mut n = 0;
-    for w in critical.windows(2) {
-        if let Some(s) = bracketed_root(&f, &df, w[0], w[1]).filter(|_| n < 4) {
+    for (lo, hi) in critical.windows() {
+        if let Some(s) = bracketed_root(f, df, lo, hi).filter(|_| n < 4) {
             roots[n] = s;
             n += 1;
         }
@@ -107,10 +108,34 @@ fn depressed_quartic(q2: f64, a: f64, b: f64, r: f64, rho: f64) -> ([f64; 4], us
     (roots, n)
 }
 
+/// Up to five increasing points splitting `[−1, 1]` (with its margin) into intervals.
+struct Bounds {
+    at: [f64; 5],
+    len: usize,
+}
+
+impl Bounds {
+    fn new(first: f64) -> Self {
+        Bounds { at: [first; 5], len: 1 }
+    }
+
+    fn push(&mut self, x: f64) {
+        if self.len < self.at.len() {
+            self.at[self.len] = x;
+            self.len += 1;
+        }
+    }
+
+    /// Consecutive pairs.
+    fn windows(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        self.at[..self.len].windows(2).map(|w| (w[0], w[1]))
+    }
+}
+
 /// The root of `f` in `[lo, hi]` where `f` is monotone and changes sign: Newton steps from
 /// the end nearer zero, each replaced by bisection when it leaves the bracket, until the
 /// bracket holds no double between its ends. `None` without a sign change.
-fn bracketed_root(f: &dyn Fn(f64) -> f64, df: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
+fn bracketed_root(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
     let (f_lo, f_hi) = (f(lo), f(hi));
     if f_lo == 0.0 {
         return Some(lo);
