@@ -48,6 +48,11 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:13:", "`thing`", "tube", "positive"],
         ),
         (
+            "box with max below min",
+            with_object("type = \"box\"\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, -1.0, 1.0]\n"),
+            vec!["bad.toml:11:", "`thing`", "max", "exceed"],
+        ),
+        (
             "torus with a zero normal",
             with_object(
                 "type = \"torus\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 0.0]\nradius = 1.0\ntube = 0.2\n",

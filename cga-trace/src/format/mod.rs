@@ -21,7 +21,7 @@ use crate::light::{Light, Source};
 use crate::limits::MAX_SIDE;
 use crate::material::Material;
 use crate::object::Object;
-use crate::shapes::{DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
+use crate::shapes::{BoxShape, DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
@@ -176,6 +176,7 @@ pub(crate) enum Kind {
     Plane,
     Disk,
     Torus,
+    Box,
     Triangle,
     Evolved,
     Spline,
@@ -233,6 +234,10 @@ impl Kind {
                 &["centre", "normal", "radius", "tube"],
                 "a torus takes `centre`, `normal`, `radius` (of its core circle) and `tube` (the tube's radius)",
             ),
+            Kind::Box => (
+                &["min", "max"],
+                "a box takes its opposite corners `min` and `max` (turn it with `motor` or `transform`)",
+            ),
             Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
             Kind::Evolved => (&["c1", "c2"], "an evolved surface takes `c1` and `c2`"),
             Kind::Ruled => (
@@ -259,6 +264,8 @@ pub(crate) struct ObjectSpec {
     centre: Option<Spanned<V3>>,
     radius: Option<Spanned<Num>>,
     tube: Option<Spanned<Num>>,
+    min: Option<Spanned<V3>>,
+    max: Option<Spanned<V3>>,
     normal: Option<Spanned<V3>>,
     point: Option<Spanned<V3>>,
     corners: Option<Spanned<Vec<V3>>>,
@@ -329,6 +336,9 @@ impl ObjectSpec {
             (n.map_or(p, |n| foot(p, n)), f64::INFINITY)
         } else if let Some(c) = self.centre.as_ref().or(self.point.as_ref()) {
             (c.get_ref().0, radius)
+        } else if let (Some(lo), Some(hi)) = (&self.min, &self.max) {
+            let (lo, hi) = (lo.get_ref().0, hi.get_ref().0);
+            ([0, 1, 2].map(|k| 0.5 * (lo[k] + hi[k])), 0.5 * norm(sub(hi, lo)))
         } else if let Some(p) = self.points.as_ref().or(self.corners.as_ref()).or(self.p1.as_ref()) {
             (p.get_ref().first()?.0, spread(p.get_ref()))
         } else if let Some(b) = &self.bound {
@@ -351,13 +361,15 @@ impl ObjectSpec {
     /// (what else it holds is checked when it is built).
     pub(crate) fn extent_of(value: &Spanned<toml::de::DeValue<'_>>) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 15] = [
+        const READ: [&str; 17] = [
             "type",
             "material",
             "centre",
             "point",
             "radius",
             "tube",
+            "min",
+            "max",
             "points",
             "corners",
             "p1",
@@ -384,6 +396,8 @@ impl ObjectSpec {
             span("centre", self.centre.as_ref().map(Spanned::span)),
             span("radius", self.radius.as_ref().map(Spanned::span)),
             span("tube", self.tube.as_ref().map(Spanned::span)),
+            span("min", self.min.as_ref().map(Spanned::span)),
+            span("max", self.max.as_ref().map(Spanned::span)),
             span("normal", self.normal.as_ref().map(Spanned::span)),
             span("point", self.point.as_ref().map(Spanned::span)),
             span("corners", self.corners.as_ref().map(Spanned::span)),
@@ -491,6 +505,18 @@ impl ObjectSpec {
                 let (c, n, r, tube) =
                     (place.point(c)?, place.direction(n), place.length(r), place.length(tube.get_ref().0));
                 Arc::new(TorusShape::new(c, n, r, tube)?)
+            }
+            Kind::Box => {
+                let (Some(lo), Some(hi)) = (v(&self.min), self.max.as_ref()) else { return Err(form()) };
+                let box_ = BoxShape::between(lo, hi.get_ref().0).map_err(|e| match e {
+                    GeometryError::ZeroRadius => {
+                        Invalid::at("max", hi.span(), Invalid::Value("`max` must exceed `min` on every axis"))
+                    }
+                    e => e.into(),
+                })?;
+                let axes = box_.axes.map(|a| place.direction(a));
+                let half = box_.half.map(|h| place.length(h));
+                Arc::new(BoxShape::new(half, place.point(box_.centre)?, axes)?)
             }
             Kind::Triangle => {
                 let corners = self.corners.as_ref().ok_or_else(form)?;

@@ -10,6 +10,7 @@
 //! here (or, like [`crate::surface`], beside) and its entry in the scene format
 //! ([`crate::format`]); see ARCHITECTURE.md, "Adding a shape".
 
+mod cuboid;
 mod disk;
 mod plane;
 mod sphere;
@@ -21,6 +22,7 @@ use cga_core::Plane;
 use cga_core::euclid::{E3, dot};
 use core::any::Any;
 use core::fmt::Debug;
+pub use cuboid::BoxShape;
 pub use disk::DiskShape;
 pub use plane::PlaneShape;
 pub use sphere::SphereShape;

@@ -61,9 +61,16 @@ impl Similarity {
         }
         for object in scene.get_mut("objects").and_then(Value::as_array_mut).into_iter().flatten() {
             let object = object.as_table_mut().expect("an object table");
-            for key in ["centre", "point"] {
+            for key in ["centre", "point", "min", "max"] {
                 if let Some(v) = object.get_mut(key) {
                     self.point(v);
+                }
+            }
+            // Rotations about a point of the object move with it.
+            for step in object.get_mut("transform").and_then(Value::as_array_mut).into_iter().flatten() {
+                assert!(step.get("translate").is_none(), "shipped objects move by rotations about their own points");
+                if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
+                    self.point(about);
                 }
             }
             for key in ["radius", "tube"] {
