@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # POV-Ray 3.7 against cga-trace on the scenes of the shapes POV-Ray also has (here: the
-# torus and the box), one thread, CPU time (user + sys), interleaved rounds, medians, 1280x960, no
+# torus, the box, the cylinder and cone), one thread, CPU time (user + sys), interleaved rounds, medians, 1280x960, no
 # anti-aliasing; as ../../../shared/anchors/povray/time.sh does for the paper's scenes.
 #
 #   benches/povray/time.sh PATH/TO/cga-trace [ROUNDS]     (from the project's root)
@@ -13,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 cpu() { /usr/bin/time -f '%U %S' -o "$work/t" "$@" >/dev/null 2>&1; awk '{print $1 + $2}' "$work/t"; }
 med() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 printf '%-12s %10s %10s %10s\n' scene povray cga-trace 'povray/ours'
-for name in torus box; do
+for name in torus box cylinder; do
   : > "$work/p"; : > "$work/o"
   for _ in $(seq "$rounds"); do
     cpu povray "+I$here/$name.pov" "+O$work/p.png" +W1280 +H960 -D +WT1 -A >> "$work/p"

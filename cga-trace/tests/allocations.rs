@@ -45,8 +45,8 @@ fn tracing_allocates_nothing() {
     let combined = Scene::load(std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/combined.toml")))
         .expect("the combined scene");
     let many = Scene::parse(&spheres(200), "spheres.toml").expect("a scene of spheres");
-    // Spline surfaces (cubic Bézier segments, degree-32 polynomials), ruled surfaces, tori and
-    // boxes too; smaller, for a debug build.
+    // Spline surfaces (cubic Bézier segments, degree-32 polynomials), ruled surfaces, tori, boxes
+    // and cones too; smaller, for a debug build.
     let shipped = |name: &str| {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
         let mut scene = Scene::load(&path).expect(name);
@@ -54,8 +54,8 @@ fn tracing_allocates_nothing() {
         scene
     };
     let (spline, ruled) = (shipped("fig3c.toml"), shipped("ruled.toml"));
-    let (tori, boxes) = (shipped("torus.toml"), shipped("box.toml"));
-    for scene in [&combined, &many, &spline, &ruled, &tori, &boxes] {
+    let (tori, boxes, cones) = (shipped("torus.toml"), shipped("box.toml"), shipped("cylinder.toml"));
+    for scene in [&combined, &many, &spline, &ruled, &tori, &boxes, &cones] {
         let renderer = Renderer::new(scene);
         let camera = &scene.camera;
         let rays: Vec<_> = (0..camera.height)

@@ -48,6 +48,23 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:13:", "`thing`", "tube", "positive"],
         ),
         (
+            "cylinder end given as two points",
+            with_object(
+                "type = \"cylinder\"\np1 = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]\np2 = [0.0, 0.0, 1.0]\nradius = 1.0\n",
+            ),
+            vec!["bad.toml:10:", "`thing`", "`p1`: expected 1 points, found 2"],
+        ),
+        (
+            "cone without r2",
+            with_object("type = \"cone\"\np1 = [0.0, 0.0, 0.0]\nr1 = 1.0\np2 = [0.0, 0.0, 1.0]\n"),
+            vec!["`thing`", "a cone takes", "`r2`"],
+        ),
+        (
+            "cylinder of coincident ends",
+            with_object("type = \"cylinder\"\np1 = [0.0, 0.0, 0.0]\np2 = [0.0, 0.0, 0.0]\nradius = 1.0\n"),
+            vec!["bad.toml:11:", "`thing`", "`p2`", "coincide"],
+        ),
+        (
             "box with max below min",
             with_object("type = \"box\"\nmin = [0.0, 0.0, 0.0]\nmax = [1.0, -1.0, 1.0]\n"),
             vec!["bad.toml:11:", "`thing`", "max", "exceed"],

@@ -35,7 +35,11 @@ fn difference(a: &[u8], b: &[u8]) -> (f64, f64) {
 }
 
 fn check<B: Backend>(width: u32, height: u32) {
-    check_scenes::<B>(&["primitives.toml", "surface.toml", "combined.toml", "torus.toml", "box.toml"], width, height);
+    check_scenes::<B>(
+        &["primitives.toml", "surface.toml", "combined.toml", "torus.toml", "box.toml", "cylinder.toml"],
+        width,
+        height,
+    );
 }
 
 fn check_scenes<B: Backend>(names: &[&str], width: u32, height: u32) {

@@ -21,7 +21,7 @@ use crate::light::{Light, Source};
 use crate::limits::MAX_SIDE;
 use crate::material::Material;
 use crate::object::Object;
-use crate::shapes::{BoxShape, DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
+use crate::shapes::{BoxShape, ConeShape, DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
@@ -176,11 +176,41 @@ pub(crate) enum Kind {
     Plane,
     Disk,
     Torus,
+    Cylinder,
+    Cone,
     Box,
     Triangle,
     Evolved,
     Spline,
     Ruled,
+}
+
+/// `p1`, `p2`: one point (a cylinder's or cone's end) or two (a ruled surface's point pair).
+#[derive(Deserialize)]
+#[serde(untagged, expecting = "a point [x, y, z], or for a ruled surface two points [[x, y, z], [x, y, z]]")]
+pub(crate) enum Ends {
+    One(V3),
+    Two(Vec<V3>),
+}
+
+impl Ends {
+    /// The points given.
+    fn points(&self) -> &[V3] {
+        match self {
+            Ends::One(p) => std::slice::from_ref(p),
+            Ends::Two(p) => p,
+        }
+    }
+}
+
+/// `N` points from an `Ends` field, or a count error at it.
+fn ends<const N: usize>(field: &'static str, p: &Spanned<Ends>) -> Result<[E3; N], Invalid> {
+    let given = p.get_ref().points();
+    if given.len() != N || matches!((N, p.get_ref()), (1, Ends::Two(_))) {
+        let reason = Invalid::Count { what: "points", expected: N, found: given.len() };
+        return Err(Invalid::at(field, p.span(), reason));
+    }
+    Ok(std::array::from_fn(|k| given[k].0))
 }
 
 /// A line of a ruled surface: a point on it and its direction.
@@ -234,6 +264,14 @@ impl Kind {
                 &["centre", "normal", "radius", "tube"],
                 "a torus takes `centre`, `normal`, `radius` (of its core circle) and `tube` (the tube's radius)",
             ),
+            Kind::Cylinder => (
+                &["p1", "p2", "radius", "caps"],
+                "a cylinder takes its axis's ends `p1` and `p2` (one point each), `radius`, and `caps` (default true)",
+            ),
+            Kind::Cone => (
+                &["p1", "r1", "p2", "r2", "caps"],
+                "a cone takes its axis's ends `p1` and `p2` (one point each), their radii `r1` and `r2`, and `caps` (default true)",
+            ),
             Kind::Box => (
                 &["min", "max"],
                 "a box takes its opposite corners `min` and `max` (turn it with `motor` or `transform`)",
@@ -273,8 +311,11 @@ pub(crate) struct ObjectSpec {
     c1: Option<Spanned<CircleSpec>>,
     c2: Option<Spanned<CircleSpec>>,
     circles: Option<Spanned<Vec<Spanned<CircleSpec>>>>,
-    p1: Option<Spanned<Vec<V3>>>,
-    p2: Option<Spanned<Vec<V3>>>,
+    p1: Option<Spanned<Ends>>,
+    p2: Option<Spanned<Ends>>,
+    r1: Option<Spanned<Num>>,
+    r2: Option<Spanned<Num>>,
+    caps: Option<Spanned<bool>>,
     l1: Option<Spanned<LineSpec>>,
     l2: Option<Spanned<LineSpec>>,
     bound: Option<Spanned<BoundSpec>>,
@@ -339,8 +380,14 @@ impl ObjectSpec {
         } else if let (Some(lo), Some(hi)) = (&self.min, &self.max) {
             let (lo, hi) = (lo.get_ref().0, hi.get_ref().0);
             ([0, 1, 2].map(|k| 0.5 * (lo[k] + hi[k])), 0.5 * norm(sub(hi, lo)))
-        } else if let Some(p) = self.points.as_ref().or(self.corners.as_ref()).or(self.p1.as_ref()) {
+        } else if let (Kind::Cylinder | Kind::Cone, Some(p1), Some(p2)) = (self.kind, &self.p1, &self.p2) {
+            let (a, b) = (p1.get_ref().points().first()?.0, p2.get_ref().points().first()?.0);
+            let r = |x: &Option<Spanned<Num>>| x.as_ref().map_or(0.0, |r| r.get_ref().0);
+            (a, norm(sub(b, a)) + radius.max(r(&self.r1)).max(r(&self.r2)))
+        } else if let Some(p) = self.points.as_ref().or(self.corners.as_ref()) {
             (p.get_ref().first()?.0, spread(p.get_ref()))
+        } else if let Some(p) = &self.p1 {
+            (p.get_ref().points().first()?.0, spread(p.get_ref().points()))
         } else if let Some(b) = &self.bound {
             (b.get_ref().centre.0, b.get_ref().radius.0)
         } else if let Some(c) = &self.c1 {
@@ -361,7 +408,7 @@ impl ObjectSpec {
     /// (what else it holds is checked when it is built).
     pub(crate) fn extent_of(value: &Spanned<toml::de::DeValue<'_>>) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 17] = [
+        const READ: [&str; 20] = [
             "type",
             "material",
             "centre",
@@ -370,6 +417,9 @@ impl ObjectSpec {
             "tube",
             "min",
             "max",
+            "p2",
+            "r1",
+            "r2",
             "points",
             "corners",
             "p1",
@@ -398,6 +448,9 @@ impl ObjectSpec {
             span("tube", self.tube.as_ref().map(Spanned::span)),
             span("min", self.min.as_ref().map(Spanned::span)),
             span("max", self.max.as_ref().map(Spanned::span)),
+            span("r1", self.r1.as_ref().map(Spanned::span)),
+            span("r2", self.r2.as_ref().map(Spanned::span)),
+            span("caps", self.caps.as_ref().map(Spanned::span)),
             span("normal", self.normal.as_ref().map(Spanned::span)),
             span("point", self.point.as_ref().map(Spanned::span)),
             span("corners", self.corners.as_ref().map(Spanned::span)),
@@ -431,6 +484,7 @@ impl ObjectSpec {
             {
                 "points"
             }
+            Invalid::Geometry(G::CoincidentPoints) if matches!(self.kind, Kind::Cylinder | Kind::Cone) => "p2",
             Invalid::Geometry(G::CoincidentPoints | G::CollinearPoints) => "corners",
             _ => return e,
         };
@@ -505,6 +559,19 @@ impl ObjectSpec {
                 let (c, n, r, tube) =
                     (place.point(c)?, place.direction(n), place.length(r), place.length(tube.get_ref().0));
                 Arc::new(TorusShape::new(c, n, r, tube)?)
+            }
+            Kind::Cylinder | Kind::Cone => {
+                let (Some(a), Some(b)) = (&self.p1, &self.p2) else { return Err(form()) };
+                let num = |x: &Option<Spanned<Num>>| x.as_ref().map(|r| r.get_ref().0);
+                let (r1, r2) = match self.kind {
+                    Kind::Cylinder => (radius.ok_or_else(form)?, radius.ok_or_else(form)?),
+                    _ => (num(&self.r1).ok_or_else(form)?, num(&self.r2).ok_or_else(form)?),
+                };
+                let ([a], [b]) = (ends("p1", a)?, ends("p2", b)?);
+                let caps = self.caps.as_ref().is_none_or(|c| *c.get_ref());
+                ConeShape::new(a, r1, b, r2, caps)?;
+                let (a, b) = (place.point(a)?, place.point(b)?);
+                Arc::new(ConeShape::new(a, place.length(r1), b, place.length(r2), caps)?)
             }
             Kind::Box => {
                 let (Some(lo), Some(hi)) = (v(&self.min), self.max.as_ref()) else { return Err(form()) };
@@ -596,7 +663,7 @@ impl ObjectSpec {
         let form = || Invalid::Form(Kind::Ruled.takes().1);
         let surface = match (&self.p1, &self.p2, &self.l1, &self.l2, &self.bound) {
             (Some(p1), Some(p2), None, None, None) => {
-                let (p1, p2): ([E3; 2], [E3; 2]) = (points("p1", p1)?, points("p2", p2)?);
+                let (p1, p2): ([E3; 2], [E3; 2]) = (ends("p1", p1)?, ends("p2", p2)?);
                 let (p1, p2) = ([place.point(p1[0])?, place.point(p1[1])?], [place.point(p2[0])?, place.point(p2[1])?]);
                 let origin = [0, 1, 2].map(|k| (p1[0][k] + p1[1][k] + p2[0][k] + p2[1][k]) / 4.0);
                 let local = |x: E3| sub(x, origin);

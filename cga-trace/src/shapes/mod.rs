@@ -10,6 +10,7 @@
 //! here (or, like [`crate::surface`], beside) and its entry in the scene format
 //! ([`crate::format`]); see ARCHITECTURE.md, "Adding a shape".
 
+mod cone;
 mod cuboid;
 mod disk;
 mod plane;
@@ -20,6 +21,7 @@ mod triangle;
 use crate::ray::{Ray, in_range};
 use cga_core::Plane;
 use cga_core::euclid::{E3, dot};
+pub use cone::ConeShape;
 use core::any::Any;
 use core::fmt::Debug;
 pub use cuboid::BoxShape;

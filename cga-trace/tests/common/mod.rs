@@ -73,7 +73,7 @@ impl Similarity {
                     self.point(about);
                 }
             }
-            for key in ["radius", "tube"] {
+            for key in ["radius", "tube", "r1", "r2"] {
                 if let Some(v) = object.get_mut(key) {
                     self.length(v);
                 }
@@ -90,9 +90,14 @@ impl Similarity {
             if let Some(Value::Array(circles)) = object.get_mut("circles") {
                 circles.iter_mut().filter_map(Value::as_table_mut).for_each(|c| self.circle(c));
             }
+            // A point pair or a list of points; a cylinder's or cone's `p1`, `p2` are one point.
             for key in ["p1", "p2", "points"] {
-                if let Some(Value::Array(points)) = object.get_mut(key) {
-                    points.iter_mut().for_each(|p| self.point(p));
+                match object.get_mut(key) {
+                    Some(Value::Array(points)) if points.first().is_some_and(Value::is_array) => {
+                        points.iter_mut().for_each(|p| self.point(p))
+                    }
+                    Some(point) => self.point(point),
+                    None => {}
                 }
             }
             for key in ["l1", "l2"] {
