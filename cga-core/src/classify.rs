@@ -11,11 +11,15 @@
 //!   direction) for `r² = 0` to rounding. Grade 1 reads as a dual sphere or plane (a
 //!   conformal point is the tangent, zero-radius case).
 //!
-//! Zero to rounding means within `64 ε` of the size of the terms that cancel.
+//! Zero to rounding means within `64 ε` of the size of the terms that cancel: for `⟨X X⟩₀`
+//! the products of coefficients it sums (so a round is tangent by the same test at any size
+//! and distance), for `Π` and the flat readings the largest coefficient.
 
 use crate::conformal::{GeometryError, Result, down, ei};
 use crate::euclid::{E3, norm, unit};
-use crate::{Bivector, Circle, FlatPoint, GeometricProduct, Line, Multivector, Plane, Real, Sphere, Vector};
+use crate::{
+    Bivector, Circle, FlatPoint, GeometricProduct, LeftContraction, Line, Multivector, Plane, Real, Sphere, Vector,
+};
 
 /// Whether a round is real, imaginary or a tangent (zero radius).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,6 +48,10 @@ pub enum Kind<T: Real> {
         centre: E3<T>,
         /// `r²`, negative for an imaginary round.
         radius_squared: T,
+        /// The carrier's unit direction, `−(ei ⌋ X)` read in Euclidean terms: for a point pair
+        /// `A ∧ B` its axis along `b − a`, for a circle `A ∧ B ∧ C` its normal
+        /// `(b − a) × (c − a)` (so a tangent's direction too); zero for a sphere and grade 1.
+        direction: E3<T>,
     },
     /// A flat point `x ∧ ei`.
     FlatPoint(E3<T>),
@@ -87,11 +95,37 @@ fn all_negligible<T: Real>(c: &[T], s: T) -> bool {
     c.iter().all(|x| negligible(*x, s))
 }
 
-/// A round's centre and radius from `X`, `⟨X X⟩₀`, `⟨Π Π⟩₀` and `σ_k`.
-fn round<T: Real>(grade: usize, centre: Vector<T>, xx: T, pp: T, sign: T, size: T) -> Result<Kind<T>> {
+/// The size of the terms that cancel in `⟨X X⟩₀`, a bound on its rounding: with `X` split
+/// by whether its blades hold `eo` (`O`), `ei` (`I`), both or neither (`N`),
+/// `⟨X X⟩₀ = ±|N|² − 2 O·I` term by term, so the terms are at most `|N|² + 2 |O| |I|`. Of
+/// one unit whatever the blade's size and place (a round of radius `r` at `c` gives about
+/// `w² (r² + |c|²)` for weight `w`), unlike the largest coefficient squared.
+fn square_terms<T: Real>(names: &[&str], c: &[T]) -> T {
+    let (mut n, mut o, mut i) = (T::zero(), T::zero(), T::zero());
+    for (name, &x) in names.iter().zip(c) {
+        match (name.contains('o'), name.contains('i')) {
+            (true, false) => o = o + x * x,
+            (false, true) => i = i + x * x,
+            _ => n = n + x * x,
+        }
+    }
+    n + T::from_f64(2.0) * (o * i).sqrt()
+}
+
+/// A round's centre and radius from `X`, `⟨X X⟩₀`, `⟨Π Π⟩₀` and `σ_k`; `terms` bounds the
+/// rounding of `⟨X X⟩₀` ([`square_terms`]).
+fn round<T: Real>(
+    grade: usize,
+    centre: Vector<T>,
+    direction: E3<T>,
+    xx: T,
+    pp: T,
+    sign: T,
+    terms: T,
+) -> Result<Kind<T>> {
     let centre = down(centre)?;
     let radius_squared = sign * xx / pp;
-    let reality = if negligible(xx, size * size) {
+    let reality = if negligible(xx, terms) {
         Reality::Tangent
     } else if radius_squared > T::zero() {
         Reality::Real
@@ -99,7 +133,7 @@ fn round<T: Real>(grade: usize, centre: Vector<T>, xx: T, pp: T, sign: T, size: 
         Reality::Imaginary
     };
     let radius_squared = if reality == Reality::Tangent { T::zero() } else { radius_squared };
-    Ok(Kind::Round { grade, reality, centre, radius_squared })
+    Ok(Kind::Round { grade, reality, centre, radius_squared, direction })
 }
 
 impl<T: Real> Vector<T> {
@@ -121,7 +155,8 @@ impl<T: Real> Vector<T> {
             });
         }
         let pi = *self ^ ei::<T>();
-        round(1, *self, self.norm_squared(), pi.gp(pi).s, T::one(), size)
+        let terms = square_terms(&Self::BLADES, &self.to_array());
+        round(1, *self, [T::zero(); 3], self.norm_squared(), pi.gp(pi).s, T::one(), terms)
     }
 }
 
@@ -153,10 +188,29 @@ fn flat_sphere<T: Real>(x: &Sphere<T>, _: T) -> Kind<T> {
     }
 }
 
+/// A point pair's unit axis: the Euclidean part of `−(ei ⌋ X)`, `b − a` for `X = A ∧ B`
+/// (`ei ⌋ (A ∧ B) = −B + A` for normalised points).
+fn pair_axis<T: Real>(x: &Bivector<T>) -> E3<T> {
+    let w = ei::<T>().lc(*x);
+    unit([-w.e1, -w.e2, -w.e3]).unwrap_or([T::zero(); 3])
+}
+
+/// A circle's unit normal: the Euclidean bivector of `−(ei ⌋ X)`, `(b − a) ∧ (c − a)` for
+/// `X = A ∧ B ∧ C`, read as the vector `(b − a) × (c − a)` it is the dual of.
+fn circle_normal<T: Real>(x: &Circle<T>) -> E3<T> {
+    let w = ei::<T>().lc(*x);
+    unit([-w.e23, w.e13, -w.e12]).unwrap_or([T::zero(); 3])
+}
+
+/// A sphere has no direction.
+fn no_direction<T: Real>(_: &Sphere<T>) -> E3<T> {
+    [T::zero(); 3]
+}
+
 /// `classify` for the blades of grade 2 … 4: zero, the flat reading when `X ∧ ei = 0`, else
 /// a round with centre `down(X ei X)` and `r² = σ_k ⟨X X⟩₀ / ⟨Π Π⟩₀`.
 macro_rules! classify_round {
-    ($($ty:ident: $grade:literal, $sign:literal, $flat:ident, $doc:literal;)*) => {$(
+    ($($ty:ident: $grade:literal, $sign:literal, $flat:ident, $direction:ident, $doc:literal;)*) => {$(
         impl<T: Real> $ty<T> {
             #[doc = $doc]
             pub fn classify(&self) -> Result<Kind<T>> {
@@ -169,16 +223,17 @@ macro_rules! classify_round {
                     return Ok($flat(self, size));
                 }
                 let centre = self.gp(ei::<T>()).gp(*self).grade1();
-                round($grade, centre, self.gp(*self).s, pi.gp(pi).s, T::from_f64($sign), size)
+                let terms = square_terms(&Self::BLADES, &self.to_array());
+                round($grade, centre, $direction(self), self.gp(*self).s, pi.gp(pi).s, T::from_f64($sign), terms)
             }
         }
     )*};
 }
 
 classify_round! {
-    Bivector: 2, 1.0, flat_pair, "A grade-2 blade: a point pair (real, imaginary or tangent), a flat point, or a direction `t ∧ ei`.";
-    Circle: 3, -1.0, flat_circle, "A grade-3 blade: a circle (real, imaginary or tangent), a line, or a direction `B ∧ ei` (`direction` the normal of the bivector `B`).";
-    Sphere: 4, 1.0, flat_sphere, "A grade-4 blade: a sphere (real, imaginary or tangent), a plane, or the direction `e123 ∧ ei`.";
+    Bivector: 2, 1.0, flat_pair, pair_axis, "A grade-2 blade: a point pair (real, imaginary or tangent), a flat point, or a direction `t ∧ ei`.";
+    Circle: 3, -1.0, flat_circle, circle_normal, "A grade-3 blade: a circle (real, imaginary or tangent), a line, or a direction `B ∧ ei` (`direction` the normal of the bivector `B`).";
+    Sphere: 4, 1.0, flat_sphere, no_direction, "A grade-4 blade: a sphere (real, imaginary or tangent), a plane, or the direction `e123 ∧ ei`.";
 }
 
 impl<T: Real> Multivector<T> {

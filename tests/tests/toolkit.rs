@@ -542,6 +542,43 @@ fn blades_are_classified_as_they_were_built() {
 }
 
 #[test]
+fn rounds_carry_their_pair_axis_and_circle_normal_anywhere_in_space() {
+    use cga_core::{Kind, Reality};
+    let mut rng = Rng::new(28);
+    for _ in 0..300 {
+        // Objects of size s at up to 100 s from the origin: coefficients grow like (|c|/s)²,
+        // and so does the rounding of the direction read from them.
+        let s = rng.decades(-3.0, 3.0);
+        let a = rng.e3(-100.0 * s, 100.0 * s);
+        let (u, w) = (rng.direction(), rng.direction());
+        if v(u).cross(v(w)).length() < 0.1 {
+            continue;
+        }
+        let (b, c) = (add(a, u.map(|x| s * x)), add(a, w.map(|x| s * x)));
+        let tol = 1e-10;
+        let pair = Bivector::from(up(a) ^ up(b));
+        match pair.classify().unwrap() {
+            Kind::Round { grade: 2, reality: Reality::Real, direction, .. } => {
+                close(direction, (v(b) - v(a)).normalize().into(), tol, "pair axis")
+            }
+            k => panic!("{k:?}"),
+        }
+        let circle = up(a) ^ up(b) ^ up(c);
+        let normal = (v(b) - v(a)).cross(v(c) - v(a)).normalize();
+        match circle.classify().unwrap() {
+            Kind::Round { grade: 3, reality: Reality::Real, direction, .. } => {
+                close(direction, normal.into(), tol, "circle normal")
+            }
+            k => panic!("{k:?}"),
+        }
+        match (-circle).classify().unwrap() {
+            Kind::Round { direction, .. } => close(direction, (-normal).into(), tol, "the opposite orientation"),
+            k => panic!("{k:?}"),
+        }
+    }
+}
+
+#[test]
 fn disjoint_spheres_are_refused_by_name_not_interpolated_through_a_plane() {
     use cga_core::{InterpolationError, Pair};
     let (a, b): (Sphere, Sphere) = (Sphere::new([0.0; 3], 1.0).unwrap(), Sphere::new([10.0, 0.0, 0.0], 2.0).unwrap());
