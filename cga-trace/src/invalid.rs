@@ -77,6 +77,22 @@ pub enum Invalid {
     /// and how far).
     #[error("{0}")]
     Range(String),
+    /// A blade name the algebra does not have.
+    #[error(
+        "`{0}` is not a blade of the algebra: name blades in the null basis (e1, e2, e3, eo, ei: e12, e1o, e23i, eoi, e123oi, …) or the orthonormal one (e1 … e5: e14, e1235, …)"
+    )]
+    Name(String),
+    /// Blade names from both bases in one blade.
+    #[error(
+        "`{0}` is in the null basis (eo, ei) and `{1}` in the orthonormal one (e4, e5): name every blade in one of them"
+    )]
+    Mixed(String, String),
+    /// A blade of another kind than the object's.
+    #[error("the blade is {1}, not a {0}: give it as `type = \"blade\"` to draw it as what it is")]
+    NotA(&'static str, &'static str),
+    /// A blade that has no picture.
+    #[error(transparent)]
+    Draw(crate::figure::DrawError),
     /// An evolved surface in a build without them.
     #[error("this build leaves out evolved surfaces (cargo feature `evolved`)")]
     NoEvolved,

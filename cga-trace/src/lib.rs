@@ -10,6 +10,7 @@ pub mod backend;
 pub mod bvh;
 pub mod camera;
 pub mod colour;
+pub mod figure;
 pub mod film;
 pub mod format;
 pub mod frame;
@@ -30,6 +31,7 @@ pub mod surface;
 
 pub use backend::{Backend, BackendKind};
 pub use cga_core;
+pub use figure::Figure;
 pub use film::Film;
 pub use frame::Frame;
 pub use integrator::{Aov, RayCounts, Renderer, Window};

@@ -102,6 +102,10 @@ struct Render {
     /// (the same image; for comparing their speed).
     #[arg(long)]
     no_packets: bool,
+    /// Leave out the objects' labels (a scene's `label` fields), which are written into
+    /// shaded pictures of the whole image.
+    #[arg(long)]
+    no_labels: bool,
 }
 
 /// `x0,x1,y0,y1`: four numbers.
@@ -274,6 +278,11 @@ fn render_command(args: Render) -> anyhow::Result<()> {
                 if scale_file.is_some() { beside.display().to_string() } else { "stderr".into() }
             );
             coloured
+        }
+        None if args.aov == Aov::Shaded && args.crop.is_none() && !args.no_labels => {
+            let mut film = film;
+            cga_trace::figure::draw_labels(&mut film, &scene.camera, &scene.labels);
+            film
         }
         None => film,
     };

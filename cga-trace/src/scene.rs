@@ -4,6 +4,7 @@
 //! geometry, the table or object and a typed reason.
 
 use crate::camera::{Camera, CameraError};
+use crate::figure::{Label, Marks};
 use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
@@ -31,6 +32,8 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Settings.
     pub settings: Settings,
+    /// Labels to write beside their objects in a colour picture ([`crate::figure::draw_labels`]).
+    pub labels: Vec<Label>,
     /// Whether the file gives both image-plane extents (`x_max` or `fov`, and `y_max`): then
     /// [`Scene::resize`] keeps them, and pixels need not be square.
     pub pinned: bool,
@@ -173,6 +176,7 @@ impl Scene {
             });
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
+        let marks = Marks::for_scene(&sizes, position, pixel);
         let frame = Frame::around(position, sizes, pixel)
             .map_err(|span| invalid(&|_| 0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
         let mut lights = Vec::with_capacity(spec.lights.len());
@@ -184,6 +188,7 @@ impl Scene {
         // Object `k` as parsed, and where its spans count from.
         let mut inline = inline.into_iter();
         let mut built = Vec::with_capacity(count);
+        let mut labels = Vec::new();
         for k in 0..count {
             let start = sections.objects.get(k).map(|r| r.start);
             let map = |offset: usize| start.map_or_else(|| rest(offset), |s| s + offset);
@@ -194,11 +199,17 @@ impl Scene {
             let span = value.span();
             let spec =
                 ObjectSpec::deserialize(value.into_deserializer()).map_err(|e| syntax_error(text, file, &e, &map))?;
-            let (object, name) = build_object(spec, k, settings.surface_method, &frame);
+            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks);
             let what = format!("object `{name}`");
-            built.push(object.map_err(|reason| invalid(&map, span, what, reason))?);
+            let (objects, label) = object.map_err(|reason| invalid(&map, span.clone(), what.clone(), reason))?;
+            // A drawing is several shapes: all count against the limit.
+            if let Some(e) = limit("shapes", built.len() + objects.len(), MAX_OBJECTS) {
+                return Err(invalid(&map, span, what, e));
+            }
+            built.extend(objects);
+            labels.extend(label);
         }
-        Ok(Scene { frame, camera, objects: built, lights, settings, pinned })
+        Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned })
     }
 }
 

@@ -556,7 +556,7 @@ fn rounds_carry_their_pair_axis_and_circle_normal_anywhere_in_space() {
         }
         let (b, c) = (add(a, u.map(|x| s * x)), add(a, w.map(|x| s * x)));
         let tol = 1e-10;
-        let pair = Bivector::from(up(a) ^ up(b));
+        let pair = up(a) ^ up(b);
         match pair.classify().unwrap() {
             Kind::Round { grade: 2, reality: Reality::Real, direction, .. } => {
                 close(direction, (v(b) - v(a)).normalize().into(), tol, "pair axis")

@@ -7,6 +7,7 @@
 //! takes, and `build_object` builds it from them in the scene's [`Frame`], moved by its
 //! `motor` or `transform` (`transform.rs`).
 
+mod drawn;
 mod numbers;
 pub(crate) mod sections;
 mod specs;
@@ -15,6 +16,7 @@ mod transform;
 pub(crate) use specs::{MaterialSpec, SettingsSpec};
 
 use crate::camera::{Camera, CameraError};
+use crate::figure::{Label, MAX_LABEL_CHARS, Marks, Parts};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
 use crate::light::{Light, Source};
@@ -32,12 +34,14 @@ use cga_core::euclid::{norm, sub};
 #[cfg(feature = "evolved")]
 use cga_core::{Circle, Real};
 use cga_core::{GeometryError, Motor, Plane, circumcircle, circumsphere};
+use drawn::BladeSpec;
 use numbers::{Num, Nums, V3};
 use serde::Deserialize;
 use std::ops::Range;
 use std::sync::Arc;
 use toml::Spanned;
-use transform::{Placement, Step, rigid, world_motor};
+pub(crate) use transform::Placement;
+use transform::{Step, rigid, world_motor};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -170,7 +174,7 @@ impl CameraSpec {
 
 /// What an object is.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
-#[serde(rename_all = "lowercase")]
+#[serde(rename_all = "kebab-case")]
 pub(crate) enum Kind {
     Sphere,
     Plane,
@@ -183,6 +187,12 @@ pub(crate) enum Kind {
     Evolved,
     Spline,
     Ruled,
+    Point,
+    PointPair,
+    Line,
+    Circle,
+    PlanePatch,
+    Blade,
 }
 
 /// `p1`, `p2`: one point (a cylinder's or cone's end) or two (a ruled surface's point pair).
@@ -286,6 +296,27 @@ impl Kind {
                 &["circles", "joining", "tension", "bias", "continuity"],
                 "a spline surface takes `circles`, `joining`, and for joining = \"kochanek-bartels\" `tension`, `bias`, `continuity`",
             ),
+            Kind::Point => (&["point", "size"], "a point takes `point` and optionally `size` (its ball's radius)"),
+            Kind::PointPair => (
+                &["points", "size", "segment", "tube"],
+                "a point pair takes `points` (two), optionally `size`, and `segment = true` (with its `tube`) to draw the segment",
+            ),
+            Kind::Line => (
+                &["point", "direction", "tube"],
+                "a line takes `point` and `direction`, and optionally `tube` (its cylinder's radius)",
+            ),
+            Kind::Circle => (
+                &["centre", "normal", "radius", "points", "blade", "tube"],
+                "a circle takes `centre`, `normal` and `radius`, or `points` (three), or `blade`; optionally `tube`",
+            ),
+            Kind::PlanePatch => (
+                &["point", "normal", "points", "size"],
+                "a plane patch takes `point` and `normal`, or `points` (three), and optionally `size` (its radius)",
+            ),
+            Kind::Blade => (
+                &["blade", "size", "tube", "segment"],
+                "a blade takes `blade`, its coefficients by blade name ({ e1 = 1.0, eo = 1.0, … }), and optionally `size`, `tube`, `segment`",
+            ),
         }
     }
 }
@@ -298,10 +329,15 @@ pub(crate) struct ObjectSpec {
     #[serde(rename = "type")]
     kind: Kind,
     name: Option<String>,
+    label: Option<Spanned<String>>,
     material: MaterialSpec,
     centre: Option<Spanned<V3>>,
     radius: Option<Spanned<Num>>,
     tube: Option<Spanned<Num>>,
+    size: Option<Spanned<Num>>,
+    direction: Option<Spanned<V3>>,
+    segment: Option<Spanned<bool>>,
+    blade: Option<Spanned<BladeSpec>>,
     min: Option<Spanned<V3>>,
     max: Option<Spanned<V3>>,
     normal: Option<Spanned<V3>>,
@@ -370,13 +406,16 @@ impl ObjectSpec {
         let tube = self.tube.as_ref().map_or(0.0, |r| r.get_ref().0);
         let radius = self.radius.as_ref().map_or(0.0, |r| r.get_ref().0) + tube;
         let circle = |c: &CircleSpec| c.centre.map(|x| (x.0, c.radius.map_or(0.0, |r| r.0)));
-        let (point, extent) = if self.kind == Kind::Plane {
+        let size = self.size.as_ref().map_or(0.0, |s| s.get_ref().0);
+        let (point, extent) = if let Some(drawn) = self.drawn_extent() {
+            drawn?
+        } else if self.kind == Kind::Plane {
             let p =
                 self.point.as_ref().map(|p| p.get_ref().0).or_else(|| Some(self.points.as_ref()?.get_ref().first()?.0));
             let (p, n) = (p?, self.normal.as_ref().and_then(|n| cga_core::euclid::unit(n.get_ref().0)));
             (n.map_or(p, |n| foot(p, n)), f64::INFINITY)
         } else if let Some(c) = self.centre.as_ref().or(self.point.as_ref()) {
-            (c.get_ref().0, radius)
+            (c.get_ref().0, radius + size)
         } else if let (Some(lo), Some(hi)) = (&self.min, &self.max) {
             let (lo, hi) = (lo.get_ref().0, hi.get_ref().0);
             ([0, 1, 2].map(|k| 0.5 * (lo[k] + hi[k])), 0.5 * norm(sub(hi, lo)))
@@ -408,8 +447,10 @@ impl ObjectSpec {
     /// (what else it holds is checked when it is built).
     pub(crate) fn extent_of(value: &Spanned<toml::de::DeValue<'_>>) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 20] = [
+        const READ: [&str; 22] = [
             "type",
+            "size",
+            "blade",
             "material",
             "centre",
             "point",
@@ -446,6 +487,10 @@ impl ObjectSpec {
             span("centre", self.centre.as_ref().map(Spanned::span)),
             span("radius", self.radius.as_ref().map(Spanned::span)),
             span("tube", self.tube.as_ref().map(Spanned::span)),
+            span("size", self.size.as_ref().map(Spanned::span)),
+            span("direction", self.direction.as_ref().map(Spanned::span)),
+            span("segment", self.segment.as_ref().map(Spanned::span)),
+            span("blade", self.blade.as_ref().map(Spanned::span)),
             span("min", self.min.as_ref().map(Spanned::span)),
             span("max", self.max.as_ref().map(Spanned::span)),
             span("r1", self.r1.as_ref().map(Spanned::span)),
@@ -494,14 +539,15 @@ impl ObjectSpec {
         }
     }
 
-    /// The shape, in `frame`, with errors placed at their field ([`ObjectSpec::locate`]).
-    fn shape(self, method: Method, frame: &Frame) -> Result<Arc<dyn Shape>, Invalid> {
-        self.build(method, frame).map_err(|e| self.locate(e))
+    /// The shapes, in `frame` (one but for drawings), with errors placed at their field
+    /// ([`ObjectSpec::locate`]).
+    fn shapes(&self, method: Method, frame: &Frame, marks: &Marks) -> Result<Parts, Invalid> {
+        self.build(method, frame, marks).map_err(|e| self.locate(e))
     }
 
     /// The shape, in `frame`: fields checked against the kind, its Euclidean data (made from
     /// points, if given so, in world coordinates) moved by its motor into the frame, built.
-    fn build(&self, method: Method, frame: &Frame) -> Result<Arc<dyn Shape>, Invalid> {
+    fn build(&self, method: Method, frame: &Frame, marks: &Marks) -> Result<Parts, Invalid> {
         let (takes, says) = self.kind.takes();
         if let Some((field, span)) = self.given().into_iter().find(|(f, _)| !takes.contains(f)) {
             return Err(Invalid::at(field, span, Invalid::Form(says)));
@@ -511,7 +557,7 @@ impl ObjectSpec {
         let (centre, normal, point) = (v(&self.centre), v(&self.normal), v(&self.point));
         let radius = self.radius.as_ref().map(|r| r.get_ref().0);
         let form = || Invalid::Form(says);
-        Ok(match self.kind {
+        let shape: Arc<dyn Shape> = match self.kind {
             Kind::Sphere => {
                 let (c, r) = match (centre, radius, &self.points) {
                     (Some(c), Some(r), None) => (c, r),
@@ -608,7 +654,12 @@ impl ObjectSpec {
                 let _ = method;
                 return Err(Invalid::NoEvolved);
             }
-        })
+            Kind::Point | Kind::PointPair | Kind::Line | Kind::Circle | Kind::PlanePatch | Kind::Blade => {
+                let drawing = self.drawing(&marks.sizes)?;
+                return drawing.shapes(&place, frame.point(marks.sizes.centre), place.length(marks.view(&drawing)));
+            }
+        };
+        Ok((vec![shape], None))
     }
 }
 
@@ -691,18 +742,57 @@ impl ObjectSpec {
     }
 }
 
-/// The object, built in `frame`, and its name (for errors, control characters escaped).
+/// An object's parts and its label.
+pub(crate) type Built = (Vec<Object>, Option<Label>);
+
+/// The object, built in `frame` (a drawing's parts as objects of one name), its label if it
+/// has one, and its name (for errors, control characters escaped).
 pub(crate) fn build_object(
     spec: ObjectSpec,
     index: usize,
     method: Method,
     frame: &Frame,
-) -> (Result<Object, Invalid>, String) {
+    marks: &Marks,
+) -> (Result<Built, Invalid>, String) {
     let name = spec.name.clone().unwrap_or_else(|| format!("object {}", index + 1));
     let shown = name.escape_debug().to_string();
     let material = Material::from(spec.material);
-    let shape = material.check().and_then(|()| spec.shape(method, frame));
-    (shape.map(|shape| Object { name, shape, material }), shown)
+    let built = material.check().and_then(|()| spec.shapes(method, frame, marks)).and_then(|(shapes, anchor)| {
+        let label = spec.label(&shapes, anchor, material.colour)?;
+        let objects = shapes.into_iter().map(|shape| Object { name: name.clone(), shape, material }).collect();
+        Ok((objects, label))
+    });
+    (built, shown)
+}
+
+impl ObjectSpec {
+    /// The object's label, beside `anchor` if given, else the sphere holding its `shapes`;
+    /// refused for an unbounded object (a plane: label a `plane-patch`) or past
+    /// [`MAX_LABEL_CHARS`].
+    fn label(
+        &self,
+        shapes: &[Arc<dyn Shape>],
+        anchor: Option<(E3, f64)>,
+        colour: [f64; 3],
+    ) -> Result<Option<Label>, Invalid> {
+        let Some(text) = &self.label else { return Ok(None) };
+        let at = |reason| Invalid::at("label", text.span(), reason);
+        let chars = text.get_ref().chars().count();
+        if chars > MAX_LABEL_CHARS {
+            return Err(at(Invalid::Limit { what: "characters", found: chars as u64, limit: MAX_LABEL_CHARS as u64 }));
+        }
+        if let Some((at, reach)) = anchor {
+            return Ok(Some(Label { text: text.get_ref().clone(), at, reach, colour }));
+        }
+        let bounds: Option<Vec<(E3, f64)>> = shapes.iter().map(|s| s.bounds()).collect();
+        let Some(bounds) = bounds else {
+            return Err(at(Invalid::Value("an unbounded object has nowhere to put a label: label a `plane-patch`")));
+        };
+        let n = bounds.len() as f64;
+        let centre = [0, 1, 2].map(|k| bounds.iter().map(|b| b.0[k]).sum::<f64>() / n);
+        let reach = bounds.iter().map(|(c, r)| norm(sub(*c, centre)) + r).fold(0.0, f64::max);
+        Ok(Some(Label { text: text.get_ref().clone(), at: centre, reach, colour }))
+    }
 }
 
 /// An evolved surface, its circles built in the frame of [`EvolvedSurface::frame_origin`]

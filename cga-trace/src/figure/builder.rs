@@ -1,0 +1,333 @@
+//! [`Figure`]: CGA objects handed over from Rust, each with a colour and an optional label,
+//! drawn as what they are, e.g.
+//! `Figure::new().add(&circle, "red").add(&line, "blue").render("fig.png")`.
+//!
+//! A figure is a scene file: [`Figure::scene`] writes one (each object a `type = "blade"`
+//! table of its coefficients, printed so that they read back to the bit), and rendering reads
+//! that file like any other, so a saved figure renders the same picture from the command
+//! line. The camera frames every bounded object unless given.
+
+use super::{DrawError, Drawing, Marks, Sizes, draw_labels};
+use crate::film::{Output, OutputError};
+use crate::output::{OutputFile, OutputFileError};
+use crate::scene::{Scene, SceneError};
+use crate::{Aov, Film, Renderer};
+use cga_core::euclid::{E3, add, norm, scale, unit};
+use cga_core::{GeometryError, Multivector};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Objects in a figure.
+pub const MAX_FIGURE_OBJECTS: usize = 4096;
+
+/// Why a figure cannot be drawn or written.
+#[derive(Debug, thiserror::Error)]
+pub enum FigureError {
+    /// A colour that is neither a name this module knows nor `#rrggbb`.
+    #[error("object {index}: unknown colour `{colour}` (a name such as \"red\", or \"#rrggbb\")")]
+    Colour {
+        /// 1-based position of the object.
+        index: usize,
+        /// As given.
+        colour: String,
+    },
+    /// An object that is not a blade, or one with no picture.
+    #[error("object {index}: {reason}")]
+    Blade {
+        /// 1-based position of the object.
+        index: usize,
+        /// Why.
+        reason: BladeError,
+    },
+    /// More objects than [`MAX_FIGURE_OBJECTS`].
+    #[error("{0} objects exceed the figure's limit of {MAX_FIGURE_OBJECTS}")]
+    TooMany(usize),
+    /// The scene the figure makes is refused (a size out of range).
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// The output file.
+    #[error(transparent)]
+    File(#[from] OutputFileError),
+    /// Encoding the picture.
+    #[error(transparent)]
+    Image(#[from] OutputError),
+    /// Writing.
+    #[error("writing {path}: {source}")]
+    Io {
+        /// The file.
+        path: String,
+        /// Why.
+        source: std::io::Error,
+    },
+}
+
+/// Why one object has no picture.
+#[derive(Debug, thiserror::Error)]
+pub enum BladeError {
+    /// Not a blade (mixed grades, or not factorable).
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
+    /// A blade with nothing to draw.
+    #[error(transparent)]
+    Draw(#[from] DrawError),
+}
+
+/// One object of a figure.
+#[derive(Clone, Debug)]
+struct Item {
+    blade: Multivector<f64>,
+    colour: String,
+    label: Option<String>,
+    segment: bool,
+    size: Option<f64>,
+    tube: Option<f64>,
+}
+
+/// A picture of CGA objects, built by chaining [`Figure::add`] and friends.
+#[derive(Clone, Debug)]
+pub struct Figure {
+    items: Vec<Item>,
+    camera: Option<(E3, E3)>,
+    width: u32,
+    height: u32,
+    background: [f64; 3],
+}
+
+impl Default for Figure {
+    fn default() -> Self {
+        Figure::new()
+    }
+}
+
+impl Figure {
+    /// An empty figure: 800 × 600 pixels, a dark background, the camera framing the objects.
+    pub fn new() -> Figure {
+        Figure { items: Vec::new(), camera: None, width: 800, height: 600, background: [0.02, 0.025, 0.035] }
+    }
+
+    /// Add any cga-core object (a point, point pair, line, circle, plane, sphere, flat point,
+    /// tangent or direction, or a dense blade) in `colour`: a name (`"red"`, `"sky"`, …, see
+    /// [`colour`]) or `"#rrggbb"` (sRGB).
+    pub fn add(mut self, object: &(impl Copy + Into<Multivector<f64>>), colour: &str) -> Figure {
+        let blade = (*object).into();
+        self.items.push(Item {
+            blade,
+            colour: colour.to_string(),
+            label: None,
+            segment: false,
+            size: None,
+            tube: None,
+        });
+        self
+    }
+
+    /// Label the object added last (written beside it in the picture).
+    pub fn label(mut self, text: &str) -> Figure {
+        if let Some(item) = self.items.last_mut() {
+            item.label = Some(text.to_string());
+        }
+        self
+    }
+
+    /// Draw the segment between the points of the point pair added last.
+    pub fn segment(mut self) -> Figure {
+        if let Some(item) = self.items.last_mut() {
+            item.segment = true;
+        }
+        self
+    }
+
+    /// The size of the last object's marks (world units): a point's ball radius, a plane
+    /// patch's radius; by default a small fraction of the figure's extent (the patch, half).
+    pub fn size(mut self, size: f64) -> Figure {
+        if let Some(item) = self.items.last_mut() {
+            item.size = Some(size);
+        }
+        self
+    }
+
+    /// The radius of the last object's tube (a line's, a circle's, a segment's).
+    pub fn tube(mut self, tube: f64) -> Figure {
+        if let Some(item) = self.items.last_mut() {
+            item.tube = Some(tube);
+        }
+        self
+    }
+
+    /// Look from `position` at `look_at` (z up) instead of framing the objects.
+    pub fn camera(mut self, position: E3, look_at: E3) -> Figure {
+        self.camera = Some((position, look_at));
+        self
+    }
+
+    /// The picture's size in pixels.
+    pub fn resolution(mut self, width: u32, height: u32) -> Figure {
+        (self.width, self.height) = (width, height);
+        self
+    }
+
+    /// What each object is drawn as, with default marks: checked, located errors.
+    fn drawings(&self) -> Result<Vec<Drawing>, FigureError> {
+        if self.items.len() > MAX_FIGURE_OBJECTS {
+            return Err(FigureError::TooMany(self.items.len()));
+        }
+        let marks = Sizes::ZERO;
+        let mut drawings = Vec::with_capacity(self.items.len());
+        for (k, item) in self.items.iter().enumerate() {
+            let blade = |reason: BladeError| FigureError::Blade { index: k + 1, reason };
+            colour(&item.colour).ok_or_else(|| FigureError::Colour { index: k + 1, colour: item.colour.clone() })?;
+            let kind = item.blade.classify().map_err(|e| blade(e.into()))?;
+            drawings.push(Drawing::of(kind, &marks, item.segment).map_err(|e| blade(e.into()))?);
+        }
+        Ok(drawings)
+    }
+
+    /// The figure as a scene file (TOML): the camera (given, or framing the bounded objects
+    /// from above and in front, at a 40° field of view), two lights, and each object as a
+    /// `type = "blade"` table.
+    pub fn scene(&self) -> Result<String, FigureError> {
+        let drawings = self.drawings()?;
+        let extents: Vec<(E3, f64)> = drawings
+            .iter()
+            .zip(&self.items)
+            .filter(|(_, item)| !matches!(item.blade.classify(), Ok(cga_core::Kind::Direction { .. })))
+            .map(|(d, _)| d.extent())
+            .collect();
+        let fov: f64 = 40.0;
+        let (position, look_at) = self.camera.unwrap_or_else(|| {
+            let marks = Marks::for_scene(&extents, [0.0; 3], 1.0);
+            let (centre, radius) = (marks.sizes.centre, marks.sizes.radius);
+            // Far enough that the bounding sphere fits the narrower side's field of view.
+            let aspect = f64::from(self.height.min(self.width)) / f64::from(self.width.max(1));
+            let half = (fov.to_radians() / 2.0).tan() * aspect;
+            let distance = 1.15 * radius * (1.0 + half * half).sqrt() / half;
+            let from = unit([0.45, -1.0, 0.6]).unwrap_or([0.0, -1.0, 0.0]);
+            (add(centre, scale(from, distance)), centre)
+        });
+        let view = unit(cga_core::euclid::sub(look_at, position)).unwrap_or([0.0, 1.0, 0.0]);
+        let up =
+            if norm(cga_core::euclid::cross(view, [0.0, 0.0, 1.0])) < 1e-6 { [0.0, 1.0, 0.0] } else { [0.0, 0.0, 1.0] };
+        let v = |x: E3| format!("[{:?}, {:?}, {:?}]", x[0], x[1], x[2]);
+        let mut out = String::from("# A figure of CGA objects (cga_trace::figure::Figure).\n\n");
+        let _ = write!(
+            out,
+            "[camera]\nposition = {}\nlook_at = {}\nup = {}\nfov = {fov:?}\nwidth = {}\nheight = {}\n\n\
+             [render]\nbackground = {}\nambient = 0.3\nshadows = false\n\n\
+             [[lights]]\ndirection = {}\ncolour = [0.85, 0.85, 0.85]\n\n\
+             [[lights]]\ndirection = {}\ncolour = [0.25, 0.25, 0.3]\n",
+            v(position),
+            v(look_at),
+            v(up),
+            self.width,
+            self.height,
+            v(self.background),
+            v([-0.3, 0.5, -1.0]),
+            v([0.6, 0.2, 0.3]),
+        );
+        let names = super::null_basis_names();
+        for item in &self.items {
+            let rgb = colour(&item.colour).unwrap_or([1.0; 3]);
+            let _ = write!(out, "\n[[objects]]\ntype = \"blade\"\n");
+            if let Some(label) = &item.label {
+                let _ = writeln!(out, "label = {}", toml_string(label));
+            }
+            if item.segment {
+                out += "segment = true\n";
+            }
+            if let Some(size) = item.size {
+                let _ = writeln!(out, "size = {size:?}");
+            }
+            if let Some(tube) = item.tube {
+                let _ = writeln!(out, "tube = {tube:?}");
+            }
+            let terms: Vec<String> = item
+                .blade
+                .to_storage()
+                .iter()
+                .zip(names)
+                .filter(|(c, _)| **c != 0.0)
+                .map(|(c, name)| format!("{name} = {c:?}"))
+                .collect();
+            let _ = writeln!(out, "blade = {{ {} }}", terms.join(", "));
+            let _ = writeln!(out, "material = {{ colour = {}, ks = 0.4, q = 40.0 }}", v(rgb));
+        }
+        Ok(out)
+    }
+
+    /// The picture, labels written in.
+    pub fn film(&self) -> Result<Film, FigureError> {
+        let scene = Scene::parse(&self.scene()?, "figure")?;
+        let mut film = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+        draw_labels(&mut film, &scene.camera, &scene.labels);
+        Ok(film)
+    }
+
+    /// Render to `path`: PNG, EXR or HDR by its extension, written to a temporary file and
+    /// renamed on success.
+    pub fn render(&self, path: impl AsRef<Path>) -> Result<(), FigureError> {
+        let path = path.as_ref();
+        let output = Output::for_path(path, None)?;
+        let mut file = OutputFile::create(path, &[])?;
+        let film = self.film()?;
+        film.write(&mut file, output, crate::Encoding::Srgb)?;
+        Ok(file.commit()?)
+    }
+
+    /// Write the figure as a scene file to `path` (temporary file, renamed on success).
+    pub fn write_scene(&self, path: impl AsRef<Path>) -> Result<(), FigureError> {
+        use std::io::Write;
+        let path = path.as_ref();
+        let mut file = OutputFile::create(path, &[])?;
+        let text = self.scene()?;
+        file.write_all(text.as_bytes())
+            .map_err(|source| FigureError::Io { path: path.display().to_string(), source })?;
+        Ok(file.commit()?)
+    }
+}
+
+/// A TOML basic string.
+fn toml_string(s: &str) -> String {
+    let mut out = String::from("\"");
+    for c in s.chars() {
+        match c {
+            '"' => out += "\\\"",
+            '\\' => out += "\\\\",
+            c if c.is_control() => {
+                let _ = write!(out, "\\u{:04x}", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out + "\""
+}
+
+/// The linear RGB of a colour: a name (`red`, `green`, `blue`, `yellow`, `orange`,
+/// `purple`, `pink`, `cyan`, `magenta`, `sky`, `brown`, `white`, `grey`/`gray`, `black`) or
+/// `#rrggbb`, both sRGB as written.
+pub fn colour(name: &str) -> Option<[f64; 3]> {
+    let srgb: [u8; 3] = match name.to_ascii_lowercase().as_str() {
+        "red" => [230, 60, 50],
+        "green" => [70, 190, 80],
+        "blue" => [60, 110, 235],
+        "yellow" => [245, 210, 60],
+        "orange" => [245, 140, 40],
+        "purple" => [150, 90, 210],
+        "pink" => [245, 130, 190],
+        "cyan" => [60, 210, 220],
+        "magenta" => [220, 60, 200],
+        "sky" => [120, 180, 245],
+        "brown" => [150, 100, 60],
+        "white" => [240, 240, 240],
+        "grey" | "gray" => [150, 150, 150],
+        "black" => [20, 20, 20],
+        hex => {
+            let hex = hex.strip_prefix('#').filter(|h| h.len() == 6 && h.is_ascii())?;
+            let byte = |k: usize| u8::from_str_radix(&hex[2 * k..2 * k + 2], 16).ok();
+            [byte(0)?, byte(1)?, byte(2)?]
+        }
+    };
+    Some(srgb.map(|c| {
+        let c = f64::from(c) / 255.0;
+        if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    }))
+}
