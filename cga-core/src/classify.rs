@@ -238,26 +238,78 @@ classify_round! {
 
 impl<T: Real> Multivector<T> {
     /// The kind of a dense blade: `NotABlade` unless it is of one grade from 1 to 4 with
-    /// `X X̃` a scalar (to rounding), then as the typed `classify` of that grade.
+    /// `X X̃` a scalar (to rounding), then as the typed `classify` of that grade. The dense
+    /// type keeps the orthonormal basis, whose `e4`, `e5` coefficients mix the `eo` and `ei`
+    /// ones: far from the origin (`|c|²`-sized beside `r`-sized) the small ones are lost in
+    /// it; [`classify_storage`] reads a blade from null-basis coefficients as given.
     pub fn classify(&self) -> Result<Kind<T>> {
-        let c = self.to_storage();
-        let size = largest(&c);
-        if size == T::zero() {
+        if largest(&self.coeffs) == T::zero() {
             return Ok(Kind::Zero);
         }
-        let grades: Vec<usize> = (0..=5).filter(|&k| !all_negligible(&self.grade(k).to_storage(), size)).collect();
-        let [k] = grades[..] else { return Err(GeometryError::NotABlade) };
-        let square = *self * self.reverse();
-        let rest = square.to_storage();
-        if !all_negligible(&rest[1..], size * size) {
-            return Err(GeometryError::NotABlade);
-        }
+        let k = blade_grade(&self.to_storage())?;
         match k {
             1 => Vector::from_dense(self).classify(),
             2 => Bivector::from_dense(self).classify(),
             3 => Circle::from_dense(self).classify(),
-            4 => Sphere::from_dense(self).classify(),
-            _ => Err(GeometryError::NotABlade),
+            _ => Sphere::from_dense(self).classify(),
         }
+    }
+}
+
+/// The grade (1 … 4) of a blade given by its null-basis coefficients: `NotABlade` unless
+/// they are of one grade (to rounding) with `X X̃` a scalar.
+fn blade_grade<T: Real>(c: &[T; 32]) -> Result<usize> {
+    let size = largest(c);
+    let present = |index: &[usize]| index.iter().any(|&k| !negligible(c[k], size));
+    let grades = [
+        present(&[0]),
+        present(&Vector::<T>::STORAGE_INDEX),
+        present(&Bivector::<T>::STORAGE_INDEX),
+        present(&Circle::<T>::STORAGE_INDEX),
+        present(&Sphere::<T>::STORAGE_INDEX),
+        present(&crate::Pseudoscalar::<T>::STORAGE_INDEX),
+    ];
+    let mut given = (0..=5).filter(|&k| grades[k]);
+    let (Some(k @ 1..=4), None) = (given.next(), given.next()) else { return Err(GeometryError::NotABlade) };
+    // A blade squares to a scalar; the dense square is exact enough for this test (its
+    // rounding is relative to the largest coefficient, as the test is).
+    let x = Multivector::from_storage(c);
+    let square = (x * x.reverse()).to_storage();
+    if !all_negligible(&square[1..], size * size) {
+        return Err(GeometryError::NotABlade);
+    }
+    Ok(k)
+}
+
+/// The kind of a blade given by its null-basis coefficients (`to_storage` order), read as
+/// given by the typed `classify` of its grade (see [`Multivector::classify`] for the
+/// conditions). Coefficients given in the null basis carry a flat's zero `eo` parts exactly
+/// (no flat gains them in a product with flats or motors), so a blade with nonzero `eo`
+/// parts that the typed test reads as a flat (its `eo` parts within rounding of the rest:
+/// the test is relative to the largest coefficient, so a round some 1e7 of its units from
+/// the origin) is refused as [`GeometryError::Indistinct`] rather than drawn as a flat.
+pub fn classify_storage<T: Real>(c: &[T; 32]) -> Result<Kind<T>> {
+    if largest(c) == T::zero() {
+        return Ok(Kind::Zero);
+    }
+    let k = blade_grade(c)?;
+    let (names, index): (&[&str], &[usize]) = match k {
+        1 => (&Vector::<T>::BLADES, &Vector::<T>::STORAGE_INDEX),
+        2 => (&Bivector::<T>::BLADES, &Bivector::<T>::STORAGE_INDEX),
+        3 => (&Circle::<T>::BLADES, &Circle::<T>::STORAGE_INDEX),
+        _ => (&Sphere::<T>::BLADES, &Sphere::<T>::STORAGE_INDEX),
+    };
+    let round = names.iter().zip(index).any(|(n, &i)| n.contains('o') && !n.contains('i') && c[i] != T::zero());
+    let kind = match k {
+        1 => Vector::from_storage(c).classify(),
+        2 => Bivector::from_storage(c).classify(),
+        3 => Circle::from_storage(c).classify(),
+        _ => Sphere::from_storage(c).classify(),
+    }?;
+    match kind {
+        Kind::FlatPoint(_) | Kind::Line { .. } | Kind::Plane { .. } | Kind::Direction { .. } if round => {
+            Err(GeometryError::Indistinct)
+        }
+        kind => Ok(kind),
     }
 }

@@ -42,6 +42,13 @@ pub enum GeometryError {
     /// Mixed grades, or `X X̃` not a scalar: not the blade of any object.
     #[error("the multivector is not a blade (mixed grades, or X X̃ is not a scalar)")]
     NotABlade,
+    /// A blade whose `eo` coefficients are nonzero but within rounding of its others: a
+    /// round too large, or too far from the origin for its size, for f64 to tell it from a
+    /// flat (about `1/√(64 ε)` ≈ 8e6 of its units away).
+    #[error(
+        "the blade's eo coefficients are within rounding of its others: f64 cannot tell this round from a flat (a round about 1e7 of its units or more from the origin, or as large): build it nearer the origin"
+    )]
+    Indistinct,
     /// An input is infinite or NaN.
     #[error("an input is not finite")]
     NonFinite,

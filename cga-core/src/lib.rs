@@ -121,7 +121,7 @@ pub mod spline;
 pub mod versor;
 
 pub use algebra::*;
-pub use classify::{Kind, Reality};
+pub use classify::{Kind, Reality, classify_storage};
 pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_lanes, down_unit, ei, up};
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;

@@ -462,6 +462,66 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             ),
             vec!["bell\\u{7}\\u{1b}[31m"],
         ),
+        (
+            "a blade name the algebra lacks",
+            with_object("type = \"blade\"\nblade = { e1 = 1.0, e9 = 1.0 }\n"),
+            vec!["bad.toml:10:", "`thing`", "`blade`", "`e9` is not a blade"],
+        ),
+        (
+            "a blade named in both bases",
+            with_object("type = \"blade\"\nblade = { e4 = 1.0, eo = 1.0 }\n"),
+            vec!["bad.toml:10:", "`eo` is in the null basis", "`e4` in the orthonormal one"],
+        ),
+        (
+            "an imaginary point pair",
+            with_object("type = \"blade\"\nblade = { e1o = 1.0, e1i = -0.5 }\n"),
+            vec!["bad.toml:10:", "imaginary point pair (r² = -1.000e0)"],
+        ),
+        (
+            "a zero blade",
+            with_object("type = \"blade\"\nblade = { e1 = 0.0 }\n"),
+            vec!["bad.toml:10:", "the blade is zero"],
+        ),
+        (
+            "the point at infinity",
+            with_object("type = \"blade\"\nblade = { ei = 2.0 }\n"),
+            vec!["bad.toml:10:", "grade-1 blade at infinity"],
+        ),
+        (
+            "not a blade",
+            with_object("type = \"blade\"\nblade = { e1 = 1.0, e23 = 1.0 }\n"),
+            vec!["bad.toml:10:", "not a blade"],
+        ),
+        (
+            "a line given as a circle",
+            with_object("type = \"circle\"\nblade = { e12i = 1.0, e1oi = 1.0 }\n"),
+            vec!["bad.toml:10:", "the blade is a line, not a circle"],
+        ),
+        (
+            "a line without a direction",
+            with_object("type = \"line\"\npoint = [0.0, 0.0, 0.0]\ndirection = [0.0, 0.0, 0.0]\n"),
+            vec!["bad.toml:11:", "`direction`"],
+        ),
+        (
+            "a point pair of one point",
+            with_object("type = \"point-pair\"\npoints = [[1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]\n"),
+            vec!["bad.toml:10:", "`points`"],
+        ),
+        (
+            "a negative mark size",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nsize = -1.0\n"),
+            vec!["bad.toml:11:", "`size`: a size must be positive"],
+        ),
+        (
+            "a label on a plane",
+            with_object("type = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nlabel = \"P\"\n"),
+            vec!["bad.toml:12:", "`label`", "plane-patch"],
+        ),
+        (
+            "a label too long",
+            with_object(&format!("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nlabel = \"{}\"\n", "x".repeat(65))),
+            vec!["bad.toml:11:", "`label`: 65 characters exceed the limit of 64"],
+        ),
     ]
 }
 

@@ -1,6 +1,8 @@
 //! Flat silhouettes against POV-Ray 3.7: each Euclidean object kind, a few of each in varied
 //! poses, rendered by us and by POV-Ray in the same camera at 640×480; the pixels each covers
-//! agree on at least 99.5 % (only pixels the edges cross may differ). Needs `povray`:
+//! agree on at least 99.5 % (only pixels the edges cross may differ). The kinds that draw CGA
+//! objects too (`point`, `point-pair`, `line`, `circle`, `plane-patch`, `blade`), against the
+//! Euclidean shapes worked out here from their fields. Needs `povray`:
 //!
 //! ```text
 //! apt-get install -y povray
@@ -196,4 +198,160 @@ fn boxes() {
     let (_, agree) = agreement(&toml, &pov(-1.0));
     println!("box, POV-Ray's turns reversed: {:.3} % agree", 100.0 * agree);
     assert!(agree < 0.995, "the turns' signs are not seen");
+}
+
+/// A point as TOML's `[x, y, z]` and POV-Ray's `<x,y,z>`.
+fn toml3(p: [f64; 3]) -> String {
+    format!("[{:?}, {:?}, {:?}]", p[0], p[1], p[2])
+}
+fn pov3(p: [f64; 3]) -> String {
+    format!("<{},{},{}>", p[0], p[1], p[2])
+}
+
+/// Points (balls), a point pair with its segment (a capped cylinder) and one without.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test silhouettes -- --ignored --nocapture"]
+fn points_and_point_pairs() {
+    let toml = tables(&[
+        "type = \"point\"\npoint = [-4.5, 0.5, 2.5]\nsize = 1.3",
+        "type = \"point\"\npoint = [0.5, -3.0, 3.5]\nsize = 0.6",
+        "type = \"point-pair\"\npoints = [[-3.0, 1.0, -2.0], [1.5, -1.0, -0.5]]\nsize = 0.9\nsegment = true\ntube = 0.35",
+        "type = \"point-pair\"\npoints = [[3.0, 2.0, 1.0], [5.0, -1.5, -2.0]]\nsize = 1.1\nsegment = false",
+    ]);
+    let pov = "sphere { <-4.5,0.5,2.5>, 1.3 }\nsphere { <0.5,-3,3.5>, 0.6 }\n\
+               sphere { <-3,1,-2>, 0.9 }\nsphere { <1.5,-1,-0.5>, 0.9 }\ncylinder { <-3,1,-2>, <1.5,-1,-0.5>, 0.35 }\n\
+               sphere { <3,2,1>, 1.1 }\nsphere { <5,-1.5,-2>, 1.1 }\n";
+    check("points and point pairs", &toml, pov);
+}
+
+/// Lines across the view: nearly level, steep, and receding; POV-Ray's cylinders reach
+/// 1000 units each way, far out of the picture.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test silhouettes -- --ignored --nocapture"]
+fn lines() {
+    use cga_core::euclid::{add, norm, scale};
+    let lines = [
+        ([0.0, 0.0, -1.5], [1.0, 0.3, 0.15], 0.25),
+        ([-2.0, 3.0, 1.0], [0.3, -0.4, 1.0], 0.3),
+        ([2.0, 1.0, 2.0], [-1.0, 1.5, -0.6], 0.2),
+    ];
+    let (mut toml, mut pov) = (String::new(), String::new());
+    for (p, d, tube) in lines {
+        toml +=
+            &tables(&[&format!("type = \"line\"\npoint = {}\ndirection = {}\ntube = {tube:?}", toml3(p), toml3(d))]);
+        let d = scale(d, 1000.0 / norm(d));
+        pov += &format!("cylinder {{ {}, {}, {tube} }}\n", pov3(add(p, scale(d, -1.0))), pov3(add(p, d)));
+    }
+    check("lines", &toml, &pov);
+}
+
+/// Circles by centre, normal and radius (tilted, and nearly edge-on), and one through three
+/// points, its circumcircle worked out here: POV-Ray's tori.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test silhouettes -- --ignored --nocapture"]
+fn circles() {
+    use cga_core::euclid::{add, cross, dot, scale, sub};
+    let mut circles =
+        vec![([-3.5, 0.5, 1.5], [0.3, -1.0, 0.5], 2.0, 0.3), ([3.0, 2.0, -1.0], [0.0, 0.0, 1.0], 2.5, 0.2)];
+    let mut toml = String::new();
+    for &(c, n, r, tube) in &circles {
+        toml += &tables(&[&format!(
+            "type = \"circle\"\ncentre = {}\nnormal = {}\nradius = {r:?}\ntube = {tube:?}",
+            toml3(c),
+            toml3(n)
+        )]);
+    }
+    // Through a, b, c: the centre a + x u + y v (u = b − a, v = c − a) is as far from each,
+    // so x u·u + y u·v = u·u/2 and x u·v + y v·v = v·v/2.
+    let (a, b, c, tube) = ([0.5, -2.0, -3.0], [2.5, -1.0, -1.0], [0.0, 0.0, -0.5], 0.35);
+    toml +=
+        &tables(&[&format!("type = \"circle\"\npoints = [{}, {}, {}]\ntube = {tube:?}", toml3(a), toml3(b), toml3(c))]);
+    let (u, v) = (sub(b, a), sub(c, a));
+    let (uu, uv, vv) = (dot(u, u), dot(u, v), dot(v, v));
+    let det = uu * vv - uv * uv;
+    let (x, y) = ((uu * vv - uv * vv) / (2.0 * det), (uu * vv - uv * uu) / (2.0 * det));
+    let centre = add(a, add(scale(u, x), scale(v, y)));
+    let r = dot(sub(a, centre), sub(a, centre)).sqrt();
+    circles.push((centre, cross(u, v), r, tube));
+    let pov: String = circles
+        .iter()
+        .map(|&(c, n, r, tube)| {
+            format!("torus {{ {r}, {tube} Reorient_Trans(y, {}) translate {} }}\n", pov3(n), pov3(c))
+        })
+        .collect();
+    check("circles", &toml, &pov);
+}
+
+/// Plane patches facing the camera, tilted, crossing the bottom edge, and one through three
+/// points: a disk about their centroid, normal to their plane.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test silhouettes -- --ignored --nocapture"]
+fn plane_patches() {
+    use cga_core::euclid::{cross, sub};
+    let (a, b, c) = ([-1.0, 3.0, 3.0], [2.0, 4.0, 3.5], [0.0, 5.0, 2.0]);
+    let toml = tables(&[
+        "type = \"plane-patch\"\npoint = [-4.0, 1.0, 1.0]\nnormal = [0.0, -1.0, 0.4]\nsize = 2.5",
+        "type = \"plane-patch\"\npoint = [3.0, 0.0, 0.0]\nnormal = [1.0, -0.5, 1.0]\nsize = 2.0",
+        "type = \"plane-patch\"\npoint = [1.5, -5.0, -4.0]\nnormal = [0.2, 0.1, 1.0]\nsize = 2.2",
+        &format!("type = \"plane-patch\"\npoints = [{}, {}, {}]\nsize = 1.5", toml3(a), toml3(b), toml3(c)),
+    ]);
+    let centroid = [0, 1, 2].map(|k| (a[k] + b[k] + c[k]) / 3.0);
+    let pov = format!(
+        "disc {{ <-4,1,1>, <0,-1,0.4>, 2.5 }}\ndisc {{ <3,0,0>, <1,-0.5,1>, 2 }}\ndisc {{ <1.5,-5,-4>, <0.2,0.1,1>, 2.2 }}\n\
+         disc {{ {}, {}, 1.5 }}\n",
+        pov3(centroid),
+        pov3(cross(sub(b, a), sub(c, a)))
+    );
+    check("plane patches", &toml, &pov);
+}
+
+/// Raw blades read as cga-core classifies them, against Euclidean objects worked out here
+/// from the coefficients: a dual sphere `w (c + eo + ½(|c|² − r²) ei)` (weight 2) is the
+/// sphere of centre `(e1, e2, e3)/eo` and `r² = |c|² − 2 ei/eo`; an imaginary one (weight −1.5,
+/// `r² < 0`) three dashed great circles of radius `√−r²` about e1, e2, e3, each 24 capped
+/// rods (chords from `2πk/24` over 0.6 of their arc, in the basis `u, v = n × u` that
+/// `cga_core::euclid::perpendicular` gives for that axis); a flat point
+/// `x1 e1i + x2 e2i + x3 e3i + eoi` a cube of half edge `size` at `x`.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test silhouettes -- --ignored --nocapture"]
+fn blades() {
+    use std::f64::consts::TAU;
+    let sphere = |[e1, e2, e3, eo, ei]: [f64; 5]| {
+        let c = [e1 / eo, e2 / eo, e3 / eo];
+        (c, c.iter().map(|x| x * x).sum::<f64>() - 2.0 * ei / eo)
+    };
+    let (real, imaginary, tube) = ([-7.0, 2.0, 2.0, 2.0, 5.25], [-4.5, 0.0, -2.25, -1.5, -11.4375], 0.15);
+    let (x, size) = ([0.5, -3.0, -2.5], 0.9);
+    let blade = |[e1, e2, e3, eo, ei]: [f64; 5]| {
+        format!("{{ e1 = {e1:?}, e2 = {e2:?}, e3 = {e3:?}, eo = {eo:?}, ei = {ei:?} }}")
+    };
+    let toml = tables(&[
+        &format!("type = \"blade\"\nblade = {}", blade(real)),
+        &format!("type = \"blade\"\nblade = {}\ntube = {tube:?}", blade(imaginary)),
+        &format!(
+            "type = \"blade\"\nblade = {{ e1i = {:?}, e2i = {:?}, e3i = {:?}, eoi = 1.0 }}\nsize = {size:?}",
+            x[0], x[1], x[2]
+        ),
+    ]);
+    let (c, r2) = sphere(real);
+    assert!(r2 > 0.0);
+    let mut pov = format!("sphere {{ {}, {} }}\n", pov3(c), r2.sqrt());
+    pov += &format!("box {{ {}, {} }}\n", pov3(x.map(|x| x - size)), pov3(x.map(|x| x + size)));
+    let (c, r2) = sphere(imaginary);
+    assert!(r2 < 0.0);
+    let r = (-r2).sqrt();
+    // (u, v) about e1, e2, e3: `perpendicular` crosses n with the first axis least aligned.
+    let bases = [
+        ([0.0, 0.0, 1.0], [0.0, -1.0, 0.0]),
+        ([0.0, 0.0, -1.0], [-1.0, 0.0, 0.0]),
+        ([0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]),
+    ];
+    for (u, v) in bases {
+        let on = |t: f64| pov3([0, 1, 2].map(|k| c[k] + r * (u[k] * t.cos() + v[k] * t.sin())));
+        for k in 0..24 {
+            let start = TAU * k as f64 / 24.0;
+            pov += &format!("cylinder {{ {}, {}, {tube} }}\n", on(start), on(start + 0.6 * TAU / 24.0));
+        }
+    }
+    check("blades", &toml, &pov);
 }

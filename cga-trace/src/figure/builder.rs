@@ -13,7 +13,7 @@ use crate::output::{OutputFile, OutputFileError};
 use crate::scene::{Scene, SceneError};
 use crate::{Aov, Film, Renderer};
 use cga_core::euclid::{E3, add, norm, scale, unit};
-use cga_core::{GeometryError, Multivector};
+use cga_core::{GeometryError, classify_storage};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -72,10 +72,30 @@ pub enum BladeError {
     Draw(#[from] DrawError),
 }
 
+/// A cga-core object a figure draws: its coefficients in the null basis (`to_storage`
+/// order), as the typed objects hold them (through the dense type's orthonormal basis an
+/// object far from the origin would lose its small `eo` coefficients).
+pub trait Drawable {
+    /// The null-basis coefficients.
+    fn coefficients(&self) -> [f64; 32];
+}
+
+macro_rules! drawable {
+    ($($ty:ident),*) => {$(
+        impl Drawable for cga_core::$ty<f64> {
+            fn coefficients(&self) -> [f64; 32] {
+                self.to_storage()
+            }
+        }
+    )*};
+}
+
+drawable!(Vector, Bivector, Circle, Sphere, Line, Plane, FlatPoint, Multivector);
+
 /// One object of a figure.
 #[derive(Clone, Debug)]
 struct Item {
-    blade: Multivector<f64>,
+    blade: [f64; 32],
     colour: String,
     label: Option<String>,
     segment: bool,
@@ -108,8 +128,8 @@ impl Figure {
     /// Add any cga-core object (a point, point pair, line, circle, plane, sphere, flat point,
     /// tangent or direction, or a dense blade) in `colour`: a name (`"red"`, `"sky"`, …, see
     /// [`colour`]) or `"#rrggbb"` (sRGB).
-    pub fn add(mut self, object: &(impl Copy + Into<Multivector<f64>>), colour: &str) -> Figure {
-        let blade = (*object).into();
+    pub fn add(mut self, object: &impl Drawable, colour: &str) -> Figure {
+        let blade = object.coefficients();
         self.items.push(Item {
             blade,
             colour: colour.to_string(),
@@ -176,7 +196,7 @@ impl Figure {
         for (k, item) in self.items.iter().enumerate() {
             let blade = |reason: BladeError| FigureError::Blade { index: k + 1, reason };
             colour(&item.colour).ok_or_else(|| FigureError::Colour { index: k + 1, colour: item.colour.clone() })?;
-            let kind = item.blade.classify().map_err(|e| blade(e.into()))?;
+            let kind = classify_storage(&item.blade).map_err(|e| blade(e.into()))?;
             drawings.push(Drawing::of(kind, &marks, item.segment).map_err(|e| blade(e.into()))?);
         }
         Ok(drawings)
@@ -190,7 +210,7 @@ impl Figure {
         let extents: Vec<(E3, f64)> = drawings
             .iter()
             .zip(&self.items)
-            .filter(|(_, item)| !matches!(item.blade.classify(), Ok(cga_core::Kind::Direction { .. })))
+            .filter(|(_, item)| !matches!(classify_storage(&item.blade), Ok(cga_core::Kind::Direction { .. })))
             .map(|(d, _)| d.extent())
             .collect();
         let fov: f64 = 40.0;
@@ -242,7 +262,6 @@ impl Figure {
             }
             let terms: Vec<String> = item
                 .blade
-                .to_storage()
                 .iter()
                 .zip(names)
                 .filter(|(c, _)| **c != 0.0)

@@ -206,7 +206,8 @@ impl Drawing {
     }
 
     /// The shapes, placed in the frame by `place`; a line kept over the ball of radius `view`
-    /// (frame units) about the camera, beyond which its tube is under half a pixel, as a
+    /// (frame units) about the camera ([`super::Marks::view`]: where its tube is a quarter
+    /// of a pixel wide), as a
     /// segment about its point nearest `centre` (the scene's, in the frame: where its label
     /// goes), and where a label goes when not beside the sphere holding the shapes (a line's
     /// beside that point, its tube's radius away).

@@ -5,7 +5,7 @@ mod builder;
 mod drawing;
 mod label;
 
-pub use builder::{BladeError, Figure, FigureError, MAX_FIGURE_OBJECTS, colour};
+pub use builder::{BladeError, Drawable, Figure, FigureError, MAX_FIGURE_OBJECTS, colour};
 pub(crate) use drawing::Parts;
 pub use drawing::{DrawError, Drawing, Sizes};
 pub use label::{Label, MAX_LABEL_CHARS, draw_labels, project};
@@ -71,11 +71,12 @@ impl Marks {
         Marks { sizes: Sizes::for_extent(centre, radius), pixel, reach }
     }
 
-    /// How far from the camera (world units) a drawing is kept: a line to where its tube is
-    /// half a pixel wide (`2 tube / pixel`), or past the scene if that is farther.
+    /// How far from the camera (world units) a drawing is kept: a line to where its tube is a
+    /// quarter of a pixel wide (`8 tube / pixel`: a tube under a pixel wide still covers the
+    /// pixel centres it crosses), or past the scene if that is farther.
     pub fn view(&self, drawing: &Drawing) -> f64 {
         match drawing {
-            Drawing::Line { tube, .. } => (2.0 * tube / self.pixel).max(self.reach),
+            Drawing::Line { tube, .. } => (8.0 * tube / self.pixel).max(self.reach),
             _ => self.reach,
         }
     }

@@ -9,7 +9,7 @@ use super::{Kind, ObjectSpec, points};
 use crate::figure::{DrawError, Drawing, Sizes};
 use crate::invalid::Invalid;
 use cga_core::euclid::{E3, norm, sub, unit};
-use cga_core::{GeometryError, Multivector, Plane, Real, circumcircle};
+use cga_core::{GeometryError, Multivector, Plane, Real, circumcircle, classify_storage};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use toml::Spanned;
@@ -46,9 +46,12 @@ fn basis_of(name: &str) -> (bool, bool) {
 }
 
 impl BladeSpec {
-    /// The multivector, scaled by a power of two to a largest coefficient near 1 (a blade and
-    /// its multiples are one object; so coefficients of any size square without overflow).
-    pub(crate) fn multivector(&self) -> Result<Multivector<f64>, Invalid> {
+    /// The null-basis coefficients (`to_storage` order), scaled by a power of two to a
+    /// largest coefficient near 1 (a blade and its multiples are one object; so coefficients
+    /// of any size square without overflow). Orthonormal names are converted; null-basis
+    /// ones are kept as given (the orthonormal basis would lose the small `eo` coefficients
+    /// beside `|c|²`-sized `ei` ones of an object far from the origin).
+    pub(crate) fn storage(&self) -> Result<[f64; 32], Invalid> {
         let mut storage = [0.0; 32];
         let mut ortho = [0.0; 32];
         let (mut null_named, mut ortho_named) = (None, None);
@@ -87,16 +90,15 @@ impl BladeSpec {
         if let (Some(a), Some(b)) = (null_named, ortho_named) {
             return Err(Invalid::Mixed(a.to_string(), b.to_string()));
         }
-        let mut dense = Multivector::from_storage(&storage);
-        for (d, o) in dense.coeffs.iter_mut().zip(ortho) {
-            *d += o;
+        if ortho_named.is_some() {
+            storage = Multivector { coeffs: ortho }.to_storage();
         }
-        let largest = dense.coeffs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let largest = storage.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         if largest > 0.0 {
             let unit = Real::binade(largest);
-            dense.coeffs.iter_mut().for_each(|x| *x /= unit);
+            storage.iter_mut().for_each(|x| *x /= unit);
         }
-        Ok(dense)
+        Ok(storage)
     }
 }
 
@@ -130,7 +132,7 @@ impl ObjectSpec {
 
     /// Whether a `blade` is a tangent (a round of zero radius), not a direction.
     fn tangent(&self) -> bool {
-        let kind = self.blade.as_ref().and_then(|b| b.get_ref().multivector().ok()).and_then(|m| m.classify().ok());
+        let kind = self.blade.as_ref().and_then(|b| b.get_ref().storage().ok()).and_then(|c| classify_storage(&c).ok());
         matches!(kind, Some(cga_core::Kind::Round { .. }))
     }
 
@@ -183,7 +185,8 @@ impl ObjectSpec {
                         circumcircle(a, b, c)?
                     }
                     (None, None, None, None, Some(b)) => {
-                        let kind = b.get_ref().multivector()?.classify()?;
+                        let on = |e| Invalid::at("blade", b.span(), e);
+                        let kind = classify_storage(&b.get_ref().storage().map_err(on)?).map_err(|e| on(e.into()))?;
                         return match Drawing::of(kind, &sizes, false)? {
                             d @ Drawing::Circle { .. } => Ok(d),
                             _ => Err(Invalid::at("blade", b.span(), Invalid::NotA("circle", describe(kind)))),
@@ -210,9 +213,9 @@ impl ObjectSpec {
                 if matches!(b.get_ref(), BladeSpec::Circle(_)) {
                     return Err(Invalid::at("blade", b.span(), Invalid::Value("give a blade's coefficients by name")));
                 }
-                let kind =
-                    b.get_ref().multivector()?.classify().map_err(|e| Invalid::at("blade", b.span(), e.into()))?;
-                Drawing::of(kind, &sizes, segment).map_err(|e| Invalid::at("blade", b.span(), e.into()))?
+                let on = |e| Invalid::at("blade", b.span(), e);
+                let kind = classify_storage(&b.get_ref().storage().map_err(on)?).map_err(|e| on(e.into()))?;
+                Drawing::of(kind, &sizes, segment).map_err(|e| on(e.into()))?
             }
             _ => return Err(form()),
         })

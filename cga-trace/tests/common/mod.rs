@@ -2,6 +2,9 @@
 //! would write the moved scene, and reading the shipped ones.
 #![allow(dead_code)]
 
+#[path = "../../../tests/tests/common/dd.rs"]
+mod dd;
+
 use cga_core::Circle;
 use cga_core::euclid::E3;
 use cga_trace::Scene;
@@ -42,6 +45,33 @@ impl Similarity {
         self.length(c.get_mut("radius").expect("radius"));
     }
 
+    /// A blade given by its coefficients' null-basis names, moved as its points are:
+    /// `X ↦ V X Ṽ` for `V = T D` (a dilation about the origin, then the shift along the
+    /// diagonal), in double-double so that the moved coefficients are those of the moved
+    /// object to f64's rounding (checked on a point: `up(x) ↦ ∝ up(s x + t)`).
+    pub fn blade(&self, b: &mut Value) {
+        use cga_core::{Dilator, Motor, Multivector, Real};
+        use dd::Dd;
+        let names = cga_trace::figure::null_basis_names();
+        let d: Multivector<Dd> = Dilator::new([Dd::zero(); 3], Dd::from_f64(self.scale)).expect("a dilator").into();
+        let t: Multivector<Dd> = Motor::from_translation([Dd::from_f64(self.shift); 3]).into();
+        let v = t * d;
+        let moved = |x: Multivector<Dd>| (v * x * v.reverse()).to_storage().map(Dd::hi);
+        let p = moved(cga_core::up([1.0, -2.0, 3.0].map(Dd::from_f64)).into());
+        let want = [1.0, -2.0, 3.0].map(|x| self.scale * x + self.shift);
+        let got = cga_core::down(cga_core::Vector::<f64>::from_storage(&p)).expect("a point");
+        assert!((0..3).all(|k| (got[k] - want[k]).abs() <= 1e-9 * (1.0 + want[k].abs())), "{got:?} vs {want:?}");
+        let mut storage = [Dd::zero(); 32];
+        for (name, value) in b.as_table().expect("a blade table") {
+            let k = names.iter().position(|n| n == name).expect("a null-basis blade name");
+            storage[k] = Dd::from_f64(value.as_float().or(value.as_integer().map(|i| i as f64)).expect("a number"));
+        }
+        let x = moved(Multivector::from_storage(&storage));
+        let table: Table =
+            names.iter().zip(x).filter(|(_, c)| *c != 0.0).map(|(n, c)| (n.to_string(), Value::Float(c))).collect();
+        *b = Value::Table(table);
+    }
+
     pub fn apply(&self, scene: &mut Table) {
         let camera = scene["camera"].as_table_mut().expect("[camera]");
         for key in ["position", "look_at"] {
@@ -56,8 +86,11 @@ impl Similarity {
             let [c0, c1, c2] = [0, 1, 2].map(|k| att[k].as_float().expect("a number"));
             *att = vec![Value::Float(c0), Value::Float(c1 / self.scale), Value::Float(c2 / (self.scale * self.scale))];
         }
+        // Directional lights stay as they are.
         for light in scene.get_mut("lights").and_then(Value::as_array_mut).into_iter().flatten() {
-            self.point(light.get_mut("position").expect("position"));
+            if let Some(p) = light.get_mut("position") {
+                self.point(p);
+            }
         }
         for object in scene.get_mut("objects").and_then(Value::as_array_mut).into_iter().flatten() {
             let object = object.as_table_mut().expect("an object table");
@@ -73,10 +106,13 @@ impl Similarity {
                     self.point(about);
                 }
             }
-            for key in ["radius", "tube", "r1", "r2"] {
+            for key in ["radius", "tube", "r1", "r2", "size"] {
                 if let Some(v) = object.get_mut(key) {
                     self.length(v);
                 }
+            }
+            if let Some(blade) = object.get_mut("blade").filter(|b| b.is_table()) {
+                self.blade(blade);
             }
             if let Some(Value::Array(corners)) = object.get_mut("corners") {
                 corners.iter_mut().for_each(|c| self.point(c));
