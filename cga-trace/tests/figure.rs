@@ -24,7 +24,6 @@ fn drawn(blade: impl Into<Multivector<Dd>>) -> Result<Drawing, String> {
     Drawing::of(kind, &MARKS, false).map_err(|e| e.to_string())
 }
 
-
 fn close(got: E3, want: E3, tol: f64) -> bool {
     norm(sub(got, want)) <= tol
 }

@@ -191,3 +191,32 @@ fn the_readme_first_scene_renders_a_red_ball_on_a_grey_floor() {
     assert!(floor[0] > 0.05 && (floor[0] - floor[1]).abs() < 1e-12 && (floor[1] - floor[2]).abs() < 1e-12, "{floor:?}");
     assert_eq!(at(3, 23), [0.0; 3], "the sky is the background");
 }
+
+/// `caps = true` closes a swept surface with its end circles' disks: the same picture as the
+/// surface and two `disk` objects, and different from the open surface (whose inside shows).
+#[cfg(feature = "evolved")]
+#[test]
+fn caps_close_swept_surfaces_with_their_end_disks() {
+    let (c1, c2) = (
+        "{ centre = [0.0, 0.0, -1.0], normal = [0.0, 0.3, 1.0], radius = 1.5 }",
+        "{ centre = [0.5, 0.0, 1.5], normal = [0.2, 0.0, 1.0], radius = 1.0 }",
+    );
+    let disks = format!(
+        "[[objects]]\n{MATERIAL}type = \"disk\"\ncentre = [0.0, 0.0, -1.0]\nnormal = [0.0, 0.3, 1.0]\nradius = 1.5\n\
+         [[objects]]\n{MATERIAL}type = \"disk\"\ncentre = [0.5, 0.0, 1.5]\nnormal = [0.2, 0.0, 1.0]\nradius = 1.0\n"
+    );
+    for surface in [
+        format!("type = \"evolved\"\nc1 = {c1}\nc2 = {c2}\n"),
+        format!(
+            "type = \"spline\"\ncircles = [{c1}, {{ centre = [0.3, 0.2, 0.3], normal = [0.0, 0.0, 1.0], radius = 1.2 }}, {c2}]\n"
+        ),
+    ] {
+        let capped = image(&format!("{surface}caps = true\n"));
+        let open = image(&surface);
+        let with_disks = image(&format!("{surface}{disks}"));
+        assert!(differing(&capped, &with_disks) <= 9, "{surface}");
+        let shown = differing(&capped, &open);
+        println!("{shown} channels differ from the open surface");
+        assert!(shown > 20, "{surface}: the caps are in view");
+    }
+}

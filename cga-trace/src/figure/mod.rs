@@ -2,6 +2,7 @@
 //! are in a scene ([`Marks`]), and labels written beside objects ([`Label`]).
 
 mod builder;
+pub mod cookbook;
 mod drawing;
 mod label;
 

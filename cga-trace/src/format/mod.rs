@@ -287,14 +287,17 @@ impl Kind {
                 "a box takes its opposite corners `min` and `max` (turn it with `motor` or `transform`)",
             ),
             Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
-            Kind::Evolved => (&["c1", "c2"], "an evolved surface takes `c1` and `c2`"),
+            Kind::Evolved => (
+                &["c1", "c2", "caps"],
+                "an evolved surface takes `c1` and `c2`, and `caps` (its end disks, default false)",
+            ),
             Kind::Ruled => (
                 &["p1", "p2", "l1", "l2", "bound"],
                 "a ruled surface takes point pairs `p1` and `p2` (two points each), or lines `l1` and `l2` ({ point, direction }) and a `bound` ({ centre, radius })",
             ),
             Kind::Spline => (
-                &["circles", "joining", "tension", "bias", "continuity"],
-                "a spline surface takes `circles`, `joining`, and for joining = \"kochanek-bartels\" `tension`, `bias`, `continuity`",
+                &["circles", "joining", "tension", "bias", "continuity", "caps"],
+                "a spline surface takes `circles`, `joining`, for joining = \"kochanek-bartels\" `tension`, `bias`, `continuity`, and `caps` (the end circles' disks, default false)",
             ),
             Kind::Point => (&["point", "size"], "a point takes `point` and optionally `size` (its ball's radius)"),
             Kind::PointPair => (
@@ -642,11 +645,18 @@ impl ObjectSpec {
             }
             #[cfg(feature = "evolved")]
             Kind::Evolved => match (&self.c1, &self.c2) {
-                (Some(c1), Some(c2)) => Arc::new(evolved(c1, c2, &place, method)?),
+                (Some(c1), Some(c2)) => {
+                    let surface: Arc<dyn Shape> = Arc::new(evolved(c1, c2, &place, method)?);
+                    return Ok((self.capped(surface, [c1, c2], &place)?, None));
+                }
                 _ => return Err(form()),
             },
             #[cfg(feature = "evolved")]
-            Kind::Spline => Arc::new(self.spline(&place, method)?),
+            Kind::Spline => {
+                let surface: Arc<dyn Shape> = Arc::new(self.spline(&place, method)?);
+                let ends = self.circles.as_ref().and_then(|c| Some([c.get_ref().first()?, c.get_ref().last()?]));
+                return Ok((self.capped(surface, ends.ok_or_else(form)?, &place)?, None));
+            }
             #[cfg(feature = "evolved")]
             Kind::Ruled => Arc::new(self.ruled(&place)?),
             #[cfg(not(feature = "evolved"))]
@@ -665,6 +675,23 @@ impl ObjectSpec {
 
 #[cfg(feature = "evolved")]
 impl ObjectSpec {
+    /// A swept surface and, with `caps = true`, the disks of its end circles.
+    fn capped(
+        &self,
+        surface: Arc<dyn Shape>,
+        ends: [&Spanned<CircleSpec>; 2],
+        place: &Placement,
+    ) -> Result<Vec<Arc<dyn Shape>>, Invalid> {
+        let mut shapes = vec![surface];
+        if self.caps.as_ref().is_some_and(|c| *c.get_ref()) {
+            for end in ends {
+                let (c, n, r) = circle(end.get_ref(), place).map_err(|e| Invalid::at("caps", end.span(), e))?;
+                shapes.push(Arc::new(DiskShape::new(c, n, r)?));
+            }
+        }
+        Ok(shapes)
+    }
+
     /// A spline surface through `circles`, each moved by its own transform and then by the
     /// object's (`place`).
     fn spline(&self, place: &Placement, method: Method) -> Result<SplineSurface, Invalid> {
