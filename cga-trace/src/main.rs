@@ -221,7 +221,9 @@ fn render_command(args: Render) -> anyhow::Result<()> {
         None
     };
 
-    let mut scene = Scene::load(&args.scene)?;
+    // A camera without `width` and `height` takes the command line's.
+    let size = args.width.zip(args.height);
+    let mut scene = Scene::load_sized(&args.scene, size)?;
     for note in scene.notes() {
         say!("note: {note}");
     }
@@ -245,7 +247,10 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     };
     let encoding = args.encoding.unwrap_or(scene.settings.encoding);
 
-    let bar = indicatif::ProgressBar::new(window.rows.len() as u64);
+    let bar = indicatif::ProgressBar::new(window.rows.len() as u64).with_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
     if !std::io::stderr().is_terminal() {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }

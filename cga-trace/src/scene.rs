@@ -81,6 +81,11 @@ pub enum SceneError {
 impl Scene {
     /// Read and check a scene file of at most [`MAX_FILE_BYTES`].
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        Scene::load_sized(path, None)
+    }
+
+    /// [`Scene::load`], with `size` (width, height) for a camera that gives neither.
+    pub fn load_sized(path: &Path, size: Option<(u32, u32)>) -> Result<Scene, SceneError> {
         use std::io::Read;
         let file = path.display().to_string();
         let io = |source| SceneError::Io { file: file.clone(), source };
@@ -94,7 +99,7 @@ impl Scene {
             let (line, column) = line_column_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
             SceneError::Syntax { file: file.clone(), line, column, message: "the file is not UTF-8 text".into() }
         })?;
-        Scene::parse(&text, &file)
+        Scene::parse_sized(&text, &file, size)
     }
 
     /// Check a scene given as text; `file` names it in errors.
@@ -104,6 +109,11 @@ impl Scene {
     /// (`format/sections.rs`), so loading holds the file, one object's parsed form and
     /// the scene built so far (about 225 bytes an object).
     pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+        Scene::parse_sized(text, file, None)
+    }
+
+    /// [`Scene::parse`], with `size` (width, height) for a camera that gives neither.
+    pub fn parse_sized(text: &str, file: &str, size: Option<(u32, u32)>) -> Result<Scene, SceneError> {
         let at = |offset: usize| line_column(text, offset);
         let sections = sections::split(text).map_err(|m| {
             let (line, column) = at(m.at);
@@ -161,7 +171,7 @@ impl Scene {
         }
         let camera_span = spec.camera.span();
         let in_camera = |reason| invalid(&rest, camera_span.clone(), "camera".into(), reason);
-        let (camera, position, pinned) = spec.camera.into_inner().build().map_err(in_camera)?;
+        let (camera, position, pinned) = spec.camera.into_inner().build(size).map_err(in_camera)?;
         // Objects size the frame; lights do not (a light far away is only a direction). Each
         // object's placement is read first (a few of its fields), before any is built.
         let mut sizes = Vec::with_capacity(count);
@@ -179,6 +189,14 @@ impl Scene {
         let marks = Marks::for_scene(&sizes, position, pixel);
         let frame = Frame::around(position, sizes, pixel)
             .map_err(|span| invalid(&|_| 0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
+        let mut materials = crate::format::Materials::new();
+        for (name, m) in spec.materials {
+            let span = m.span();
+            let material = crate::material::Material::from(m.into_inner());
+            let what = format!("material `{}`", name.escape_debug());
+            material.check().map_err(|reason| invalid(&rest, span, what, reason))?;
+            materials.insert(name, material);
+        }
         let mut lights = Vec::with_capacity(spec.lights.len());
         for (k, light) in spec.lights.into_iter().enumerate() {
             let span = light.span();
@@ -199,7 +217,7 @@ impl Scene {
             let span = value.span();
             let spec =
                 ObjectSpec::deserialize(value.into_deserializer()).map_err(|e| syntax_error(text, file, &e, &map))?;
-            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks);
+            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, &materials);
             let what = format!("object `{name}`");
             let (objects, label) = object.map_err(|reason| invalid(&map, span.clone(), what.clone(), reason))?;
             // A drawing is several shapes: all count against the limit.
@@ -276,7 +294,7 @@ const CROWD: usize = 64;
 impl Scene {
     /// What a user should know about the scene that is not an error: objects that share one
     /// bounding sphere in crowds (the same object repeated), which no hierarchy can separate,
-    /// so that rendering costs a test of each per ray there.
+    /// so that rendering costs a test of each per ray there; a scene without lights.
     pub fn notes(&self) -> Vec<String> {
         let mut groups: std::collections::HashMap<[u64; 4], (usize, usize)> = std::collections::HashMap::new();
         for (k, object) in self.objects.iter().enumerate() {
@@ -285,6 +303,12 @@ impl Scene {
             }
         }
         let largest = groups.values().max_by_key(|(_, n)| *n);
+        let dark = self.lights.is_empty().then(|| {
+            format!(
+                "the scene has no lights: objects show only their ambient colour (ambient = {}); add a [[lights]] table",
+                self.settings.ambient
+            )
+        });
         largest
             .filter(|(_, n)| *n > CROWD)
             .map(|&(first, n)| {
@@ -299,6 +323,7 @@ impl Scene {
                 )
             })
             .into_iter()
+            .chain(dark)
             .collect()
     }
 

@@ -518,6 +518,25 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:12:", "`label`", "plane-patch"],
         ),
         (
+            "a material name the file lacks",
+            format!(
+                "{CAMERA}[materials.gold]\ncolour = [1.0, 0.8, 0.2]\n[[objects]]\nname = \"thing\"\nmaterial = \"silver\"\ntype = \"point\"\npoint = [0.0, 0.0, 0.0]\n"
+            ),
+            vec!["bad.toml:10:12:", "`thing`", "no material `silver`", "it has `gold`"],
+        ),
+        (
+            "a named material out of range",
+            format!(
+                "{CAMERA}[materials.gold]\ncolour = [1.0, 0.8, 0.2]\nkd = -1.0\n[[objects]]\nmaterial = \"gold\"\ntype = \"point\"\npoint = [0.0, 0.0, 0.0]\n"
+            ),
+            vec!["bad.toml:6:", "material `gold`"],
+        ),
+        (
+            "a material neither a table nor a name",
+            format!("{CAMERA}[[objects]]\nmaterial = 3\ntype = \"point\"\npoint = [0.0, 0.0, 0.0]\n"),
+            vec!["bad.toml:7:", "a material table", "[materials.NAME]"],
+        ),
+        (
             "a label too long",
             with_object(&format!("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nlabel = \"{}\"\n", "x".repeat(65))),
             vec!["bad.toml:11:", "`label`: 65 characters exceed the limit of 64"],

@@ -144,3 +144,24 @@ fn crops_from_the_command_line_assemble_into_the_frame() {
     image::imageops::replace(&mut assembled, &bottom, 0, 18);
     assert_eq!(assembled.into_raw(), full.into_raw());
 }
+
+#[test]
+fn a_camera_without_a_size_takes_the_command_lines_and_a_dark_scene_gets_a_note() {
+    let dir = scratch("sizeless");
+    let file = dir.join("sizeless.toml");
+    std::fs::write(
+        &file,
+        "[camera]\nposition = [0.0, -8.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\n\
+         [[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = { colour = [1.0, 0.0, 0.0] }\n",
+    )
+    .unwrap();
+    let (f, out) = (file.to_str().unwrap(), dir.join("out.png"));
+    let o = out.to_str().unwrap();
+    let line = error_line(&render(&[f, "-o", o, "--width", "32"]));
+    assert!(line.contains("`width` and `height`") && line.contains("--width and --height"), "{line}");
+    let run = render(&[f, "-o", o, "--width", "32", "--height", "24"]);
+    assert!(run.status.success(), "{run:?}");
+    assert_eq!(image::image_dimensions(&out).unwrap(), (32, 24));
+    assert!(String::from_utf8_lossy(&run.stderr).contains("note: the scene has no lights"), "{run:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

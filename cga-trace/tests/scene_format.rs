@@ -220,3 +220,29 @@ fn caps_close_swept_surfaces_with_their_end_disks() {
         assert!(shown > 20, "{surface}: the caps are in view");
     }
 }
+
+#[test]
+fn a_scene_without_lights_gets_a_note() {
+    let dark = Scene::parse(
+        &format!("{CAMERA}[[objects]]\n{MATERIAL}type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\n"),
+        "dark.toml",
+    )
+    .unwrap();
+    assert!(dark.notes().iter().any(|n| n.starts_with("the scene has no lights")), "{:?}", dark.notes());
+    let lit = Scene::parse(&format!("{CAMERA}{LIGHT}"), "lit.toml").unwrap();
+    assert!(lit.notes().is_empty());
+}
+
+/// `[materials.NAME]` tables, given by name, render as the same material written inline.
+#[test]
+fn named_materials_render_as_written_inline() {
+    let sphere = "type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 2.0\n";
+    let named = format!(
+        "{CAMERA}{LIGHT}[materials.copper]\ncolour = [0.8, 0.5, 0.2]\nkr = 0.3\n\n[[objects]]\nmaterial = \"copper\"\n{sphere}"
+    );
+    let scene = Scene::parse(&named, "named.toml").unwrap_or_else(|e| panic!("{e}"));
+    let film = Renderer::new(&scene).render(Aov::Shaded, &|| {}).to_rgb8(scene.settings.encoding).into_raw();
+    let inline = format!("{CAMERA}{LIGHT}[[objects]]\n{MATERIAL}{sphere}");
+    let scene = Scene::parse(&inline, "inline.toml").unwrap();
+    assert_eq!(film, Renderer::new(&scene).render(Aov::Shaded, &|| {}).to_rgb8(scene.settings.encoding).into_raw());
+}

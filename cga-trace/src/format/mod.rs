@@ -13,7 +13,7 @@ pub(crate) mod sections;
 mod specs;
 mod transform;
 
-pub(crate) use specs::{MaterialSpec, SettingsSpec};
+pub(crate) use specs::{MaterialRef, MaterialSpec, SettingsSpec};
 
 use crate::camera::{Camera, CameraError};
 use crate::figure::{Label, MAX_LABEL_CHARS, Marks, Parts};
@@ -50,6 +50,9 @@ pub(crate) struct SceneFile {
     pub render: Option<Spanned<SettingsSpec>>,
     #[serde(default)]
     pub lights: Vec<Spanned<LightSpec>>,
+    /// Named materials, `[materials.NAME]`, that objects give by name.
+    #[serde(default)]
+    pub materials: std::collections::BTreeMap<String, Spanned<MaterialSpec>>,
     /// Read one at a time by [`Scene::parse`](crate::Scene::parse), which takes the list out
     /// first; here only to report an `objects` that is not a list.
     #[serde(default, rename = "objects")]
@@ -126,8 +129,9 @@ pub(crate) struct CameraSpec {
     y_max: Option<Spanned<Num>>,
     /// Horizontal field of view in degrees, instead of `x_max`: `x_max = 2 f tan(fov/2)`.
     fov: Option<Spanned<Num>>,
-    width: Spanned<u32>,
-    height: Spanned<u32>,
+    /// Pixels; may be left out when the caller gives the size (`--width` and `--height`).
+    width: Option<Spanned<u32>>,
+    height: Option<Spanned<u32>>,
 }
 
 impl CameraSpec {
@@ -135,7 +139,8 @@ impl CameraSpec {
     /// and whether the file gives both image-plane extents (pixels then need not be square).
     /// The position is read from the pose's coefficients, never through a conformal point,
     /// so it is exact wherever the camera is.
-    pub(crate) fn build(self) -> Result<(Camera, E3, bool), Invalid> {
+    /// `size` stands in for `width` and `height` where the file gives neither.
+    pub(crate) fn build(self, size: Option<(u32, u32)>) -> Result<(Camera, E3, bool), Invalid> {
         let pose = match (self.motor, self.position, self.look_at) {
             (Some(m), None, None) => rigid(m.get_ref().0).map_err(|e| Invalid::at("motor", m.span(), e))?,
             (None, Some(p), Some(t)) => Camera::pose_look_at(p.0, t.0, self.up.map_or([0.0, 0.0, 1.0], |u| u.0))?,
@@ -146,7 +151,15 @@ impl CameraSpec {
             None => pose.translation(),
         };
         let pose = Motor::from(pose.rotor());
-        let (width, height) = (*self.width.get_ref(), *self.height.get_ref());
+        let (width, height) = match (&self.width, &self.height, size) {
+            (Some(w), Some(h), _) => (*w.get_ref(), *h.get_ref()),
+            (None, None, Some(size)) => size,
+            _ => {
+                return Err(Invalid::Form(
+                    "give the picture's `width` and `height` (or leave both out and give --width and --height)",
+                ));
+            }
+        };
         let value = |x: &Option<Spanned<Num>>| x.as_ref().map(|x| x.get_ref().0);
         let focal = value(&self.focal_length).unwrap_or(1.0);
         let x_max = match (&self.x_max, &self.fov) {
@@ -162,10 +175,11 @@ impl CameraSpec {
         let y_max = value(&self.y_max).unwrap_or(x_max * f64::from(height) / f64::from(width.max(1)));
         let camera = Camera::new(pose, focal, x_max, y_max, width, height).map_err(|e| match e {
             // Camera::new holds the size limit; the error points at the side that breaks it.
-            CameraError::TooLarge { .. } if height > MAX_SIDE && width <= MAX_SIDE => {
-                Invalid::at("height", self.height.span(), e.into())
-            }
-            CameraError::TooLarge { .. } => Invalid::at("width", self.width.span(), e.into()),
+            CameraError::TooLarge { .. } => match (height > MAX_SIDE && width <= MAX_SIDE, &self.width, &self.height) {
+                (true, _, Some(h)) => Invalid::at("height", h.span(), e.into()),
+                (false, Some(w), _) => Invalid::at("width", w.span(), e.into()),
+                _ => e.into(),
+            },
             e => e.into(),
         })?;
         Ok((camera, position, pinned))
@@ -333,7 +347,7 @@ pub(crate) struct ObjectSpec {
     kind: Kind,
     name: Option<String>,
     label: Option<Spanned<String>>,
-    material: MaterialSpec,
+    material: Spanned<MaterialRef>,
     centre: Option<Spanned<V3>>,
     radius: Option<Spanned<Num>>,
     tube: Option<Spanned<Num>>,
@@ -769,6 +783,9 @@ impl ObjectSpec {
     }
 }
 
+/// The file's named materials, checked.
+pub(crate) type Materials = std::collections::BTreeMap<String, Material>;
+
 /// An object's parts and its label.
 pub(crate) type Built = (Vec<Object>, Option<Label>);
 
@@ -780,11 +797,24 @@ pub(crate) fn build_object(
     method: Method,
     frame: &Frame,
     marks: &Marks,
+    materials: &Materials,
 ) -> (Result<Built, Invalid>, String) {
     let name = spec.name.clone().unwrap_or_else(|| format!("object {}", index + 1));
     let shown = name.escape_debug().to_string();
-    let material = Material::from(spec.material);
-    let built = material.check().and_then(|()| spec.shapes(method, frame, marks)).and_then(|(shapes, anchor)| {
+    let material = match spec.material.get_ref() {
+        MaterialRef::Given(m) => Material::from(*m).check().map(|()| Material::from(*m)),
+        MaterialRef::Named(n) => materials.get(n).copied().ok_or_else(|| {
+            let known: Vec<&str> = materials.keys().map(String::as_str).collect();
+            let why = format!(
+                "no material `{}` in the file's [materials] (it has {})",
+                n.escape_debug(),
+                if known.is_empty() { "none".into() } else { format!("`{}`", known.join("`, `")) }
+            );
+            Invalid::at("material", spec.material.span(), Invalid::Range(why))
+        }),
+    };
+    let built = material.and_then(|material| {
+        let (shapes, anchor) = spec.shapes(method, frame, marks)?;
         let label = spec.label(&shapes, anchor, material.colour)?;
         let objects = shapes.into_iter().map(|shape| Object { name: name.clone(), shape, material }).collect();
         Ok((objects, label))

@@ -75,6 +75,36 @@ pub(crate) struct MaterialSpec {
     kr: Option<f64>,
 }
 
+/// An object's `material`: a table, or the name of one of the file's `[materials.NAME]`
+/// tables.
+#[derive(Clone, Debug)]
+pub(crate) enum MaterialRef {
+    /// `material = "gold"`.
+    Named(String),
+    /// `material = { colour = … }`.
+    Given(MaterialSpec),
+}
+
+impl<'de> Deserialize<'de> for MaterialRef {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Either;
+        impl<'de> serde::de::Visitor<'de> for Either {
+            type Value = MaterialRef;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a material table ({ colour = [r, g, b], … }) or the name of a [materials.NAME] table")
+            }
+            fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<MaterialRef, E> {
+                Ok(MaterialRef::Named(name.to_string()))
+            }
+            // A table keeps its own fields' errors (a serde untagged enum would lose them).
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, map: A) -> Result<MaterialRef, A::Error> {
+                MaterialSpec::deserialize(serde::de::value::MapAccessDeserializer::new(map)).map(MaterialRef::Given)
+            }
+        }
+        d.deserialize_any(Either)
+    }
+}
+
 impl From<MaterialSpec> for Material {
     fn from(s: MaterialSpec) -> Material {
         let d = Material::new(s.colour);
