@@ -49,6 +49,10 @@ pub const MAX_MESH_VERTICES: usize = 1 << 22;
 /// Rings and segments of an exported mesh, each.
 pub const MAX_MESH_SIDE: usize = 1 << 16;
 
+/// Frames of an animation (`--frames`): each is a file, so this bounds what one command
+/// writes (a million frames of the smallest PNG fill some 100 MB of names and headers).
+pub const MAX_FRAMES: usize = 1_000_000;
+
 /// Worker threads (`--threads`). Rendering gains nothing beyond the machine's cores; this
 /// bounds what asking for more costs (1,024 threads start in about 1.4 s on two cores,
 /// 4,096 in 10 s).

@@ -4,7 +4,7 @@ use anyhow::Context;
 use cga_trace::backend::{Backend, Dense, Plain, Sparse, holds};
 use cga_trace::film::Output;
 use cga_trace::integrator::{RayCounts, Window};
-use cga_trace::limits::MAX_THREADS;
+use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
@@ -106,6 +106,37 @@ struct Render {
     /// shaded pictures of the whole image.
     #[arg(long)]
     no_labels: bool,
+    /// Render an animation of N frames at the times 0, 1/(N−1), …, 1 (objects and the
+    /// camera with a `motion` move by their keyframes), written as OUTPUT with the frame's
+    /// number before the extension (out_0000.png, …).
+    #[arg(long, value_name = "N")]
+    frames: Option<usize>,
+    /// Render only frames A to B − 1 of the animation (0-based), so that a range can be split
+    /// across machines; each frame is independent.
+    #[arg(long, value_name = "A..B", value_parser = parse_range, requires = "frames")]
+    frame_range: Option<(usize, usize)>,
+}
+
+/// `a..b`: two frame numbers, `a < b`.
+fn parse_range(s: &str) -> Result<(usize, usize), String> {
+    let (a, b) = s.split_once("..").ok_or("give the range as A..B, e.g. 0..100")?;
+    let (a, b) = (a.trim().parse::<usize>(), b.trim().parse::<usize>());
+    match (a, b) {
+        (Ok(a), Ok(b)) if a < b => Ok((a, b)),
+        _ => Err("give the range as A..B with A < B, e.g. 0..100".into()),
+    }
+}
+
+/// `path` with `_NNNN` (at least four digits, as many as `frames − 1` has) before its
+/// extension.
+fn numbered(path: &Path, frame: usize, frames: usize) -> PathBuf {
+    let digits = (frames.saturating_sub(1)).to_string().len().max(4);
+    let stem = path.file_stem().map_or_else(|| "out".into(), |s| s.to_string_lossy().into_owned());
+    let name = match path.extension() {
+        Some(e) => format!("{stem}_{frame:0digits$}.{}", e.to_string_lossy()),
+        None => format!("{stem}_{frame:0digits$}"),
+    };
+    path.with_file_name(name)
 }
 
 /// `x0,x1,y0,y1`: four numbers.
@@ -208,22 +239,40 @@ fn scale_path(output: &Path) -> PathBuf {
 }
 
 fn render_command(args: Render) -> anyhow::Result<()> {
+    let Some(frames) = args.frames else { return render_frame(&args, &args.output, 0.0) };
+    if !(1..=MAX_FRAMES).contains(&frames) {
+        anyhow::bail!("--frames {frames}: give 1 to {MAX_FRAMES}");
+    }
+    let (first, end) = args.frame_range.unwrap_or((0, frames));
+    if end > frames {
+        anyhow::bail!("--frame-range {first}..{end}: the animation has frames 0 to {}", frames - 1);
+    }
+    for frame in first..end {
+        let time = if frames > 1 { frame as f64 / (frames - 1) as f64 } else { 0.0 };
+        let output = numbered(&args.output, frame, frames);
+        render_frame(&args, &output, time).with_context(|| format!("frame {frame}"))?;
+    }
+    Ok(())
+}
+
+/// One picture of the scene at the frame time `time`, written to `output`.
+fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<()> {
     // Everything that can be wrong with the command line and the outputs is found before the
     // scene is read; nothing is written over until the render has succeeded.
     let pool = thread_pool(args.threads)?;
-    let output = Output::for_path(&args.output, args.bit_depth)?;
-    let mut image = OutputFile::create(&args.output, &[("scene", &args.scene)])?;
+    let output = Output::for_path(output_path, args.bit_depth)?;
+    let mut image = OutputFile::create(output_path, &[("scene", &args.scene)])?;
     // A false-colour image's scale goes beside it (not beside a device: on stderr alone).
-    let beside = scale_path(&args.output);
+    let beside = scale_path(output_path);
     let mut scale_file = if args.aov.is_scalar() && !image.is_device() {
-        Some(OutputFile::create(&beside, &[("scene", &args.scene), ("image", &args.output)])?)
+        Some(OutputFile::create(&beside, &[("scene", &args.scene), ("image", output_path)])?)
     } else {
         None
     };
 
     // A camera without `width` and `height` takes the command line's.
     let size = args.width.zip(args.height);
-    let mut scene = Scene::load_sized(&args.scene, size)?;
+    let mut scene = Scene::load_at(&args.scene, size, time)?;
     for note in scene.notes() {
         say!("note: {note}");
     }
@@ -293,7 +342,7 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     };
     let writing = Instant::now();
     pool.install(|| film.write(&mut image, output, encoding))
-        .with_context(|| format!("writing {}", args.output.display()))?;
+        .with_context(|| format!("writing {}", output_path.display()))?;
     // The image first, then its scale: each is the old file or the new, whatever fails.
     image.commit()?;
     if let Some(file) = scale_file {
@@ -306,7 +355,7 @@ fn render_command(args: Render) -> anyhow::Result<()> {
         "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s, written in {written:.3} s -> {}",
         u64::from(film.width) * u64::from(film.height),
         total as f64 / seconds.max(1e-9),
-        args.output.display()
+        output_path.display()
     );
     Ok(())
 }

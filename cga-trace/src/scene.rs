@@ -86,6 +86,11 @@ impl Scene {
 
     /// [`Scene::load`], with `size` (width, height) for a camera that gives neither.
     pub fn load_sized(path: &Path, size: Option<(u32, u32)>) -> Result<Scene, SceneError> {
+        Scene::load_at(path, size, 0.0)
+    }
+
+    /// [`Scene::load_sized`] at the frame time `time` ([`Scene::parse_at`]).
+    pub fn load_at(path: &Path, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
         use std::io::Read;
         let file = path.display().to_string();
         let io = |source| SceneError::Io { file: file.clone(), source };
@@ -99,7 +104,7 @@ impl Scene {
             let (line, column) = line_column_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
             SceneError::Syntax { file: file.clone(), line, column, message: "the file is not UTF-8 text".into() }
         })?;
-        Scene::parse_sized(&text, &file, size)
+        Scene::parse_at(&text, &file, size, time)
     }
 
     /// Check a scene given as text; `file` names it in errors.
@@ -114,6 +119,12 @@ impl Scene {
 
     /// [`Scene::parse`], with `size` (width, height) for a camera that gives neither.
     pub fn parse_sized(text: &str, file: &str, size: Option<(u32, u32)>) -> Result<Scene, SceneError> {
+        Scene::parse_at(text, file, size, 0.0)
+    }
+
+    /// [`Scene::parse_sized`] at the frame time `time` in [0, 1] (clamped): objects and the
+    /// camera with a `motion` are placed by their keyframes' screw motion at that time.
+    pub fn parse_at(text: &str, file: &str, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
         let at = |offset: usize| line_column(text, offset);
         let sections = sections::split(text).map_err(|m| {
             let (line, column) = at(m.at);
@@ -171,7 +182,7 @@ impl Scene {
         }
         let camera_span = spec.camera.span();
         let in_camera = |reason| invalid(&rest, camera_span.clone(), "camera".into(), reason);
-        let (camera, position, pinned) = spec.camera.into_inner().build(size).map_err(in_camera)?;
+        let (camera, position, pinned) = spec.camera.into_inner().build(size, time).map_err(in_camera)?;
         // Objects size the frame; lights do not (a light far away is only a direction). Each
         // object's placement is read first (a few of its fields), before any is built.
         let mut sizes = Vec::with_capacity(count);
@@ -180,9 +191,9 @@ impl Scene {
                 Some(range) => {
                     let map = |offset: usize| range.start + offset;
                     let value = section_object(&text[range.clone()]).map_err(|e| syntax_error(text, file, &e, &map))?;
-                    ObjectSpec::extent_of(&value).map_err(|e| syntax_error(text, file, &e, &map))?
+                    ObjectSpec::extent_of(&value, time).map_err(|e| syntax_error(text, file, &e, &map))?
                 }
-                None => ObjectSpec::extent_of(&inline[k]).map_err(|e| syntax_error(text, file, &e, &rest))?,
+                None => ObjectSpec::extent_of(&inline[k], time).map_err(|e| syntax_error(text, file, &e, &rest))?,
             });
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
@@ -215,8 +226,9 @@ impl Scene {
                 None => inline.next().expect("one per object"),
             };
             let span = value.span();
-            let spec =
+            let mut spec =
                 ObjectSpec::deserialize(value.into_deserializer()).map_err(|e| syntax_error(text, file, &e, &map))?;
+            spec.time = time;
             let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, &materials);
             let what = format!("object `{name}`");
             let (objects, label) = object.map_err(|reason| invalid(&map, span.clone(), what.clone(), reason))?;

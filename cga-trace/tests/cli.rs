@@ -165,3 +165,19 @@ fn a_camera_without_a_size_takes_the_command_lines_and_a_dark_scene_gets_a_note(
     assert!(String::from_utf8_lossy(&run.stderr).contains("note: the scene has no lights"), "{run:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn frames_are_numbered_files_and_a_range_renders_only_its_own() {
+    let dir = scratch("frames");
+    let scene_file = scene("primitives.toml");
+    let (s, out) = (scene_file.to_str().unwrap(), dir.join("anim.png"));
+    let o = out.to_str().unwrap();
+    let run = render(&[s, "-o", o, "--width", "16", "--frames", "3", "--frame-range", "1..3"]);
+    assert!(run.status.success(), "{run:?}");
+    let names: std::collections::BTreeSet<String> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    assert_eq!(names, ["anim_0001.png", "anim_0002.png"].map(String::from).into());
+    let line = error_line(&render(&[s, "-o", o, "--frames", "3", "--frame-range", "2..5"]));
+    assert!(line.contains("--frame-range 2..5: the animation has frames 0 to 2"), "{line}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

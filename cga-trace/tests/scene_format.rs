@@ -246,3 +246,47 @@ fn named_materials_render_as_written_inline() {
     let scene = Scene::parse(&inline, "inline.toml").unwrap();
     assert_eq!(film, Renderer::new(&scene).render(Aov::Shaded, &|| {}).to_rgb8(scene.settings.encoding).into_raw());
 }
+
+fn motor_of(m: cga_core::Motor) -> String {
+    let c = [m.s, m.e12, m.e13, m.e23, m.e1i, m.e2i, m.e3i, m.e123i];
+    format!("[{}]", c.map(|x| format!("{x:?}")).join(", "))
+}
+
+/// Keyframed motion: at each key's time an object (and the camera) stands where that key's
+/// motor puts it, and between keys where the screw motion between them does.
+#[test]
+fn keyframed_motors_pass_through_their_keys() {
+    use cga_core::{Line, Motor};
+    let axis = Line::new([0.5, 0.0, 0.0], [0.2, 0.3, 1.0]).unwrap();
+    let keys = [0.0, 1.2, 2.0].map(|a| Motor::screw(&axis, a, 0.4).unwrap());
+    let list = keys.map(motor_of).join(", ");
+    let cam = Motor::from_translation([0.3, -0.5, 0.2]);
+    let box_ = "type = \"box\"\nmin = [-3.0, -1.5, -1.0]\nmax = [3.0, 1.5, 1.0]\n";
+    let file = |object: &str, camera: &str| {
+        format!(
+            "[camera]\nposition = [2.0, -12.0, 5.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 64\nheight = 48\n{camera}{LIGHT}[[objects]]\n{MATERIAL}{object}"
+        )
+    };
+    let picture = |text: &str, time: f64| {
+        let scene = Scene::parse_at(text, "motion.toml", None, time).unwrap_or_else(|e| panic!("{e}"));
+        Renderer::new(&scene).render(Aov::Shaded, &|| {}).to_rgb8(scene.settings.encoding).into_raw()
+    };
+    let moving = file(
+        &format!("{box_}motion = [{list}]\n"),
+        &format!("motion = [{}, {}]\n", motor_of(Motor::identity()), motor_of(cam)),
+    );
+    for (k, time) in [0.0, 0.5, 1.0].into_iter().enumerate() {
+        let camera_at = Motor::interpolate(&Motor::identity(), &cam, time).unwrap();
+        let fixed =
+            file(&format!("{box_}motor = {}\n", motor_of(keys[k])), &format!("motion = [{}]\n", motor_of(camera_at)));
+        assert!(differing(&picture(&moving, time), &picture(&fixed, 0.0)) <= 9, "key {k}");
+    }
+    // A quarter of the way: the screw motion between the first two keys.
+    let between = Motor::interpolate(&keys[0], &keys[1], 0.5).unwrap();
+    let camera_at = Motor::interpolate(&Motor::identity(), &cam, 0.25).unwrap();
+    let fixed =
+        file(&format!("{box_}motor = {}\n", motor_of(between)), &format!("motion = [{}]\n", motor_of(camera_at)));
+    assert!(differing(&picture(&moving, 0.25), &picture(&fixed, 0.0)) <= 9);
+    let moved = differing(&picture(&moving, 0.0), &picture(&moving, 0.25));
+    assert!(moved > 100, "it moves: {moved} channels");
+}

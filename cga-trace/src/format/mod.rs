@@ -40,8 +40,9 @@ use serde::Deserialize;
 use std::ops::Range;
 use std::sync::Arc;
 use toml::Spanned;
+pub use transform::MAX_KEYS;
 pub(crate) use transform::Placement;
-use transform::{Step, rigid, world_motor};
+use transform::{Step, motion_at, rigid, world_motor};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -129,6 +130,8 @@ pub(crate) struct CameraSpec {
     y_max: Option<Spanned<Num>>,
     /// Horizontal field of view in degrees, instead of `x_max`: `x_max = 2 f tan(fov/2)`.
     fov: Option<Spanned<Num>>,
+    /// Keyframe motors over the frame times 0 … 1, moving the pose (camera frame → world).
+    motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
     /// Pixels; may be left out when the caller gives the size (`--width` and `--height`).
     width: Option<Spanned<u32>>,
     height: Option<Spanned<u32>>,
@@ -139,8 +142,9 @@ impl CameraSpec {
     /// and whether the file gives both image-plane extents (pixels then need not be square).
     /// The position is read from the pose's coefficients, never through a conformal point,
     /// so it is exact wherever the camera is.
-    /// `size` stands in for `width` and `height` where the file gives neither.
-    pub(crate) fn build(self, size: Option<(u32, u32)>) -> Result<(Camera, E3, bool), Invalid> {
+    /// `size` stands in for `width` and `height` where the file gives neither; `time` is the
+    /// frame time its `motion` is read at.
+    pub(crate) fn build(self, size: Option<(u32, u32)>, time: f64) -> Result<(Camera, E3, bool), Invalid> {
         let pose = match (self.motor, self.position, self.look_at) {
             (Some(m), None, None) => rigid(m.get_ref().0).map_err(|e| Invalid::at("motor", m.span(), e))?,
             (None, Some(p), Some(t)) => Camera::pose_look_at(p.0, t.0, self.up.map_or([0.0, 0.0, 1.0], |u| u.0))?,
@@ -149,6 +153,13 @@ impl CameraSpec {
         let position = match self.position {
             Some(p) => p.0,
             None => pose.translation(),
+        };
+        let (pose, position) = match &self.motion {
+            Some(keys) => {
+                let m = motion_at(keys, time)?;
+                (m * pose, m.move_point(position))
+            }
+            None => (pose, position),
         };
         let pose = Motor::from(pose.rotor());
         let (width, height) = match (&self.width, &self.height, size) {
@@ -378,6 +389,11 @@ pub(crate) struct ObjectSpec {
     continuity: Option<Spanned<Num>>,
     motor: Option<Spanned<Nums<8>>>,
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
+    /// Keyframe motors over the frame times 0 … 1, applied after `motor`/`transform`.
+    motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
+    /// The frame time the object is built at (not in the file: the scene's).
+    #[serde(skip)]
+    pub(crate) time: f64,
 }
 
 /// A circle for an evolved surface: Euclidean, through three points, or the original
@@ -456,16 +472,30 @@ impl ObjectSpec {
             let far = circles.iter().filter_map(|c| circle(c.get_ref())).map(|(y, r)| r + norm(sub(x, y)));
             (x, far.fold(r, f64::max))
         };
-        let motor = world_motor(self.motor.as_ref(), self.transform.as_ref()).ok().flatten();
+        let motor = self.world_motor().ok().flatten();
         Some((motor.map_or(point, |m| m.move_point(point)), extent))
+    }
+
+    /// The object's world motor at its frame time: its `motor` or `transform`, then its
+    /// `motion` at that time.
+    fn world_motor(&self) -> Result<Option<Motor>, Invalid> {
+        let own = world_motor(self.motor.as_ref(), self.transform.as_ref())?;
+        Ok(match &self.motion {
+            Some(keys) => Some(motion_at(keys, self.time)? * own.unwrap_or(Motor::identity())),
+            None => own,
+        })
     }
 
     /// [`ObjectSpec::extent`] of an object as parsed, read from its placement fields alone
     /// (what else it holds is checked when it is built).
-    pub(crate) fn extent_of(value: &Spanned<toml::de::DeValue<'_>>) -> Result<Option<(E3, f64)>, toml::de::Error> {
+    pub(crate) fn extent_of(
+        value: &Spanned<toml::de::DeValue<'_>>,
+        time: f64,
+    ) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 22] = [
+        const READ: [&str; 23] = [
             "type",
+            "motion",
             "size",
             "blade",
             "material",
@@ -494,7 +524,9 @@ impl ObjectSpec {
             placement.insert(key.clone(), v.clone());
         }
         let table = Spanned::new(value.span(), toml::de::DeValue::Table(placement));
-        Ok(ObjectSpec::deserialize(table.into_deserializer())?.extent())
+        let mut spec = ObjectSpec::deserialize(table.into_deserializer())?;
+        spec.time = time;
+        Ok(spec.extent())
     }
 
     /// The geometry fields given, with their spans.
@@ -569,7 +601,7 @@ impl ObjectSpec {
         if let Some((field, span)) = self.given().into_iter().find(|(f, _)| !takes.contains(f)) {
             return Err(Invalid::at(field, span, Invalid::Form(says)));
         }
-        let place = Placement::new(world_motor(self.motor.as_ref(), self.transform.as_ref())?, frame);
+        let place = Placement::new(self.world_motor()?, frame);
         let v = |x: &Option<Spanned<V3>>| x.as_ref().map(|x| x.get_ref().0);
         let (centre, normal, point) = (v(&self.centre), v(&self.normal), v(&self.point));
         let radius = self.radius.as_ref().map(|r| r.get_ref().0);

@@ -110,6 +110,35 @@ pub(crate) fn world_motor(
     }
 }
 
+/// Keyframes a `motion` list holds at most.
+pub const MAX_KEYS: usize = 4096;
+
+/// The motor of a `motion` list at `time` in [0, 1]: rigid keyframe motors evenly spaced over
+/// the frame times, `M(t)` the screw motion between the two keys about `t`
+/// (`Motor::interpolate`: constant screw velocity, through each key).
+pub(crate) fn motion_at(keys: &Spanned<Vec<Spanned<Nums<8>>>>, time: f64) -> Result<Motor, Invalid> {
+    let at = |reason| Invalid::at("motion", keys.span(), reason);
+    let list = keys.get_ref();
+    if list.is_empty() || list.len() > MAX_KEYS {
+        return Err(at(Invalid::Limit {
+            what: "keyframes (at least 1)",
+            found: list.len() as u64,
+            limit: MAX_KEYS as u64,
+        }));
+    }
+    let motors: Vec<Motor> = list
+        .iter()
+        .map(|k| rigid(k.get_ref().0).map_err(|e| Invalid::at("motion", k.span(), e)))
+        .collect::<Result<_, _>>()?;
+    if motors.len() == 1 {
+        return Ok(motors[0]);
+    }
+    let x = time.clamp(0.0, 1.0) * (motors.len() - 1) as f64;
+    let k = (x.floor() as usize).min(motors.len() - 2);
+    Motor::interpolate(&motors[k], &motors[k + 1], x - k as f64)
+        .map_err(|e| at(Invalid::Range(format!("keyframes {} and {} cannot be interpolated: {e}", k + 1, k + 2))))
+}
+
 /// Where an object's world coordinates go: its rigid world motor (if any) `x ↦ R x + t`,
 /// then the frame's `x ↦ (x − o) / s`, in one step `x ↦ (R x + (t − o)) / s`. The translation
 /// is taken relative to the camera first, so a motor that carries an object next to a
