@@ -95,6 +95,14 @@ impl Film {
         ImageBuffer::from_raw(self.width, self.height, data).expect("3 w h subpixels")
     }
 
+    /// The film as a PNG shows it: each linear value times `2^exposure`, then tone-mapped
+    /// (still linear; the encoding comes after).
+    pub fn developed(&self, exposure: f64, tone_map: crate::settings::ToneMap) -> Film {
+        let gain = exposure.exp2();
+        let pixels = self.pixels.iter().map(|p| p.map(|v| tone_map.apply(v * gain))).collect();
+        Film { width: self.width, height: self.height, pixels }
+    }
+
     /// 8-bit RGB, top row first, encoded.
     pub fn to_rgb8(&self, encoding: Encoding) -> image::RgbImage {
         // `encode` is in [0, 1]: adding ½ and truncating rounds (`f64::round` is a libm call

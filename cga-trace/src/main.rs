@@ -6,6 +6,7 @@ use cga_trace::film::Output;
 use cga_trace::integrator::{RayCounts, Window};
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
+use cga_trace::settings::{MAX_EXPOSURE, ToneMap};
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
@@ -91,6 +92,13 @@ struct Render {
     /// PNG encoding (overrides the scene).
     #[arg(long, value_enum)]
     encoding: Option<Encoding>,
+    /// Exposure of PNG output in stops, −64 to 64 (overrides the scene; EXR and HDR stay
+    /// linear as rendered).
+    #[arg(long, allow_hyphen_values = true)]
+    exposure: Option<f64>,
+    /// Tone map of PNG output (overrides the scene): none (clip) or filmic (ACES).
+    #[arg(long, value_enum)]
+    tone_map: Option<ToneMap>,
     /// Write a debug image instead of the shaded one: normals, α, or a curvature of swept
     /// surfaces in false colour (viridis; the scale is written to OUTPUT.scale.json).
     #[arg(long, value_enum, default_value_t = Aov::Shaded)]
@@ -295,6 +303,11 @@ fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<
         None => Window::full(w, h),
     };
     let encoding = args.encoding.unwrap_or(scene.settings.encoding);
+    let exposure = args.exposure.unwrap_or(scene.settings.exposure);
+    if !exposure.is_finite() || exposure.abs() > MAX_EXPOSURE {
+        anyhow::bail!("--exposure {exposure}: give −{MAX_EXPOSURE} to {MAX_EXPOSURE} stops");
+    }
+    let tone_map = args.tone_map.unwrap_or(scene.settings.tone_map);
 
     let bar = indicatif::ProgressBar::new(window.rows.len() as u64).with_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
@@ -339,6 +352,13 @@ fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<
             film
         }
         None => film,
+    };
+    // Exposure and tone map develop a shaded PNG; EXR and HDR keep the linear values.
+    let developed = matches!(output, Output::Png8 | Output::Png16) && args.aov == Aov::Shaded;
+    let film = if developed && (exposure != 0.0 || tone_map != ToneMap::None) {
+        film.developed(exposure, tone_map)
+    } else {
+        film
     };
     let writing = Instant::now();
     pool.install(|| film.write(&mut image, output, encoding))

@@ -16,6 +16,36 @@ pub enum Encoding {
     Linear,
 }
 
+/// How a PNG's linear values are brought into [0, 1] before encoding (EXR and HDR keep them
+/// as rendered).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
+pub enum ToneMap {
+    /// Clipped at 1 (the default; what the reference images use).
+    #[default]
+    None,
+    /// The filmic curve of ACES (Narkowicz's fit, `x (2.51 x + 0.03) / (x (2.43 x + 0.59) +
+    /// 0.14)`): highlights roll off to white instead of clipping.
+    Filmic,
+}
+
+impl ToneMap {
+    /// One linear channel, tone-mapped (the filmic curve is 0 at 0, increasing, and ≤ 1).
+    pub fn apply(self, v: f64) -> f64 {
+        match self {
+            ToneMap::None => v,
+            ToneMap::Filmic => {
+                let x = v.max(0.0);
+                (x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14)).min(1.0)
+            }
+        }
+    }
+}
+
+/// Exposure, in stops, a scene or the command line may set: 2^±64 spans any range of
+/// linear values a picture needs.
+pub const MAX_EXPOSURE: f64 = 64.0;
+
 /// Global render settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
@@ -35,6 +65,11 @@ pub struct Settings {
     pub attenuation: [f64; 3],
     /// PNG encoding.
     pub encoding: Encoding,
+    /// Exposure in stops for PNG output: linear values times `2^exposure` (EXR and HDR keep
+    /// them as rendered).
+    pub exposure: f64,
+    /// The tone map of PNG output, after the exposure.
+    pub tone_map: ToneMap,
     /// How rays meet evolved surfaces (default: hybrid — α-cells cull, the degree-8
     /// polynomial finds the roots; docs/SURFACE.md).
     pub surface_method: Method,
@@ -54,6 +89,8 @@ impl Default for Settings {
             shadows: true,
             attenuation: [1.0, 0.0, 0.0],
             encoding: Encoding::Srgb,
+            exposure: 0.0,
+            tone_map: ToneMap::None,
             surface_method: Method::default(),
         }
     }
@@ -86,6 +123,9 @@ impl Settings {
         if s.ambient < 0.0 || s.background.iter().any(|&c| c < 0.0) {
             return Err(Invalid::Value("ambient and background must be ≥ 0"));
         }
+        if !s.exposure.is_finite() || s.exposure.abs() > MAX_EXPOSURE {
+            return Err(Invalid::Value("exposure must lie in [-64, 64] stops"));
+        }
         if !(0.0..=1.0).contains(&s.shadow_transmission) {
             return Err(Invalid::Value("shadow_transmission must lie in [0, 1]"));
         }
@@ -93,5 +133,25 @@ impl Settings {
             return Err(Invalid::Value("attenuation coefficients must be ≥ 0 and not all zero"));
         }
         s.surface_method.check().map_err(Invalid::SurfaceMethod)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::ToneMap;
+
+    #[test]
+    fn the_filmic_curve_rolls_highlights_off_without_reordering_values() {
+        let f = |v| ToneMap::Filmic.apply(v);
+        assert_eq!(f(0.0), 0.0);
+        assert_eq!(f(-1.0), 0.0);
+        // An overflowing value is as bright as can be, NaN as dark (as the encoding treats them).
+        assert_eq!((f(f64::INFINITY), f(f64::NAN)), (1.0, 0.0));
+        let values: Vec<f64> = (0..=400).map(|k| f(f64::from(k) * 0.05)).collect();
+        assert!(values.windows(2).all(|w| w[0] <= w[1]), "increasing");
+        assert!(values.iter().all(|&v| (0.0..=1.0).contains(&v)));
+        // Mid grey stays near mid grey; 2 (a clipped highlight) is still below white.
+        assert!((f(0.18) - 0.18).abs() < 0.1 && f(2.0) < 0.95, "{} {}", f(0.18), f(2.0));
+        assert_eq!(ToneMap::None.apply(3.0), 3.0);
     }
 }

@@ -181,3 +181,34 @@ fn frames_are_numbered_files_and_a_range_renders_only_its_own() {
     assert!(line.contains("--frame-range 2..5: the animation has frames 0 to 2"), "{line}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn exposure_scales_linear_values_and_the_filmic_map_keeps_highlights_below_white() {
+    let dir = scratch("exposure");
+    let p = scene("primitives.toml");
+    let s = p.to_str().unwrap();
+    let png = |name: &str, extra: &[&str]| {
+        let out = dir.join(name);
+        let mut args = vec![s, "-o", out.to_str().unwrap(), "--width", "40", "--encoding", "linear"];
+        args.extend_from_slice(extra);
+        let run = render(&args);
+        assert!(run.status.success(), "{run:?}");
+        image::open(&out).unwrap().to_rgb8().into_raw()
+    };
+    let (plain, brighter) = (png("a.png", &[]), png("b.png", &["--exposure", "1"]));
+    // One stop doubles every linear value (to rounding of 8 bits), clipped at white.
+    let off = plain.iter().zip(&brighter).filter(|(a, b)| (2 * u32::from(**a)).min(255).abs_diff(u32::from(**b)) > 1);
+    assert_eq!(off.count(), 0);
+    let darker = png("c.png", &["--exposure", "-1"]);
+    // One stop down halves what the plain picture did not clip (a clipped value was over 1).
+    let unclipped = plain.iter().zip(&darker).filter(|(a, _)| **a < 255);
+    assert!(unclipped.clone().count() > 1000);
+    assert!(unclipped.clone().all(|(a, b)| (u32::from(*a) / 2).abs_diff(u32::from(*b)) <= 1));
+    // Filmic at +3 stops: what clips without it stays below white.
+    let (clipped, filmic) =
+        (png("d.png", &["--exposure", "3"]), png("e.png", &["--exposure", "3", "--tone-map", "filmic"]));
+    assert!(clipped.iter().filter(|&&v| v == 255).count() > filmic.iter().filter(|&&v| v == 255).count());
+    let line = error_line(&render(&[s, "-o", dir.join("f.png").to_str().unwrap(), "--exposure", "100"]));
+    assert!(line.contains("--exposure 100"), "{line}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -5,7 +5,7 @@
 
 use super::numbers::{numbers, some_number, some_numbers};
 use crate::material::Material;
-use crate::settings::{Encoding, Settings};
+use crate::settings::{Encoding, Settings, ToneMap};
 use crate::surface::Method;
 use serde::Deserialize;
 
@@ -25,7 +25,18 @@ pub(crate) struct SettingsSpec {
     #[serde(default, deserialize_with = "some_numbers")]
     attenuation: Option<[f64; 3]>,
     encoding: Option<EncodingSpec>,
+    #[serde(default, deserialize_with = "some_number")]
+    exposure: Option<f64>,
+    tone_map: Option<ToneMapSpec>,
     surface_method: Option<Method>,
+}
+
+/// `tone_map = "none" | "filmic"`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum ToneMapSpec {
+    None,
+    Filmic,
 }
 
 /// `encoding = "srgb" | "linear"`.
@@ -51,6 +62,12 @@ impl From<SettingsSpec> for Settings {
                 Some(EncodingSpec::Srgb) => Encoding::Srgb,
                 Some(EncodingSpec::Linear) => Encoding::Linear,
                 None => d.encoding,
+            },
+            exposure: s.exposure.unwrap_or(d.exposure),
+            tone_map: match s.tone_map {
+                Some(ToneMapSpec::None) => ToneMap::None,
+                Some(ToneMapSpec::Filmic) => ToneMap::Filmic,
+                None => d.tone_map,
             },
             surface_method: s.surface_method.unwrap_or(d.surface_method),
         }
