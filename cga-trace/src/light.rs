@@ -1,5 +1,5 @@
-//! Lights: points, and directional lights at infinity (a sun), which light every point from
-//! one direction and cast shadows without end.
+//! Lights: points, spot lights (points lighting a cone), and directional lights at infinity
+//! (a sun), which light every point from one direction and cast shadows without end.
 
 use cga_core::euclid::{E3, norm, scale, sub};
 use cga_core::{Real, Select};
@@ -20,6 +20,19 @@ pub enum Source {
     Point(E3),
     /// A directional light: its light travels along this unit direction.
     Directional(E3),
+    /// A spot light at `position` shining along the unit `axis`: full within `radius` of the
+    /// axis, nothing beyond `falloff`, a smooth step between (POV-Ray's `spotlight`, with
+    /// the angles given by their cosines).
+    Spot {
+        /// Where it is.
+        position: E3,
+        /// The unit direction it shines along.
+        axis: E3,
+        /// `cos radius`: full light within this cone.
+        cos_radius: f64,
+        /// `cos falloff`: no light beyond this cone.
+        cos_falloff: f64,
+    },
 }
 
 impl Light {
@@ -29,12 +42,31 @@ impl Light {
     #[inline(always)]
     pub fn toward<T: Real>(&self, x: E3<T>) -> (E3<T>, T) {
         match self.source {
-            Source::Point(p) => {
+            Source::Point(p) | Source::Spot { position: p, .. } => {
                 let to_light = sub(p.map(T::from_f64), x);
                 let distance = norm(to_light);
                 (scale(to_light, T::one() / distance), distance)
             }
             Source::Directional(d) => (d.map(|c| T::from_f64(-c)), T::from_f64(f64::INFINITY)),
+        }
+    }
+}
+
+impl Light {
+    /// How much of the light reaches along the unit direction `l` towards it: 1 but for a
+    /// spot light, whose `c = −l · axis` gives `smoothstep(cos falloff, cos radius, c)`,
+    /// `u² (3 − 2u)` for `u = (c − cos falloff)/(cos radius − cos falloff)` clamped to
+    /// [0, 1]. Lane by lane for a packet.
+    #[inline(always)]
+    pub fn cone<T: Select>(&self, l: E3<T>) -> T {
+        match self.source {
+            Source::Spot { axis, cos_radius, cos_falloff, .. } => {
+                let c = T::zero() - cga_core::euclid::dot(l, axis.map(T::from_f64));
+                let width = T::from_f64((cos_radius - cos_falloff).max(f64::MIN_POSITIVE));
+                let u = ((c - T::from_f64(cos_falloff)) / width).max_lanes(T::zero()).min_lanes(T::one());
+                u * u * (T::from_f64(3.0) - T::from_f64(2.0) * u)
+            }
+            _ => T::one(),
         }
     }
 }

@@ -413,9 +413,16 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
         ),
         // Lights.
         (
-            "a light both ways",
-            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\ndirection = [0.0, 0.0, -1.0]\n"),
-            vec!["bad.toml:6:", "light 1", "not both"],
+            "a spot light wider inside than out",
+            format!(
+                "{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\ndirection = [0.0, 0.0, -1.0]\nradius = 50.0\nfalloff = 40.0\n"
+            ),
+            vec!["bad.toml:10:", "light 1", "`falloff`", "0 ≤ radius ≤ falloff ≤ 90"],
+        ),
+        (
+            "spot angles on a point light",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nfalloff = 40.0\n"),
+            vec!["bad.toml:8:", "light 1", "`falloff`", "give it `position` and `direction`"],
         ),
         (
             "a light of neither kind",

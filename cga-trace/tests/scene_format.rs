@@ -290,3 +290,42 @@ fn keyframed_motors_pass_through_their_keys() {
     let moved = differing(&picture(&moving, 0.0), &picture(&moving, 0.25));
     assert!(moved > 100, "it moves: {moved} channels");
 }
+
+/// A spot light lights its cone as a point light there does (full within `radius` of its
+/// axis) and nothing beyond `falloff`, with a smooth step between.
+#[test]
+fn a_spot_light_lights_its_cone_and_nothing_beyond() {
+    let camera = "[camera]\nposition = [0.0, -0.001, 20.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 64\nheight = 64\n[render]\nambient = 0.0\n";
+    let floor = "[[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = { colour = [1.0, 1.0, 1.0], ks = 0.0 }\n";
+    let film = |light: &str| {
+        let scene = Scene::parse(&format!("{camera}{light}{floor}"), "spot.toml").unwrap_or_else(|e| panic!("{e}"));
+        Renderer::new(&scene).render(Aov::Shaded, &|| {})
+    };
+    // Above the origin at height 10: radius 20° reaches 3.64 from the axis, falloff 30° 5.77.
+    let spot =
+        film("[[lights]]\nposition = [0.0, 0.0, 10.0]\ndirection = [0.0, 0.0, -1.0]\nradius = 20.0\nfalloff = 30.0\n");
+    let point = film("[[lights]]\nposition = [0.0, 0.0, 10.0]\n");
+    let camera_scene = Scene::parse(&format!("{camera}{floor}"), "c.toml").unwrap();
+    let (mut inside, mut outside, mut between) = (0, 0, 0);
+    for j in 0..64 {
+        for i in 0..64 {
+            let ray = camera_scene.camera.ray(f64::from(i) + 0.5, f64::from(j) + 0.5).unwrap();
+            // Where the pixel's ray meets the floor, in world coordinates.
+            let floor_z = camera_scene.frame.point([0.0; 3])[2];
+            let x = camera_scene.frame.world_point(ray.at((floor_z - ray.origin[2]) / ray.dir[2]));
+            let r = x[0].hypot(x[1]);
+            let (s, p) = (spot.get(i, j)[0], point.get(i, j)[0]);
+            if r < 3.6 {
+                assert_eq!(s, p, "inside the hot spot at r = {r}");
+                inside += 1;
+            } else if r > 5.8 {
+                assert_eq!(s, 0.0, "beyond the falloff at r = {r}");
+                outside += 1;
+            } else if r > 3.7 && r < 5.7 {
+                assert!(s > 0.0 && s < p, "the penumbra at r = {r}: {s} of {p}");
+                between += 1;
+            }
+        }
+    }
+    assert!(inside > 100 && outside > 100 && between > 100, "{inside} {outside} {between}");
+}

@@ -60,57 +60,85 @@ pub(crate) struct SceneFile {
     pub _objects: Vec<serde::de::IgnoredAny>,
 }
 
-/// A `[[lights]]` table: `position` (a point light) or `direction` (a directional light: the
-/// way its light travels), and a colour.
+/// A `[[lights]]` table: `position` (a point light), `direction` (a directional light: the
+/// way its light travels), or both (a spot light shining along `direction`, full within
+/// `radius` degrees of it and dark beyond `falloff`, as POV-Ray's `spotlight`), and a colour.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct LightSpec {
     position: Option<Spanned<V3>>,
     direction: Option<Spanned<V3>>,
+    radius: Option<Spanned<Num>>,
+    falloff: Option<Spanned<Num>>,
     colour: Option<Spanned<V3>>,
 }
 
+/// POV-Ray's spot light angles where a file gives none: full light within 30° of the axis,
+/// none beyond 45°.
+const SPOT_RADIUS: f64 = 30.0;
+const SPOT_FALLOFF: f64 = 45.0;
+
 impl LightSpec {
     /// The light in `frame`: colour non-negative; a point light's position one the frame
-    /// holds; a directional light's direction not zero.
+    /// holds; a directional light's direction not zero; a spot light's angles with
+    /// `0 ≤ radius ≤ falloff ≤ 90` degrees.
     pub(crate) fn build(self, frame: &Frame) -> Result<Light, Invalid> {
         let colour = self.colour.as_ref().map_or([1.0; 3], |c| c.get_ref().0);
         if let Some(c) = self.colour.as_ref().filter(|_| colour.iter().any(|&c| c < 0.0)) {
             return Err(Invalid::at("colour", c.span(), Invalid::Value("a light's colour must be ≥ 0")));
         }
+        if (self.position.is_none() || self.direction.is_none())
+            && let Some(a) = self.radius.as_ref().or(self.falloff.as_ref())
+        {
+            let why = Invalid::Value("`radius` and `falloff` are a spot light's: give it `position` and `direction`");
+            return Err(Invalid::at(if self.radius.is_some() { "radius" } else { "falloff" }, a.span(), why));
+        }
         let source = match (self.position, self.direction) {
-            (Some(p), None) => {
-                // A light forms no conformal products: any distance whose norm f64 holds (with
-                // room for the distances from points of the scene) will do.
-                let x = frame.point(p.get_ref().0);
-                let d = norm(x);
-                if d.is_nan() || d > 1e300 {
-                    let why = format!(
-                        "the light is {:.1e} from the camera, more than f64 holds in units of the scene's size ({:.1e}): give it as `direction` (a light that far is a directional light)",
-                        norm(sub(p.get_ref().0, frame.origin)),
-                        frame.scale
-                    );
-                    return Err(Invalid::at("position", p.span(), Invalid::Range(why)));
-                }
-                Source::Point(x)
-            }
+            (Some(p), None) => Source::Point(light_position(&p, frame)?),
             (None, Some(d)) => {
                 let unit = cga_core::euclid::unit(d.get_ref().0);
                 Source::Directional(unit.ok_or(Invalid::at("direction", d.span(), GeometryError::ZeroVector.into()))?)
             }
-            (Some(_), Some(_)) => {
-                return Err(Invalid::Form(
-                    "a light takes `position` (a point light) or `direction` (a directional light), not both",
-                ));
+            (Some(p), Some(d)) => {
+                let position = light_position(&p, frame)?;
+                let axis = cga_core::euclid::unit(d.get_ref().0);
+                let axis = axis.ok_or(Invalid::at("direction", d.span(), GeometryError::ZeroVector.into()))?;
+                let angle = |a: &Option<Spanned<Num>>, default| a.as_ref().map_or(default, |a| a.get_ref().0);
+                let (radius, falloff) = (angle(&self.radius, SPOT_RADIUS), angle(&self.falloff, SPOT_FALLOFF));
+                if !(0.0 < falloff && falloff <= 90.0 && 0.0 <= radius && radius <= falloff) {
+                    let field = if self.falloff.is_some() { "falloff" } else { "radius" };
+                    let span = self.falloff.as_ref().or(self.radius.as_ref()).map_or(p.span(), |a| a.span());
+                    let why = Invalid::Value("a spot light needs 0 ≤ radius ≤ falloff ≤ 90 degrees, falloff > 0");
+                    return Err(Invalid::at(field, span, why));
+                }
+                let (cos_radius, cos_falloff) = (radius.to_radians().cos(), falloff.to_radians().cos());
+                Source::Spot { position, axis, cos_radius, cos_falloff }
             }
             (None, None) => {
                 return Err(Invalid::Form(
-                    "a light takes `position` (a point light) or `direction` (a directional light)",
+                    "a light takes `position` (a point light), `direction` (a directional light), or both (a spot light)",
                 ));
             }
         };
         Ok(Light { source, colour })
     }
+}
+
+/// A point or spot light's position in `frame`. A light forms no conformal products: any
+/// distance whose norm f64 holds (with room for the distances from points of the scene)
+/// will do.
+fn light_position(p: &Spanned<V3>, frame: &Frame) -> Result<E3, Invalid> {
+    let x = frame.point(p.get_ref().0);
+    let d = norm(x);
+    if d.is_nan() || d > 1e300 {
+        let why = format!(
+            "the light is {:.1e} from the camera, more than f64 holds in units of the scene's size ({:.1e}): give it as `direction` (a light that far is a directional light)",
+            norm(sub(p.get_ref().0, frame.origin)),
+            frame.scale
+        );
+        return Err(Invalid::at("position", p.span(), Invalid::Range(why)));
+    }
+    Ok(x)
 }
 
 /// The camera: a pose (`position`, `look_at`, `up`, or a `motor`), focal length, image-plane

@@ -64,7 +64,7 @@ impl<B: Backend> Renderer<'_, B> {
         let offset = offset(x, rays.origin(), by_lane(hits, |_, k| self.errors[k]));
         let hit: [bool; W] = core::array::from_fn(|l| hits[l].is_some());
         for light in &self.scene.lights {
-            let Some(Lit { lit, l, distance, diffuse, specular, shadow_origin }) =
+            let Some(Lit { lit, l, distance, diffuse, specular, cone, shadow_origin }) =
                 lit(light, (x, n, v), &m, &hit, offset)
             else {
                 continue;
@@ -78,7 +78,7 @@ impl<B: Backend> Renderer<'_, B> {
                 let blocked = self.blocked(&shadow, &t_max, &own);
                 s = R::T::from_fn(|k| if blocked[k] { settings.shadow_transmission } else { 1.0 });
             }
-            let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, s);
+            let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, s * cone);
             for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
                 for (out, t) in colour.iter_mut().zip(&term) {
                     *out += t.lane(k);
@@ -125,6 +125,8 @@ pub(crate) struct Lit<T, const W: usize> {
     pub diffuse: T,
     /// `max(n · h, 0)^q`.
     pub specular: T,
+    /// How much of it reaches the hits ([`Light::cone`]: 1 but for a spot light).
+    pub cone: T,
     /// Where the shadow rays towards it start ([`leaving_origin`]).
     pub shadow_origin: E3<T>,
 }
@@ -144,8 +146,9 @@ pub(crate) fn lit<T: Lane, const W: usize>(
     let (l, distance) = light.toward(x);
     let diffuse = dot(n, l);
     let specular = shine(m, n, add(l, v));
-    let lighting = lights(distance, diffuse, specular);
+    let cone = light.cone(l);
+    let lighting = lights(distance, diffuse, specular) & T::zero().lt(cone);
     let lit: [bool; W] = core::array::from_fn(|k| hit[k] && T::mask_lane(lighting, k));
     let shadow_origin = leaving_origin(x, n, diffuse, offset);
-    lit.iter().any(|&b| b).then_some(Lit { lit, l, distance, diffuse, specular, shadow_origin })
+    lit.iter().any(|&b| b).then_some(Lit { lit, l, distance, diffuse, specular, cone, shadow_origin })
 }
