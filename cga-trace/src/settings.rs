@@ -42,6 +42,18 @@ impl ToneMap {
     }
 }
 
+/// How a hit's mirror reflection adds to its own colour.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Reflection {
+    /// `I = I_local + k_r I_reflected`: the paper's eq. 12, which the reference images use
+    /// (a mirror adds light on top of its own shading).
+    #[default]
+    Additive,
+    /// `I = (1 − k_r) I_local + k_r I_reflected`: what a surface reflects it does not also
+    /// shade, so no bounce makes more light than it receives.
+    Conserving,
+}
+
 /// Exposure, in stops, a scene or the command line may set: 2^±64 spans any range of
 /// linear values a picture needs.
 pub const MAX_EXPOSURE: f64 = 64.0;
@@ -70,6 +82,8 @@ pub struct Settings {
     pub exposure: f64,
     /// The tone map of PNG output, after the exposure.
     pub tone_map: ToneMap,
+    /// How mirror reflections add to a hit's colour.
+    pub reflection: Reflection,
     /// How rays meet evolved surfaces (default: hybrid — α-cells cull, the degree-8
     /// polynomial finds the roots; docs/SURFACE.md).
     pub surface_method: Method,
@@ -91,6 +105,7 @@ impl Default for Settings {
             encoding: Encoding::Srgb,
             exposure: 0.0,
             tone_map: ToneMap::None,
+            reflection: Reflection::Additive,
             surface_method: Method::default(),
         }
     }

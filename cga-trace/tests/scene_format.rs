@@ -329,3 +329,25 @@ fn a_spot_light_lights_its_cone_and_nothing_beyond() {
     }
     assert!(inside > 100 && outside > 100 && between > 100, "{inside} {outside} {between}");
 }
+
+/// Between two facing mirrors that also shade themselves (colour 1 under ambient 1), the
+/// paper's additive reflection sums `1 + k_r + k_r² + …` (about 1/(1 − k_r)); the conserving
+/// one weights each surface's own colour by `1 − k_r`, so no pixel exceeds the light a
+/// surface gets (a furnace test: 1).
+#[test]
+fn conserving_reflection_never_makes_more_light_than_it_receives() {
+    let scene = |reflection: &str| {
+        let text = format!(
+            "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [1.0, 0.0, 0.2]\nwidth = 32\nheight = 24\n\
+             [render]\nambient = 1.0\nmax_depth = 200\nreflection = \"{reflection}\"\n\
+             [[objects]]\ntype = \"plane\"\npoint = [3.0, 0.0, 0.0]\nnormal = [-1.0, 0.0, 0.0]\nmaterial = {{ colour = [1.0, 1.0, 1.0], ka = 1.0, kd = 0.0, ks = 0.0, kr = 0.9 }}\n\
+             [[objects]]\ntype = \"plane\"\npoint = [-3.0, 0.0, 0.0]\nnormal = [1.0, 0.0, 0.0]\nmaterial = {{ colour = [1.0, 1.0, 1.0], ka = 1.0, kd = 0.0, ks = 0.0, kr = 0.9 }}\n"
+        );
+        let scene = Scene::parse(&text, "mirrors.toml").unwrap();
+        let film = Renderer::new(&scene).render(Aov::Shaded, &|| {});
+        film.pixels.iter().flatten().fold(0.0f64, |m, &v| m.max(v))
+    };
+    let (additive, conserving) = (scene("additive"), scene("conserving"));
+    assert!(additive > 5.0, "{additive}");
+    assert!(conserving <= 1.0 + 1e-12 && conserving > 0.99, "{conserving}");
+}

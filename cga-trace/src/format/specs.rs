@@ -5,7 +5,7 @@
 
 use super::numbers::{numbers, some_number, some_numbers};
 use crate::material::Material;
-use crate::settings::{Encoding, Settings, ToneMap};
+use crate::settings::{Encoding, Reflection, Settings, ToneMap};
 use crate::surface::Method;
 use serde::Deserialize;
 
@@ -28,7 +28,16 @@ pub(crate) struct SettingsSpec {
     #[serde(default, deserialize_with = "some_number")]
     exposure: Option<f64>,
     tone_map: Option<ToneMapSpec>,
+    reflection: Option<ReflectionSpec>,
     surface_method: Option<Method>,
+}
+
+/// `reflection = "additive" | "conserving"`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum ReflectionSpec {
+    Additive,
+    Conserving,
 }
 
 /// `tone_map = "none" | "filmic"`.
@@ -68,6 +77,11 @@ impl From<SettingsSpec> for Settings {
                 Some(ToneMapSpec::None) => ToneMap::None,
                 Some(ToneMapSpec::Filmic) => ToneMap::Filmic,
                 None => d.tone_map,
+            },
+            reflection: match s.reflection {
+                Some(ReflectionSpec::Additive) => Reflection::Additive,
+                Some(ReflectionSpec::Conserving) => Reflection::Conserving,
+                None => d.reflection,
             },
             surface_method: s.surface_method.unwrap_or(d.surface_method),
         }

@@ -5,6 +5,7 @@ use super::shade::lit;
 use super::{RayCounts, Renderer, Window};
 use crate::backend::{Backend, RayLanes, lanes3};
 use crate::ray::{Ray, mirror, offset};
+use crate::settings::Reflection;
 use crate::shapes::ShadingPoint;
 use cga_core::euclid::E3;
 use cga_core::simd::Lane;
@@ -97,12 +98,21 @@ impl<B: Backend> Renderer<'_, B> {
                     continue;
                 };
                 let kr = self.scene.objects[k].material.kr;
+                // Energy conserved: what a surface reflects (at most all) it does not also
+                // shade.
+                let (own, kr) = match settings.reflection {
+                    Reflection::Conserving if kr > 0.0 => {
+                        let kr = kr.min(1.0);
+                        (local[l].map(|c| c * (1.0 - kr)), kr)
+                    }
+                    _ => (local[l], kr),
+                };
                 if !(kr > 0.0 && depth < settings.max_depth) {
-                    (deepest[l], active[l]) = (local[l], false);
+                    (deepest[l], active[l]) = (own, false);
                     continue;
                 }
                 cast.reflection += 1;
-                layers[l].push((local[l], kr));
+                layers[l].push((own, kr));
                 bounce[l] = true;
             }
             if bounce.iter().any(|&b| b) {
