@@ -5,7 +5,7 @@
 
 use super::{RayCounts, Renderer};
 use crate::backend::{Backend, RayLanes};
-use crate::light::{Light, attenuation, blinn_phong, lights};
+use crate::light::{Light, Source, attenuation, blinn_phong, lights};
 use crate::material::{Material, Reflectance, shine};
 use crate::object::Object;
 use crate::ray::{leaving_origin, offset};
@@ -146,8 +146,15 @@ pub(crate) fn lit<T: Lane, const W: usize>(
     let (l, distance) = light.toward(x);
     let diffuse = dot(n, l);
     let specular = shine(m, n, add(l, v));
-    let cone = light.cone(l);
-    let lighting = lights(distance, diffuse, specular) & T::zero().lt(cone);
+    let lighting = lights(distance, diffuse, specular);
+    // Only a spot light's cone darkens anything (kept off the other lights' path).
+    let (cone, lighting) = match light.source {
+        Source::Spot { .. } => {
+            let cone = light.cone(l);
+            (cone, lighting & T::zero().lt(cone))
+        }
+        _ => (T::one(), lighting),
+    };
     let lit: [bool; W] = core::array::from_fn(|k| hit[k] && T::mask_lane(lighting, k));
     let shadow_origin = leaving_origin(x, n, diffuse, offset);
     lit.iter().any(|&b| b).then_some(Lit { lit, l, distance, diffuse, specular, cone, shadow_origin })

@@ -71,6 +71,7 @@ impl<B: Backend> Renderer<'_, B> {
         cast: &mut RayCounts,
     ) -> [[f64; 3]; W] {
         let settings = &self.scene.settings;
+        let conserving = settings.reflection == Reflection::Conserving;
         let mut active = [true; W];
         let mut deepest = [settings.background; W];
         let mut layers: [Layers; W] = core::array::from_fn(|_| Layers::new());
@@ -100,12 +101,11 @@ impl<B: Backend> Renderer<'_, B> {
                 let kr = self.scene.objects[k].material.kr;
                 // Energy conserved: what a surface reflects (at most all) it does not also
                 // shade.
-                let (own, kr) = match settings.reflection {
-                    Reflection::Conserving if kr > 0.0 => {
-                        let kr = kr.min(1.0);
-                        (local[l].map(|c| c * (1.0 - kr)), kr)
-                    }
-                    _ => (local[l], kr),
+                let (own, kr) = if conserving && kr > 0.0 {
+                    let kr = kr.min(1.0);
+                    (local[l].map(|c| c * (1.0 - kr)), kr)
+                } else {
+                    (local[l], kr)
                 };
                 if !(kr > 0.0 && depth < settings.max_depth) {
                     (deepest[l], active[l]) = (own, false);
