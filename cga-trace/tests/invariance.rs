@@ -36,7 +36,16 @@ fn difference(a: &[u8], b: &[u8]) -> (f64, f64) {
 
 fn check<B: Backend>(width: u32, height: u32) {
     check_scenes::<B>(
-        &["primitives.toml", "surface.toml", "combined.toml", "torus.toml", "box.toml", "cylinder.toml", "blades.toml"],
+        &[
+            "primitives.toml",
+            "surface.toml",
+            "combined.toml",
+            "torus.toml",
+            "box.toml",
+            "cylinder.toml",
+            "blades.toml",
+            "spot.toml",
+        ],
         width,
         height,
     );
