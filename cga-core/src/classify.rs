@@ -286,7 +286,7 @@ fn blade_grade<T: Real>(c: &[T; 32]) -> Result<usize> {
 /// conditions). Coefficients given in the null basis carry a flat's zero `eo` parts exactly
 /// (no flat gains them in a product with flats or motors), so a blade with nonzero `eo`
 /// parts that the typed test reads as a flat (its `eo` parts within rounding of the rest:
-/// the test is relative to the largest coefficient, so a round some 1e7 of its units from
+/// the test is relative to the largest coefficient, so a round some 1.2e7 coordinate units from
 /// the origin) is refused as [`GeometryError::Indistinct`] rather than drawn as a flat.
 pub fn classify_storage<T: Real>(c: &[T; 32]) -> Result<Kind<T>> {
     if largest(c) == T::zero() {

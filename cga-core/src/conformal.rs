@@ -43,10 +43,12 @@ pub enum GeometryError {
     #[error("the multivector is not a blade (mixed grades, or X X̃ is not a scalar)")]
     NotABlade,
     /// A blade whose `eo` coefficients are nonzero but within rounding of its others: a
-    /// round too large, or too far from the origin for its size, for f64 to tell it from a
-    /// flat (about `1/√(64 ε)` ≈ 8e6 of its units away).
+    /// round too large, or too far from the origin, for f64 to tell it from a
+    /// flat: its `eo` parts are about `2/max(|c|, r)²` of its largest coefficient, so from
+    /// about `√(2/(64 ε))` ≈ 1.2e7 coordinate units from the origin, or that large, whatever
+    /// its size.
     #[error(
-        "the blade's eo coefficients are within rounding of its others: f64 cannot tell this round from a flat (a round about 1e7 of its units or more from the origin, or as large): build it nearer the origin"
+        "the blade's eo coefficients are within rounding of its others: f64 cannot tell this round from a flat (a round about 1.2e7 coordinate units or more from the origin, or as large): build it nearer the origin"
     )]
     Indistinct,
     /// An input is infinite or NaN.

@@ -25,11 +25,7 @@ pub struct Scale {
 /// The linear RGB of viridis at `t ∈ [0, 1]` (the map is given in sRGB).
 fn viridis(t: f64) -> [f64; 3] {
     let c = colorous::VIRIDIS.eval_continuous(t.clamp(0.0, 1.0));
-    let linear = |v: u8| {
-        let v = f64::from(v) / 255.0;
-        if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
-    };
-    [linear(c.r), linear(c.g), linear(c.b)]
+    [c.r, c.g, c.b].map(srgb_to_linear)
 }
 
 /// The film of a scalar AOV in false colour, and its scale; `None` for other AOVs. The range
@@ -75,4 +71,10 @@ pub fn false_colour(film: &Film, aov: Aov) -> Option<(Film, Scale)> {
         }
     }
     Some((out, Scale { quantity, unit, map: "viridis", low, high, pixels: values.len() }))
+}
+
+/// An 8-bit sRGB channel as a linear value (the sRGB transfer curve inverted).
+pub fn srgb_to_linear(v: u8) -> f64 {
+    let v = f64::from(v) / 255.0;
+    if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
 }

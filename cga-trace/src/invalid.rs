@@ -30,7 +30,7 @@ pub enum Invalid {
         /// How many were given.
         found: usize,
     },
-    /// More of something than [`crate::limits`] allows.
+    /// More of something than its limit allows ([`crate::limits`], or the module's own).
     #[error("{found} {what} exceed the limit of {limit}")]
     Limit {
         /// What is counted.

@@ -28,10 +28,11 @@ pub enum Source {
         position: E3,
         /// The unit direction it shines along.
         axis: E3,
-        /// `cos radius`: full light within this cone.
-        cos_radius: f64,
         /// `cos falloff`: no light beyond this cone.
         cos_falloff: f64,
+        /// `1 / (cos radius − cos falloff)`: full light within `radius` (a hard edge where the
+        /// two agree).
+        inverse_width: f64,
     },
 }
 
@@ -60,10 +61,11 @@ impl Light {
     #[inline(always)]
     pub fn cone<T: Select>(&self, l: E3<T>) -> T {
         match self.source {
-            Source::Spot { axis, cos_radius, cos_falloff, .. } => {
+            Source::Spot { axis, cos_falloff, inverse_width, .. } => {
                 let c = T::zero() - cga_core::euclid::dot(l, axis.map(T::from_f64));
-                let width = T::from_f64((cos_radius - cos_falloff).max(f64::MIN_POSITIVE));
-                let u = ((c - T::from_f64(cos_falloff)) / width).max_lanes(T::zero()).min_lanes(T::one());
+                let u = ((c - T::from_f64(cos_falloff)) * T::from_f64(inverse_width))
+                    .max_lanes(T::zero())
+                    .min_lanes(T::one());
                 u * u * (T::from_f64(3.0) - T::from_f64(2.0) * u)
             }
             _ => T::one(),

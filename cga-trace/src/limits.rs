@@ -25,6 +25,9 @@ pub const MAX_SPP: u32 = 4096;
 /// Objects in a scene.
 pub const MAX_OBJECTS: usize = 1 << 20;
 
+/// Named materials in a scene (`[materials.NAME]`).
+pub const MAX_MATERIALS: usize = 1 << 16;
+
 /// Lights in a scene (each costs a shadow ray at every hit).
 pub const MAX_LIGHTS: usize = 1024;
 

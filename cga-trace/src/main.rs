@@ -6,7 +6,7 @@ use cga_trace::film::Output;
 use cga_trace::integrator::{RayCounts, Window};
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
-use cga_trace::settings::{MAX_EXPOSURE, ToneMap};
+use cga_trace::settings::ToneMap;
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
@@ -247,7 +247,8 @@ fn scale_path(output: &Path) -> PathBuf {
 }
 
 fn render_command(args: Render) -> anyhow::Result<()> {
-    let Some(frames) = args.frames else { return render_frame(&args, &args.output, 0.0) };
+    let pool = thread_pool(args.threads)?;
+    let Some(frames) = args.frames else { return render_frame(&args, &pool, &args.output, 0.0, true) };
     if !(1..=MAX_FRAMES).contains(&frames) {
         anyhow::bail!("--frames {frames}: give 1 to {MAX_FRAMES}");
     }
@@ -255,19 +256,30 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     if end > frames {
         anyhow::bail!("--frame-range {first}..{end}: the animation has frames 0 to {}", frames - 1);
     }
+    if !args.output.is_file() && args.output.exists() {
+        anyhow::bail!(
+            "--frames: {} is not a file; numbered frames are written beside a file name",
+            args.output.display()
+        );
+    }
     for frame in first..end {
         let time = if frames > 1 { frame as f64 / (frames - 1) as f64 } else { 0.0 };
         let output = numbered(&args.output, frame, frames);
-        render_frame(&args, &output, time).with_context(|| format!("frame {frame}"))?;
+        render_frame(&args, &pool, &output, time, frame == first).with_context(|| format!("frame {frame}"))?;
     }
     Ok(())
 }
 
 /// One picture of the scene at the frame time `time`, written to `output`.
-fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<()> {
+fn render_frame(
+    args: &Render,
+    pool: &rayon::ThreadPool,
+    output_path: &Path,
+    time: f64,
+    notes: bool,
+) -> anyhow::Result<()> {
     // Everything that can be wrong with the command line and the outputs is found before the
     // scene is read; nothing is written over until the render has succeeded.
-    let pool = thread_pool(args.threads)?;
     let output = Output::for_path(output_path, args.bit_depth)?;
     let mut image = OutputFile::create(output_path, &[("scene", &args.scene)])?;
     // A false-colour image's scale goes beside it (not beside a device: on stderr alone).
@@ -281,8 +293,11 @@ fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<
     // A camera without `width` and `height` takes the command line's.
     let size = args.width.zip(args.height);
     let mut scene = Scene::load_at(&args.scene, size, time)?;
-    for note in scene.notes() {
-        say!("note: {note}");
+    // An animation's notes are the same for every frame: said once.
+    if notes {
+        for note in scene.notes() {
+            say!("note: {note}");
+        }
     }
     if let Some(degrees) = args.fov {
         scene.set_fov(degrees).context("--fov")?;
@@ -296,18 +311,20 @@ fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<
     if let Some(spp) = args.spp {
         scene.settings.spp = spp;
     }
-    scene.settings.check().context("--max-depth/--spp")?;
+    if let Some(stops) = args.exposure {
+        scene.settings.exposure = stops;
+    }
+    if let Some(map) = args.tone_map {
+        scene.settings.tone_map = map;
+    }
+    scene.settings.check().context("--max-depth/--spp/--exposure")?;
     let (w, h) = (scene.camera.width, scene.camera.height);
     let window = match &args.crop {
         Some(c) => Window::crop(w, h, *c).map_err(anyhow::Error::msg).context("--crop")?,
         None => Window::full(w, h),
     };
     let encoding = args.encoding.unwrap_or(scene.settings.encoding);
-    let exposure = args.exposure.unwrap_or(scene.settings.exposure);
-    if !exposure.is_finite() || exposure.abs() > MAX_EXPOSURE {
-        anyhow::bail!("--exposure {exposure}: give −{MAX_EXPOSURE} to {MAX_EXPOSURE} stops");
-    }
-    let tone_map = args.tone_map.unwrap_or(scene.settings.tone_map);
+    let (exposure, tone_map) = (scene.settings.exposure, scene.settings.tone_map);
 
     let bar = indicatif::ProgressBar::new(window.rows.len() as u64).with_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
@@ -346,20 +363,19 @@ fn render_frame(args: &Render, output_path: &Path, time: f64) -> anyhow::Result<
             );
             coloured
         }
-        None if args.aov == Aov::Shaded && args.crop.is_none() && !args.no_labels => {
-            let mut film = film;
-            cga_trace::figure::draw_labels(&mut film, &scene.camera, &scene.labels);
-            film
-        }
         None => film,
     };
-    // Exposure and tone map develop a shaded PNG; EXR and HDR keep the linear values.
+    // Exposure and tone map develop a shaded PNG (EXR and HDR keep the linear values); the
+    // labels go on after, in their own colours.
     let developed = matches!(output, Output::Png8 | Output::Png16) && args.aov == Aov::Shaded;
-    let film = if developed && (exposure != 0.0 || tone_map != ToneMap::None) {
+    let mut film = if developed && (exposure != 0.0 || tone_map != ToneMap::None) {
         film.developed(exposure, tone_map)
     } else {
         film
     };
+    if args.aov == Aov::Shaded && args.crop.is_none() && !args.no_labels {
+        cga_trace::figure::draw_labels(&mut film, &scene.camera, &scene.labels);
+    }
     let writing = Instant::now();
     pool.install(|| film.write(&mut image, output, encoding))
         .with_context(|| format!("writing {}", output_path.display()))?;

@@ -9,7 +9,7 @@ use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
 use crate::light::Light;
-use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_OBJECTS};
+use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_MATERIALS, MAX_OBJECTS};
 pub use crate::object::Object;
 use crate::settings::Settings;
 use serde::Deserialize;
@@ -125,6 +125,8 @@ impl Scene {
     /// [`Scene::parse_sized`] at the frame time `time` in [0, 1] (clamped): objects and the
     /// camera with a `motion` are placed by their keyframes' screw motion at that time.
     pub fn parse_at(text: &str, file: &str, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
+        // NaN is no time: the start.
+        let time = if time.is_nan() { 0.0 } else { time.clamp(0.0, 1.0) };
         let at = |offset: usize| line_column(text, offset);
         let sections = sections::split(text).map_err(|m| {
             let (line, column) = at(m.at);
@@ -177,7 +179,10 @@ impl Scene {
         let limit = |what, found: usize, limit: usize| {
             (found > limit).then_some(Invalid::Limit { what, found: found as u64, limit: limit as u64 })
         };
-        if let Some(e) = limit("objects", count, MAX_OBJECTS).or(limit("lights", spec.lights.len(), MAX_LIGHTS)) {
+        let too_many = limit("objects", count, MAX_OBJECTS)
+            .or(limit("lights", spec.lights.len(), MAX_LIGHTS))
+            .or(limit("materials", spec.materials.len(), MAX_MATERIALS));
+        if let Some(e) = too_many {
             return Err(invalid(&|_| 0, 0..0, "scene".into(), e));
         }
         let camera_span = spec.camera.span();

@@ -417,7 +417,7 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             format!(
                 "{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\ndirection = [0.0, 0.0, -1.0]\nradius = 50.0\nfalloff = 40.0\n"
             ),
-            vec!["bad.toml:10:", "light 1", "`falloff`", "0 ≤ radius ≤ falloff ≤ 90"],
+            vec!["bad.toml:9:", "light 1", "`radius`", "0 ≤ radius ≤ falloff ≤ 90"],
         ),
         (
             "spot angles on a point light",

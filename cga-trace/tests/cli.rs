@@ -209,6 +209,6 @@ fn exposure_scales_linear_values_and_the_filmic_map_keeps_highlights_below_white
         (png("d.png", &["--exposure", "3"]), png("e.png", &["--exposure", "3", "--tone-map", "filmic"]));
     assert!(clipped.iter().filter(|&&v| v == 255).count() > filmic.iter().filter(|&&v| v == 255).count());
     let line = error_line(&render(&[s, "-o", dir.join("f.png").to_str().unwrap(), "--exposure", "100"]));
-    assert!(line.contains("--exposure 100"), "{line}");
+    assert!(line.contains("--exposure") && line.contains("exposure must lie in [-64, 64] stops"), "{line}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

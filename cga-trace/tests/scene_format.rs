@@ -351,3 +351,18 @@ fn conserving_reflection_never_makes_more_light_than_it_receives() {
     assert!(additive > 5.0, "{additive}");
     assert!(conserving <= 1.0 + 1e-12 && conserving > 0.99, "{conserving}");
 }
+
+/// A blade named in either basis is the object it spells: the point (1, 0, 0) as
+/// `e1 + eo + ½ ei` and as `e1 + e5` (`eo = ½(e5 − e4)`, `ei = e4 + e5`), names shared by both
+/// bases (`e1`) kept in either.
+#[test]
+fn blades_named_in_either_basis_draw_the_object_they_spell() {
+    let point = image("type = \"point\"\npoint = [1.0, 0.0, 0.0]\nsize = 0.5\n");
+    let null = image("type = \"blade\"\nblade = { e1 = 1.0, eo = 1.0, ei = 0.5 }\nsize = 0.5\n");
+    let ortho = image("type = \"blade\"\nblade = { e1 = 1.0, e5 = 1.0 }\nsize = 0.5\n");
+    assert!(differing(&point, &null) <= 9 && differing(&point, &ortho) <= 9);
+    // A circle given by centre, normal and radius counts in the scene's extent (its default
+    // tube is a fraction of it): the same picture with and without an explicit tube of that.
+    let circle = "type = \"circle\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.3, 1.0]\nradius = 3.0\n";
+    assert!(differing(&image(circle), &image(&format!("{circle}tube = {:?}\n", 3.0 / 150.0))) <= 9);
+}

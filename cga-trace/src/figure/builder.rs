@@ -39,6 +39,14 @@ pub enum FigureError {
         /// Why.
         reason: BladeError,
     },
+    /// A mark's size or tube that is not a positive finite number.
+    #[error("object {index}: a size or tube must be positive and finite, not {value}")]
+    Size {
+        /// 1-based position of the object.
+        index: usize,
+        /// As given.
+        value: f64,
+    },
     /// More objects than [`MAX_FIGURE_OBJECTS`].
     #[error("{0} objects exceed the figure's limit of {MAX_FIGURE_OBJECTS}")]
     TooMany(usize),
@@ -196,6 +204,9 @@ impl Figure {
         for (k, item) in self.items.iter().enumerate() {
             let blade = |reason: BladeError| FigureError::Blade { index: k + 1, reason };
             colour(&item.colour).ok_or_else(|| FigureError::Colour { index: k + 1, colour: item.colour.clone() })?;
+            if let Some(value) = [item.size, item.tube].into_iter().flatten().find(|v| !(v.is_finite() && *v > 0.0)) {
+                return Err(FigureError::Size { index: k + 1, value });
+            }
             let kind = classify_storage(&item.blade).map_err(|e| blade(e.into()))?;
             drawings.push(Drawing::of(kind, &marks, item.segment).map_err(|e| blade(e.into()))?);
         }
@@ -345,8 +356,5 @@ pub fn colour(name: &str) -> Option<[f64; 3]> {
             [byte(0)?, byte(1)?, byte(2)?]
         }
     };
-    Some(srgb.map(|c| {
-        let c = f64::from(c) / 255.0;
-        if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
-    }))
+    Some(srgb.map(crate::colour::srgb_to_linear))
 }

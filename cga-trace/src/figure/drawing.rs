@@ -16,7 +16,7 @@ use std::f64::consts::TAU;
 use std::sync::Arc;
 
 /// How large marks are drawn, in world units: defaults from the scene's extent
-/// ([`Sizes::for_extent`]), each overridable per object.
+/// ([`Sizes::for_extent`]); `size` and `tube` overridable per object.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sizes {
     /// A point's ball radius (a point pair's balls, a flat point's half edge).
@@ -201,7 +201,7 @@ impl Drawing {
             Drawing::Circle { centre, radius, tube, .. } => (centre, radius + tube),
             Drawing::PlanePatch { centre, size, .. } => (centre, size),
             Drawing::Sphere { centre, radius, tube, .. } => (centre, radius + tube),
-            Drawing::Arrow { at, direction, tube } => (at, norm(direction) + tube),
+            Drawing::Arrow { at, direction, tube } => (at, norm(direction) + 3.0 * tube),
         }
     }
 

@@ -30,75 +30,65 @@ pub(crate) enum BladeSpec {
 pub(crate) const CIRCLE_ORDER: [&str; 10] =
     ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
 
-/// Coefficients past this many names are refused before any is read (a blade has 32).
-const MAX_NAMES: usize = 32;
-
-/// The storage index of a null-basis blade name (`s` or `1` for the scalar).
+/// The storage index of a null-basis blade name (`s` for the scalar).
 fn storage_index(name: &str) -> Option<usize> {
-    let name = if name == "1" { "s" } else { name };
     crate::figure::null_basis_names().iter().position(|n| *n == name)
 }
 
-/// Which basis a name is written in: null (`o`, `i`), orthonormal (`4`, `5`) or either
-/// (only `e1`, `e2`, `e3`).
-fn basis_of(name: &str) -> (bool, bool) {
-    (name.contains(['o', 'i']), name.contains(['4', '5']))
+/// The dense (orthonormal-basis) index of a blade name.
+fn ortho_index(name: &str) -> Option<usize> {
+    Multivector::<f64>::BLADES.iter().position(|n| *n == name)
+}
+
+/// `coeffs` divided by the power of two nearest their largest magnitude: a blade and its
+/// multiples are one object, and so coefficients of any size f64 holds square without
+/// overflow or underflow.
+pub(crate) fn scaled<const N: usize>(mut coeffs: [f64; N]) -> [f64; N] {
+    let largest = coeffs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if largest > 0.0 {
+        let unit = Real::binade(largest);
+        coeffs.iter_mut().for_each(|x| *x /= unit);
+    }
+    coeffs
+}
+
+/// The dense multivector of a circle given as ten orthonormal grade-3 coefficients in
+/// [`CIRCLE_ORDER`], [`scaled`].
+pub(crate) fn circle_blade(c: [f64; 10]) -> Multivector<f64> {
+    let mut coeffs = [0.0; 32];
+    for (name, value) in CIRCLE_ORDER.iter().zip(scaled(c)) {
+        coeffs[ortho_index(name).expect("a grade-3 blade")] = value;
+    }
+    Multivector { coeffs }
 }
 
 impl BladeSpec {
-    /// The null-basis coefficients (`to_storage` order), scaled by a power of two to a
-    /// largest coefficient near 1 (a blade and its multiples are one object; so coefficients
-    /// of any size square without overflow). Orthonormal names are converted; null-basis
-    /// ones are kept as given (the orthonormal basis would lose the small `eo` coefficients
-    /// beside `|c|²`-sized `ei` ones of an object far from the origin).
-    pub(crate) fn storage(&self) -> Result<[f64; 32], Invalid> {
-        let mut storage = [0.0; 32];
-        let mut ortho = [0.0; 32];
-        let (mut null_named, mut ortho_named) = (None, None);
-        match self {
-            BladeSpec::Circle(c) => {
-                for (name, value) in CIRCLE_ORDER.iter().zip(c.0) {
-                    let k = Multivector::<f64>::BLADES.iter().position(|x| x == name).expect("a blade name");
-                    ortho[k] = value;
-                }
-                ortho_named = Some("e123");
-            }
-            BladeSpec::Named(named) => {
-                if named.len() > MAX_NAMES {
-                    return Err(Invalid::Limit {
-                        what: "blade coefficients",
-                        found: named.len() as u64,
-                        limit: MAX_NAMES as u64,
-                    });
-                }
-                for (name, value) in named {
-                    let (null, orthonormal) = basis_of(name);
-                    if null {
-                        null_named = Some(name.as_str());
-                    }
-                    if orthonormal {
-                        ortho_named = Some(name.as_str());
-                    }
-                    match (storage_index(name), Multivector::<f64>::BLADES.iter().position(|x| x == name)) {
-                        (Some(k), _) if !orthonormal => storage[k] = value.0,
-                        (_, Some(k)) => ortho[k] = value.0,
-                        _ => return Err(Invalid::Name(name.escape_debug().to_string())),
-                    }
-                }
-            }
+    /// What the blade is. Names in the null basis (any `eo`, `ei`) are read as given by
+    /// `classify_storage` (the orthonormal basis would lose the small `eo` coefficients
+    /// beside `|c|²`-sized `ei` ones of an object far from the origin); names in the
+    /// orthonormal one (any `e4`, `e5`, or a circle's list) by the dense `classify`; names in
+    /// neither (`s`, `e1`, `e12`, …) are the same blade in both. Mixing the two bases is an
+    /// error.
+    pub(crate) fn kind(&self) -> Result<cga_core::Kind<f64>, Invalid> {
+        let named = match self {
+            BladeSpec::Circle(c) => return Ok(circle_blade(c.0).classify()?),
+            BladeSpec::Named(named) => named,
+        };
+        let null = named.keys().find(|n| n.contains(['o', 'i']));
+        let ortho = named.keys().find(|n| n.contains(['4', '5']));
+        if let (Some(a), Some(b)) = (null, ortho) {
+            return Err(Invalid::Mixed(a.escape_debug().to_string(), b.escape_debug().to_string()));
         }
-        if let (Some(a), Some(b)) = (null_named, ortho_named) {
-            return Err(Invalid::Mixed(a.to_string(), b.to_string()));
+        let index = if ortho.is_some() { ortho_index } else { storage_index };
+        let mut coeffs = [0.0; 32];
+        for (name, value) in named {
+            let k = index(name).ok_or_else(|| Invalid::Name(name.escape_debug().to_string()))?;
+            coeffs[k] = value.0;
         }
-        if ortho_named.is_some() {
-            storage = Multivector { coeffs: ortho }.to_storage();
-        }
-        let largest = storage.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        if largest > 0.0 {
-            let unit = Real::binade(largest);
-            storage.iter_mut().for_each(|x| *x /= unit);
-        }
-        Ok(storage)
+        Ok(match ortho {
+            Some(_) => Multivector { coeffs: scaled(coeffs) }.classify()?,
+            None => classify_storage(&scaled(coeffs))?,
+        })
     }
 }
 
@@ -132,7 +122,7 @@ impl ObjectSpec {
 
     /// Whether a `blade` is a tangent (a round of zero radius), not a direction.
     fn tangent(&self) -> bool {
-        let kind = self.blade.as_ref().and_then(|b| b.get_ref().storage().ok()).and_then(|c| classify_storage(&c).ok());
+        let kind = self.blade.as_ref().and_then(|b| b.get_ref().kind().ok());
         matches!(kind, Some(cga_core::Kind::Round { .. }))
     }
 
@@ -186,8 +176,8 @@ impl ObjectSpec {
                     }
                     (None, None, None, None, Some(b)) => {
                         let on = |e| Invalid::at("blade", b.span(), e);
-                        let kind = classify_storage(&b.get_ref().storage().map_err(on)?).map_err(|e| on(e.into()))?;
-                        return match Drawing::of(kind, &sizes, false)? {
+                        let kind = b.get_ref().kind().map_err(on)?;
+                        return match Drawing::of(kind, &sizes, false).map_err(|e| on(e.into()))? {
                             d @ Drawing::Circle { .. } => Ok(d),
                             _ => Err(Invalid::at("blade", b.span(), Invalid::NotA("circle", describe(kind)))),
                         };
@@ -214,7 +204,7 @@ impl ObjectSpec {
                     return Err(Invalid::at("blade", b.span(), Invalid::Value("give a blade's coefficients by name")));
                 }
                 let on = |e| Invalid::at("blade", b.span(), e);
-                let kind = classify_storage(&b.get_ref().storage().map_err(on)?).map_err(|e| on(e.into()))?;
+                let kind = b.get_ref().kind().map_err(on)?;
                 Drawing::of(kind, &sizes, segment).map_err(|e| on(e.into()))?
             }
             _ => return Err(form()),

@@ -28,11 +28,11 @@ use crate::surface::Method;
 #[cfg(feature = "evolved")]
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
 #[cfg(feature = "evolved")]
+use cga_core::Circle;
+#[cfg(feature = "evolved")]
 use cga_core::Joining;
 use cga_core::euclid::E3;
 use cga_core::euclid::{norm, sub};
-#[cfg(feature = "evolved")]
-use cga_core::{Circle, Real};
 use cga_core::{GeometryError, Motor, Plane, circumcircle, circumsphere};
 use drawn::BladeSpec;
 use numbers::{Num, Nums, V3};
@@ -106,13 +106,18 @@ impl LightSpec {
                 let angle = |a: &Option<Spanned<Num>>, default| a.as_ref().map_or(default, |a| a.get_ref().0);
                 let (radius, falloff) = (angle(&self.radius, SPOT_RADIUS), angle(&self.falloff, SPOT_FALLOFF));
                 if !(0.0 < falloff && falloff <= 90.0 && 0.0 <= radius && radius <= falloff) {
-                    let field = if self.falloff.is_some() { "falloff" } else { "radius" };
-                    let span = self.falloff.as_ref().or(self.radius.as_ref()).map_or(p.span(), |a| a.span());
+                    // The radius when it is out of range or past the falloff, else the falloff.
+                    let radius_wrong = self.radius.is_some() && !(0.0 <= radius && radius <= falloff && radius <= 90.0);
+                    let (field, given) =
+                        if radius_wrong { ("radius", &self.radius) } else { ("falloff", &self.falloff) };
+                    let span = given.as_ref().or(self.radius.as_ref()).map_or(p.span(), |a| a.span());
                     let why = Invalid::Value("a spot light needs 0 ≤ radius ≤ falloff ≤ 90 degrees, falloff > 0");
                     return Err(Invalid::at(field, span, why));
                 }
                 let (cos_radius, cos_falloff) = (radius.to_radians().cos(), falloff.to_radians().cos());
-                Source::Spot { position, axis, cos_radius, cos_falloff }
+                // A hard edge where the angles agree.
+                let inverse_width = 1.0 / (cos_radius - cos_falloff).max(1e-12);
+                Source::Spot { position, axis, cos_falloff, inverse_width }
             }
             (None, None) => {
                 return Err(Invalid::Form(
@@ -521,9 +526,12 @@ impl ObjectSpec {
         time: f64,
     ) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 23] = [
+        const READ: [&str; 26] = [
             "type",
             "motion",
+            "normal",
+            "direction",
+            "segment",
             "size",
             "blade",
             "material",
@@ -932,10 +940,6 @@ fn evolved(
     Ok(EvolvedSurface::in_frame(origin, c1, c2, method)?)
 }
 
-/// The orthonormal grade-3 blades, in the order scene files give them.
-#[cfg(feature = "evolved")]
-const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345"];
-
 /// The centre, normal and radius of a circle spec, moved by its own transform and then by
 /// the object's `place` (its motor and the frame). A blade is read in world coordinates
 /// (where the file gives it): its coefficients carry the circle no better than
@@ -944,19 +948,9 @@ const BLADE_ORDER: [&str; 10] = ["e123", "e124", "e125", "e134", "e135", "e145",
 fn circle(spec: &CircleSpec, place: &Placement) -> Result<(E3, E3, f64), Invalid> {
     let (c, n, r) = match (spec.blade, spec.centre, spec.normal, spec.radius, &spec.points) {
         (Some(b), None, None, None, None) => {
-            let mut dense = cga_core::Multivector::zero();
-            // A blade and its multiples are one circle: scaled near 1 before normalising,
-            // so that coefficients of any size f64 holds square without underflow.
-            let largest = b.0.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-            let unit = Real::binade(largest);
-            for (name, value) in BLADE_ORDER.iter().zip(b.0) {
-                let k = cga_core::Multivector::<f64>::BLADES
-                    .iter()
-                    .position(|x| x == name)
-                    .ok_or(Invalid::Value("blade order"))?;
-                dense.coeffs[k] = value / unit;
-            }
-            let c = Circle::from_dense(&dense).try_normalise().ok_or(Invalid::Value("the blade is zero or null"))?;
+            let c = Circle::from_dense(&drawn::circle_blade(b.0))
+                .try_normalise()
+                .ok_or(Invalid::Value("the blade is zero or null"))?;
             c.centre_normal_radius()?
         }
         (None, Some(c), Some(n), Some(r), None) => {

@@ -119,12 +119,11 @@ pub const MAX_KEYS: usize = 4096;
 pub(crate) fn motion_at(keys: &Spanned<Vec<Spanned<Nums<8>>>>, time: f64) -> Result<Motor, Invalid> {
     let at = |reason| Invalid::at("motion", keys.span(), reason);
     let list = keys.get_ref();
-    if list.is_empty() || list.len() > MAX_KEYS {
-        return Err(at(Invalid::Limit {
-            what: "keyframes (at least 1)",
-            found: list.len() as u64,
-            limit: MAX_KEYS as u64,
-        }));
+    if list.is_empty() {
+        return Err(at(Invalid::Value("a motion needs at least one keyframe motor")));
+    }
+    if list.len() > MAX_KEYS {
+        return Err(at(Invalid::Limit { what: "keyframes", found: list.len() as u64, limit: MAX_KEYS as u64 }));
     }
     let motors: Vec<Motor> = list
         .iter()
