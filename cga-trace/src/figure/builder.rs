@@ -149,37 +149,33 @@ impl Figure {
         self
     }
 
-    /// Label the object added last (written beside it in the picture).
-    pub fn label(mut self, text: &str) -> Figure {
+    /// The figure with `change` made to the object added last (none: unchanged).
+    fn last(mut self, change: impl FnOnce(&mut Item)) -> Figure {
         if let Some(item) = self.items.last_mut() {
-            item.label = Some(text.to_string());
+            change(item);
         }
         self
     }
 
+    /// Label the object added last (written beside it in the picture).
+    pub fn label(self, text: &str) -> Figure {
+        self.last(|item| item.label = Some(text.to_string()))
+    }
+
     /// Draw the segment between the points of the point pair added last.
-    pub fn segment(mut self) -> Figure {
-        if let Some(item) = self.items.last_mut() {
-            item.segment = true;
-        }
-        self
+    pub fn segment(self) -> Figure {
+        self.last(|item| item.segment = true)
     }
 
     /// The size of the last object's marks (world units): a point's ball radius, a plane
     /// patch's radius; by default a small fraction of the figure's extent (the patch, half).
-    pub fn size(mut self, size: f64) -> Figure {
-        if let Some(item) = self.items.last_mut() {
-            item.size = Some(size);
-        }
-        self
+    pub fn size(self, size: f64) -> Figure {
+        self.last(|item| item.size = Some(size))
     }
 
     /// The radius of the last object's tube (a line's, a circle's, a segment's).
-    pub fn tube(mut self, tube: f64) -> Figure {
-        if let Some(item) = self.items.last_mut() {
-            item.tube = Some(tube);
-        }
-        self
+    pub fn tube(self, tube: f64) -> Figure {
+        self.last(|item| item.tube = Some(tube))
     }
 
     /// Look from `position` at `look_at` (z up) instead of framing the objects.
