@@ -1,7 +1,11 @@
-//! The pinhole camera of the paper's eq. 2: a motor places it, and pixel `(i, j)` (`(0, 0)`
+//! The camera of the paper's eq. 2: a motor places it, and pixel `(i, j)` (`(0, 0)`
 //! bottom-left) is the ray `L_ij = cam ∧ P_ij ∧ ei` with
 //! `P_ij = M up(f e2 − x_max/2 (1 − 2u/w) e1 − y_max/2 (1 − 2v/h) e3) M̃`, `(u, v)` the
 //! pixel centre `(i + ½, j + ½)`. In the camera's frame it looks along `e2` with `e3` up.
+//!
+//! That is the pinhole; a [`Lens`] may replace it: parallel rays (orthographic), or a thin
+//! lens whose rays leave a point of the lens disk and pass through the pinhole ray's point on
+//! the plane of focus (depth of field).
 
 use crate::limits::{EXTENT_OVER_FOCAL, MAX_PIXELS, MAX_SIDE};
 use crate::ray::Ray;
@@ -18,6 +22,13 @@ pub enum CameraError {
     /// The up vector is parallel to the viewing direction.
     #[error("the up vector is zero or parallel to the viewing direction")]
     UpParallel,
+    /// A lens whose aperture is negative, or whose focus distance or view width is not
+    /// positive (or any of them not finite).
+    #[error("a lens needs aperture ≥ 0 and a focus distance (or orthographic view width) > 0, all finite")]
+    Lens,
+    /// A field of view asked of an orthographic camera, whose view has a width instead.
+    #[error("an orthographic camera has no field of view: give its `view_width`")]
+    OrthographicFov,
     /// A zero or negative size, focal length or image extent.
     #[error("focal length, image extents and size must be positive")]
     NotPositive,
@@ -46,7 +57,55 @@ pub enum CameraError {
     NotRigid,
 }
 
-/// A pinhole camera.
+/// How a camera turns image-plane points into rays (lengths in the scene's frame units).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Lens {
+    /// Every ray through the camera's point: `L = cam ∧ P ∧ ei` (eq. 2).
+    #[default]
+    Pinhole,
+    /// Parallel rays along the view axis: the image-plane point `(x, f, z)` is the ray from
+    /// `q = k (x e1 + z e3)` along `e2`, `L = up(q) ∧ e2 ∧ ei` moved by the pose; the view is
+    /// `k x_max` wide.
+    Orthographic {
+        /// View width over `x_max`.
+        k: f64,
+    },
+    /// A thin lens of radius `aperture` focused at distance `focus` along the view axis: the
+    /// ray from the lens point `q = aperture (a e1 + b e3)` (`(a, b)` in the unit disk)
+    /// through `F = (focus / f) P`, where the pinhole ray meets the plane of focus:
+    /// `L = up(q) ∧ up(F) ∧ ei` moved by the pose. Points on that plane are sharp; a point at
+    /// depth `D` blurs to a disk of diameter `2 aperture |D − focus| / D` on it.
+    Thin {
+        /// Lens radius.
+        aperture: f64,
+        /// Distance of the plane of focus.
+        focus: f64,
+    },
+}
+
+impl Lens {
+    /// Lengths in world units moved to a frame whose unit is `scale` world units.
+    pub fn in_frame(self, scale: f64) -> Lens {
+        match self {
+            Lens::Pinhole => Lens::Pinhole,
+            Lens::Orthographic { k } => Lens::Orthographic { k: k / scale },
+            Lens::Thin { aperture, focus } => Lens::Thin { aperture: aperture / scale, focus: focus / scale },
+        }
+    }
+
+    /// Whether its numbers are usable.
+    fn valid(self) -> bool {
+        match self {
+            Lens::Pinhole => true,
+            Lens::Orthographic { k } => k > 0.0 && k.is_finite(),
+            Lens::Thin { aperture, focus } => {
+                aperture >= 0.0 && aperture.is_finite() && focus > 0.0 && focus.is_finite()
+            }
+        }
+    }
+}
+
+/// A camera: a pose, an image plane and a [`Lens`].
 #[derive(Clone, Copy, Debug)]
 pub struct Camera {
     /// Camera frame → world.
@@ -61,6 +120,8 @@ pub struct Camera {
     pub width: u32,
     /// Image height in pixels.
     pub height: u32,
+    /// The lens (by default the pinhole of eq. 2).
+    pub lens: Lens,
     position: E3,
     /// `cam = M up(0) M̃`.
     cam: Vector,
@@ -105,7 +166,36 @@ impl Camera {
         };
         let lines = [basis(0), basis(1), basis(2), basis(3), basis(4)];
         let lanes = lines.map(|l| Line::pack([l; 4]));
-        Ok(Camera { pose, focal, x_max, y_max, width, height, position, cam, axes, lines, lanes })
+        Ok(Camera { pose, focal, x_max, y_max, width, height, lens: Lens::Pinhole, position, cam, axes, lines, lanes })
+    }
+
+    /// The same camera with lens `lens` (lengths in frame units).
+    pub fn with_lens(mut self, lens: Lens) -> Result<Self, CameraError> {
+        if !lens.valid() {
+            return Err(CameraError::Lens);
+        }
+        self.lens = lens;
+        Ok(self)
+    }
+
+    /// The ray through the image-plane point at pixel coordinates `(u, v)` for the lens
+    /// point `(a, b)` in the unit disk, as an origin and unit direction ([`Lens`]); the
+    /// pinhole ignores `(a, b)`. `None` where no ray can be formed.
+    pub fn lens_ray(&self, u: f64, v: f64, (a, b): (f64, f64)) -> Option<(E3, E3)> {
+        let p = self.image_point(u, v);
+        let (origin, through) = match self.lens {
+            Lens::Pinhole => ([0.0; 3], p),
+            Lens::Orthographic { k } => {
+                let q = [k * p[0], 0.0, k * p[2]];
+                (q, [q[0], 1.0, q[2]])
+            }
+            Lens::Thin { aperture, focus } => ([aperture * a, 0.0, aperture * b], scale(p, focus / self.focal)),
+        };
+        // The pose only turns the camera's frame (it sits at the frame's origin).
+        let turn = |c: E3| [0, 1, 2].map(|k| c[0] * self.axes[0][k] + c[1] * self.axes[1][k] + c[2] * self.axes[2][k]);
+        let dir = unit(turn(sub(through, origin)))?;
+        let origin = turn(origin);
+        Some(([0, 1, 2].map(|k| self.position[k] + origin[k]), dir))
     }
 
     /// The pose that puts the camera at `position`, looking at `target`, with `up` upwards:

@@ -27,6 +27,7 @@ pub mod ray;
 pub mod scene;
 pub mod settings;
 pub mod shapes;
+pub mod shutter;
 pub mod surface;
 
 pub use backend::{Backend, BackendKind};

@@ -1,5 +1,7 @@
-//! Lights: points, spot lights (points lighting a cone), and directional lights at infinity
-//! (a sun), which light every point from one direction and cast shadows without end.
+//! Lights: points, spot lights (points lighting a cone), directional lights at infinity
+//! (a sun), which light every point from one direction and cast shadows without end, and
+//! area lights — disks and spheres, whose points each light as a point light would, so that
+//! shadows have penumbras.
 
 use cga_core::euclid::{E3, norm, scale, sub};
 use cga_core::{Real, Select};
@@ -34,6 +36,28 @@ pub enum Source {
         /// two agree).
         inverse_width: f64,
     },
+    /// A disk of light (POV-Ray's circular `area_light`): `samples` of its points light each
+    /// hit, each with `1/samples` of the colour, stratified over the pixel's samples.
+    Disk {
+        /// Its centre.
+        centre: E3,
+        /// Its unit normal.
+        normal: E3,
+        /// Its radius.
+        radius: f64,
+        /// Points of it that light each hit.
+        samples: u32,
+    },
+    /// A sphere of light, seen from each hit as its disk through the centre facing the hit
+    /// (POV-Ray's circular `area_light` with `orient`): as [`Source::Disk`] otherwise.
+    Sphere {
+        /// Its centre.
+        centre: E3,
+        /// Its radius.
+        radius: f64,
+        /// Points of it that light each hit.
+        samples: u32,
+    },
 }
 
 impl Light {
@@ -43,7 +67,10 @@ impl Light {
     #[inline(always)]
     pub fn toward<T: Real>(&self, x: E3<T>) -> (E3<T>, T) {
         match self.source {
-            Source::Point(p) | Source::Spot { position: p, .. } => {
+            Source::Point(p)
+            | Source::Spot { position: p, .. }
+            | Source::Disk { centre: p, .. }
+            | Source::Sphere { centre: p, .. } => {
                 let to_light = sub(p.map(T::from_f64), x);
                 let distance = norm(to_light);
                 (scale(to_light, T::one() / distance), distance)
@@ -54,6 +81,39 @@ impl Light {
 }
 
 impl Light {
+    /// How many of its points light each hit: `None` for a point, spot or directional light.
+    #[inline(always)]
+    pub fn samples(&self) -> Option<u32> {
+        match self.source {
+            Source::Disk { samples, .. } | Source::Sphere { samples, .. } => Some(samples),
+            _ => None,
+        }
+    }
+
+    /// The point of an area light at `(a, b)` of the unit disk, seen from `x`: `c + r (a u +
+    /// b w)` for the light's centre `c`, radius `r`, and `u`, `w` a right-handed pair
+    /// orthogonal to its normal (a sphere's: towards `x`). Other lights' own position.
+    pub fn area_point(&self, x: E3, (a, b): (f64, f64)) -> E3 {
+        let (centre, normal, radius) = match self.source {
+            Source::Disk { centre, normal, radius, .. } => (centre, normal, radius),
+            Source::Sphere { centre, radius, .. } => {
+                (centre, cga_core::euclid::unit(sub(x, centre)).unwrap_or([0.0, 0.0, 1.0]), radius)
+            }
+            _ => return self.position().unwrap_or(x),
+        };
+        let (u, w) = orthonormal(normal);
+        [0, 1, 2].map(|k| centre[k] + radius * (a * u[k] + b * w[k]))
+    }
+
+    /// Where a light is: its position or centre; `None` for a directional light.
+    pub fn position(&self) -> Option<E3> {
+        match self.source {
+            Source::Point(p) | Source::Spot { position: p, .. } => Some(p),
+            Source::Disk { centre, .. } | Source::Sphere { centre, .. } => Some(centre),
+            Source::Directional(_) => None,
+        }
+    }
+
     /// How much of the light reaches along the unit direction `l` towards it: 1 but for a
     /// spot light, whose `c = −l · axis` gives `smoothstep(cos falloff, cos radius, c)`,
     /// `u² (3 − 2u)` for `u = (c − cos falloff)/(cos radius − cos falloff)` clamped to
@@ -71,6 +131,15 @@ impl Light {
             _ => T::one(),
         }
     }
+}
+
+/// Two unit vectors that make a right-handed orthonormal frame with the unit `n`, continuous
+/// but at `n_z = −1` (Duff et al., "Building an orthonormal basis, revisited", 2017).
+pub fn orthonormal(n: E3) -> (E3, E3) {
+    let sign = 1f64.copysign(n[2]);
+    let a = -1.0 / (sign + n[2]);
+    let b = n[0] * n[1] * a;
+    ([1.0 + sign * n[0] * n[0] * a, sign * b, -sign * n[0]], [b, sign + n[1] * n[1] * a, -n[1]])
 }
 
 /// `min(1, 1/(c₀ + c₁ d + c₂ d²))` for the attenuation coefficients `c` at distance `d` (world

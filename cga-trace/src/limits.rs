@@ -31,6 +31,12 @@ pub const MAX_MATERIALS: usize = 1 << 16;
 /// Lights in a scene (each costs a shadow ray at every hit).
 pub const MAX_LIGHTS: usize = 1024;
 
+/// Points of an area light that light each hit (`samples`): each is a shadow ray.
+pub const MAX_LIGHT_SAMPLES: u32 = 4096;
+
+/// Instants a shutter is sampled at (`time_samples`): each is the scene placed anew.
+pub const MAX_TIME_SAMPLES: u32 = 4096;
+
 /// Tokens (values, keys, brackets, separators; not whitespace or comments) of a scene file
 /// outside its `[[objects]]` tables (camera, settings, lights, and any objects written
 /// inline as `objects = [ … ]`), which are parsed as one document: TOML's parser holds its

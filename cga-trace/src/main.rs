@@ -290,34 +290,13 @@ fn render_frame(
         None
     };
 
-    // A camera without `width` and `height` takes the command line's.
-    let size = args.width.zip(args.height);
-    let mut scene = Scene::load_at(&args.scene, size, time)?;
+    let (scene, resized) = configured(args, time)?;
     // An animation's notes are the same for every frame: said once.
     if notes {
-        for note in scene.notes() {
+        for note in scene.notes().into_iter().chain(resized) {
             say!("note: {note}");
         }
     }
-    if let Some(degrees) = args.fov {
-        scene.set_fov(degrees).context("--fov")?;
-    }
-    if let Some(note) = scene.resize(args.width, args.height).context("--width/--height")? {
-        say!("note: {note}");
-    }
-    if let Some(d) = args.max_depth {
-        scene.settings.max_depth = d;
-    }
-    if let Some(spp) = args.spp {
-        scene.settings.spp = spp;
-    }
-    if let Some(stops) = args.exposure {
-        scene.settings.exposure = stops;
-    }
-    if let Some(map) = args.tone_map {
-        scene.settings.tone_map = map;
-    }
-    scene.settings.check().context("--max-depth/--spp/--exposure")?;
     let (w, h) = (scene.camera.width, scene.camera.height);
     let window = match &args.crop {
         Some(c) => Window::crop(w, h, *c).map_err(anyhow::Error::msg).context("--crop")?,
@@ -341,8 +320,24 @@ fn render_frame(
     holds(&scene).map_err(anyhow::Error::msg).context("--backend")?;
     let start = Instant::now();
     let packets = !args.no_packets;
-    let (film, RayCounts { primary, shadow, reflection }) =
-        pool.install(|| render(&scene, args.aov, window, packets, &|| bar.inc(1)));
+    let (film, RayCounts { primary, shadow, reflection }) = match scene.shutter {
+        None => pool.install(|| render(&scene, args.aov, window, packets, (0, 1), &|| bar.inc(1))),
+        Some(shutter) => {
+            // Each instant places the scene anew and takes its share of the samples.
+            let instants = shutter.instants(time, scene.settings.spp).len();
+            bar.set_length(window.rows.len() as u64 * instants as u64);
+            let mut counts = RayCounts::default();
+            let film = shutter.expose(time, scene.settings.spp, |t, subset| {
+                let (at, _) = configured(args, t).context("the shutter")?;
+                holds(&at).map_err(anyhow::Error::msg).context("--backend")?;
+                let (film, cast) =
+                    pool.install(|| render(&at, args.aov, window.clone(), packets, subset, &|| bar.inc(1)));
+                counts.add(&cast);
+                anyhow::Ok(film)
+            })?;
+            (film, counts)
+        }
+    };
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     let film = match cga_trace::colour::false_colour(&film, args.aov) {
@@ -396,20 +391,48 @@ fn render_frame(
     Ok(())
 }
 
+/// The scene at the motion's time `time`, with the command line's settings, and a note
+/// where resizing it leaves pixels that are not square.
+fn configured(args: &Render, time: f64) -> anyhow::Result<(Scene, Option<String>)> {
+    // A camera without `width` and `height` takes the command line's.
+    let size = args.width.zip(args.height);
+    let mut scene = Scene::load_at(&args.scene, size, time)?;
+    if let Some(degrees) = args.fov {
+        scene.set_fov(degrees).context("--fov")?;
+    }
+    let note = scene.resize(args.width, args.height).context("--width/--height")?;
+    if let Some(d) = args.max_depth {
+        scene.settings.max_depth = d;
+    }
+    if let Some(spp) = args.spp {
+        scene.settings.spp = spp;
+    }
+    if let Some(stops) = args.exposure {
+        scene.settings.exposure = stops;
+    }
+    if let Some(map) = args.tone_map {
+        scene.settings.tone_map = map;
+    }
+    scene.settings.check().context("--max-depth/--spp/--exposure")?;
+    Ok((scene, note))
+}
+
 /// A back end's render, as [`render`] gives it.
-type RenderFn = fn(&Scene, Aov, Window, bool, &(dyn Fn() + Sync)) -> (Film, RayCounts);
+type RenderFn = fn(&Scene, Aov, Window, bool, (u32, u32), &(dyn Fn() + Sync)) -> (Film, RayCounts);
 /// A back end's [`holds`].
 type Holds = fn(&Scene) -> Result<(), String>;
 
-/// The image and the rays cast, on back end `B`.
+/// The image and the rays cast, on back end `B`, taking the samples `first, first + step, …`
+/// of each pixel.
 fn render<B: Backend>(
     scene: &Scene,
     aov: Aov,
     window: Window,
     packets: bool,
+    (first, step): (u32, u32),
     on_row: &(dyn Fn() + Sync),
 ) -> (Film, RayCounts) {
-    let mut renderer = Renderer::<B>::with_backend(scene);
+    let mut renderer = Renderer::<B>::with_backend(scene).sample_subset(first, step);
     if !packets {
         renderer = renderer.without_packets();
     }

@@ -20,22 +20,39 @@ pub struct Material {
     pub q: f64,
     /// Mirror reflection `k_r`.
     pub kr: f64,
+    /// Index of refraction of a dielectric (glass, water); 0 for an opaque surface. A
+    /// dielectric reflects by Fresnel's equations and refracts by Snell's law
+    /// (`integrator/glass.rs`); its `k_r` is not used.
+    pub ior: f64,
+    /// What a dielectric absorbs per world unit its light travels inside it (Beer–Lambert:
+    /// `exp(−a d)` per channel).
+    pub absorption: [f64; 3],
 }
 
 impl Material {
     /// `colour` with the default coefficients a scene file gets where it gives none:
-    /// `k_a = 0.5`, `k_d = 1`, `k_s = 1`, `q = 100`, `k_r = 0`.
+    /// `k_a = 0.5`, `k_d = 1`, `k_s = 1`, `q = 100`, `k_r = 0`, opaque.
     pub fn new(colour: [f64; 3]) -> Material {
-        Material { colour, ka: 0.5, kd: 1.0, ks: 1.0, q: 100.0, kr: 0.0 }
+        Material { colour, ka: 0.5, kd: 1.0, ks: 1.0, q: 100.0, kr: 0.0, ior: 0.0, absorption: [0.0; 3] }
     }
 
     /// Every value finite and non-negative.
     pub fn check(&self) -> Result<(), Invalid> {
-        let all = self.colour.iter().chain([&self.ka, &self.kd, &self.ks, &self.q, &self.kr]);
+        let all = self
+            .colour
+            .iter()
+            .chain([&self.ka, &self.kd, &self.ks, &self.q, &self.kr, &self.ior])
+            .chain(&self.absorption);
         if all.clone().any(|x| !x.is_finite() || *x < 0.0) {
             return Err(Invalid::Value("material values must be finite and ≥ 0"));
         }
         Ok(())
+    }
+
+    /// Whether light passes through it (a dielectric: `ior > 0`).
+    #[inline]
+    pub fn dielectric(&self) -> bool {
+        self.ior > 0.0
     }
 
     /// The specular term `max(c, 0)^q` for `c = n·h`: by repeated squaring ([`power`]) where
@@ -130,6 +147,10 @@ pub fn power<T: Real>(c: T, mut n: u32) -> T {
     }
 }
 
+/// A material that reflects nothing (for lanes without a hit, and to build others from).
+pub const NONE: Material =
+    Material { colour: [0.0; 3], ka: 0.0, kd: 0.0, ks: 0.0, q: 0.0, kr: 0.0, ior: 0.0, absorption: [0.0; 3] };
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -137,7 +158,7 @@ mod tests {
     #[test]
     fn specular_agrees_with_powf() {
         for q in [0.0, 1.0, 7.0, 100.0, 1024.0, 2.5, 2000.0] {
-            let m = Material { colour: [1.0; 3], ka: 0.0, kd: 0.0, ks: 1.0, q, kr: 0.0 };
+            let m = Material { ks: 1.0, q, ..NONE };
             for c in [-0.5, 0.0, f64::NAN, 1e-3, 0.3, 0.9, 0.999, 1.0] {
                 let want = f64::max(c, 0.0).powf(q);
                 let got = m.specular(c);

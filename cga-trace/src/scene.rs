@@ -3,7 +3,7 @@
 //! file can have, each naming the file, line and column and, for invalid values or
 //! geometry, the table or object and a typed reason.
 
-use crate::camera::{Camera, CameraError};
+use crate::camera::{Camera, CameraError, Lens};
 use crate::figure::{Label, Marks};
 use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
@@ -12,6 +12,7 @@ use crate::light::Light;
 use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_MATERIALS, MAX_OBJECTS};
 pub use crate::object::Object;
 use crate::settings::Settings;
+use crate::shutter::Shutter;
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
 use std::ops::Range;
@@ -37,6 +38,8 @@ pub struct Scene {
     /// Whether the file gives both image-plane extents (`x_max` or `fov`, and `y_max`): then
     /// [`Scene::resize`] keeps them, and pixels need not be square.
     pub pinned: bool,
+    /// The camera's shutter, where it blurs motion.
+    pub shutter: Option<Shutter>,
 }
 
 /// What is wrong with a scene file.
@@ -187,7 +190,8 @@ impl Scene {
         }
         let camera_span = spec.camera.span();
         let in_camera = |reason| invalid(&rest, camera_span.clone(), "camera".into(), reason);
-        let (camera, position, pinned) = spec.camera.into_inner().build(size, time).map_err(in_camera)?;
+        let built = spec.camera.into_inner().build(size, time).map_err(in_camera)?;
+        let (camera, position, pinned, shutter) = (built.camera, built.position, built.pinned, built.shutter);
         // Objects size the frame; lights do not (a light far away is only a direction). Each
         // object's placement is read first (a few of its fields), before any is built.
         let mut sizes = Vec::with_capacity(count);
@@ -205,6 +209,7 @@ impl Scene {
         let marks = Marks::for_scene(&sizes, position, pixel);
         let frame = Frame::around(position, sizes, pixel)
             .map_err(|span| invalid(&|_| 0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
+        let camera = camera.with_lens(built.lens.in_frame(frame.scale)).map_err(|e| in_camera(e.into()))?;
         let mut materials = crate::format::Materials::new();
         for (name, m) in spec.materials {
             let span = m.span();
@@ -244,7 +249,7 @@ impl Scene {
             built.extend(objects);
             labels.extend(label);
         }
-        Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned })
+        Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned, shutter })
     }
 }
 
@@ -361,7 +366,7 @@ impl Scene {
             (Some(w), Some(h)) => (w, h),
         };
         let y_max = if self.pinned { c.y_max } else { c.x_max * f64::from(h) / f64::from(w.max(1)) };
-        self.camera = Camera::new(c.pose, c.focal, c.x_max, y_max, w, h)?;
+        self.camera = Camera::new(c.pose, c.focal, c.x_max, y_max, w, h)?.with_lens(c.lens)?;
         let aspect = (c.x_max / f64::from(w)) / (y_max / f64::from(h));
         Ok((self.pinned && (aspect - 1.0).abs() > 1e-3).then(|| {
             format!(
@@ -374,9 +379,12 @@ impl Scene {
     /// `x_max = 2 f tan(θ/2)`, and `y_max` follows for square pixels.
     pub fn set_fov(&mut self, degrees: f64) -> Result<(), CameraError> {
         let c = self.camera;
+        if let Lens::Orthographic { .. } = c.lens {
+            return Err(CameraError::OrthographicFov);
+        }
         let x_max = Camera::x_max_for_fov(c.focal, degrees)?;
         let y_max = x_max * f64::from(c.height) / f64::from(c.width);
-        self.camera = Camera::new(c.pose, c.focal, x_max, y_max, c.width, c.height)?;
+        self.camera = Camera::new(c.pose, c.focal, x_max, y_max, c.width, c.height)?.with_lens(c.lens)?;
         self.pinned = false;
         Ok(())
     }

@@ -442,6 +442,78 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:7:14:", "never closed"],
         ),
         (
+            "an area light of two shapes",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nsphere = 1.0\ndisk = 1.0\n"),
+            vec!["bad.toml:9:", "light 1", "`disk`", "not both"],
+        ),
+        (
+            "a disk of light without a normal",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\ndisk = 1.0\n"),
+            vec!["bad.toml:8:", "light 1", "`disk`", "needs its `normal`"],
+        ),
+        (
+            "an area light of no size",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nsphere = 0.0\n"),
+            vec!["bad.toml:8:", "`sphere`", "> 0"],
+        ),
+        (
+            "an area light of no samples",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nsphere = 1.0\nsamples = 0\n"),
+            vec!["bad.toml:9:", "`samples`", "at least 1"],
+        ),
+        (
+            "an area light of too many samples",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nsphere = 1.0\nsamples = 5000\n"),
+            vec!["bad.toml:9:", "`samples`", "4096"],
+        ),
+        (
+            "a spot light's direction on an area light",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nsphere = 1.0\ndirection = [0.0, 0.0, -1.0]\n"),
+            vec!["bad.toml:9:", "`direction`", "not a spot light's"],
+        ),
+        (
+            "samples on a point light",
+            format!("{CAMERA}[[lights]]\nposition = [0.0, 0.0, 9.0]\nsamples = 4\n"),
+            vec!["bad.toml:8:", "`samples`", "give it `sphere` or `disk`"],
+        ),
+        (
+            "a negative aperture",
+            format!("{CAMERA}aperture = -0.1\n"),
+            vec!["bad.toml:6:", "camera", "`aperture`", "≥ 0"],
+        ),
+        (
+            "a lens focused at no distance",
+            format!("{CAMERA}aperture = 0.1\nfocus_distance = 0.0\n"),
+            vec!["bad.toml:7:", "`focus_distance`", "> 0"],
+        ),
+        (
+            "a view width on a perspective camera",
+            format!("{CAMERA}view_width = 3.0\n"),
+            vec!["bad.toml:6:", "`view_width`", "orthographic"],
+        ),
+        (
+            "a lens on an orthographic camera",
+            format!("{CAMERA}projection = \"orthographic\"\naperture = 0.2\n"),
+            vec!["bad.toml:7:", "`aperture`", "no lens"],
+        ),
+        ("an unknown projection", format!("{CAMERA}projection = \"fisheye\"\n"), vec!["bad.toml:6:", "fisheye"]),
+        (
+            "a shutter closing before it opens",
+            format!("{CAMERA}shutter = [0.5, 0.2]\n"),
+            vec!["bad.toml:6:", "`shutter`", "open ≤ close"],
+        ),
+        (
+            "time samples without a shutter",
+            format!("{CAMERA}time_samples = 8\n"),
+            vec!["bad.toml:6:", "`time_samples`", "give `shutter"],
+        ),
+        (
+            "a negative index of refraction",
+            with_object("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\n")
+                .replace("[1.0, 0.0, 0.0] }", "[1.0, 0.0, 0.0], ior = -1.5 }"),
+            vec!["`thing`", "≥ 0"],
+        ),
+        (
             "a light of no direction",
             format!("{CAMERA}[[lights]]\ndirection = [0.0, 0.0, 0.0]\n"),
             vec!["bad.toml:7:", "`direction`", "zero"],

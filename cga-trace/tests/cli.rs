@@ -212,3 +212,31 @@ fn exposure_scales_linear_values_and_the_filmic_map_keeps_highlights_below_white
     assert!(line.contains("--exposure") && line.contains("exposure must lie in [-64, 64] stops"), "{line}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_shutter_blurs_what_moves_and_leaves_what_stands() {
+    let dir = scratch("shutter");
+    let p = scene("motion.toml");
+    let s = p.to_str().unwrap();
+    let still = dir.join("still.toml");
+    let text = std::fs::read_to_string(&p).unwrap().replace("shutter = [0.0, 1.0]\n", "");
+    std::fs::write(&still, text).unwrap();
+    let png = |scene: &str, name: &str| {
+        let out = dir.join(name);
+        let run = render(&[scene, "-o", out.to_str().unwrap(), "--width", "64", "--spp", "8"]);
+        assert!(run.status.success(), "{run:?}");
+        image::open(&out).unwrap().to_rgb8()
+    };
+    let (blurred, sharp) = (png(s, "blurred.png"), png(still.to_str().unwrap(), "still.png"));
+    // The moving ring and ball differ; the post standing at the right does not.
+    let differ = |x0: u32, x1: u32| {
+        (x0..x1)
+            .flat_map(|x| (0..blurred.height()).map(move |y| (x, y)))
+            .filter(|&(x, y)| blurred.get_pixel(x, y) != sharp.get_pixel(x, y))
+            .count()
+    };
+    assert!(differ(0, 40) > 200, "{}", differ(0, 40));
+    let post = blurred.width() * 55 / 64;
+    assert!(blurred.get_pixel(post, 20).0.iter().zip(sharp.get_pixel(post, 20).0).all(|(a, b)| a.abs_diff(b) <= 2));
+    std::fs::remove_dir_all(&dir).unwrap();
+}

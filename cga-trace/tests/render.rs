@@ -16,7 +16,8 @@ fn scene_path(name: &str) -> PathBuf {
 fn load_sized(name: &str, w: u32, h: u32) -> Scene {
     let mut scene = Scene::load(&scene_path(name)).unwrap();
     let c = scene.camera;
-    scene.camera = cga_trace::camera::Camera::new(c.pose, c.focal, c.x_max, c.y_max, w, h).unwrap();
+    scene.camera =
+        cga_trace::camera::Camera::new(c.pose, c.focal, c.x_max, c.y_max, w, h).unwrap().with_lens(c.lens).unwrap();
     scene
 }
 

@@ -39,8 +39,14 @@ pub fn project(camera: &Camera, x: E3) -> Option<(f64, f64, f64)> {
         return None;
     }
     let (w, h) = (f64::from(camera.width), f64::from(camera.height));
-    let u = w * (camera.focal * xc / depth / camera.x_max + 0.5);
-    let v = h * (camera.focal * zc / depth / camera.y_max + 0.5);
+    // Where the image plane is met: at `f/depth` of the way for rays through the camera's
+    // point (or a thin lens's centre), at `1/k` for an orthographic view's parallel rays.
+    let along = match camera.lens {
+        crate::camera::Lens::Orthographic { k } => 1.0 / k,
+        _ => camera.focal / depth,
+    };
+    let u = w * (along * xc / camera.x_max + 0.5);
+    let v = h * (along * zc / camera.y_max + 0.5);
     Some((u, v, depth))
 }
 

@@ -15,15 +15,16 @@ mod transform;
 
 pub(crate) use specs::{MaterialRef, MaterialSpec, SettingsSpec};
 
-use crate::camera::{Camera, CameraError};
+use crate::camera::{Camera, CameraError, Lens};
 use crate::figure::{Label, MAX_LABEL_CHARS, Marks, Parts};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
 use crate::light::{Light, Source};
-use crate::limits::MAX_SIDE;
+use crate::limits::{MAX_LIGHT_SAMPLES, MAX_SIDE, MAX_TIME_SAMPLES};
 use crate::material::Material;
 use crate::object::Object;
 use crate::shapes::{BoxShape, ConeShape, DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
+use crate::shutter::Shutter;
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
@@ -63,6 +64,8 @@ pub(crate) struct SceneFile {
 /// A `[[lights]]` table: `position` (a point light), `direction` (a directional light: the
 /// way its light travels), or both (a spot light shining along `direction`, full within
 /// `radius` degrees of it and dark beyond `falloff`, as POV-Ray's `spotlight`), and a colour.
+/// With `position`, `sphere = r` makes it a sphere of light of radius `r`, and `disk = r`
+/// with `normal` a disk of light: area lights, `samples` of whose points light each hit.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct LightSpec {
@@ -71,7 +74,14 @@ pub(crate) struct LightSpec {
     radius: Option<Spanned<Num>>,
     falloff: Option<Spanned<Num>>,
     colour: Option<Spanned<V3>>,
+    sphere: Option<Spanned<Num>>,
+    disk: Option<Spanned<Num>>,
+    normal: Option<Spanned<V3>>,
+    samples: Option<Spanned<u32>>,
 }
+
+/// Points of an area light that light each hit where a file gives no `samples`.
+const AREA_SAMPLES: u32 = 16;
 
 /// POV-Ray's spot light angles where a file gives none: full light within 30° of the axis,
 /// none beyond 45°.
@@ -86,6 +96,9 @@ impl LightSpec {
         let colour = self.colour.as_ref().map_or([1.0; 3], |c| c.get_ref().0);
         if let Some(c) = self.colour.as_ref().filter(|_| colour.iter().any(|&c| c < 0.0)) {
             return Err(Invalid::at("colour", c.span(), Invalid::Value("a light's colour must be ≥ 0")));
+        }
+        if let Some(area) = self.area(frame)? {
+            return Ok(Light { source: area, colour });
         }
         if (self.position.is_none() || self.direction.is_none())
             && let Some(a) = self.radius.as_ref().or(self.falloff.as_ref())
@@ -129,6 +142,91 @@ impl LightSpec {
     }
 }
 
+impl LightSpec {
+    /// The area light the table gives (`sphere` or `disk`), checked: a `position`, a radius
+    /// `> 0` that the frame holds, a disk's non-zero `normal`, `1 ..= MAX_LIGHT_SAMPLES`
+    /// samples; `None` for the other lights (which take none of these fields).
+    fn area(&self, frame: &Frame) -> Result<Option<Source>, Invalid> {
+        let at = |field, span: Range<usize>, why| Invalid::at(field, span, Invalid::Value(why));
+        let radius = match (&self.sphere, &self.disk) {
+            (Some(_), Some(d)) => return Err(at("disk", d.span(), "give `sphere` or `disk`, not both")),
+            (Some(r), None) | (None, Some(r)) => r,
+            (None, None) => {
+                let stray = first_given(&[("normal", &self.normal), ("samples", &self.samples)]);
+                return match stray {
+                    Some((field, span)) => {
+                        Err(at(field, span, "`normal` and `samples` are an area light's: give it `sphere` or `disk`"))
+                    }
+                    None => Ok(None),
+                };
+            }
+        };
+        let field = if self.sphere.is_some() { "sphere" } else { "disk" };
+        let Some(p) = &self.position else {
+            return Err(at(field, radius.span(), "an area light needs its centre as `position`"));
+        };
+        let spot = first_given(&[("direction", &self.direction), ("radius", &self.radius), ("falloff", &self.falloff)]);
+        if let Some((field, span)) = spot {
+            return Err(at(
+                field,
+                span,
+                "an area light takes `position`, `sphere` or `disk` (its radius), `normal` (a disk's) and `samples`, not a spot light's `direction`, `radius` or `falloff`",
+            ));
+        }
+        let r = frame.length(radius.get_ref().0);
+        if !(r > 0.0 && Frame::holds(r)) {
+            return Err(at(field, radius.span(), "an area light's radius must be > 0 and within the scene's range"));
+        }
+        let samples = self.samples.as_ref().map_or(AREA_SAMPLES, |n| *n.get_ref());
+        if !(1..=MAX_LIGHT_SAMPLES).contains(&samples) {
+            let span = self.samples.as_ref().expect("given").span();
+            let why = Invalid::Limit {
+                what: "samples of an area light",
+                found: u64::from(samples),
+                limit: u64::from(MAX_LIGHT_SAMPLES),
+            };
+            return Err(Invalid::at(
+                "samples",
+                span,
+                if samples == 0 { Invalid::Value("an area light needs at least 1 sample") } else { why },
+            ));
+        }
+        let centre = light_position(p, frame)?;
+        Ok(Some(match (self.sphere.is_some(), &self.normal) {
+            (true, None) => Source::Sphere { centre, radius: r, samples },
+            (true, Some(n)) => return Err(at("normal", n.span(), "a sphere of light takes no `normal` (a disk does)")),
+            (false, Some(n)) => {
+                let normal = cga_core::euclid::unit(n.get_ref().0);
+                let normal = normal.ok_or(Invalid::at("normal", n.span(), GeometryError::ZeroVector.into()))?;
+                Source::Disk { centre, normal, radius: r, samples }
+            }
+            (false, None) => return Err(at("disk", radius.span(), "a disk of light needs its `normal`")),
+        }))
+    }
+}
+
+/// The first of the named fields that is given, and where.
+fn first_given(fields: &[(&'static str, &dyn Given)]) -> Option<(&'static str, Range<usize>)> {
+    fields.iter().find_map(|(name, f)| f.given().map(|span| (*name, span)))
+}
+
+/// An optional field's span where it is given.
+trait Given {
+    fn given(&self) -> Option<Range<usize>>;
+}
+
+impl<T> Given for Option<Spanned<T>> {
+    fn given(&self) -> Option<Range<usize>> {
+        self.as_ref().map(Spanned::span)
+    }
+}
+
+impl Given for Option<Range<usize>> {
+    fn given(&self) -> Option<Range<usize>> {
+        self.clone()
+    }
+}
+
 /// A point or spot light's position in `frame`. A light forms no conformal products: any
 /// distance whose norm f64 holds (with room for the distances from points of the scene)
 /// will do.
@@ -168,6 +266,30 @@ pub(crate) struct CameraSpec {
     /// Pixels; may be left out when the caller gives the size (`--width` and `--height`).
     width: Option<Spanned<u32>>,
     height: Option<Spanned<u32>>,
+    /// `"perspective"` (the default: eq. 2's pinhole, or a thin lens) or `"orthographic"`.
+    projection: Option<Spanned<Projection>>,
+    /// An orthographic view's width (world units); default what the perspective view shows at
+    /// the `look_at` distance, `x_max d / f`.
+    view_width: Option<Spanned<Num>>,
+    /// A thin lens's radius (world units); 0 (the default) is the pinhole.
+    aperture: Option<Spanned<Num>>,
+    /// The distance of the plane of focus (world units); default the `look_at` distance.
+    focus_distance: Option<Spanned<Num>>,
+    /// The times, relative to the frame's, over which the shutter is open (motion blur).
+    shutter: Option<Spanned<Nums<2>>>,
+    /// The instants the shutter is sampled at; default the pixel samples (`spp`).
+    time_samples: Option<Spanned<u32>>,
+}
+
+/// How the camera projects (`projection = "…"`).
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub(crate) enum Projection {
+    /// Rays through the camera's point (or its thin lens).
+    #[default]
+    Perspective,
+    /// Parallel rays along the view axis.
+    Orthographic,
 }
 
 impl CameraSpec {
@@ -177,8 +299,12 @@ impl CameraSpec {
     /// so it is exact wherever the camera is.
     /// `size` stands in for `width` and `height` where the file gives neither; `time` is the
     /// frame time its `motion` is read at.
-    pub(crate) fn build(self, size: Option<(u32, u32)>, time: f64) -> Result<(Camera, E3, bool), Invalid> {
-        let pose = match (self.motor, self.position, self.look_at) {
+    pub(crate) fn build(self, size: Option<(u32, u32)>, time: f64) -> Result<BuiltCamera, Invalid> {
+        let look_distance = match (&self.position, &self.look_at) {
+            (Some(p), Some(t)) => Some(norm(sub(t.0, p.0))),
+            _ => None,
+        };
+        let pose = match (&self.motor, self.position, self.look_at) {
             (Some(m), None, None) => rigid(m.get_ref().0).map_err(|e| Invalid::at("motor", m.span(), e))?,
             (None, Some(p), Some(t)) => Camera::pose_look_at(p.0, t.0, self.up.map_or([0.0, 0.0, 1.0], |u| u.0))?,
             _ => return Err(Invalid::Value("give either `motor`, or `position` and `look_at`")),
@@ -226,8 +352,116 @@ impl CameraSpec {
             },
             e => e.into(),
         })?;
-        Ok((camera, position, pinned))
+        let lens = self.lens(&camera, look_distance)?;
+        let shutter = self.shutter()?;
+        Ok(BuiltCamera { camera, position, pinned, lens, shutter })
     }
+
+    /// The lens the file gives, in world units, checked: orthographic with a positive view
+    /// width, or a thin lens with aperture ≥ 0 and a positive focus distance (either
+    /// defaulting to the `look_at` distance, which a camera placed by `motor` has not).
+    fn lens(&self, camera: &Camera, look_distance: Option<f64>) -> Result<Lens, Invalid> {
+        let projection = self.projection.as_ref().map_or(Projection::Perspective, |p| *p.get_ref());
+        let positive = |field: &'static str, x: &Spanned<Num>, why: &'static str| {
+            let v = x.get_ref().0;
+            if v > 0.0 { Ok(v) } else { Err(Invalid::at(field, x.span(), Invalid::Value(why))) }
+        };
+        // The `look_at` distance, where a length is not given.
+        let looked = || {
+            look_distance.ok_or(Invalid::Value(
+                "a camera placed by `motor` has no `look_at` distance: give `view_width` (orthographic) or `focus_distance` (a lens)",
+            ))
+        };
+        match projection {
+            Projection::Orthographic => {
+                if let Some((field, span)) =
+                    first_given(&[("aperture", &self.aperture), ("focus_distance", &self.focus_distance)])
+                {
+                    return Err(Invalid::at(
+                        field,
+                        span,
+                        Invalid::Value("an orthographic camera has no lens: leave out `aperture` and `focus_distance`"),
+                    ));
+                }
+                let width = match &self.view_width {
+                    Some(w) => positive("view_width", w, "an orthographic view's width must be > 0")?,
+                    None => looked()? * camera.x_max / camera.focal,
+                };
+                Ok(Lens::Orthographic { k: width / camera.x_max })
+            }
+            Projection::Perspective => {
+                if let Some(w) = &self.view_width {
+                    return Err(Invalid::at(
+                        "view_width",
+                        w.span(),
+                        Invalid::Value(
+                            "`view_width` is an orthographic camera's: give `projection = \"orthographic\"`",
+                        ),
+                    ));
+                }
+                let aperture = self.aperture.as_ref().map_or(0.0, |a| a.get_ref().0);
+                if aperture < 0.0 {
+                    let span = self.aperture.as_ref().expect("given").span();
+                    return Err(Invalid::at(
+                        "aperture",
+                        span,
+                        Invalid::Value("a lens's aperture (its radius) must be ≥ 0"),
+                    ));
+                }
+                if aperture == 0.0 {
+                    return Ok(Lens::Pinhole);
+                }
+                let focus = match &self.focus_distance {
+                    Some(d) => positive("focus_distance", d, "the focus distance must be > 0")?,
+                    None => looked()?,
+                };
+                Ok(Lens::Thin { aperture, focus })
+            }
+        }
+    }
+
+    /// The shutter the file gives: open ≤ close, instants 1 ..= MAX_TIME_SAMPLES.
+    fn shutter(&self) -> Result<Option<Shutter>, Invalid> {
+        let Some(given) = &self.shutter else {
+            if let Some(n) = &self.time_samples {
+                return Err(Invalid::at(
+                    "time_samples",
+                    n.span(),
+                    Invalid::Value("`time_samples` samples a shutter: give `shutter = [open, close]`"),
+                ));
+            }
+            return Ok(None);
+        };
+        let [open, close] = given.get_ref().0;
+        if open.partial_cmp(&close).is_none_or(|o| o == std::cmp::Ordering::Greater) {
+            return Err(Invalid::at(
+                "shutter",
+                given.span(),
+                Invalid::Value("the shutter is [open, close] with open ≤ close"),
+            ));
+        }
+        let samples = self.time_samples.as_ref().map(|n| *n.get_ref());
+        if let Some(n) = samples.filter(|n| !(1..=MAX_TIME_SAMPLES).contains(n)) {
+            let span = self.time_samples.as_ref().expect("given").span();
+            return Err(Invalid::at(
+                "time_samples",
+                span,
+                Invalid::Limit { what: "time samples", found: u64::from(n), limit: u64::from(MAX_TIME_SAMPLES) },
+            ));
+        }
+        Ok(Some(Shutter { open, close, samples }))
+    }
+}
+
+/// A camera as its table gives it: the camera (a pinhole, in its own frame), where it is in
+/// the world, whether both image-plane extents are given, its lens in world units and its
+/// shutter.
+pub(crate) struct BuiltCamera {
+    pub camera: Camera,
+    pub position: E3,
+    pub pinned: bool,
+    pub lens: Lens,
+    pub shutter: Option<Shutter>,
 }
 
 /// What an object is.

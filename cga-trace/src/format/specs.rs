@@ -104,6 +104,12 @@ pub(crate) struct MaterialSpec {
     q: Option<f64>,
     #[serde(default, deserialize_with = "some_number")]
     kr: Option<f64>,
+    /// A dielectric's index of refraction (glass 1.5, water 1.33).
+    #[serde(default, deserialize_with = "some_number")]
+    ior: Option<f64>,
+    /// A dielectric's absorption per world unit, per channel.
+    #[serde(default, deserialize_with = "some_numbers")]
+    absorption: Option<[f64; 3]>,
 }
 
 /// An object's `material`: a table, or the name of one of the file's `[materials.NAME]`
@@ -146,6 +152,8 @@ impl From<MaterialSpec> for Material {
             ks: s.ks.unwrap_or(d.ks),
             q: s.q.unwrap_or(d.q),
             kr: s.kr.unwrap_or(d.kr),
+            ior: s.ior.unwrap_or(d.ior),
+            absorption: s.absorption.unwrap_or(d.absorption),
         }
     }
 }

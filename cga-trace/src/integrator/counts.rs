@@ -14,7 +14,7 @@ pub struct RayCounts {
 
 impl RayCounts {
     /// Adds `other`'s counts.
-    pub(crate) fn add(&mut self, other: &RayCounts) {
+    pub fn add(&mut self, other: &RayCounts) {
         self.primary += other.primary;
         self.shadow += other.shadow;
         self.reflection += other.reflection;

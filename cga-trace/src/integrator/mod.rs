@@ -16,6 +16,7 @@
 
 mod aov;
 mod counts;
+mod glass;
 mod nearest;
 mod sampler;
 mod shade;
@@ -23,7 +24,9 @@ mod trace;
 
 pub use aov::Aov;
 pub use counts::RayCounts;
+pub use glass::{CUTOFF, fresnel};
 pub use sampler::sample_offset;
+pub(crate) use sampler::{Dimension, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
@@ -53,9 +56,15 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     pub(crate) bvh: Option<Bvh>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
     pub(crate) flat: Vec<bool>,
+    /// Which objects are dielectrics: shadow rays pass them (as POV-Ray's through clear
+    /// glass), caustics not being traced.
+    pub(crate) clear: Vec<bool>,
     /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
     /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
     pub(crate) errors: Vec<f64>,
+    /// The samples of each pixel taken, `(first, step)`: `first, first + step, …` below the
+    /// scene's `spp` ([`Renderer::sample_subset`]).
+    pub(crate) subset: (u32, u32),
     /// Rays cast so far, `[primary, shadow, reflection]`: each thread adds its row's
     /// [`RayCounts`] once.
     counted: [AtomicU64; 3],
@@ -79,8 +88,20 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
+        let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
         let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
-        Renderer { scene, shapes, packets, bounds, bvh, flat, errors, counted: Default::default() }
+        Renderer {
+            scene,
+            shapes,
+            packets,
+            bounds,
+            bvh,
+            flat,
+            clear,
+            errors,
+            subset: (0, 1),
+            counted: Default::default(),
+        }
     }
 
     /// The rays cast so far, by kind.
@@ -99,6 +120,14 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// The same renderer tracing one ray at a time, without packets (to compare them).
     pub fn without_packets(mut self) -> Self {
         self.packets = false;
+        self
+    }
+
+    /// The same renderer taking of each pixel's `spp` samples only `first, first + step, …`
+    /// (their mean): what one instant of a shutter takes ([`crate::shutter`]), so that the
+    /// instants together take each sample once. `step` is at least 1.
+    pub fn sample_subset(mut self, first: u32, step: u32) -> Self {
+        self.subset = (first, step.max(1));
         self
     }
 

@@ -69,7 +69,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     }
 
     /// Which rays are blocked before their `t_max` by an object other than the lane's
-    /// `skip` (a lane with `t_max ≤ 0` or NaN is inactive and never blocked): stops at the
+    /// `skip` and the dielectrics (a lane with `t_max ≤ 0` or NaN is inactive and never blocked): stops at the
     /// first blocker (once every active lane is blocked), and computes no normals.
     #[inline(always)]
     pub(crate) fn blocked<R: RayLanes<B, W>, const W: usize>(
@@ -85,8 +85,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
             for l in (0..W).filter(|&l| active[l]) {
                 let ray = rays.ray(l);
                 bvh.traverse(ray.origin, ray.dir, 0.0, t_max[l], |k, t| {
-                    blocked[l] =
-                        Some(k) != skip[l] && B::intersect(&self.shapes[k], ray, self.t_min(k, 0.0), t).is_some();
+                    blocked[l] = Some(k) != skip[l]
+                        && B::intersect(&self.shapes[k], ray, self.t_min(k, 0.0), t).is_some()
+                        && !self.clear[k];
                     (!blocked[l]).then_some(t)
                 });
             }
@@ -105,7 +106,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 continue;
             }
             for (l, c) in rays.cross(&self.shapes[k], &[self.t_min(k, 0.0); W], &range).into_iter().enumerate() {
-                blocked[l] |= c.is_some();
+                // A dielectric asked only once it is met: the test costs nothing elsewhere.
+                blocked[l] |= c.is_some() && !self.clear[k];
             }
         }
         core::array::from_fn(|l| active[l] && blocked[l])

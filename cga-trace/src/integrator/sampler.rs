@@ -3,7 +3,8 @@
 //! over samples.
 
 use super::{Aov, RayCounts, Renderer};
-use crate::backend::{Backend, Packet, RayLanes};
+use crate::backend::{Backend, Packet, RayLanes, lanes3};
+use crate::camera::Lens;
 use crate::ray::Ray;
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
@@ -24,8 +25,9 @@ impl<B: Backend> Renderer<'_, B> {
     }
 
     /// `W` neighbouring pixels of a row, `(i₀ + k, j)`, each averaged over the scene's
-    /// `spp` samples, sample `s` of the `W` pixels cast as one set of rays in lanes; `None`
-    /// where the camera forms no ray (nothing is counted then).
+    /// `spp` samples (those of the renderer's [subset](Renderer::sample_subset)), sample `s`
+    /// of the `W` pixels cast as one set of rays in lanes; `None` where the camera forms no
+    /// ray (nothing is counted then).
     #[inline(always)]
     pub(crate) fn pixels<R: RayLanes<B, W>, const W: usize>(
         &self,
@@ -35,24 +37,28 @@ impl<B: Backend> Renderer<'_, B> {
         cast: &mut RayCounts,
     ) -> Option<[[f64; 3]; W]> {
         let spp = self.scene.settings.spp.max(1);
+        let (first, step) = self.subset;
         let mut counted = RayCounts::default();
-        let colours = if spp == 1 {
+        let key = |k: usize, s: u32| SampleKey::new(i0 + k as u32, j, s, spp);
+        let colours = if spp == 1 && step == 1 {
             let u = core::array::from_fn(|k| f64::from(i0 + k as u32) + 0.5);
-            self.samples::<R, W>(u, [f64::from(j) + 0.5; W], aov, &mut counted)?
+            self.samples::<R, W>(u, [f64::from(j) + 0.5; W], core::array::from_fn(|k| key(k, 0)), aov, &mut counted)?
         } else {
             let mut sum = [[0.0; 3]; W];
-            for s in 0..spp {
+            let mut taken = 0u32;
+            for s in (first..spp).step_by(step.max(1) as usize) {
                 let (mut u, mut v) = ([0.0; W], [0.0; W]);
                 for k in 0..W {
                     let (du, dv) = sample_offset(i0 + k as u32, j, s);
                     (u[k], v[k]) = (f64::from(i0 + k as u32) + du, f64::from(j) + dv);
                 }
-                let colours = self.samples::<R, W>(u, v, aov, &mut counted)?;
+                let colours = self.samples::<R, W>(u, v, core::array::from_fn(|k| key(k, s)), aov, &mut counted)?;
                 for (sum, c) in sum.iter_mut().zip(colours) {
                     *sum = [sum[0] + c[0], sum[1] + c[1], sum[2] + c[2]];
                 }
+                taken += 1;
             }
-            let n = f64::from(spp);
+            let n = f64::from(taken.max(1));
             for c in &mut sum {
                 *c = [c[0] / n, c[1] / n, c[2] / n];
             }
@@ -63,27 +69,49 @@ impl<B: Backend> Renderer<'_, B> {
     }
 
     /// The colours (or AOVs, lane by lane) seen at continuous pixel coordinates
-    /// `(u_k, v_k)`.
+    /// `(u_k, v_k)` by the samples `keys`.
     #[inline(always)]
     fn samples<R: RayLanes<B, W>, const W: usize>(
         &self,
         u: [f64; W],
         v: [f64; W],
+        keys: [SampleKey; W],
         aov: Aov,
         cast: &mut RayCounts,
     ) -> Option<[[f64; 3]; W]> {
         if aov != Aov::Shaded {
             let mut out = [[0.0; 3]; W];
             for l in 0..W {
-                let ray = B::camera_ray(&self.scene.camera, u[l], v[l])?;
+                let ray: Ray<B::Carrier> = self.camera_rays::<Ray<B::Carrier>, 1>([u[l]], [v[l]], &[keys[l]])?;
                 cast.primary += 1;
                 out[l] = self.aov(&ray, aov);
             }
             return Some(out);
         }
-        let rays = R::camera(&self.scene.camera, u, v)?;
+        let rays = self.camera_rays::<R, W>(u, v, &keys)?;
         cast.primary += W as u64;
-        Some(self.trace_lanes(rays, 0, cast))
+        Some(self.trace_lanes(rays, 0, &keys, cast))
+    }
+
+    /// The camera rays through `(u_k, v_k)`: eq. 2's pinhole rays as the back end forms them,
+    /// or the lens's ([`Camera::lens_ray`](crate::camera::Camera::lens_ray)) from each
+    /// sample's lens point.
+    #[inline(always)]
+    fn camera_rays<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        u: [f64; W],
+        v: [f64; W],
+        keys: &[SampleKey; W],
+    ) -> Option<R> {
+        let camera = &self.scene.camera;
+        if camera.lens == Lens::Pinhole {
+            return R::camera(camera, u, v);
+        }
+        let mut rays = [([0.0; 3], [0.0; 3]); W];
+        for l in 0..W {
+            rays[l] = camera.lens_ray(u[l], v[l], disk(keys[l].point(Dimension::Lens, 0, 1)))?;
+        }
+        Some(R::cast(lanes3(rays.map(|r| r.0)), lanes3(rays.map(|r| r.1))))
     }
 
     /// Four neighbouring pixels of a row, `(i₀ + k, j)`, through packets, sample by sample
@@ -122,6 +150,103 @@ pub fn sample_offset(i: u32, j: u32, s: u32) -> (f64, f64) {
     let y = sobol_second(s) ^ hash(pixel ^ 0x02e5_be93);
     let unit = |bits: u32| f64::from(bits) / 4_294_967_296.0;
     (unit(x), unit(y))
+}
+
+/// What a sample's further points are drawn for: each its own scramble of the sequence.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Dimension {
+    /// The point on a thin lens.
+    Lens = 1,
+    /// The point on an area light.
+    Light = 2,
+}
+
+/// Which sample of which pixel a ray serves: what places its lens and light points.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct SampleKey {
+    /// The pixel.
+    i: u32,
+    j: u32,
+    /// The sample's number, and how many the pixel takes.
+    index: u32,
+    count: u32,
+}
+
+impl SampleKey {
+    /// Sample `s` of `count` of pixel `(i, j)` (hashed only where a point is drawn).
+    #[inline(always)]
+    pub(crate) fn new(i: u32, j: u32, s: u32, count: u32) -> Self {
+        SampleKey { i, j, index: s, count }
+    }
+
+    /// Point `k` of `n` in `[0, 1)²` that this sample takes for `dimension`: of the pixel's
+    /// `count · n` points of that dimension, number `π(s) n + k` — the first two dimensions
+    /// of the Sobol' sequence with their digits scrambled by a hash of the pixel and the
+    /// dimension, `π` a permutation of the samples by the same hash (Kensler's), so that the
+    /// points of every dimension are stratified over the pixel's samples and uncorrelated with
+    /// where in the pixel each sample falls (pbrt's padded Sobol' sampler).
+    pub(crate) fn point(&self, dimension: Dimension, k: u32, n: u32) -> (f64, f64) {
+        let pixel = hash(self.i ^ hash(self.j ^ 0x85eb_ca6b));
+        let seed = hash(pixel ^ (dimension as u32).wrapping_mul(0x9e37_79b9));
+        let s = permute(self.index, self.count.max(1), seed).wrapping_mul(n).wrapping_add(k);
+        let x = s.reverse_bits() ^ hash(seed ^ 0x68bc_21eb);
+        let y = sobol_second(s) ^ hash(seed ^ 0x02e5_be93);
+        let unit = |bits: u32| f64::from(bits) / 4_294_967_296.0;
+        (unit(x), unit(y))
+    }
+}
+
+/// Shirley and Chiu's concentric map from the unit square onto the unit disk: strata stay
+/// compact and areas keep their proportions.
+pub(crate) fn disk((x, y): (f64, f64)) -> (f64, f64) {
+    let (a, b) = (2.0 * x - 1.0, 2.0 * y - 1.0);
+    if a == 0.0 && b == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (r, theta) = if a.abs() > b.abs() {
+        (a, std::f64::consts::FRAC_PI_4 * (b / a))
+    } else {
+        (b, std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b))
+    };
+    (r * theta.cos(), r * theta.sin())
+}
+
+/// Element `i` of a pseudo-random permutation of `0 .. n` chosen by `seed`: Kensler's
+/// hash-based permutation ("Correlated Multi-Jittered Sampling", 2013), cycle-walking to
+/// stay below `n`.
+fn permute(mut i: u32, n: u32, seed: u32) -> u32 {
+    if n <= 1 {
+        return 0;
+    }
+    let mut w = n - 1;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    loop {
+        i ^= seed;
+        i = i.wrapping_mul(0xe170_893d);
+        i ^= seed >> 16;
+        i ^= (i & w) >> 4;
+        i ^= seed >> 8;
+        i = i.wrapping_mul(0x0929_eb3f);
+        i ^= seed >> 23;
+        i ^= (i & w) >> 1;
+        i = i.wrapping_mul(1 | seed >> 27);
+        i = i.wrapping_mul(0x6935_fa69);
+        i ^= (i & w) >> 11;
+        i = i.wrapping_mul(0x74dc_b303);
+        i ^= (i & w) >> 2;
+        i = i.wrapping_mul(0x9e50_1cc3);
+        i ^= (i & w) >> 2;
+        i = i.wrapping_mul(0xc860_a3df);
+        i &= w;
+        i ^= i >> 5;
+        if i < n {
+            return (i.wrapping_add(seed)) % n;
+        }
+    }
 }
 
 /// The second dimension of the Sobol' sequence (primitive polynomial `x + 1`): direction
@@ -167,5 +292,26 @@ mod tests {
             }
         }
         assert_ne!(sample_offset(0, 0, 0), sample_offset(1, 0, 0), "pixels are decorrelated");
+    }
+
+    #[test]
+    fn lens_and_light_points_are_stratified_and_shuffled() {
+        for n in [1, 4, 16, 100] {
+            let mut seen: Vec<u32> = (0..n).map(|s| permute(s, n, 0x1234_5678)).collect();
+            seen.sort();
+            assert_eq!(seen, (0..n).collect::<Vec<_>>(), "a permutation of 0..{n}");
+        }
+        // 16 samples: their lens points one in each of 4×4 cells; not in pixel order.
+        let points: Vec<_> = (0..16).map(|s| SampleKey::new(3, 5, s, 16).point(Dimension::Lens, 0, 1)).collect();
+        let mut cells: Vec<u32> = points.iter().map(|&(x, y)| (x * 4.0) as u32 * 4 + (y * 4.0) as u32).collect();
+        cells.sort();
+        assert_eq!(cells, (0..16).collect::<Vec<_>>());
+        let offsets: Vec<_> = (0..16).map(|s| sample_offset(3, 5, s)).collect();
+        let order = |p: &[(f64, f64)]| p.iter().map(|&(x, _)| (x * 16.0) as u32).collect::<Vec<_>>();
+        assert_ne!(order(&points), order(&offsets), "lens points are not tied to pixel offsets");
+        // The disk map keeps area: the mean squared radius of a fine grid is ½.
+        let grid = (0..64).flat_map(|a| (0..64).map(move |b| ((a as f64 + 0.5) / 64.0, (b as f64 + 0.5) / 64.0)));
+        let mean = grid.map(disk).map(|(x, y)| x * x + y * y).sum::<f64>() / 4096.0;
+        assert!((mean - 0.5).abs() < 1e-3, "{mean}");
     }
 }

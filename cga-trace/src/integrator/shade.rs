@@ -3,14 +3,14 @@
 //! (eq. 12 without the reflected term), over lanes ([`RayLanes`]). One ray and four take
 //! the same steps, so `--no-packets` gives the same bits.
 
-use super::{RayCounts, Renderer};
-use crate::backend::{Backend, RayLanes};
+use super::{Dimension, RayCounts, Renderer, SampleKey, disk};
+use crate::backend::{Backend, RayLanes, lanes3};
 use crate::light::{Light, Source, attenuation, blinn_phong, lights};
 use crate::material::{Material, Reflectance, shine};
 use crate::object::Object;
 use crate::ray::{leaving_origin, offset};
 use crate::shapes::ShadingPoint;
-use cga_core::euclid::{E3, add, dot, scale};
+use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::Lane;
 use cga_core::{Real, Select};
 
@@ -31,7 +31,7 @@ fn by_lane<T: Lane, const W: usize>(
 }
 
 /// A material for lanes without a hit (their terms are not used).
-const NO_MATERIAL: Material = Material { colour: [0.0; 3], ka: 0.0, kd: 0.0, ks: 0.0, q: 0.0, kr: 0.0 };
+const NO_MATERIAL: Material = crate::material::NONE;
 
 impl<B: Backend> Renderer<'_, B> {
     /// The ambient and direct light at the rays' hits (object index per lane), the shadow
@@ -43,6 +43,7 @@ impl<B: Backend> Renderer<'_, B> {
         &self,
         rays: &R,
         hits: &[Option<(ShadingPoint, usize)>; W],
+        keys: &[SampleKey; W],
         cast: &mut RayCounts,
     ) -> [[f64; 3]; W] {
         let (settings, objects) = (&self.scene.settings, &self.scene.objects);
@@ -63,29 +64,64 @@ impl<B: Backend> Renderer<'_, B> {
         let own: [Option<usize>; W] = core::array::from_fn(|l| hits[l].as_ref().and_then(|(_, k)| self.skip_own(*k)));
         let offset = offset(x, rays.origin(), by_lane(hits, |_, k| self.errors[k]));
         let hit: [bool; W] = core::array::from_fn(|l| hits[l].is_some());
+        let hits_at = Hits { x, n, v, m: &m, hit: &hit, own: &own, offset };
         for light in &self.scene.lights {
-            let Some(Lit { lit, l, distance, diffuse, specular, cone, shadow_origin }) =
-                lit(light, (x, n, v), &m, &hit, offset)
-            else {
-                continue;
-            };
-            let mut s = R::T::one();
-            if settings.shadows {
-                cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
-                // Unlit lanes cast a harmless ray with an empty range.
-                let shadow = R::cast(select3(&lit, shadow_origin, [0.0; 3]), select3(&lit, l, [0.0, 0.0, 1.0]));
-                let t_max = core::array::from_fn(|k| if lit[k] { distance.lane(k) } else { 0.0 });
-                let blocked = self.blocked(&shadow, &t_max, &own);
-                s = R::T::from_fn(|k| if blocked[k] { settings.shadow_transmission } else { 1.0 });
-            }
-            let term = self.light(&Reflectance::lanes(&m), light, distance, diffuse, specular, s * cone);
-            for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
-                for (out, t) in colour.iter_mut().zip(&term) {
-                    *out += t.lane(k);
+            match light.samples() {
+                None => self.add_light::<R, W>(&mut colours, light, light.toward(x), None, &hits_at, cast),
+                Some(samples) => {
+                    // Each lane's own points on the light, stratified over the pixel's samples.
+                    let weight = Some(1.0 / f64::from(samples));
+                    for k in 0..samples {
+                        let p: [E3; W] = core::array::from_fn(|l| {
+                            let at = x.map(|c| c.lane(l));
+                            light.area_point(at, disk(keys[l].point(Dimension::Light, k, samples)))
+                        });
+                        let towards = toward(lanes3(p), x);
+                        self.add_light::<R, W>(&mut colours, light, towards, weight, &hits_at, cast);
+                    }
                 }
             }
         }
         colours
+    }
+
+    /// One light's term at the hits, from the direction and distance `towards` it (a point of
+    /// it, for an area light, whose points each add `weight` of its colour), shadowed.
+    #[inline(always)]
+    fn add_light<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        colours: &mut [[f64; 3]; W],
+        light: &Light,
+        towards: (E3<R::T>, R::T),
+        weight: Option<f64>,
+        at: &Hits<'_, R::T, W>,
+        cast: &mut RayCounts,
+    ) {
+        let settings = &self.scene.settings;
+        let Some(Lit { lit, l, distance, diffuse, specular, cone, shadow_origin }) =
+            lit(light, towards, (at.x, at.n, at.v), at.m, at.hit, at.offset)
+        else {
+            return;
+        };
+        let mut s = R::T::one();
+        if settings.shadows {
+            cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
+            // Unlit lanes cast a harmless ray with an empty range.
+            let shadow = R::cast(select3(&lit, shadow_origin, [0.0; 3]), select3(&lit, l, [0.0, 0.0, 1.0]));
+            let t_max = core::array::from_fn(|k| if lit[k] { distance.lane(k) } else { 0.0 });
+            let blocked = self.blocked(&shadow, &t_max, at.own);
+            s = R::T::from_fn(|k| if blocked[k] { settings.shadow_transmission } else { 1.0 });
+        }
+        let mut s = s * cone;
+        if let Some(w) = weight {
+            s = s * R::T::from_f64(w);
+        }
+        let term = self.light(&Reflectance::lanes(at.m), light, distance, diffuse, specular, s);
+        for (k, colour) in colours.iter_mut().enumerate().filter(|(k, _)| lit[*k]) {
+            for (out, t) in colour.iter_mut().zip(&term) {
+                *out += t.lane(k);
+            }
+        }
     }
 
     /// `c k_a A`: the ambient light on an object.
@@ -112,6 +148,28 @@ impl<B: Backend> Renderer<'_, B> {
     }
 }
 
+/// The hits in lanes that shading lights: points, unit normals, directions to the eye,
+/// materials, which lanes hit, the objects their shadow rays skip, and how far off the
+/// surfaces those start.
+pub(crate) struct Hits<'a, T, const W: usize> {
+    x: E3<T>,
+    n: E3<T>,
+    v: E3<T>,
+    m: &'a [&'a Material; W],
+    hit: &'a [bool; W],
+    own: &'a [Option<usize>; W],
+    offset: T,
+}
+
+/// The unit directions from points `x` towards points `p` and the distances (one square
+/// root for both).
+#[inline(always)]
+fn toward<T: Real>(p: E3<T>, x: E3<T>) -> (E3<T>, T) {
+    let to_light = sub(p, x);
+    let distance = norm(to_light);
+    (scale(to_light, T::one() / distance), distance)
+}
+
 /// What one light gives hits in lanes before shadowing.
 pub(crate) struct Lit<T, const W: usize> {
     /// Which lanes it lights: a hit, the light ahead of it and in front of the surface for
@@ -132,18 +190,18 @@ pub(crate) struct Lit<T, const W: usize> {
 }
 
 /// The unshadowed terms of `light` at hits `x` (unit normals `n`, materials `m`, `hit` where
-/// a lane has one) seen from `v`, shadow rays starting `offset` off the surfaces; `None`
+/// a lane has one) seen from `v`, the light (or its point) lying along the unit `l` at
+/// `distance` ([`Light::toward`]), shadow rays starting `offset` off the surfaces; `None`
 /// where it lights no lane.
 #[inline(always)]
 pub(crate) fn lit<T: Lane, const W: usize>(
     light: &Light,
+    (l, distance): (E3<T>, T),
     (x, n, v): (E3<T>, E3<T>, E3<T>),
     m: &[&Material; W],
     hit: &[bool; W],
     offset: T,
 ) -> Option<Lit<T, W>> {
-    // One square root for the distance and the direction.
-    let (l, distance) = light.toward(x);
     let diffuse = dot(n, l);
     let specular = shine(m, n, add(l, v));
     let lighting = lights(distance, diffuse, specular);

@@ -2,7 +2,7 @@
 //! the sum of the layers from the deepest up.
 
 use super::shade::lit;
-use super::{RayCounts, Renderer, Window};
+use super::{RayCounts, Renderer, SampleKey, Window};
 use crate::backend::{Backend, RayLanes, lanes3};
 use crate::ray::{Ray, mirror, offset};
 use crate::settings::Reflection;
@@ -36,7 +36,7 @@ impl<B: Backend> Renderer<'_, B> {
                     let at = (hit.point, hit.normal, ray.dir.map(|d| -d));
                     for light in &self.scene.lights {
                         let material = &self.scene.objects[k].material;
-                        if let Some(term) = lit(light, at, &[material], &[true], offset) {
+                        if let Some(term) = lit(light, light.toward(at.0), at, &[material], &[true], offset) {
                             out.push((B::ray(term.shadow_origin, term.l), term.distance));
                         }
                     }
@@ -49,12 +49,26 @@ impl<B: Backend> Renderer<'_, B> {
     /// The colour seen along `ray`, `depth` bounces deep.
     pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
         let mut cast = RayCounts::default();
-        let [colour] = self.trace_lanes(*ray, depth, &mut cast);
+        let [colour] = self.trace_lanes(*ray, depth, &[SampleKey::default()], &mut cast);
         self.count(&cast);
         colour
     }
 
-    /// The colours seen along rays in lanes, `depth` bounces already made, counting the
+    /// A hit's own colour `local` and the weight `k_r` of its mirror ray: eq. 12's `local` and
+    /// `k_r`, or, where energy is conserved, `(1 − k_r) local` and `k_r` at most 1 (what a
+    /// surface reflects it does not also shade).
+    #[inline(always)]
+    pub(super) fn reflected(&self, local: [f64; 3], kr: f64) -> ([f64; 3], f64) {
+        if self.scene.settings.reflection == Reflection::Conserving && kr > 0.0 {
+            let kr = kr.min(1.0);
+            (local.map(|c| c * (1.0 - kr)), kr)
+        } else {
+            (local, kr)
+        }
+    }
+
+    /// The colours seen along rays in lanes, `depth` bounces already made, for the pixel
+    /// samples `keys` (which place points on area lights), counting the
     /// rays cast into `cast` (shared counters would be contended by every thread on every
     /// ray): nearest hit, normal, shading, and the mirror bounces of the lanes whose hit
     /// reflects (lanes whose ray has ended ride along with an empty range).
@@ -68,10 +82,10 @@ impl<B: Backend> Renderer<'_, B> {
         &self,
         mut rays: R,
         mut depth: u32,
+        keys: &[SampleKey; W],
         cast: &mut RayCounts,
     ) -> [[f64; 3]; W] {
         let settings = &self.scene.settings;
-        let conserving = settings.reflection == Reflection::Conserving;
         let mut active = [true; W];
         let mut deepest = [settings.background; W];
         let mut layers: [Layers; W] = core::array::from_fn(|_| Layers::new());
@@ -88,25 +102,24 @@ impl<B: Backend> Renderer<'_, B> {
                 })
             });
             let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
-            let local = self.shade(&rays, &hits, cast);
+            let local = self.shade(&rays, &hits, keys, cast);
             let mut bounce = [false; W];
             for l in 0..W {
                 if !active[l] {
                     continue;
                 }
-                let Some((_, k)) = hits[l] else {
+                let Some((hit, k)) = hits[l] else {
                     (deepest[l], active[l]) = (settings.background, false);
                     continue;
                 };
-                let kr = self.scene.objects[k].material.kr;
-                // Energy conserved: what a surface reflects (at most all) it does not also
-                // shade.
-                let (own, kr) = if conserving && kr > 0.0 {
-                    let kr = kr.min(1.0);
-                    (local[l].map(|c| c * (1.0 - kr)), kr)
-                } else {
-                    (local[l], kr)
-                };
+                let material = &self.scene.objects[k].material;
+                if material.dielectric() && depth < settings.max_depth {
+                    // Its rays branch: followed one at a time (glass.rs).
+                    let rest = self.through_dielectric(rays.ray(l), &hit, k, depth, &keys[l], cast);
+                    (deepest[l], active[l]) = ([0, 1, 2].map(|c| local[l][c] + rest[c]), false);
+                    continue;
+                }
+                let (own, kr) = self.reflected(local[l], material.kr);
                 if !(kr > 0.0 && depth < settings.max_depth) {
                     (deepest[l], active[l]) = (own, false);
                     continue;

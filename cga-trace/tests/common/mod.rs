@@ -72,6 +72,25 @@ impl Similarity {
         *b = Value::Table(table);
     }
 
+    /// A motor `M` (eight coefficients) as seen after the similarity `S`: `S M S⁻¹`, the
+    /// dilation scaling its translation parts, then conjugated by the shift's translator.
+    pub fn motor(&self, m: &mut Value) {
+        let c = m.as_array().expect("eight numbers");
+        let mut k = [0.0; 8];
+        for (k, v) in k.iter_mut().zip(c) {
+            *k = v.as_float().or_else(|| v.as_integer().map(|i| i as f64)).expect("a number");
+        }
+        for x in &mut k[4..] {
+            *x *= self.scale;
+        }
+        let t = cga_core::Motor::from_rotor_translator(
+            cga_core::Rotor { s: 1.0, e12: 0.0, e13: 0.0, e23: 0.0 },
+            cga_core::Translator::from_vector([self.shift; 3]),
+        );
+        let moved = t * cga_core::Motor::from_array(k) * t.reverse();
+        *m = floats(&moved.to_array());
+    }
+
     pub fn apply(&self, scene: &mut Table) {
         let camera = scene["camera"].as_table_mut().expect("[camera]");
         for key in ["position", "look_at"] {
@@ -80,6 +99,11 @@ impl Similarity {
             }
         }
         assert!(!camera.contains_key("motor"), "shipped scenes place the camera by position and look_at");
+        for key in ["aperture", "focus_distance", "view_width"] {
+            if let Some(v) = camera.get_mut(key) {
+                self.length(v);
+            }
+        }
         if let Some(Value::Table(render)) = scene.get_mut("render")
             && let Some(Value::Array(att)) = render.get_mut("attenuation")
         {
@@ -91,9 +115,29 @@ impl Similarity {
             if let Some(p) = light.get_mut("position") {
                 self.point(p);
             }
+            for key in ["sphere", "disk"] {
+                if let Some(r) = light.get_mut(key) {
+                    self.length(r);
+                }
+            }
+        }
+        // Absorption is per unit length.
+        let absorbing = |m: &mut Value| {
+            if let Some(Value::Array(a)) = m.get_mut("absorption") {
+                a.iter_mut().for_each(|x| *x = Value::Float(x.as_float().expect("a number") / self.scale));
+            }
+        };
+        for (_, m) in scene.get_mut("materials").and_then(Value::as_table_mut).into_iter().flatten() {
+            absorbing(m);
         }
         for object in scene.get_mut("objects").and_then(Value::as_array_mut).into_iter().flatten() {
             let object = object.as_table_mut().expect("an object table");
+            if let Some(m) = object.get_mut("material").filter(|m| m.is_table()) {
+                absorbing(m);
+            }
+            for key in object.get_mut("motion").and_then(Value::as_array_mut).into_iter().flatten() {
+                self.motor(key);
+            }
             for key in ["centre", "point", "min", "max"] {
                 if let Some(v) = object.get_mut(key) {
                     self.point(v);
@@ -179,9 +223,15 @@ pub fn table(name: &str) -> Table {
 
 /// The scene a table describes, rendered at `width × height`.
 pub fn scene_of(table: &Table, name: &str, width: u32, height: u32) -> Scene {
-    let mut scene = Scene::parse(&toml::to_string(table).unwrap(), name).unwrap_or_else(|e| panic!("{name}: {e}"));
+    scene_of_at(table, name, width, height, 0.0)
+}
+
+/// [`scene_of`] at the motion's time `time`.
+pub fn scene_of_at(table: &Table, name: &str, width: u32, height: u32, time: f64) -> Scene {
+    let text = toml::to_string(table).unwrap();
+    let mut scene = Scene::parse_at(&text, name, None, time).unwrap_or_else(|e| panic!("{name}: {e}"));
     let c = scene.camera;
-    scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap();
+    scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap().with_lens(c.lens).unwrap();
     scene
 }
 

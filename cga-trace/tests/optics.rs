@@ -1,0 +1,197 @@
+//! Lenses, area lights, the shutter and glass against their textbook formulas: an
+//! orthographic view's constant scale, a thin lens's circle of confusion, a disk light's
+//! penumbra, motion blur's coverage, and a glass ball's focal point (the ball-lens formula).
+
+use cga_trace::integrator::Window;
+use cga_trace::ray::Ray;
+use cga_trace::{Aov, Film, Renderer, Scene};
+
+fn parse(text: &str) -> Scene {
+    Scene::parse(text, "optics.toml").unwrap()
+}
+
+fn render(scene: &Scene) -> Film {
+    let c = &scene.camera;
+    Renderer::new(scene).render_window(Aov::Shaded, Window::full(c.width, c.height), &|| {})
+}
+
+/// An object lit by the ambient light alone, brightness 1 (with `ambient = 1`).
+const WHITE: &str = "material = { colour = [1.0, 1.0, 1.0], ka = 1.0, kd = 0.0, ks = 0.0 }";
+
+/// Pixels brighter than ½.
+fn lit(film: &Film) -> usize {
+    film.pixels.iter().filter(|p| p[0] > 0.5).count()
+}
+
+#[test]
+fn an_orthographic_view_shows_a_sphere_at_its_size_at_any_distance() {
+    // 4 units over 100 pixels: a unit sphere is a disk of 25 pixels' radius.
+    for y in [0.0, 30.0] {
+        let s = parse(&format!(
+            "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nprojection = \"orthographic\"\nview_width = 4.0\nwidth = 100\nheight = 100\n\
+             [render]\nambient = 1.0\n[[objects]]\ntype = \"sphere\"\ncentre = [0.3, {y:?}, -0.2]\nradius = 1.0\n{WHITE}\n"
+        ));
+        let area = lit(&render(&s)) as f64;
+        let want = std::f64::consts::PI * 25.0 * 25.0;
+        assert!((area / want - 1.0).abs() < 0.01, "at y = {y}: {area} pixels, π 25² = {want:.0}");
+    }
+}
+
+/// The intensity-weighted mean squared distance from the centroid, in pixels².
+fn spread(film: &Film) -> f64 {
+    let w = film.width as usize;
+    let (mut sum, mut sx, mut sy, mut sr) = (0.0, 0.0, 0.0, 0.0);
+    for (k, p) in film.pixels.iter().enumerate() {
+        let (x, y) = ((k % w) as f64, (k / w) as f64);
+        (sum, sx, sy, sr) = (sum + p[0], sx + p[0] * x, sy + p[0] * y, sr + p[0] * (x * x + y * y));
+    }
+    let (mx, my) = (sx / sum, sy / sum);
+    sr / sum - mx * mx - my * my
+}
+
+#[test]
+fn a_thin_lens_blurs_a_point_to_its_circle_of_confusion() {
+    // A small sphere at depth D seen through a lens of radius A focused at F blurs by a disk
+    // of radius A |D − F| / D on the plane of focus: `A |D − F| / (D F) · w / (2 tan(fov/2))`
+    // pixels. A disk of radius c has mean squared radius c²/2, and blurs add their spreads.
+    let (aperture, focus, width, fov) = (0.2, 10.0, 128u32, 20.0f64);
+    let view = |depth: f64, aperture: f64| {
+        let lens = format!("aperture = {aperture:?}\nfocus_distance = {focus:?}\n");
+        parse(&format!(
+            "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nfov = {fov:?}\nwidth = {width}\nheight = {width}\n{}\
+             [render]\nambient = 1.0\nspp = 256\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, {:?}, 0.0]\nradius = 0.05\n{WHITE}\n",
+            if aperture > 0.0 { lens } else { String::new() },
+            depth - 10.0
+        ))
+    };
+    for depth in [6.0, 16.0] {
+        let sharp = spread(&render(&view(depth, 0.0)));
+        let blurred = spread(&render(&view(depth, aperture)));
+        let measured = (2.0 * (blurred - sharp)).sqrt();
+        let pixels = f64::from(width) / (2.0 * (fov.to_radians() / 2.0).tan());
+        let want = aperture * (depth - focus).abs() / (depth * focus) * pixels;
+        println!("depth {depth}: circle of confusion {measured:.3} pixels, thin lens {want:.3}");
+        assert!((measured / want - 1.0).abs() < 0.03, "depth {depth}: {measured} vs {want}");
+    }
+    // In focus, the lens leaves the point as sharp as the pinhole.
+    let (sharp, lens) = (spread(&render(&view(10.0, 0.0))), spread(&render(&view(10.0, aperture))));
+    assert!((lens - sharp).abs() < 0.02 * sharp, "{lens} vs {sharp}");
+}
+
+#[test]
+fn a_disk_lights_penumbra_is_as_wide_as_similar_triangles_say() {
+    // A disk light of radius R at height H over a floor; an opaque half-plane (a huge disk
+    // whose edge runs through x = 0) at height h between. A floor point at x sees the light's
+    // points with x_L ≥ −x (H − h)/h: the penumbra runs over |x| ≤ R h / (H − h).
+    let (r, height, h) = (1.0, 5.0, 1.0);
+    let s = parse(&format!(
+        "[camera]\nposition = [0.0, -10.0, 3.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+         [render]\nambient = 0.0\n\
+         [[lights]]\nposition = [0.0, 0.0, {height:?}]\ndisk = {r:?}\nnormal = [0.0, 0.0, -1.0]\nsamples = 1024\n\
+         [[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = {{ colour = [1.0, 1.0, 1.0], ka = 0.0, kd = 1.0, ks = 0.0 }}\n\
+         [[objects]]\ntype = \"disk\"\ncentre = [-1000.0, 0.0, {h:?}]\nnormal = [0.0, 0.0, 1.0]\nradius = 1000.0\nmaterial = {{ colour = [0.0, 0.0, 0.0] }}\n"
+    ));
+    let renderer = Renderer::new(&s);
+    // Straight down onto the floor from between it and the blocker (frame coordinates).
+    let seen = |x: f64| {
+        let origin = s.frame.point([x, 0.0, 0.5 * h]);
+        renderer.trace(&Ray::new(origin, [0.0, 0.0, -1.0]).unwrap(), 0)[0]
+    };
+    // The light's points visible from x, each weighted by n·l, on a fine polar grid.
+    let expected = |x: f64| {
+        let (mut seen, mut all) = (0.0, 0.0);
+        for i in 0..400 {
+            for k in 0..400 {
+                let (rho, phi) =
+                    (r * ((f64::from(i) + 0.5) / 400.0).sqrt(), std::f64::consts::TAU * (f64::from(k) + 0.5) / 400.0);
+                let (lx, ly) = (rho * phi.cos(), rho * phi.sin());
+                let d = ((lx - x).powi(2) + ly * ly + height * height).sqrt();
+                let cos = height / d;
+                all += 1.0;
+                if lx >= -x * (height - h) / h {
+                    seen += cos;
+                }
+            }
+        }
+        seen / all
+    };
+    let edge = r * h / (height - h);
+    let mut worst: f64 = 0.0;
+    for step in -40..=40 {
+        let x = 2.0 * edge * f64::from(step) / 40.0;
+        let (got, want) = (seen(x), expected(x));
+        worst = worst.max((got - want).abs());
+    }
+    println!("penumbra over |x| ≤ {edge}: largest difference from the analytic irradiance {worst:.2e}");
+    assert!(worst < 5e-3, "{worst}");
+    // Dark before the penumbra, fully lit after it.
+    assert_eq!(seen(-1.05 * edge), 0.0);
+    assert!((seen(1.05 * edge) - expected(1.05 * edge)).abs() < 1e-3);
+}
+
+#[test]
+fn a_shutter_blurs_a_moving_sphere_over_its_path() {
+    // A ball of radius ½ moving from x = −2 to x = 2 during the shutter (an orthographic view,
+    // 20 pixels a unit): a point of its path's middle row is covered for the share of the
+    // time that the ball is within ½ of it, |[x − ½, x + ½] ∩ [−2, 2]| / 4.
+    let text = format!(
+        "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nprojection = \"orthographic\"\nview_width = 8.0\nwidth = 160\nheight = 20\n\
+         shutter = [0.0, 1.0]\n[render]\nambient = 1.0\nspp = 64\n\
+         [[objects]]\ntype = \"sphere\"\ncentre = [-2.0, 0.0, 0.0]\nradius = 0.5\n{WHITE}\nmotion = [[1, 0, 0, 0, 0, 0, 0, 0], [1, 0, 0, 0, -2, 0, 0, 0]]\n"
+    );
+    let scene = parse(&text);
+    let shutter = scene.shutter.expect("a shutter");
+    let film = shutter
+        .expose(0.0, scene.settings.spp, |t, (first, step)| {
+            let at = Scene::parse_at(&text, "optics.toml", None, t)?;
+            let c = &at.camera;
+            Ok::<_, cga_trace::scene::SceneError>(Renderer::new(&at).sample_subset(first, step).render_window(
+                Aov::Shaded,
+                Window::full(c.width, c.height),
+                &|| {},
+            ))
+        })
+        .unwrap();
+    let row = 10 * 160;
+    let mut worst: f64 = 0.0;
+    for i in 0..160 {
+        let x = -4.0 + (f64::from(i) + 0.5) / 20.0;
+        let want = ((x + 0.5).min(2.0) - (x - 0.5).max(-2.0)).max(0.0) / 4.0;
+        worst = worst.max((film.pixels[row + i as usize][0] - want).abs());
+    }
+    println!("coverage along the path: largest difference {worst:.3}");
+    // 64 instants (1/64 each) and the pixel's width (1/20 of a unit, 1/80 of the path).
+    assert!(worst < 1.0 / 64.0 + 1.0 / 80.0 + 1e-3, "{worst}");
+}
+
+#[test]
+fn a_glass_ball_focuses_parallel_light_where_the_ball_lens_formula_says() {
+    // A ball of index n and radius R focuses paraxial rays at f = n R / (2 (n − 1)) from its
+    // centre. Parallel rays (an orthographic view) through the ball's middle meet a small
+    // marker sphere placed on the axis behind it: nearly all where it sits at the focus, a
+    // tenth as many 5 % nearer or farther.
+    let (n, radius) = (1.5, 1.0);
+    let focal = n * radius / (2.0 * (n - 1.0));
+    let seen = |distance: f64| {
+        let s = parse(&format!(
+            "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nprojection = \"orthographic\"\nview_width = 0.3\nwidth = 80\nheight = 80\n\
+             [render]\nambient = 1.0\nmax_depth = 4\n\
+             [[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = {radius:?}\n\
+             material = {{ colour = [0.0, 0.0, 0.0], ka = 0.0, kd = 0.0, ks = 0.0, ior = {n:?} }}\n\
+             [[objects]]\ntype = \"sphere\"\ncentre = [0.0, {distance:?}, 0.0]\nradius = 0.002\n{WHITE}\n"
+        ));
+        // Through glass at normal incidence, (1 − 0.04)² of the marker's light comes back.
+        render(&s).pixels.iter().filter(|p| p[0] > 0.5).count()
+    };
+    let at = seen(focal);
+    let (near, far) = (seen(0.95 * focal), seen(1.05 * focal));
+    println!("rays meeting the marker: {near} at 0.95 f, {at} at f = {focal}, {far} at 1.05 f");
+    assert!(at > 10 * near && at > 10 * far, "{near} {at} {far}");
+    // The best focus within 2 % of f (nearer by the ball's spherical aberration), and f
+    // itself within 10 % of the best.
+    let scan: Vec<(f64, usize)> =
+        (-4..=4).map(|k| focal * (1.0 + 0.005 * f64::from(k))).map(|d| (d, seen(d))).collect();
+    let best = scan.iter().map(|s| s.1).max().unwrap();
+    assert!(scan.iter().filter(|s| s.1 == best).all(|s| (s.0 / focal - 1.0).abs() <= 0.02), "{scan:?}");
+    assert!(at as f64 >= 0.9 * best as f64, "{scan:?}");
+}
