@@ -93,6 +93,12 @@ pub enum Invalid {
     /// A blade that has no picture.
     #[error(transparent)]
     Draw(crate::figure::DrawError),
+    /// An image (a texture or an environment) that cannot be read.
+    #[error("{0}")]
+    Image(String),
+    /// A mesh file that cannot be read.
+    #[error("{0}")]
+    Mesh(String),
     /// An evolved surface in a build without them.
     #[error("this build leaves out evolved surfaces (cargo feature `evolved`)")]
     NoEvolved,

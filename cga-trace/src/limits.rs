@@ -37,6 +37,25 @@ pub const MAX_LIGHT_SAMPLES: u32 = 4096;
 /// Instants a shutter is sampled at (`time_samples`): each is the scene placed anew.
 pub const MAX_TIME_SAMPLES: u32 = 4096;
 
+/// Pixels of an image a scene reads (a texture or an environment): 2²⁶ (an 8K × 8K map).
+/// Each is held as three f32, so at most 805 MB; checked from the file's header before
+/// it is decoded.
+pub const MAX_IMAGE_PIXELS: u64 = 1 << 26;
+
+/// Images a scene reads (textures and its environment).
+pub const MAX_IMAGES: usize = 64;
+
+/// Bytes of a mesh file a scene reads (OBJ or PLY): 2²⁷ (128 MiB), checked before it is
+/// read. Its triangles count against [`MAX_OBJECTS`] with the scene's other shapes.
+pub const MAX_MESH_FILE_BYTES: u64 = 1 << 27;
+
+/// Files a scene includes (`include = […]`, followed through the files it names); all of
+/// them together hold at most [`MAX_FILE_BYTES`].
+pub const MAX_INCLUDES: usize = 64;
+
+/// Mesh files a scene reads (each read once, however many objects use it).
+pub const MAX_MESH_FILES: usize = 64;
+
 /// Tokens (values, keys, brackets, separators; not whitespace or comments) of a scene file
 /// outside its `[[objects]]` tables (camera, settings, lights, and any objects written
 /// inline as `objects = [ … ]`), which are parsed as one document: TOML's parser holds its

@@ -3,6 +3,7 @@
 
 use crate::material::Material;
 use crate::shapes::Shape;
+use crate::texture::Texture;
 use std::sync::Arc;
 
 /// One object of a scene.
@@ -14,4 +15,6 @@ pub struct Object {
     pub shape: Arc<dyn Shape>,
     /// Material.
     pub material: Material,
+    /// A texture in place of the material's colour.
+    pub texture: Option<Arc<Texture>>,
 }

@@ -4,7 +4,10 @@
 //! geometry, the table or object and a typed reason.
 
 use crate::camera::{Camera, CameraError, Lens};
+use crate::environment::Environment;
 use crate::figure::{Label, Marks};
+use crate::format::include::{self, Joined};
+use crate::format::instance::{InstanceSpec, is_instance, is_template, name_of};
 use crate::format::{ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
@@ -13,8 +16,10 @@ use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_MATERIA
 pub use crate::object::Object;
 use crate::settings::Settings;
 use crate::shutter::Shutter;
+use cga_core::Motor;
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
+use std::collections::HashMap;
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
@@ -40,6 +45,8 @@ pub struct Scene {
     pub pinned: bool,
     /// The camera's shutter, where it blurs motion.
     pub shutter: Option<Shutter>,
+    /// What rays leaving the scene see (the background colour where none).
+    pub environment: Option<Environment>,
 }
 
 /// What is wrong with a scene file.
@@ -130,16 +137,18 @@ impl Scene {
     pub fn parse_at(text: &str, file: &str, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
         // NaN is no time: the start.
         let time = if time.is_nan() { 0.0 } else { time.clamp(0.0, 1.0) };
-        let at = |offset: usize| line_column(text, offset);
+        let joined = include::join(text, file)?;
+        let text = joined.text.as_str();
+        let at = |offset: usize| joined.locate(offset);
         let sections = sections::split(text).map_err(|m| {
-            let (line, column) = at(m.at);
-            SceneError::Syntax { file: file.into(), line, column, message: m.message }
+            let (file, line, column) = at(m.at);
+            SceneError::Syntax { file, line, column, message: m.message }
         })?;
         let tokens = sections::significant_tokens(&sections.rest);
         if let (Some(open), true) = (sections.unclosed, tokens > MAX_DOCUMENT_TOKENS) {
-            let (line, column) = at(open);
+            let (file, line, column) = at(open);
             let message = "this bracket is never closed: the rest of the file is read as inside it".into();
-            return Err(SceneError::Syntax { file: file.into(), line, column, message });
+            return Err(SceneError::Syntax { file, line, column, message });
         }
         if tokens > MAX_DOCUMENT_TOKENS {
             let message = format!(
@@ -151,10 +160,10 @@ impl Scene {
         // its section's start.
         let rest = |offset: usize| sections.file_offset(offset);
         let invalid = |map: &dyn Fn(usize) -> usize, span: Range<usize>, what: String, reason: Invalid| {
-            let (line, column) = at(map(reason.span().unwrap_or(span).start));
-            SceneError::Invalid { file: file.into(), line, column, what, reason }
+            let (file, line, column) = at(map(reason.span().unwrap_or(span).start));
+            SceneError::Invalid { file, line, column, what, reason }
         };
-        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(|e| syntax_error(text, file, &e, &rest))?;
+        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(|e| syntax_error(&joined, &e, &rest))?;
         // `objects = [ … ]` written as one array in the root, instead of `[[objects]]` tables.
         let inline = match document.get_mut().remove_entry("objects") {
             None => toml::de::DeArray::new(),
@@ -169,12 +178,12 @@ impl Scene {
             }
         };
         if let (Some(first), false) = (sections.objects.first(), inline.is_empty()) {
-            let (line, column) = at(first.start);
+            let (file, line, column) = at(first.start);
             let message = "duplicate key `objects`: given as an array and as `[[objects]]` tables".into();
-            return Err(SceneError::Syntax { file: file.into(), line, column, message });
+            return Err(SceneError::Syntax { file, line, column, message });
         }
         let spec: SceneFile = SceneFile::deserialize(toml::de::Deserializer::from(document))
-            .map_err(|e| syntax_error(text, file, &e, &rest))?;
+            .map_err(|e| syntax_error(&joined, &e, &rest))?;
         let (settings, render_span) =
             spec.render.map_or((Settings::default(), 0..0), |r| (Settings::from(*r.get_ref()), r.span()));
         settings.check().map_err(|reason| invalid(&rest, render_span, "render".into(), reason))?;
@@ -194,63 +203,127 @@ impl Scene {
         let (camera, position, pinned, shutter) = (built.camera, built.position, built.pinned, built.shutter);
         // Objects size the frame; lights do not (a light far away is only a direction). Each
         // object's placement is read first (a few of its fields), before any is built.
+        let folder = Path::new(file).parent().unwrap_or(Path::new(""));
+        let mut assets = crate::format::Assets::new(folder);
+        // Object `k` as parsed, and where its spans count from.
+        let start_of = |k: usize| sections.objects.get(k).map(|r| r.start);
+        let map_of = |k: usize| move |offset: usize| start_of(k).map_or_else(|| rest(offset), |s| s + offset);
+        let value_of = |k: usize| match sections.objects.get(k) {
+            Some(range) => section_object(&text[range.clone()]).map_err(|e| syntax_error(&joined, &e, &map_of(k))),
+            None => Ok(inline[k].clone()),
+        };
+        // Instance `k` as (the object it copies, its motor): read in order, so that an
+        // instance names an object before it.
+        let mut named: HashMap<String, (usize, Option<Motor>)> = HashMap::new();
+        let mut instances: HashMap<usize, (usize, Option<Motor>)> = HashMap::new();
         let mut sizes = Vec::with_capacity(count);
         for k in 0..count {
-            sizes.extend(match sections.objects.get(k) {
-                Some(range) => {
-                    let map = |offset: usize| range.start + offset;
-                    let value = section_object(&text[range.clone()]).map_err(|e| syntax_error(text, file, &e, &map))?;
-                    ObjectSpec::extent_of(&value, time).map_err(|e| syntax_error(text, file, &e, &map))?
-                }
-                None => ObjectSpec::extent_of(&inline[k], time).map_err(|e| syntax_error(text, file, &e, &rest))?,
-            });
+            let value = value_of(k)?;
+            let placed = if is_instance(&value) {
+                let (spec, span) = instance_spec(&value, &map_of(k), &joined)?;
+                let located = |reason| invalid(&map_of(k), span.clone(), format!("object {}", k + 1), reason);
+                let &(base, outer) = named.get(spec.of.get_ref()).ok_or_else(|| {
+                    let why = format!("no object named `{}` before this one", spec.of.get_ref().escape_debug());
+                    located(Invalid::at("of", spec.of.span(), Invalid::Range(why)))
+                })?;
+                let motor = spec.motor(time).map_err(located)?;
+                let outer = match (motor, outer) {
+                    (Some(m), Some(o)) => Some(m * o),
+                    (m, o) => m.or(o),
+                };
+                instances.insert(k, (base, outer));
+                (base, outer)
+            } else {
+                (k, None)
+            };
+            if let Some(name) = name_of(&value) {
+                named.insert(name, placed);
+            }
+            if is_template(&value) {
+                continue;
+            }
+            let (j, outer) = placed;
+            let base = if j == k { value } else { value_of(j)? };
+            let extent = ObjectSpec::extent_of(&base, time, outer, &assets);
+            sizes.extend(extent.map_err(|e| syntax_error(&joined, &e, &map_of(j)))?);
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
         let marks = Marks::for_scene(&sizes, position, pixel);
         let frame = Frame::around(position, sizes, pixel)
             .map_err(|span| invalid(&|_| 0, 0..0, "scene".into(), Invalid::Range(span.to_string())))?;
         let camera = camera.with_lens(built.lens.in_frame(frame.scale)).map_err(|e| in_camera(e.into()))?;
-        let mut materials = crate::format::Materials::new();
         for (name, m) in spec.materials {
             let span = m.span();
-            let material = crate::material::Material::from(m.into_inner());
             let what = format!("material `{}`", name.escape_debug());
-            material.check().map_err(|reason| invalid(&rest, span, what, reason))?;
-            materials.insert(name, material);
+            assets.insert(name, m.get_ref()).map_err(|reason| invalid(&rest, span, what, reason))?;
         }
+        let environment = match &spec.environment {
+            Some(e) => Some(
+                e.get_ref().build(&assets).map_err(|reason| invalid(&rest, e.span(), "environment".into(), reason))?,
+            ),
+            None => None,
+        };
         let mut lights = Vec::with_capacity(spec.lights.len());
         for (k, light) in spec.lights.into_iter().enumerate() {
             let span = light.span();
             let what = format!("light {}", k + 1);
             lights.push(light.into_inner().build(&frame).map_err(|reason| invalid(&rest, span, what, reason))?);
         }
-        // Object `k` as parsed, and where its spans count from.
-        let mut inline = inline.into_iter();
         let mut built = Vec::with_capacity(count);
         let mut labels = Vec::new();
         for k in 0..count {
-            let start = sections.objects.get(k).map(|r| r.start);
-            let map = |offset: usize| start.map_or_else(|| rest(offset), |s| s + offset);
-            let value = match sections.objects.get(k) {
-                Some(range) => section_object(&text[range.clone()]).map_err(|e| syntax_error(text, file, &e, &map))?,
-                None => inline.next().expect("one per object"),
+            let value = value_of(k)?;
+            if is_template(&value) {
+                continue;
+            }
+            // An instance is built from the object it copies, whose fields its errors name.
+            let (j, span, dress) = match instances.get(&k) {
+                Some(&(j, outer)) => {
+                    let (instance, span) = instance_spec(&value, &map_of(k), &joined)?;
+                    if let Some(m) = &instance.material {
+                        let what = format!("object {}", k + 1);
+                        assets.resolve(m).map_err(|reason| invalid(&map_of(k), span.clone(), what, reason))?;
+                    }
+                    (j, span, Some((instance, outer)))
+                }
+                None => (k, value.span(), None),
             };
-            let span = value.span();
+            let base = if j == k { value } else { value_of(j)? };
             let mut spec =
-                ObjectSpec::deserialize(value.into_deserializer()).map_err(|e| syntax_error(text, file, &e, &map))?;
+                ObjectSpec::deserialize(base.into_deserializer()).map_err(|e| syntax_error(&joined, &e, &map_of(j)))?;
+            if let Some((instance, outer)) = dress {
+                spec = instance.dress(spec, outer);
+            }
             spec.time = time;
-            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, &materials);
+            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, &assets);
             let what = format!("object `{name}`");
-            let (objects, label) = object.map_err(|reason| invalid(&map, span.clone(), what.clone(), reason))?;
-            // A drawing is several shapes: all count against the limit.
+            // Errors at a field of the object copied; others at the instance.
+            let at = |reason: Invalid| match reason.span() {
+                Some(_) => invalid(&map_of(j), span.clone(), what.clone(), reason),
+                None => invalid(&map_of(k), span.clone(), what.clone(), reason),
+            };
+            let (objects, label) = object.map_err(at)?;
+            // A drawing or a mesh is several shapes: all count against the limit.
             if let Some(e) = limit("shapes", built.len() + objects.len(), MAX_OBJECTS) {
-                return Err(invalid(&map, span, what, e));
+                return Err(at(e));
             }
             built.extend(objects);
             labels.extend(label);
         }
-        Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned, shutter })
+        Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned, shutter, environment })
     }
+}
+
+/// An instance's table, read, and its span.
+fn instance_spec(
+    value: &Spanned<toml::de::DeValue<'_>>,
+    map: &dyn Fn(usize) -> usize,
+    joined: &Joined,
+) -> Result<(InstanceSpec, Range<usize>), SceneError> {
+    let span = value.span();
+    let spec =
+        InstanceSpec::deserialize(value.clone().into_deserializer()).map_err(|e| syntax_error(joined, &e, map))?;
+    Ok((spec, span))
 }
 
 /// The one object of an `[[objects]]` section (its header and sub-tables), parsed alone.
@@ -263,9 +336,10 @@ fn section_object(section: &str) -> Result<Spanned<toml::de::DeValue<'_>>, toml:
 }
 
 /// A TOML or field error as a located one-line message, its span mapped to the file by `map`.
-fn syntax_error(text: &str, file: &str, e: &toml::de::Error, map: &dyn Fn(usize) -> usize) -> SceneError {
+fn syntax_error(joined: &Joined, e: &toml::de::Error, map: &dyn Fn(usize) -> usize) -> SceneError {
+    let text = joined.text.as_str();
     let offset = map(e.span().map_or(0, |s| s.start));
-    let (line, column) = line_column(text, offset);
+    let (file, line, column) = joined.locate(offset);
     let mut message = e.message().trim().to_string();
     if message == "duplicate key"
         && let Some(key) = e.span().and_then(|s| text.get(map(s.start)..map(s.start) + s.len()))
@@ -276,7 +350,7 @@ fn syntax_error(text: &str, file: &str, e: &toml::de::Error, map: &dyn Fn(usize)
     } else if let Some(key) = key_at(text, offset).filter(|k| !message.contains(k.as_str())) {
         message = format!("field `{key}`: {message}");
     }
-    SceneError::Syntax { file: file.into(), line, column, message: printable(&message) }
+    SceneError::Syntax { file, line, column, message: printable(&message) }
 }
 
 /// What is wrong when the table header at `offset` writes a single table as a list of tables
@@ -401,7 +475,7 @@ fn line_column_bytes(bytes: &[u8], offset: usize) -> (usize, usize) {
 }
 
 /// 1-based line and column of a byte offset.
-fn line_column(text: &str, offset: usize) -> (usize, usize) {
+pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let before = &text[..offset.min(text.len())];
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;

@@ -74,6 +74,8 @@ fn check<B: Backend>(width: u32, height: u32) {
             "glass.toml",
             "lens.toml",
             "motion.toml",
+            "textures.toml",
+            "assembly.toml",
         ],
         width,
         height,

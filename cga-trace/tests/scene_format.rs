@@ -157,16 +157,20 @@ fn resizing_keeps_pixels_square_unless_both_extents_are_pinned() {
     assert!(combined.resize(Some(100_000), Some(100_000)).is_err());
 }
 
-/// Every TOML example in the README parses (those without a camera, after one).
+/// Every TOML example in the README parses (those without a camera, with one after their
+/// top-level keys), the files they name read beside the shipped scenes.
 #[test]
 fn the_readme_examples_are_valid_scenes() {
-    let readme =
-        std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md")).unwrap();
+    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(here.join("../README.md")).unwrap();
     let blocks: Vec<&str> = readme.split("```toml\n").skip(1).map(|b| b.split("```").next().unwrap()).collect();
     assert!(blocks.len() >= 2);
+    let file = here.join("scenes/README.md");
     for block in blocks {
-        let text = if block.contains("[camera]") { block.to_string() } else { format!("{CAMERA}{block}") };
-        if let Err(e) = Scene::parse(&text, "README.md") {
+        let tables = block.find("\n[").map_or(block.len(), |k| k + 1);
+        let (keys, rest) = block.split_at(if block.starts_with('[') { 0 } else { tables });
+        let text = if block.contains("[camera]") { block.to_string() } else { format!("{keys}{CAMERA}{rest}") };
+        if let Err(e) = Scene::parse(&text, file.to_str().unwrap()) {
             panic!("{e}\n{text}");
         }
     }

@@ -7,23 +7,29 @@
 //! takes, and `build_object` builds it from them in the scene's [`Frame`], moved by its
 //! `motor` or `transform` (`transform.rs`).
 
+mod assets;
 mod drawn;
+pub(crate) mod include;
+pub(crate) mod instance;
 mod numbers;
 pub(crate) mod sections;
 mod specs;
 mod transform;
 
+pub(crate) use assets::Assets;
 pub(crate) use specs::{MaterialRef, MaterialSpec, SettingsSpec};
 
 use crate::camera::{Camera, CameraError, Lens};
+use crate::environment::Environment;
 use crate::figure::{Label, MAX_LABEL_CHARS, Marks, Parts};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
 use crate::light::{Light, Source};
-use crate::limits::{MAX_LIGHT_SAMPLES, MAX_SIDE, MAX_TIME_SAMPLES};
-use crate::material::Material;
+use crate::limits::{MAX_LIGHT_SAMPLES, MAX_OBJECTS, MAX_SIDE, MAX_TIME_SAMPLES};
 use crate::object::Object;
-use crate::shapes::{BoxShape, ConeShape, DiskShape, PlaneShape, Shape, SphereShape, TorusShape, TriangleShape};
+use crate::shapes::{
+    BoxShape, ConeShape, DiskShape, PlaneShape, Shading, Shape, SphereShape, TorusShape, TriangleShape,
+};
 use crate::shutter::Shutter;
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
@@ -52,6 +58,8 @@ pub(crate) struct SceneFile {
     pub render: Option<Spanned<SettingsSpec>>,
     #[serde(default)]
     pub lights: Vec<Spanned<LightSpec>>,
+    /// What rays leaving the scene see.
+    pub environment: Option<Spanned<EnvironmentSpec>>,
     /// Named materials, `[materials.NAME]`, that objects give by name.
     #[serde(default)]
     pub materials: std::collections::BTreeMap<String, Spanned<MaterialSpec>>,
@@ -78,6 +86,57 @@ pub(crate) struct LightSpec {
     disk: Option<Spanned<Num>>,
     normal: Option<Spanned<V3>>,
     samples: Option<Spanned<u32>>,
+}
+
+/// `[environment]`: a gradient (`zenith`, `horizon`, `nadir`; the horizon's colour where
+/// one is left out) or an equirectangular `image` turned by `rotate` degrees about `+z` and
+/// scaled by `strength`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct EnvironmentSpec {
+    zenith: Option<Spanned<V3>>,
+    horizon: Option<Spanned<V3>>,
+    nadir: Option<Spanned<V3>>,
+    image: Option<Spanned<String>>,
+    rotate: Option<Spanned<Num>>,
+    strength: Option<Spanned<Num>>,
+}
+
+impl EnvironmentSpec {
+    /// The environment, checked: colours and strength ≥ 0; a gradient or an image, not both.
+    pub(crate) fn build(&self, assets: &Assets) -> Result<Environment, Invalid> {
+        let why = |field, span: Range<usize>, reason| Invalid::at(field, span, Invalid::Value(reason));
+        let gradient = first_given(&[("zenith", &self.zenith), ("horizon", &self.horizon), ("nadir", &self.nadir)]);
+        for (field, colour) in [("zenith", &self.zenith), ("horizon", &self.horizon), ("nadir", &self.nadir)] {
+            if let Some(c) = colour.as_ref().filter(|c| c.get_ref().0.iter().any(|&x| x < 0.0)) {
+                return Err(why(field, c.span(), "an environment's colours must be ≥ 0"));
+            }
+        }
+        match (&self.image, gradient) {
+            (Some(file), None) => {
+                let strength = self.strength.as_ref().map_or(1.0, |s| s.get_ref().0);
+                if strength < 0.0 {
+                    return Err(why("strength", self.strength.as_ref().expect("given").span(), "must be ≥ 0"));
+                }
+                let turn = self.rotate.as_ref().map_or(0.0, |r| r.get_ref().0).to_radians();
+                Ok(Environment::Map { picture: assets.image(file)?, turn, strength })
+            }
+            (None, Some(_)) => {
+                if let Some((field, span)) = first_given(&[("rotate", &self.rotate), ("strength", &self.strength)]) {
+                    return Err(why(field, span, "`rotate` and `strength` are an image's: give `image`"));
+                }
+                let colour = |c: &Option<Spanned<V3>>| c.as_ref().map(|c| c.get_ref().0);
+                let horizon =
+                    colour(&self.horizon).or(colour(&self.zenith)).or(colour(&self.nadir)).unwrap_or([0.0; 3]);
+                let (zenith, nadir) = (colour(&self.zenith).unwrap_or(horizon), colour(&self.nadir).unwrap_or(horizon));
+                Ok(Environment::Gradient { zenith, horizon, nadir })
+            }
+            (Some(file), Some((field, _))) => Err(why(field, file.span(), "give a gradient or an `image`, not both")),
+            (None, None) => {
+                Err(Invalid::Form("an [environment] takes `zenith`, `horizon`, `nadir` (a gradient) or an `image`"))
+            }
+        }
+    }
 }
 
 /// Points of an area light that light each hit where a file gives no `samples`.
@@ -476,6 +535,8 @@ pub(crate) enum Kind {
     Cone,
     Box,
     Triangle,
+    Mesh,
+    Instance,
     Evolved,
     Spline,
     Ruled,
@@ -579,6 +640,14 @@ impl Kind {
                 "a box takes its opposite corners `min` and `max` (turn it with `motor` or `transform`)",
             ),
             Kind::Triangle => (&["corners"], "a triangle takes `corners` (three points)"),
+            Kind::Instance => (
+                &[],
+                "an instance takes `of` (an earlier object's name) and its own `motor`, `transform`, `motion`, `name`, `label` and `material`",
+            ),
+            Kind::Mesh => (
+                &["file", "scale", "smooth"],
+                "a mesh takes `file` (an .obj or .ply), `scale` (default 1) and `smooth` (its vertex normals, default true)",
+            ),
             Kind::Evolved => (
                 &["c1", "c2", "caps"],
                 "an evolved surface takes `c1` and `c2`, and `caps` (its end disks, default false)",
@@ -639,6 +708,12 @@ pub(crate) struct ObjectSpec {
     point: Option<Spanned<V3>>,
     corners: Option<Spanned<Vec<V3>>>,
     points: Option<Spanned<Vec<V3>>>,
+    /// A mesh's file, relative to the scene's folder.
+    file: Option<Spanned<String>>,
+    /// A mesh's uniform scale about the file's origin, before its motor.
+    scale: Option<Spanned<Num>>,
+    /// Whether a mesh is shaded by its vertex normals (where the file gives them).
+    smooth: Option<Spanned<bool>>,
     c1: Option<Spanned<CircleSpec>>,
     c2: Option<Spanned<CircleSpec>>,
     circles: Option<Spanned<Vec<Spanned<CircleSpec>>>>,
@@ -658,9 +733,14 @@ pub(crate) struct ObjectSpec {
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
     /// Keyframe motors over the frame times 0 … 1, applied after `motor`/`transform`.
     motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
+    /// Drawn only as instances ([`instance`]).
+    template: Option<Spanned<bool>>,
     /// The frame time the object is built at (not in the file: the scene's).
     #[serde(skip)]
     pub(crate) time: f64,
+    /// An instance's motor, applied after the object's own (not in the file).
+    #[serde(skip)]
+    pub(crate) outer: Option<Motor>,
 }
 
 /// A circle for an evolved surface: Euclidean, through three points, or the original
@@ -700,7 +780,7 @@ impl ObjectSpec {
     /// Where the object is and how large, in world coordinates, for sizing the scene's frame:
     /// a point of it (moved by its motor) and its extent (a radius, or the spread of its
     /// points; 0 for a plane), if the file says; `None` for what only a blade gives.
-    pub(crate) fn extent(&self) -> Option<(E3, f64)> {
+    pub(crate) fn extent(&self, assets: &Assets) -> Option<(E3, f64)> {
         let spread = |p: &[V3]| p.iter().map(|x| norm(sub(x.0, p[0].0))).fold(0.0, f64::max);
         // A torus reaches its tube's radius beyond its core circle's.
         let tube = self.tube.as_ref().map_or(0.0, |r| r.get_ref().0);
@@ -709,6 +789,10 @@ impl ObjectSpec {
         let size = self.size.as_ref().map_or(0.0, |s| s.get_ref().0);
         let (point, extent) = if let Some(drawn) = self.drawn_extent() {
             drawn?
+        } else if let (Kind::Mesh, Some(file)) = (self.kind, &self.file) {
+            let (c, r) = assets.mesh(file).ok()?.bounds()?;
+            let s = self.mesh_scale().ok()?;
+            (c.map(|x| x * s), r * s)
         } else if self.kind == Kind::Plane {
             let p =
                 self.point.as_ref().map(|p| p.get_ref().0).or_else(|| Some(self.points.as_ref()?.get_ref().first()?.0));
@@ -744,12 +828,16 @@ impl ObjectSpec {
     }
 
     /// The object's world motor at its frame time: its `motor` or `transform`, then its
-    /// `motion` at that time.
+    /// `motion` at that time, then an instance's motor.
     fn world_motor(&self) -> Result<Option<Motor>, Invalid> {
         let own = world_motor(self.motor.as_ref(), self.transform.as_ref())?;
-        Ok(match &self.motion {
+        let moved = match &self.motion {
             Some(keys) => Some(motion_at(keys, self.time)? * own.unwrap_or(Motor::identity())),
             None => own,
+        };
+        Ok(match (self.outer, moved) {
+            (Some(outer), Some(m)) => Some(outer * m),
+            (outer, m) => outer.or(m),
         })
     }
 
@@ -758,10 +846,14 @@ impl ObjectSpec {
     pub(crate) fn extent_of(
         value: &Spanned<toml::de::DeValue<'_>>,
         time: f64,
+        outer: Option<Motor>,
+        assets: &Assets,
     ) -> Result<Option<(E3, f64)>, toml::de::Error> {
         use serde::de::IntoDeserializer;
-        const READ: [&str; 26] = [
+        const READ: [&str; 28] = [
             "type",
+            "file",
+            "scale",
             "motion",
             "normal",
             "direction",
@@ -795,8 +887,8 @@ impl ObjectSpec {
         }
         let table = Spanned::new(value.span(), toml::de::DeValue::Table(placement));
         let mut spec = ObjectSpec::deserialize(table.into_deserializer())?;
-        spec.time = time;
-        Ok(spec.extent())
+        (spec.time, spec.outer) = (time, outer);
+        Ok(spec.extent(assets))
     }
 
     /// The geometry fields given, with their spans.
@@ -819,6 +911,9 @@ impl ObjectSpec {
             span("point", self.point.as_ref().map(Spanned::span)),
             span("corners", self.corners.as_ref().map(Spanned::span)),
             span("points", self.points.as_ref().map(Spanned::span)),
+            span("file", self.file.as_ref().map(Spanned::span)),
+            span("scale", self.scale.as_ref().map(Spanned::span)),
+            span("smooth", self.smooth.as_ref().map(Spanned::span)),
             span("c1", self.c1.as_ref().map(Spanned::span)),
             span("c2", self.c2.as_ref().map(Spanned::span)),
             span("circles", self.circles.as_ref().map(Spanned::span)),
@@ -860,13 +955,13 @@ impl ObjectSpec {
 
     /// The shapes, in `frame` (one but for drawings), with errors placed at their field
     /// ([`ObjectSpec::locate`]).
-    fn shapes(&self, method: Method, frame: &Frame, marks: &Marks) -> Result<Parts, Invalid> {
-        self.build(method, frame, marks).map_err(|e| self.locate(e))
+    fn shapes(&self, method: Method, frame: &Frame, marks: &Marks, assets: &Assets) -> Result<Parts, Invalid> {
+        self.build(method, frame, marks, assets).map_err(|e| self.locate(e))
     }
 
     /// The shape, in `frame`: fields checked against the kind, its Euclidean data (made from
     /// points, if given so, in world coordinates) moved by its motor into the frame, built.
-    fn build(&self, method: Method, frame: &Frame, marks: &Marks) -> Result<Parts, Invalid> {
+    fn build(&self, method: Method, frame: &Frame, marks: &Marks, assets: &Assets) -> Result<Parts, Invalid> {
         let (takes, says) = self.kind.takes();
         if let Some((field, span)) = self.given().into_iter().find(|(f, _)| !takes.contains(f)) {
             return Err(Invalid::at(field, span, Invalid::Form(says)));
@@ -899,8 +994,10 @@ impl ObjectSpec {
                     }
                     _ => return Err(form()),
                 };
-                let (p, n) = place.plane(p, n)?;
-                Arc::new(PlaneShape::new(p, n)?)
+                let (foot, n) = place.plane(p, n)?;
+                // The texture's origin is the point given, where the frame holds it.
+                let anchor = place.point(p).unwrap_or(foot);
+                Arc::new(PlaneShape { anchor, ..PlaneShape::new(foot, n)? })
             }
             Kind::Disk => {
                 let (c, n, r) = match (centre, normal, radius, &self.points) {
@@ -959,6 +1056,8 @@ impl ObjectSpec {
                 let [a, b, c] = corners;
                 Arc::new(TriangleShape::new([place.point(a)?, place.point(b)?, place.point(c)?])?)
             }
+            Kind::Mesh => return Ok((self.mesh(&place, assets)?, None)),
+            Kind::Instance => return Err(form()),
             #[cfg(feature = "evolved")]
             Kind::Evolved => match (&self.c1, &self.c2) {
                 (Some(c1), Some(c2)) => {
@@ -986,6 +1085,49 @@ impl ObjectSpec {
             }
         };
         Ok((vec![shape], None))
+    }
+}
+
+impl ObjectSpec {
+    /// A mesh's scale, checked: finite and > 0.
+    fn mesh_scale(&self) -> Result<f64, Invalid> {
+        match &self.scale {
+            Some(s) if !(s.get_ref().0 > 0.0 && s.get_ref().0.is_finite()) => {
+                Err(Invalid::at("scale", s.span(), Invalid::Value("a mesh's scale must be finite and > 0")))
+            }
+            s => Ok(s.as_ref().map_or(1.0, |s| s.get_ref().0)),
+        }
+    }
+
+    /// A mesh's triangles, scaled, moved by `place`, with the file's normals (turned) and
+    /// texture coordinates. Triangles without area are left out: no ray sees them.
+    fn mesh(&self, place: &Placement, assets: &Assets) -> Result<Vec<Arc<dyn Shape>>, Invalid> {
+        let file = self.file.as_ref().ok_or(Invalid::Form(Kind::Mesh.takes().1))?;
+        let mesh = assets.mesh(file)?;
+        let s = self.mesh_scale()?;
+        if mesh.triangles.len() > MAX_OBJECTS {
+            let many =
+                Invalid::Limit { what: "triangles", found: mesh.triangles.len() as u64, limit: MAX_OBJECTS as u64 };
+            return Err(Invalid::at("file", file.span(), many));
+        }
+        let smooth = self.smooth.as_ref().is_none_or(|s| *s.get_ref());
+        let mut shapes: Vec<Arc<dyn Shape>> = Vec::with_capacity(mesh.triangles.len());
+        for t in &mesh.triangles {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize].map(|x| x * s));
+            if TriangleShape::new([a, b, c]).is_err() {
+                continue;
+            }
+            let corner = |i: u32| i as usize;
+            let shading = Shading {
+                normals: mesh.normals.as_ref().filter(|_| smooth).map(|n| t.map(|i| place.direction(n[corner(i)]))),
+                uvs: mesh.uvs.as_ref().map(|uv| t.map(|i| uv[corner(i)])),
+            };
+            let triangle = TriangleShape::new([place.point(a)?, place.point(b)?, place.point(c)?])?;
+            shapes.push(Arc::new(
+                triangle.with_shading(shading).map_err(|e| Invalid::at("file", file.span(), e.into()))?,
+            ));
+        }
+        Ok(shapes)
     }
 }
 
@@ -1085,9 +1227,6 @@ impl ObjectSpec {
     }
 }
 
-/// The file's named materials, checked.
-pub(crate) type Materials = std::collections::BTreeMap<String, Material>;
-
 /// An object's parts and its label.
 pub(crate) type Built = (Vec<Object>, Option<Label>);
 
@@ -1099,26 +1238,15 @@ pub(crate) fn build_object(
     method: Method,
     frame: &Frame,
     marks: &Marks,
-    materials: &Materials,
+    assets: &Assets,
 ) -> (Result<Built, Invalid>, String) {
     let name = spec.name.clone().unwrap_or_else(|| format!("object {}", index + 1));
     let shown = name.escape_debug().to_string();
-    let material = match spec.material.get_ref() {
-        MaterialRef::Given(m) => Material::from(*m).check().map(|()| Material::from(*m)),
-        MaterialRef::Named(n) => materials.get(n).copied().ok_or_else(|| {
-            let known: Vec<&str> = materials.keys().map(String::as_str).collect();
-            let why = format!(
-                "no material `{}` in the file's [materials] (it has {})",
-                n.escape_debug(),
-                if known.is_empty() { "none".into() } else { format!("`{}`", known.join("`, `")) }
-            );
-            Invalid::at("material", spec.material.span(), Invalid::Range(why))
-        }),
-    };
-    let built = material.and_then(|material| {
-        let (shapes, anchor) = spec.shapes(method, frame, marks)?;
+    let built = assets.resolve(&spec.material).and_then(|(material, texture)| {
+        let (shapes, anchor) = spec.shapes(method, frame, marks, assets)?;
         let label = spec.label(&shapes, anchor, material.colour)?;
-        let objects = shapes.into_iter().map(|shape| Object { name: name.clone(), shape, material }).collect();
+        let object = |shape| Object { name: name.clone(), shape, material, texture: texture.clone() };
+        let objects = shapes.into_iter().map(object).collect();
         Ok((objects, label))
     });
     (built, shown)

@@ -88,8 +88,9 @@ impl From<SettingsSpec> for Settings {
     }
 }
 
-/// An object's `material`: `colour` and any of `ka`, `kd`, `ks`, `q`, `kr`.
-#[derive(Clone, Copy, Debug, Deserialize)]
+/// An object's `material`: `colour` and any of `ka`, `kd`, `ks`, `q`, `kr`, `ior`,
+/// `absorption`, `texture`.
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct MaterialSpec {
     #[serde(deserialize_with = "numbers")]
@@ -110,6 +111,33 @@ pub(crate) struct MaterialSpec {
     /// A dielectric's absorption per world unit, per channel.
     #[serde(default, deserialize_with = "some_numbers")]
     absorption: Option<[f64; 3]>,
+    /// A texture in place of `colour`.
+    #[serde(default)]
+    pub texture: Option<toml::Spanned<TextureSpec>>,
+}
+
+/// A material's `texture`: `pattern = "checker"` or `"stripes"` with the second `colour`,
+/// or an `image` file; `repeat = [u, v]` (default 1, 1) cells or copies per unit of the
+/// surface's `(u, v)`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct TextureSpec {
+    pub pattern: Option<toml::Spanned<PatternSpec>>,
+    #[serde(default, deserialize_with = "some_numbers")]
+    pub colour: Option<[f64; 3]>,
+    pub image: Option<toml::Spanned<String>>,
+    #[serde(default, deserialize_with = "some_numbers")]
+    pub repeat: Option<[f64; 2]>,
+}
+
+/// A texture's `pattern`.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub(crate) enum PatternSpec {
+    /// Cells of two colours.
+    Checker,
+    /// Bands of two colours along `u`.
+    Stripes,
 }
 
 /// An object's `material`: a table, or the name of one of the file's `[materials.NAME]`
@@ -119,7 +147,7 @@ pub(crate) enum MaterialRef {
     /// `material = "gold"`.
     Named(String),
     /// `material = { colour = … }`.
-    Given(MaterialSpec),
+    Given(Box<MaterialSpec>),
 }
 
 impl<'de> Deserialize<'de> for MaterialRef {
@@ -135,15 +163,16 @@ impl<'de> Deserialize<'de> for MaterialRef {
             }
             // A table keeps its own fields' errors (a serde untagged enum would lose them).
             fn visit_map<A: serde::de::MapAccess<'de>>(self, map: A) -> Result<MaterialRef, A::Error> {
-                MaterialSpec::deserialize(serde::de::value::MapAccessDeserializer::new(map)).map(MaterialRef::Given)
+                MaterialSpec::deserialize(serde::de::value::MapAccessDeserializer::new(map))
+                    .map(|m| MaterialRef::Given(Box::new(m)))
             }
         }
         d.deserialize_any(Either)
     }
 }
 
-impl From<MaterialSpec> for Material {
-    fn from(s: MaterialSpec) -> Material {
+impl From<&MaterialSpec> for Material {
+    fn from(s: &MaterialSpec) -> Material {
         let d = Material::new(s.colour);
         Material {
             colour: s.colour,

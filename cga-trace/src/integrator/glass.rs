@@ -68,7 +68,7 @@ impl<B: Backend> Renderer<'_, B> {
         self.split(&first, hit, k, &mut stack, cast);
         while let Some(p) = stack.pop() {
             let Some((hit, j)) = self.hit(&p.ray, 0.0, f64::INFINITY) else {
-                add_to(&mut total, p.weight, settings.background);
+                add_to(&mut total, p.weight, self.sky(p.ray.dir));
                 continue;
             };
             let mut p = p;

@@ -59,6 +59,8 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// Which objects are dielectrics: shadow rays pass them (as POV-Ray's through clear
     /// glass), caustics not being traced.
     pub(crate) clear: Vec<bool>,
+    /// Whether any object has a texture (shading then looks each hit's up).
+    pub(crate) textured: bool,
     /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
     /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
     pub(crate) errors: Vec<f64>,
@@ -89,6 +91,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
         let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
+        let textured = scene.objects.iter().any(|o| o.texture.is_some());
         let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
         Renderer {
             scene,
@@ -98,6 +101,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             bvh,
             flat,
             clear,
+            textured,
             errors,
             subset: (0, 1),
             counted: Default::default(),

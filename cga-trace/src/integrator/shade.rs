@@ -7,9 +7,9 @@ use super::{Dimension, RayCounts, Renderer, SampleKey, disk};
 use crate::backend::{Backend, RayLanes, lanes3};
 use crate::light::{Light, Source, attenuation, blinn_phong, lights};
 use crate::material::{Material, Reflectance, shine};
-use crate::object::Object;
 use crate::ray::{leaving_origin, offset};
 use crate::shapes::ShadingPoint;
+use crate::texture::Unit;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::Lane;
 use cga_core::{Real, Select};
@@ -47,10 +47,27 @@ impl<B: Backend> Renderer<'_, B> {
         cast: &mut RayCounts,
     ) -> [[f64; 3]; W] {
         let (settings, objects) = (&self.scene.settings, &self.scene.objects);
+        // Textured objects' materials with the texture's colour at the hit.
+        let mut tinted = [NO_MATERIAL; W];
+        let mut textured = [false; W];
+        if self.textured {
+            for l in 0..W {
+                if let Some((hit, k)) = &hits[l]
+                    && let Some(colour) = self.textured_colour(hit, *k)
+                {
+                    (tinted[l], textured[l]) = (Material { colour, ..objects[*k].material }, true);
+                }
+            }
+        }
+        let m: [&Material; W] = core::array::from_fn(|l| match &hits[l] {
+            _ if textured[l] => &tinted[l],
+            Some((_, k)) => &objects[*k].material,
+            None => &NO_MATERIAL,
+        });
         // Arrays built by index, not by `map`: LLVM leaves `map` over these arrays out of
         // line, outside the AVX2 code.
         let mut colours: [[f64; 3]; W] =
-            core::array::from_fn(|l| hits[l].as_ref().map_or(settings.background, |(_, k)| self.ambient(&objects[*k])));
+            core::array::from_fn(|l| hits[l].as_ref().map_or(settings.background, |_| self.ambient(m[l])));
         if !hits.iter().any(Option::is_some) {
             return colours;
         }
@@ -59,8 +76,6 @@ impl<B: Backend> Renderer<'_, B> {
         let n: E3<R::T> =
             [by_lane(hits, |h, _| h.normal[0]), by_lane(hits, |h, _| h.normal[1]), by_lane(hits, |h, _| h.normal[2])];
         let v = rays.dir().map(|d| -d);
-        let m: [&Material; W] =
-            core::array::from_fn(|l| hits[l].as_ref().map_or(&NO_MATERIAL, |(_, k)| &objects[*k].material));
         let own: [Option<usize>; W] = core::array::from_fn(|l| hits[l].as_ref().and_then(|(_, k)| self.skip_own(*k)));
         let offset = offset(x, rays.origin(), by_lane(hits, |_, k| self.errors[k]));
         let hit: [bool; W] = core::array::from_fn(|l| hits[l].is_some());
@@ -124,9 +139,23 @@ impl<B: Backend> Renderer<'_, B> {
         }
     }
 
-    /// `c k_a A`: the ambient light on an object.
-    pub(crate) fn ambient(&self, object: &Object) -> [f64; 3] {
-        scale(object.material.colour, object.material.ka * self.scene.settings.ambient)
+    /// `c k_a A`: the ambient light on a material.
+    pub(crate) fn ambient(&self, material: &Material) -> [f64; 3] {
+        scale(material.colour, material.ka * self.scene.settings.ambient)
+    }
+
+    /// The colour object `k`'s texture gives it at `hit`, where it has one and the shape has
+    /// parameters there (lengths in world units).
+    fn textured_colour(&self, hit: &ShadingPoint, k: usize) -> Option<[f64; 3]> {
+        let object = &self.scene.objects[k];
+        let texture = object.texture.as_ref()?;
+        let crossing = crate::shapes::Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
+        let (uv, unit) = object.shape.uv(&crossing)?;
+        let uv = match unit {
+            Unit::Fraction => uv,
+            Unit::Length => uv.map(|x| self.scene.frame.world_length(x)),
+        };
+        Some(texture.colour(object.material.colour, uv))
     }
 
     /// One light's term, `s f_att (c k_d max(n·l, 0) + k_s spec) L`, at `distance` (frame

@@ -54,6 +54,15 @@ impl<B: Backend> Renderer<'_, B> {
         colour
     }
 
+    /// What a ray leaving the scene along `dir` sees: the environment, or the background.
+    #[inline(always)]
+    pub(super) fn sky(&self, dir: E3) -> [f64; 3] {
+        match &self.scene.environment {
+            None => self.scene.settings.background,
+            Some(e) => e.seen(dir),
+        }
+    }
+
     /// A hit's own colour `local` and the weight `k_r` of its mirror ray: eq. 12's `local` and
     /// `k_r`, or, where energy is conserved, `(1 − k_r) local` and `k_r` at most 1 (what a
     /// surface reflects it does not also shade).
@@ -109,7 +118,7 @@ impl<B: Backend> Renderer<'_, B> {
                     continue;
                 }
                 let Some((hit, k)) = hits[l] else {
-                    (deepest[l], active[l]) = (settings.background, false);
+                    (deepest[l], active[l]) = (self.sky(rays.ray(l).dir), false);
                     continue;
                 };
                 let material = &self.scene.objects[k].material;

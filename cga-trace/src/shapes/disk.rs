@@ -2,7 +2,9 @@
 
 use super::plane::{cross_plane, flat_normal};
 use super::{Crossing, Shape, crossing_at, flat_error, point_in_range};
+use crate::light::orthonormal;
 use crate::ray::Ray;
+use crate::texture::Unit;
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::{Disk, GeometryError};
 
@@ -24,6 +26,15 @@ impl DiskShape {
 }
 
 impl Shape for DiskShape {
+    /// The angle about its centre as a fraction of a turn (from the first axis
+    /// [`orthonormal`] to its normal), and the distance from the centre over the radius.
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
+        let (a, b) = orthonormal(self.normal);
+        let d = sub(c.point, self.disk.centre);
+        let u = 0.5 + dot(d, b).atan2(dot(d, a)) / std::f64::consts::TAU;
+        Some(([u, dot(d, d).sqrt() / self.disk.radius], Unit::Fraction))
+    }
+
     #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let d = &self.disk;

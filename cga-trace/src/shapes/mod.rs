@@ -30,8 +30,8 @@ pub use plane::PlaneShape;
 pub use sphere::SphereShape;
 pub(crate) use sphere::sphere_crossing;
 pub use torus::TorusShape;
-pub use triangle::TriangleShape;
 pub(crate) use triangle::inside_triangle;
+pub use triangle::{Shading, TriangleShape};
 
 /// Where a ray crosses an object.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,6 +95,12 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// The curvature of the surface at a crossing (in the scene's frame), for surfaces swept
     /// by circles; `None` for the others (flat or of constant curvature, not reported).
     fn curvature(&self, _crossing: &Crossing) -> Option<cga_core::Curvature> {
+        None
+    }
+
+    /// The surface's own parameters `(u, v)` at a crossing, for textures
+    /// ([`crate::texture`]), and what they measure; `None` where the shape has none.
+    fn uv(&self, _crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
         None
     }
 

@@ -1,8 +1,10 @@
 //! An infinite plane: met as the flat point `L ∨ Π`.
 
 use super::{Crossing, Shape, crossing_at, facing, flat_error, plane_normal, point_in_range};
+use crate::light::orthonormal;
 use crate::ray::Ray;
-use cga_core::euclid::E3;
+use crate::texture::Unit;
+use cga_core::euclid::{E3, dot, sub};
 use cga_core::{GeometryError, Plane};
 
 /// An infinite plane.
@@ -14,6 +16,8 @@ pub struct PlaneShape {
     pub normal: E3,
     /// Its [crossing error](Shape::crossing_error): its offset's rounding.
     pub error: f64,
+    /// The point it was placed through: where its texture's `(u, v)` are 0.
+    pub anchor: E3,
 }
 
 impl PlaneShape {
@@ -21,7 +25,7 @@ impl PlaneShape {
     pub fn new(point: E3, normal: E3) -> Result<Self, GeometryError> {
         let plane = Plane::from_point_normal(point, normal)?;
         let normal = plane_normal(&plane);
-        Ok(PlaneShape { plane, normal, error: flat_error(normal, point) })
+        Ok(PlaneShape { plane, normal, error: flat_error(normal, point), anchor: point })
     }
 }
 
@@ -36,6 +40,13 @@ pub(super) fn flat_normal(ray: &Ray, normal: E3) -> E3 {
 }
 
 impl Shape for PlaneShape {
+    /// Lengths along the plane from its anchor, on the axes [`orthonormal`] to its normal.
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
+        let (a, b) = orthonormal(self.normal);
+        let d = sub(c.point, self.anchor);
+        Some(([dot(d, a), dot(d, b)], Unit::Length))
+    }
+
     #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         cross_plane(ray, &self.plane).filter(point_in_range(ray, t_min, t_max)).map(|x| crossing_at(ray, x))

@@ -2,6 +2,7 @@
 
 use super::{Crossing, Shape, facing, largest, rounding};
 use crate::ray::{Ray, in_range};
+use crate::texture::Unit;
 use cga_core::euclid::{E3, dot, scale, sub, tolerance, unit};
 use cga_core::{GeometryError, InnerProduct, LeftContraction, Line, Select, Sphere, down_lanes, ei};
 
@@ -73,6 +74,15 @@ pub(crate) struct SphereCrossing<T: Select> {
 }
 
 impl Shape for SphereShape {
+    /// Longitude and colatitude about the z axis as fractions: `u = ½ + atan2(y, x)/2π`,
+    /// `v = acos(z/r)/π` (0 at the top), `(x, y, z)` the hit from the centre.
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
+        let [x, y, z] = sub(c.point, self.centre);
+        let r = (x * x + y * y + z * z).sqrt();
+        let u = 0.5 + y.atan2(x) / std::f64::consts::TAU;
+        Some(([u, (z / r).clamp(-1.0, 1.0).acos() / std::f64::consts::PI], Unit::Fraction))
+    }
+
     #[inline]
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let c = sphere_crossing(&ray.carrier, &self.sphere, (ray.origin, ray.dir), (t_min, t_max));

@@ -236,4 +236,10 @@ impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.family.circles.curvature(crossing.alpha?, sub(crossing.point, self.origin))
     }
+
+    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+        let (family, origin) = (&self.family.circles, self.origin);
+        let circle = family.at(crossing.alpha?).ok()?.centre_normal_radius().ok()?;
+        super::swept_uv(crossing, (add(circle.0, origin), circle.1))
+    }
 }

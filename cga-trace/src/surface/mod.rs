@@ -85,6 +85,21 @@ pub enum SurfaceError {
     },
 }
 
+/// `(α, angle)` of a crossing on a swept surface whose circle `C_α` has centre `c` and unit
+/// normal `n`: the angle about `n` as a fraction of a turn, from the first axis
+/// [`orthonormal`](crate::light::orthonormal) to `n`.
+#[cfg(feature = "evolved")]
+pub(crate) fn swept_uv(
+    crossing: &crate::shapes::Crossing,
+    (c, n): (cga_core::euclid::E3, cga_core::euclid::E3),
+) -> Option<([f64; 2], crate::texture::Unit)> {
+    use cga_core::euclid::{dot, sub};
+    let (a, b) = crate::light::orthonormal(n);
+    let d = sub(crossing.point, c);
+    let angle = 0.5 + dot(d, b).atan2(dot(d, a)) / std::f64::consts::TAU;
+    Some(([crossing.alpha?, angle], crate::texture::Unit::Fraction))
+}
+
 /// The crossing error of a swept surface of bounding radius `radius` centred at `origin`
 /// (frame units): its crossings are verified on their circle `C_α` to `1e-6` of its radius
 /// (`family.rs`, `hit_points`), and its local frame's origin carries its own rounding.

@@ -313,4 +313,13 @@ impl Shape for RuledSurface {
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.curvature_at(crossing.alpha?, crossing.point)
     }
+
+    /// `(α, v)`: the ruling and the fraction of the way along it, `x = p + (lo + v (hi −
+    /// lo)) u` (the form [`RuledSurface::point_and_normal`] takes).
+    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+        let alpha = crossing.alpha?;
+        let (p, u, (lo, hi)) = self.ruling(alpha)?;
+        let s = dot(sub(sub(crossing.point, self.origin), p), u);
+        Some(([alpha, (s - lo) / (hi - lo)], crate::texture::Unit::Fraction))
+    }
 }

@@ -182,4 +182,9 @@ impl Shape for SplineSurface {
     fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
         self.spline.curvature(crossing.alpha?, sub(crossing.point, self.origin)).ok()
     }
+
+    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+        let (c, n, _) = self.spline.at(crossing.alpha?).ok()?.centre_normal_radius().ok()?;
+        super::swept_uv(crossing, (cga_core::euclid::add(c, self.origin), n))
+    }
 }

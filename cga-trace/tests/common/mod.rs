@@ -91,6 +91,38 @@ impl Similarity {
         *m = floats(&moved.to_array());
     }
 
+    /// A mesh's or an instance's `transform` F (rotations about points, translations)
+    /// conjugated by the scaling `S x = s x`: `S F S⁻¹` rotates about `s p` and translates by
+    /// `s t`. A mesh's vertices (its file's, times `scale`) are scaled (`scale` times `s`),
+    /// moved by `S F S⁻¹` and then shifted; an instance's F acts after its object's, so it is
+    /// conjugated by the shift as well: its points `p` move to `s p + t`.
+    fn conjugate_steps(&self, object: &mut Table, mesh: bool) {
+        assert!(
+            !object.contains_key("motor") && !object.contains_key("motion"),
+            "shipped meshes and instances move by `transform`"
+        );
+        let scaled = |v: &mut Value| {
+            *v = Value::Array(triple(v).iter().map(|&x| Value::Float(self.scale * x)).collect());
+        };
+        let steps = object.entry("transform").or_insert(Value::Array(Vec::new())).as_array_mut().expect("a list");
+        for step in steps.iter_mut() {
+            if let Some(t) = step.get_mut("translate") {
+                scaled(t);
+            }
+            if let Some(rotate) = step.get_mut("rotate").and_then(Value::as_table_mut) {
+                let about = rotate.entry("about").or_insert(floats(&[0.0; 3]));
+                if mesh { scaled(about) } else { self.point(about) }
+            }
+        }
+        if mesh {
+            let mut shift = Table::new();
+            shift.insert("translate".into(), floats(&[self.shift; 3]));
+            steps.push(Value::Table(shift));
+            let scale = object.entry("scale").or_insert(Value::Float(1.0));
+            *scale = Value::Float(self.scale * scale.as_float().expect("a number"));
+        }
+    }
+
     pub fn apply(&self, scene: &mut Table) {
         let camera = scene["camera"].as_table_mut().expect("[camera]");
         for key in ["position", "look_at"] {
@@ -135,6 +167,17 @@ impl Similarity {
             if let Some(m) = object.get_mut("material").filter(|m| m.is_table()) {
                 absorbing(m);
             }
+            // A plane's texture is laid out in lengths: as many cells per scaled unit.
+            if object.get("type").and_then(Value::as_str) == Some("plane")
+                && let Some(texture) =
+                    object.get_mut("material").and_then(|m| m.get_mut("texture")).and_then(Value::as_table_mut)
+            {
+                let repeat =
+                    texture.entry("repeat").or_insert(Value::Array(vec![Value::Float(1.0), Value::Float(1.0)]));
+                for r in repeat.as_array_mut().expect("repeat = [u, v]") {
+                    *r = Value::Float(r.as_float().expect("a number") / self.scale);
+                }
+            }
             for key in object.get_mut("motion").and_then(Value::as_array_mut).into_iter().flatten() {
                 self.motor(key);
             }
@@ -143,11 +186,19 @@ impl Similarity {
                     self.point(v);
                 }
             }
-            // Rotations about a point of the object move with it.
-            for step in object.get_mut("transform").and_then(Value::as_array_mut).into_iter().flatten() {
-                assert!(step.get("translate").is_none(), "shipped objects move by rotations about their own points");
-                if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
-                    self.point(about);
+            let kind = object.get("type").and_then(Value::as_str).unwrap_or("").to_string();
+            if kind == "mesh" || kind == "instance" {
+                self.conjugate_steps(object, kind == "mesh");
+            } else {
+                // Rotations about a point of the object move with it.
+                for step in object.get_mut("transform").and_then(Value::as_array_mut).into_iter().flatten() {
+                    assert!(
+                        step.get("translate").is_none(),
+                        "shipped objects move by rotations about their own points"
+                    );
+                    if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
+                        self.point(about);
+                    }
                 }
             }
             for key in ["radius", "tube", "r1", "r2", "size"] {
@@ -217,8 +268,29 @@ pub fn blade_params(blade: &Value) -> (E3, E3, f64) {
 pub fn table(name: &str) -> Table {
     let path = format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
     let mut table: Table = std::fs::read_to_string(path).unwrap().parse().unwrap();
+    include(&mut table);
     Similarity { scale: 1.0, shift: 0.0 }.apply(&mut table);
     table
+}
+
+/// A shipped scene's included files written into it, as the renderer joins them (their
+/// materials added, their lights and objects after the scene's own), so that a similarity
+/// moves them too.
+fn include(table: &mut Table) {
+    let Some(Value::Array(files)) = table.remove("include") else { return };
+    for file in files {
+        let path = format!("{}/scenes/{}", env!("CARGO_MANIFEST_DIR"), file.as_str().expect("a file name"));
+        let mut part: Table = std::fs::read_to_string(path).unwrap().parse().unwrap();
+        include(&mut part);
+        for (key, value) in part {
+            match (table.get_mut(&key), value) {
+                (Some(Value::Table(into)), Value::Table(from)) => into.extend(from),
+                (Some(Value::Array(into)), Value::Array(from)) => into.extend(from),
+                (None, value) => drop(table.insert(key, value)),
+                (_, _) => panic!("`{key}` in an included file and the scene differ in kind"),
+            }
+        }
+    }
 }
 
 /// The scene a table describes, rendered at `width × height`.
@@ -229,7 +301,10 @@ pub fn scene_of(table: &Table, name: &str, width: u32, height: u32) -> Scene {
 /// [`scene_of`] at the motion's time `time`.
 pub fn scene_of_at(table: &Table, name: &str, width: u32, height: u32, time: f64) -> Scene {
     let text = toml::to_string(table).unwrap();
-    let mut scene = Scene::parse_at(&text, name, None, time).unwrap_or_else(|e| panic!("{name}: {e}"));
+    // Named by its path, so that the images it names are found beside it.
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
+    let mut scene =
+        Scene::parse_at(&text, file.to_str().unwrap(), None, time).unwrap_or_else(|e| panic!("{name}: {e}"));
     let c = scene.camera;
     scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap().with_lens(c.lens).unwrap();
     scene

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# POV-Ray 3.7 against cga-trace on the scenes of the features that cost more than one ray per
+# pixel and light: a disk light's soft shadows (area: 16 shadow rays and 16 shading terms per
+# hit on both sides), glass (glass: Fresnel-split reflected and refracted rays, depth 8 = POV's
+# max_trace_level 9) and a thin lens (lens: 16 camera rays per pixel on both sides), and on
+# textures (textures: a checker floor and an image-mapped ball, one ray per pixel). Each
+# NAME.toml here and its twin NAME.pov (whose comments say what POV-Ray does; +L here, where
+# textures.pov finds its image); as ../time.sh: one thread, CPU time (user + sys), interleaved
+# rounds, medians, 1280x960, no anti-aliasing.
+#
+#   benches/povray/features/time.sh PATH/TO/cga-trace [ROUNDS]     (from the project's root)
+set -euo pipefail
+bin=$(realpath "$1"); rounds=${2:-5}
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cpu() { /usr/bin/time -f '%U %S' -o "$work/t" "$@" >/dev/null 2>&1; awk '{print $1 + $2}' "$work/t"; }
+med() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
+printf '%-12s %10s %10s %10s\n' scene povray cga-trace 'povray/ours'
+for name in area glass lens textures; do
+  : > "$work/p"; : > "$work/o"
+  for _ in $(seq "$rounds"); do
+    cpu povray "+I$here/$name.pov" "+L$here" "+O$work/p.png" +W1280 +H960 -D +WT1 -A >> "$work/p"
+    cpu "$bin" render "$here/$name.toml" -o "$work/o.png" --width 1280 --height 960 --threads 1 >> "$work/o"
+  done
+  p=$(med < "$work/p"); o=$(med < "$work/o")
+  printf '%-12s %10s %10s %10s\n' "$name" "$p" "$o" "$(awk -v p="$p" -v o="$o" 'BEGIN { printf "%.2f", p / o }')"
+done

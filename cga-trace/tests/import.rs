@@ -1,0 +1,146 @@
+//! Triangle meshes read from OBJ and PLY files: the same picture as the shape they were
+//! made from — a box from its twelve triangles, a swept surface from the mesh `cga-trace
+//! mesh` writes of it (vertex normals shading it as the surface's own) — and texture
+//! coordinates, scale and motors applied as the file and the object say.
+
+use cga_trace::integrator::Window;
+use cga_trace::mesh::MeshFormat;
+use cga_trace::{Aov, Film, Renderer, Scene};
+use std::path::Path;
+
+fn parse(text: &str, folder: &Path) -> Scene {
+    Scene::parse(text, folder.join("scene.toml").to_str().unwrap()).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn render(scene: &Scene) -> Film {
+    let c = &scene.camera;
+    Renderer::new(scene).render_window(Aov::Shaded, Window::full(c.width, c.height), &|| {})
+}
+
+/// `(mean |Δ| over channels, fraction of pixels with a channel off by more than 1/32)`.
+fn difference(a: &Film, b: &Film) -> (f64, f64) {
+    let channels = a.pixels.iter().zip(&b.pixels).flat_map(|(p, q)| (0..3).map(move |k| (p[k] - q[k]).abs()));
+    let mean = channels.sum::<f64>() / (3 * a.pixels.len()) as f64;
+    let off = a.pixels.iter().zip(&b.pixels).filter(|(p, q)| (0..3).any(|k| (p[k] - q[k]).abs() > 1.0 / 32.0)).count();
+    (mean, off as f64 / a.pixels.len() as f64)
+}
+
+const CAMERA: &str = "[camera]\nposition = [5.0, -9.0, 6.0]\nlook_at = [0.0, 0.0, 0.0]\nfov = 40.0\nwidth = 96\nheight = 72\n\
+    [[lights]]\nposition = [-6.0, -8.0, 10.0]\n";
+
+/// The twelve triangles of the box `[-1, 1]³`, counter-clockwise seen from outside.
+const CUBE_OBJ: &str = "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n\
+    f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+#[test]
+fn a_box_of_triangles_renders_as_the_box() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("cube.obj"), CUBE_OBJ).unwrap();
+    let material = "material = { colour = [0.8, 0.4, 0.2], ks = 0.5, q = 30.0 }";
+    let mesh = parse(&format!("{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"cube.obj\"\n{material}\n"), dir.path());
+    let cube = parse(
+        &format!("{CAMERA}[[objects]]\ntype = \"box\"\nmin = [-1.0, -1.0, -1.0]\nmax = [1.0, 1.0, 1.0]\n{material}\n"),
+        dir.path(),
+    );
+    assert_eq!(mesh.objects.len(), 12, "four-sided faces cut in two");
+    let (mean, off) = difference(&render(&mesh), &render(&cube));
+    // Only pixels on the triangles' shared diagonals and the silhouette may differ.
+    assert!(mean < 2e-3 && off < 0.01, "mean {mean}, {off} of pixels off");
+}
+
+#[test]
+fn a_ply_mesh_scaled_and_moved_lands_where_its_motor_puts_it() {
+    // The same cube as text PLY, scaled by 0.5 and translated by (0, 0, 1), is
+    // the box [-0.5, 0.5]² × [0.5, 1.5].
+    let dir = tempfile::tempdir().unwrap();
+    let ply = "ply\nformat ascii 1.0\nelement vertex 8\nproperty double x\nproperty double y\nproperty double z\n\
+        element face 6\nproperty list uchar int vertex_indices\nend_header\n\
+        -1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n\
+        4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n";
+    std::fs::write(dir.path().join("cube.ply"), ply).unwrap();
+    let material = "material = { colour = [0.3, 0.6, 0.9], ks = 0.2 }";
+    let mesh = parse(
+        &format!(
+            "{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"cube.ply\"\nscale = 0.5\ntransform = [{{ translate = [0.0, 0.0, 1.0] }}]\n{material}\n"
+        ),
+        dir.path(),
+    );
+    let cube = parse(
+        &format!("{CAMERA}[[objects]]\ntype = \"box\"\nmin = [-0.5, -0.5, 0.5]\nmax = [0.5, 0.5, 1.5]\n{material}\n"),
+        dir.path(),
+    );
+    let (mean, off) = difference(&render(&mesh), &render(&cube));
+    assert!(mean < 2e-3 && off < 0.01, "mean {mean}, {off} of pixels off");
+}
+
+#[test]
+fn a_swept_surface_exported_and_read_back_is_shaded_as_the_surface() {
+    // fig3c's spline surface, written by `Scene::mesh` as OBJ (f64 exact, analytic vertex
+    // normals), read back as a mesh and rendered in place of the surface.
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/fig3c.toml");
+    let text = std::fs::read_to_string(&shipped).unwrap();
+    let mut scene = Scene::parse(&text, shipped.to_str().unwrap()).unwrap();
+    scene.resize(Some(160), Some(120)).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let mut file = std::fs::File::create(dir.path().join("surface.obj")).unwrap();
+    scene.mesh("surface", 256, 512).unwrap().save(&mut file, MeshFormat::Obj).unwrap();
+    drop(file);
+    // The file with the surface's table replaced by the mesh (same material).
+    let (before, surface) = text.split_once("name = \"surface\"").unwrap();
+    let material = surface.lines().find(|l| l.starts_with("material")).unwrap();
+    let with = |smooth: bool| {
+        let object =
+            format!("name = \"surface\"\ntype = \"mesh\"\nfile = \"surface.obj\"\nsmooth = {smooth}\n{material}\n");
+        let mut s = parse(&format!("{before}{object}"), dir.path());
+        s.resize(Some(160), Some(120)).unwrap();
+        render(&s)
+    };
+    let original = render(&scene);
+    let (mean, off) = difference(&with(true), &original);
+    assert!(mean < 3e-3 && off < 0.01, "smooth: mean {mean}, {off} of pixels off");
+    // Without the file's normals the facets show: the normals are what made it agree.
+    let (flat, _) = difference(&with(false), &original);
+    assert!(flat > 2.0 * mean, "flat {flat} vs smooth {mean}");
+}
+
+#[test]
+fn a_meshs_texture_coordinates_place_its_texture() {
+    // A unit square in z = 0 whose texture coordinates run u from 0 to 2 along x: a checker
+    // of one cell per unit of u changes colour at x = 0.5 (seen from above, orthographic).
+    let dir = tempfile::tempdir().unwrap();
+    let obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 2 0\nvt 2 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+    std::fs::write(dir.path().join("square.obj"), obj).unwrap();
+    let scene = parse(
+        "[camera]\nposition = [0.5, 0.5, 5.0]\nlook_at = [0.5, 0.5, 0.0]\nup = [0.0, 1.0, 0.0]\nprojection = \"orthographic\"\nview_width = 1.0\nwidth = 40\nheight = 40\n\
+         [render]\nambient = 1.0\n[[objects]]\ntype = \"mesh\"\nfile = \"square.obj\"\n\
+         material = { colour = [1.0, 1.0, 1.0], ka = 1.0, kd = 0.0, ks = 0.0, texture = { pattern = \"checker\", colour = [0.0, 0.0, 0.0] } }\n",
+        dir.path(),
+    );
+    let film = render(&scene);
+    let at = |i: u32, j: u32| film.pixels[((film.height - 1 - j) * film.width + i) as usize];
+    // Pixel i covers x = (i + ½)/40: white for x < ½ (u < 1), black beyond.
+    assert_eq!((at(5, 20), at(18, 20), at(21, 20), at(35, 20)), ([1.0; 3], [1.0; 3], [0.0; 3], [0.0; 3]));
+}
+
+#[test]
+fn bad_mesh_files_are_named_with_their_reason() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("bad.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n").unwrap();
+    std::fs::write(dir.path().join("mesh.stl"), "solid").unwrap();
+    let error = |file: &str| {
+        let text = format!(
+            "{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"{file}\"\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
+        );
+        Scene::parse(&text, dir.path().join("scene.toml").to_str().unwrap()).unwrap_err().to_string()
+    };
+    for (file, says) in [
+        ("bad.obj", "face vertex index out of bounds"),
+        ("mesh.stl", "give a mesh as `.obj` or `.ply`"),
+        ("missing.obj", "missing.obj"),
+    ] {
+        let e = error(file);
+        // The `file` field is the object's third line.
+        let line = CAMERA.lines().count() + 3;
+        assert!(e.contains(says) && e.contains(&format!("scene.toml:{line}:")) && e.contains("`file`"), "{file}: {e}");
+    }
+}
