@@ -17,7 +17,9 @@ pub struct TriangleMesh {
     pub positions: Vec<E3>,
     /// Vertex normals, one per position, where the file gives them.
     pub normals: Option<Vec<E3>>,
-    /// Texture coordinates `(u, v)`, one per position, where the file gives them.
+    /// Texture coordinates `(u, v)`, one per position, where the file gives them, with `v`
+    /// counted down from an image's top row as [`crate::picture::Picture::at`] reads it (the
+    /// file's `v`, counted up from the bottom row in OBJ and PLY, as `1 − v`).
     pub uvs: Option<Vec<[f64; 2]>>,
     /// Triangles: three indices into the vertices, counter-clockwise seen from the front.
     pub triangles: Vec<[u32; 3]>,
@@ -45,6 +47,18 @@ impl TriangleMesh {
         .map_err(|e| why(&e))?;
         mesh.check().map_err(|e| why(&e))?;
         Ok(mesh)
+    }
+
+    /// Whether the triangles close a solid: every edge shared by exactly two of them.
+    pub fn is_closed(&self) -> bool {
+        let mut edges: std::collections::HashMap<(u32, u32), u32> = std::collections::HashMap::new();
+        for t in &self.triangles {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+            }
+        }
+        !edges.is_empty() && edges.values().all(|&n| n == 2)
     }
 
     /// Finite coordinates, indices in range, normals and coordinates one per vertex.
@@ -101,7 +115,7 @@ fn from_obj(bytes: &[u8]) -> Result<TriangleMesh, String> {
             n.extend(m.normals.chunks_exact(3).map(|p| [p[0], p[1], p[2]]));
         }
         if let Some(t) = uvs.as_mut() {
-            t.extend(m.texcoords.chunks_exact(2).map(|p| [p[0], p[1]]));
+            t.extend(m.texcoords.chunks_exact(2).map(|p| [p[0], 1.0 - p[1]]));
         }
         mesh.triangles.extend(m.indices.chunks_exact(3).map(|t| [t[0] + base, t[1] + base, t[2] + base]));
     }
@@ -135,7 +149,7 @@ fn from_ply(bytes: &[u8]) -> Result<TriangleMesh, String> {
     let positions: Option<Vec<E3>> = vertices.iter().map(|v| triple(v, ["x", "y", "z"])).collect();
     let positions = positions.ok_or("a vertex without numbers `x`, `y`, `z`")?;
     let normals = vertices.iter().map(|v| triple(v, ["nx", "ny", "nz"])).collect();
-    let uv = |v: &DefaultElement| Some([number(v, "u").or(number(v, "s"))?, number(v, "v").or(number(v, "t"))?]);
+    let uv = |v: &DefaultElement| Some([number(v, "u").or(number(v, "s"))?, 1.0 - number(v, "v").or(number(v, "t"))?]);
     let uvs = vertices.iter().map(uv).collect();
     let faces = ply.payload.get("face").ok_or("no `face` element")?;
     let mut triangles = Vec::new();

@@ -110,6 +110,14 @@ impl Invalid {
         Invalid::Field { field, span, reason: Box::new(reason) }
     }
 
+    /// The field this is about, if it is about one.
+    pub(crate) fn field(&self) -> Option<&'static str> {
+        match self {
+            Invalid::Field { field, .. } => Some(field),
+            _ => None,
+        }
+    }
+
     /// The span of the innermost field this is about, if any.
     pub(crate) fn span(&self) -> Option<Range<usize>> {
         match self {

@@ -133,7 +133,9 @@ pub struct Mesh {
     pub positions: Vec<E3>,
     /// Unit vertex normals, facing the side the triangles' winding makes front.
     pub normals: Vec<E3>,
-    /// `(α, angle / 2π)`.
+    /// `(α, angle / 2π)` (a ruled surface's `(α, fraction)`), `v` counted down an image as
+    /// the renderer's textures and glTF count it; OBJ and PLY count it up, so they are
+    /// written `1 − v`.
     pub uvs: Vec<[f64; 2]>,
     /// Counter-clockwise seen from the normals' side.
     pub triangles: Vec<[u32; 3]>,
@@ -213,12 +215,15 @@ impl Mesh {
     /// Wavefront OBJ: `v`, `vt`, `vn` in full f64 precision (shortest round-trip decimals),
     /// faces `f a/a/a` (1-based).
     pub fn write_obj(&self, out: &mut dyn Write) -> std::io::Result<()> {
-        writeln!(out, "# cga-trace mesh: vertices on the circles C_α, analytic normals, uv = (α, angle/2π)")?;
+        writeln!(
+            out,
+            "# cga-trace mesh: vertices on the circles C_α, analytic normals, uv = (α, 1 − angle/2π): v up the image"
+        )?;
         for p in &self.positions {
             writeln!(out, "v {:?} {:?} {:?}", p[0], p[1], p[2])?;
         }
         for t in &self.uvs {
-            writeln!(out, "vt {:?} {:?}", t[0], t[1])?;
+            writeln!(out, "vt {:?} {:?}", t[0], 1.0 - t[1])?;
         }
         for n in &self.normals {
             writeln!(out, "vn {:?} {:?} {:?}", n[0], n[1], n[2])?;
@@ -235,7 +240,7 @@ impl Mesh {
     pub fn write_ply(&self, out: &mut dyn Write) -> std::io::Result<()> {
         write!(
             out,
-            "ply\nformat binary_little_endian 1.0\ncomment cga-trace mesh: uv = (alpha, angle/2pi)\n\
+            "ply\nformat binary_little_endian 1.0\ncomment cga-trace mesh: uv = (alpha, 1 - angle/2pi): v up the image\n\
              element vertex {}\nproperty double x\nproperty double y\nproperty double z\n\
              property double nx\nproperty double ny\nproperty double nz\nproperty double u\nproperty double v\n\
              element face {}\nproperty list uchar uint vertex_indices\nend_header\n",
@@ -243,7 +248,8 @@ impl Mesh {
             self.triangles.len()
         )?;
         for k in 0..self.positions.len() {
-            let (p, n, t) = (self.positions[k], self.normals[k], self.uvs[k]);
+            let (p, n, [u, v]) = (self.positions[k], self.normals[k], self.uvs[k]);
+            let t = [u, 1.0 - v];
             for x in p.iter().chain(&n).chain(&t) {
                 out.write_all(&x.to_le_bytes())?;
             }

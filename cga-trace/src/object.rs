@@ -17,4 +17,8 @@ pub struct Object {
     pub material: Material,
     /// A texture in place of the material's colour.
     pub texture: Option<Arc<Texture>>,
+    /// The closed solid this shape bounds together with others of the same id (a closed
+    /// glass mesh's triangles): a ray that crosses any of them enters or leaves the whole.
+    /// `None`: the shape is a solid of its own, or, if flat, a thin sheet.
+    pub solid: Option<usize>,
 }

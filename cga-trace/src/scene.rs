@@ -140,10 +140,11 @@ impl Scene {
         let joined = include::join(text, file)?;
         let text = joined.text.as_str();
         let at = |offset: usize| joined.locate(offset);
-        let sections = sections::split(text).map_err(|m| {
+        let mut sections = sections::split(text).map_err(|m| {
             let (file, line, column) = at(m.at);
             SceneError::Syntax { file, line, column, message: m.message }
         })?;
+        joined.reading_order(&mut sections.objects);
         let tokens = sections::significant_tokens(&sections.rest);
         if let (Some(open), true) = (sections.unclosed, tokens > MAX_DOCUMENT_TOKENS) {
             let (file, line, column) = at(open);
@@ -212,29 +213,24 @@ impl Scene {
             Some(range) => section_object(&text[range.clone()]).map_err(|e| syntax_error(&joined, &e, &map_of(k))),
             None => Ok(inline[k].clone()),
         };
-        // Instance `k` as (the object it copies, its motor): read in order, so that an
-        // instance names an object before it.
-        let mut named: HashMap<String, (usize, Option<Motor>)> = HashMap::new();
-        let mut instances: HashMap<usize, (usize, Option<Motor>)> = HashMap::new();
+        // Each instance as placed: read in order, so that an instance names an object before it.
+        let mut named: HashMap<String, Placed> = HashMap::new();
+        let mut instances: HashMap<usize, Placed> = HashMap::new();
         let mut sizes = Vec::with_capacity(count);
         for k in 0..count {
             let value = value_of(k)?;
             let placed = if is_instance(&value) {
                 let (spec, span) = instance_spec(&value, &map_of(k), &joined)?;
                 let located = |reason| invalid(&map_of(k), span.clone(), format!("object {}", k + 1), reason);
-                let &(base, outer) = named.get(spec.of.get_ref()).ok_or_else(|| {
+                let of = named.get(spec.of.get_ref()).ok_or_else(|| {
                     let why = format!("no object named `{}` before this one", spec.of.get_ref().escape_debug());
                     located(Invalid::at("of", spec.of.span(), Invalid::Range(why)))
                 })?;
-                let motor = spec.motor(time).map_err(located)?;
-                let outer = match (motor, outer) {
-                    (Some(m), Some(o)) => Some(m * o),
-                    (m, o) => m.or(o),
-                };
-                instances.insert(k, (base, outer));
-                (base, outer)
+                let placed = of.under(spec.motor(time).map_err(located)?, spec.material.is_some().then_some(k));
+                instances.insert(k, placed);
+                placed
             } else {
-                (k, None)
+                Placed { base: k, outer: None, material: None }
             };
             if let Some(name) = name_of(&value) {
                 named.insert(name, placed);
@@ -242,10 +238,9 @@ impl Scene {
             if is_template(&value) {
                 continue;
             }
-            let (j, outer) = placed;
-            let base = if j == k { value } else { value_of(j)? };
-            let extent = ObjectSpec::extent_of(&base, time, outer, &assets);
-            sizes.extend(extent.map_err(|e| syntax_error(&joined, &e, &map_of(j)))?);
+            let base = if placed.base == k { value } else { value_of(placed.base)? };
+            let extent = ObjectSpec::extent_of(&base, time, placed.outer, &assets);
+            sizes.extend(extent.map_err(|e| syntax_error(&joined, &e, &map_of(placed.base)))?);
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
         let marks = Marks::for_scene(&sizes, position, pixel);
@@ -276,30 +271,46 @@ impl Scene {
             if is_template(&value) {
                 continue;
             }
-            // An instance is built from the object it copies, whose fields its errors name.
+            // An instance is built from the object it copies, whose fields its errors name,
+            // but for those the instance gives.
             let (j, span, dress) = match instances.get(&k) {
-                Some(&(j, outer)) => {
+                Some(&placed) => {
                     let (instance, span) = instance_spec(&value, &map_of(k), &joined)?;
-                    if let Some(m) = &instance.material {
-                        let what = format!("object {}", k + 1);
-                        assets.resolve(m).map_err(|reason| invalid(&map_of(k), span.clone(), what, reason))?;
+                    // The material of the last instance in the chain that gives one.
+                    let material = match placed.material {
+                        Some(m) if m == k => instance.material.clone(),
+                        Some(m) => instance_spec(&value_of(m)?, &map_of(m), &joined)?.0.material,
+                        None => None,
+                    };
+                    if let (Some(material), Some(m)) = (&material, placed.material) {
+                        let what = format!("object {}", m + 1);
+                        assets.resolve(material).map_err(|reason| invalid(&map_of(m), span.clone(), what, reason))?;
                     }
-                    (j, span, Some((instance, outer)))
+                    (placed.base, span, Some((instance, placed, material)))
                 }
                 None => (k, value.span(), None),
             };
             let base = if j == k { value } else { value_of(j)? };
             let mut spec =
                 ObjectSpec::deserialize(base.into_deserializer()).map_err(|e| syntax_error(&joined, &e, &map_of(j)))?;
-            if let Some((instance, outer)) = dress {
-                spec = instance.dress(spec, outer);
+            // Where a field's span counts from: the object copied, or the instance giving it.
+            let (mut label_from, mut material_from) = (j, j);
+            if let Some((instance, placed, material)) = dress {
+                label_from = if instance.gives_label() { k } else { j };
+                material_from = placed.material.unwrap_or(j);
+                spec = instance.dress(spec, placed.outer, material);
             }
+            let owner = |reason: &Invalid| match reason.field() {
+                Some("label") => label_from,
+                Some("material") => material_from,
+                _ => j,
+            };
             spec.time = time;
             let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, &assets);
             let what = format!("object `{name}`");
-            // Errors at a field of the object copied; others at the instance.
+            // Errors at a field where that field is written; others at the object.
             let at = |reason: Invalid| match reason.span() {
-                Some(_) => invalid(&map_of(j), span.clone(), what.clone(), reason),
+                Some(_) => invalid(&map_of(owner(&reason)), span.clone(), what.clone(), reason),
                 None => invalid(&map_of(k), span.clone(), what.clone(), reason),
             };
             let (objects, label) = object.map_err(at)?;
@@ -311,6 +322,27 @@ impl Scene {
             labels.extend(label);
         }
         Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned, shutter, environment })
+    }
+}
+
+/// Where an object comes from: the object copied (`base`, itself if not an instance), the
+/// motor its instances put it under, and the instance whose material it wears, if any.
+#[derive(Clone, Copy)]
+struct Placed {
+    base: usize,
+    outer: Option<Motor>,
+    material: Option<usize>,
+}
+
+impl Placed {
+    /// This placement under a further instance's `motor` (applied after), wearing the
+    /// material of instance `material` where given.
+    fn under(&self, motor: Option<Motor>, material: Option<usize>) -> Placed {
+        let outer = match (motor, self.outer) {
+            (Some(m), Some(o)) => Some(m * o),
+            (m, o) => m.or(o),
+        };
+        Placed { base: self.base, outer, material: material.or(self.material) }
     }
 }
 
@@ -376,7 +408,7 @@ fn header_mistake(text: &str, offset: usize) -> Option<String> {
 /// The key assigned at or just before `offset` (`max_depth` in `max_depth = "deep"`),
 /// for errors whose message does not name the field.
 fn key_at(text: &str, offset: usize) -> Option<String> {
-    let before = &text[..offset.min(text.len())];
+    let before = text.get(..offset.min(text.len()))?;
     let segment = before.rsplit(['\n', '{', ',']).next()?;
     let key = segment.split('=').next()?.trim();
     (!key.is_empty() && segment.contains('=') && key.chars().all(|c| c.is_alphanumeric() || c == '_' || c == '.'))
@@ -474,9 +506,13 @@ fn line_column_bytes(bytes: &[u8], offset: usize) -> (usize, usize) {
     line_column(&String::from_utf8_lossy(&bytes[..offset]), offset)
 }
 
-/// 1-based line and column of a byte offset.
+/// 1-based line and column of a byte offset (inside a character: of that character).
 pub(crate) fn line_column(text: &str, offset: usize) -> (usize, usize) {
-    let before = &text[..offset.min(text.len())];
+    let mut offset = offset.min(text.len());
+    while !text.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    let before = &text[..offset];
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
     (line, column)

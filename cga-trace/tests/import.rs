@@ -49,6 +49,32 @@ fn a_box_of_triangles_renders_as_the_box() {
 }
 
 #[test]
+fn a_closed_glass_mesh_refracts_as_the_solid_it_bounds() {
+    // A glass cube of twelve triangles bends the checker floor behind it as the glass box
+    // does: light enters at one triangle and leaves at another. Were the triangles thin
+    // sheets, light would pass undeviated and the floor show straight through.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("cube.obj"), CUBE_OBJ).unwrap();
+    let glass = "material = { colour = [1.0, 1.0, 1.0], ka = 0.0, kd = 0.0, ks = 0.3, q = 60.0, ior = 1.5 }";
+    let floor = "[[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, -1.5]\nnormal = [0.0, 0.0, 1.0]\n\
+        material = { colour = [0.9, 0.9, 0.9], texture = { pattern = \"checker\", colour = [0.1, 0.1, 0.1], repeat = [2.0, 2.0] } }\n";
+    let render_with = |object: &str| {
+        render(&parse(&format!("{CAMERA}[render]\nmax_depth = 8\n{floor}[[objects]]\n{object}\n{glass}\n"), dir.path()))
+    };
+    let mesh = render_with("type = \"mesh\"\nfile = \"cube.obj\"");
+    let cube = render_with("type = \"box\"\nmin = [-1.0, -1.0, -1.0]\nmax = [1.0, 1.0, 1.0]");
+    let (mean, off) = difference(&mesh, &cube);
+    assert!(mean < 3e-3 && off < 0.02, "mean {mean}, {off} of pixels off");
+    // The sheets' picture, for scale: the floor seen straight through the cube.
+    let open = CUBE_OBJ.replace("f 5 6 7 8\n", "");
+    std::fs::write(dir.path().join("open.obj"), open).unwrap();
+    let sheets = render_with("type = \"mesh\"\nfile = \"open.obj\"");
+    let (apart, _) = difference(&sheets, &cube);
+    println!("closed mesh vs box: mean {mean:.2e}, {off:.4} of pixels off; open mesh (sheets) vs box: {apart:.2e}");
+    assert!(apart > 10.0 * mean, "sheets {apart} vs solid {mean}");
+}
+
+#[test]
 fn a_ply_mesh_scaled_and_moved_lands_where_its_motor_puts_it() {
     // The same cube as text PLY, scaled by 0.5 and translated by (0, 0, 1), is
     // the box [-0.5, 0.5]² × [0.5, 1.5].
@@ -103,23 +129,47 @@ fn a_swept_surface_exported_and_read_back_is_shaded_as_the_surface() {
     assert!(flat > 2.0 * mean, "flat {flat} vs smooth {mean}");
 }
 
-#[test]
-fn a_meshs_texture_coordinates_place_its_texture() {
-    // A unit square in z = 0 whose texture coordinates run u from 0 to 2 along x: a checker
-    // of one cell per unit of u changes colour at x = 0.5 (seen from above, orthographic).
-    let dir = tempfile::tempdir().unwrap();
-    let obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 2 0\nvt 2 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
-    std::fs::write(dir.path().join("square.obj"), obj).unwrap();
+/// The unit square in z = 0 with the OBJ texture coordinates `vt` (its corners' in order
+/// from the origin, counter-clockwise), textured by `texture`, seen from above
+/// (orthographic, 40 × 40, lit by the ambient term alone): pixel `(i, j)`, `j` down from the
+/// top row, covers `x = (i + ½)/40`, `y = 1 − (j + ½)/40`.
+fn textured_square(dir: &Path, vt: &str, texture: &str) -> impl Fn(u32, u32) -> [f64; 3] {
+    let obj = format!("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n{vt}f 1/1 2/2 3/3 4/4\n");
+    std::fs::write(dir.join("square.obj"), obj).unwrap();
     let scene = parse(
-        "[camera]\nposition = [0.5, 0.5, 5.0]\nlook_at = [0.5, 0.5, 0.0]\nup = [0.0, 1.0, 0.0]\nprojection = \"orthographic\"\nview_width = 1.0\nwidth = 40\nheight = 40\n\
-         [render]\nambient = 1.0\n[[objects]]\ntype = \"mesh\"\nfile = \"square.obj\"\n\
-         material = { colour = [1.0, 1.0, 1.0], ka = 1.0, kd = 0.0, ks = 0.0, texture = { pattern = \"checker\", colour = [0.0, 0.0, 0.0] } }\n",
-        dir.path(),
+        &format!(
+            "[camera]\nposition = [0.5, 0.5, 5.0]\nlook_at = [0.5, 0.5, 0.0]\nup = [0.0, 1.0, 0.0]\nprojection = \"orthographic\"\nview_width = 1.0\nwidth = 40\nheight = 40\n\
+             [render]\nambient = 1.0\n[[objects]]\ntype = \"mesh\"\nfile = \"square.obj\"\n\
+             material = {{ colour = [1.0, 1.0, 1.0], ka = 1.0, kd = 0.0, ks = 0.0, texture = {texture} }}\n"
+        ),
+        dir,
     );
     let film = render(&scene);
-    let at = |i: u32, j: u32| film.pixels[((film.height - 1 - j) * film.width + i) as usize];
-    // Pixel i covers x = (i + ½)/40: white for x < ½ (u < 1), black beyond.
+    // Film rows run up from the bottom.
+    move |i, j| film.pixels[((film.height - 1 - j) * film.width + i) as usize]
+}
+
+#[test]
+fn a_meshs_texture_coordinates_place_its_texture() {
+    // Texture coordinates that run u from 0 to 2 along x: a checker of one cell per unit of
+    // u changes colour at x = 0.5.
+    let dir = tempfile::tempdir().unwrap();
+    let vt = "vt 0 0\nvt 2 0\nvt 2 1\nvt 0 1\n";
+    let at = textured_square(dir.path(), vt, "{ pattern = \"checker\", colour = [0.0, 0.0, 0.0] }");
+    // White for x < ½ (u < 1), black beyond.
     assert_eq!((at(5, 20), at(18, 20), at(21, 20), at(35, 20)), ([1.0; 3], [1.0; 3], [0.0; 3], [0.0; 3]));
+}
+
+#[test]
+fn an_obj_files_v_counts_up_the_image() {
+    // OBJ's v = 1 is the image's top row: an image red above and blue below, on a square
+    // whose top edge (y = 1) has v = 1, shows red at the top as other tools show it.
+    let dir = tempfile::tempdir().unwrap();
+    let image = image::RgbImage::from_fn(4, 4, |_, y| image::Rgb(if y < 2 { [255, 0, 0] } else { [0, 0, 255] }));
+    image.save(dir.path().join("halves.png")).unwrap();
+    let at = textured_square(dir.path(), "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n", "{ image = \"halves.png\" }");
+    let (top, bottom) = (at(20, 4), at(20, 35));
+    assert!(top[0] > 0.99 && top[2] < 0.01 && bottom[2] > 0.99 && bottom[0] < 0.01, "top {top:?}, bottom {bottom:?}");
 }
 
 #[test]

@@ -23,20 +23,33 @@ fn load(dir: &Path, name: &str) -> Result<Scene, String> {
 fn included_files_give_the_scene_written_as_one() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    write(d, "one.toml", &format!("{CAMERA}{MATERIALS}{LIGHTS}{BALL}{FLOOR}"));
     // The materials in one file, which includes the floor's; the ball in the scene.
     write(d, "looks.toml", &format!("include = [\"floor.toml\"]\n{MATERIALS}{LIGHTS}"));
     write(d, "floor.toml", FLOOR);
     write(d, "split.toml", &format!("include = [\"looks.toml\"]\n{CAMERA}{BALL}"));
-    let (one, split) = (load(d, "one.toml").unwrap(), load(d, "split.toml").unwrap());
-    // Objects in reading order: the scene's own, then each included file's.
+    let split = load(d, "split.toml").unwrap();
+    // Objects in reading order: each included file's (in the order listed, their own
+    // includes first), then the including file's own.
     let names = |s: &Scene| s.objects.iter().map(|o| o.name.clone()).collect::<Vec<_>>();
-    assert_eq!(
-        (names(&one), names(&split)),
-        (vec!["ball".to_string(), "floor".into()], vec!["ball".into(), "floor".into()])
-    );
+    assert_eq!(names(&split), vec!["floor".to_string(), "ball".into()]);
+    write(d, "one.toml", &format!("{CAMERA}{MATERIALS}{LIGHTS}{FLOOR}{BALL}"));
+    let one = load(d, "one.toml").unwrap();
     assert_eq!(format!("{:?}", one.objects), format!("{:?}", split.objects));
     assert_eq!(format!("{:?}", one.lights), format!("{:?}", split.lights));
+}
+
+#[test]
+fn a_scene_instances_the_templates_of_the_files_it_includes() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // The included file's template, read before the scene's own objects, is there to copy;
+    // a byte-order mark at its start is no error.
+    let template = BALL.replace("name = \"ball\"", "name = \"ball\"\ntemplate = true");
+    write(d, "parts.toml", &format!("\u{feff}{MATERIALS}{template}"));
+    let copy = "[[objects]]\ntype = \"instance\"\nof = \"ball\"\nname = \"copy\"\ntransform = [{ translate = [2.0, 0.0, 0.0] }]\n";
+    write(d, "scene.toml", &format!("include = [\"parts.toml\"]\n{CAMERA}{LIGHTS}{copy}"));
+    let scene = load(d, "scene.toml").unwrap();
+    assert_eq!(scene.objects.iter().map(|o| o.name.as_str()).collect::<Vec<_>>(), ["copy"]);
 }
 
 #[test]
@@ -44,14 +57,23 @@ fn errors_name_the_included_file_and_its_own_line() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let scene = |parts: &str| format!("include = [\"{parts}\"]\n{CAMERA}{MATERIALS}");
-    let cases: [(&str, String, String); 6] = [
+    let cases: [(&str, String, String); 9] = [
         // A bad radius on the fifth line of the included file.
         ("bad.toml", BALL.replace("radius = 1.0", "radius = -1.0"), "bad.toml:5:".into()),
         ("typo.toml", BALL.replace("centre", "center"), "typo.toml:4:".into()),
         ("camera.toml", format!("{LIGHTS}{CAMERA}"), "camera.toml:3:2: `camera` belongs in the scene file".into()),
-        ("cycle.toml", "include = [\"cycle.toml\"]\n".into(), "cycle.toml:1:12: `cycle.toml` is read already".into()),
+        ("cycle.toml", "include = [\"cycle.toml\"]\n".into(), "cycle.toml:1:12: `cycle.toml` is being read".into()),
         ("missing.toml", "include = [\"nowhere.toml\"]\n".into(), "missing.toml:1:12: include `nowhere.toml`".into()),
         ("list.toml", "include = \"x.toml\"\n".into(), "list.toml:1:1: `include`: give a list of file names".into()),
+        // A key-value before the file's first table would join the including file's last table.
+        (
+            "keys.toml",
+            format!("lights = []\n{BALL}"),
+            "keys.toml:1:1: `lights` is given as a key outside a table".into(),
+        ),
+        // An included file that does not parse is reported in it, not where it was joined.
+        ("broken.toml", format!("{BALL}radius = [1.0,\n"), "broken.toml:7:".into()),
+        ("dotted.toml", "materials.red = { colour = [1.0, 0.0, 0.0] }\n".into(), "dotted.toml:1:1: `materials`".into()),
     ];
     for (name, text, says) in cases {
         write(d, name, &text);
@@ -65,4 +87,34 @@ fn errors_name_the_included_file_and_its_own_line() {
     let e = load(d, "scene.toml").unwrap_err();
     let line = 1 + CAMERA.lines().count() + MATERIALS.lines().count() + 1;
     assert!(e.contains(&format!("scene.toml:{line}:")), "{e}");
+}
+
+#[test]
+fn a_file_included_twice_is_named_and_the_count_is_limited() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // A diamond: two parts both include the same file, which is read once.
+    write(d, "shared.toml", MATERIALS);
+    write(d, "a.toml", "include = [\"shared.toml\"]\n");
+    write(d, "b.toml", "include = [\"shared.toml\"]\n");
+    write(d, "scene.toml", &format!("include = [\"a.toml\", \"b.toml\"]\n{CAMERA}{LIGHTS}{BALL}"));
+    let e = load(d, "scene.toml").unwrap_err();
+    assert!(e.contains("b.toml:1:12: `shared.toml` is included already"), "{e}");
+    // At most 64 included files, the scene not counted, read from disk or given as text.
+    let names: Vec<String> = (0..65).map(|k| format!("p{k}.toml")).collect();
+    for name in &names {
+        write(d, name, "");
+    }
+    let list = |n: usize| names[..n].iter().map(|s| format!("\"{s}\"")).collect::<Vec<_>>().join(", ");
+    for (n, fine) in [(64, true), (65, false)] {
+        let text = format!("include = [{}]\n{CAMERA}{MATERIALS}{LIGHTS}{BALL}", list(n));
+        write(d, "many.toml", &text);
+        let in_memory = Scene::parse(&text, d.join("nowhere.toml").to_str().unwrap()).map_err(|e| e.to_string());
+        for result in [load(d, "many.toml"), in_memory] {
+            match result {
+                Ok(_) => assert!(fine, "{n} files read"),
+                Err(e) => assert!(!fine && e.contains("more than 64 included files"), "{n}: {e}"),
+            }
+        }
+    }
 }

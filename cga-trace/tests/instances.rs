@@ -84,6 +84,32 @@ fn an_instances_material_and_name_replace_the_objects() {
 }
 
 #[test]
+fn an_instance_of_an_instance_wears_the_nearest_material_and_only_its_own_label() {
+    let text = format!(
+        "{HEAD}[[objects]]\nname = \"ball\"\nlabel = \"the ball\"\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n\
+         [[objects]]\ntype = \"instance\"\nof = \"ball\"\nname = \"gold ball\"\nmaterial = \"gold\"\ntransform = [{{ translate = [3.0, 0.0, 0.0] }}]\n\
+         [[objects]]\ntype = \"instance\"\nof = \"gold ball\"\nname = \"moved\"\nlabel = \"a copy\"\ntransform = [{{ translate = [0.0, 3.0, 0.0] }}]\n"
+    );
+    let scene = parse(&text).unwrap();
+    let colours: Vec<[f64; 3]> = scene.objects[1..].iter().map(|o| o.material.colour).collect();
+    assert_eq!(colours, [[1.0, 0.0, 0.0], [0.9, 0.7, 0.2], [0.9, 0.7, 0.2]]);
+    // A label names one thing: the copy without its own has none.
+    let labels: Vec<&str> = scene.labels.iter().map(|l| l.text.as_str()).collect();
+    assert_eq!(labels, ["the ball", "a copy"]);
+}
+
+#[test]
+fn an_instances_own_label_is_reported_where_the_instance_gives_it() {
+    // The plane is unbounded: a label on its copy is refused at the copy's `label` line, even
+    // where the copied object's text is shorter or holds characters of several bytes there.
+    let plane = "[[objects]]\nname = \"ground ✓✓✓\"\ntype = \"plane\"\npoint = [0.0, 0.0, -3.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = \"gold\"\n";
+    let copy = "[[objects]]\ntype = \"instance\"\nof = \"ground ✓✓✓\"\nname = \"second ground, further down the scene\"\ntransform = [{ translate = [0.0, 0.0, -1.0] }]\nlabel = \"ground\"\n";
+    let e = parse(&format!("{HEAD}{plane}{copy}")).unwrap_err();
+    let line = HEAD.lines().count() + plane.lines().count() + 6;
+    assert!(e.starts_with(&format!("scene.toml:{line}:")) && e.contains("label"), "{e}");
+}
+
+#[test]
 fn instances_name_earlier_objects_and_errors_say_where() {
     let ball = "[[objects]]\nname = \"ball\"\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = { colour = [1.0, 0.0, 0.0] }\n";
     let copy = |of: &str, extra: &str| format!("[[objects]]\ntype = \"instance\"\nof = \"{of}\"\n{extra}");

@@ -65,6 +65,29 @@ fn an_image_wraps_a_sphere_by_longitude_and_colatitude() {
 }
 
 #[test]
+fn a_spheres_texture_turns_with_its_motor() {
+    // Turned a quarter turn about z (and moved), the sphere shows at its nearest point what
+    // the unturned one shows a quarter turn on: longitude −90° − 90°, u = 0 (the seam's
+    // neighbour: sampled at u = 1 − ε and 0 + ε alike by the wrapping lookup).
+    let sphere = |transform: &str| {
+        parse(&format!(
+            "[camera]\nposition = [2.0, -10.0, 0.0]\nlook_at = [2.0, 0.0, 0.0]\nx_max = 0.5\nwidth = 41\nheight = 41\n\
+             [render]\nambient = 1.0\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\n{transform}\
+             material = {{ colour = [1.0, 1.0, 1.0], {FLAT}, texture = {{ image = \"maps/grid.png\" }} }}\n"
+        ))
+    };
+    let turned = sphere(
+        "transform = [{ rotate = { axis = [0.0, 0.0, 1.0], degrees = 90.0 } }, { translate = [2.0, 0.0, 0.0] }]\n",
+    );
+    let picture = Picture::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/maps/grid.png")).unwrap();
+    let got = pixel(&render(&turned), 20, 20);
+    assert!(close(got, picture.at(0.0, 0.5), 1e-9), "{got:?} vs {:?}", picture.at(0.0, 0.5));
+    // Moved only, it shows what it shows at the origin.
+    let moved = pixel(&render(&sphere("transform = [{ translate = [2.0, 0.0, 0.0] }]\n")), 20, 20);
+    assert!(close(moved, picture.at(0.25, 0.5), 1e-9), "{moved:?} vs {:?}", picture.at(0.25, 0.5));
+}
+
+#[test]
 fn stripes_along_alpha_split_an_evolved_cylinder_at_its_middle() {
     // Two coaxial circles of radius 1 at heights −1 and 1: α = (z + 1)/2 (the circle
     // family of a cylinder), so stripes of 2 per unit of α change colour at z = 0.

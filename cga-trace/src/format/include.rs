@@ -1,12 +1,12 @@
 //! `include = ["parts.toml", …]`: files whose `[materials.NAME]`, `[[lights]]` and
 //! `[[objects]]` join the scene's, read in the order listed (an included file may include
-//! others), each once. The files are joined into one text, every `include` line blanked, so
+//! others), each once; their objects come before the including file's own. The files are joined into one text, every `include` line blanked, so
 //! that the scene is read as one file; each place in it maps back to its own file, line and
 //! column for errors. Names in `include` (and the images and meshes any file names) are
 //! relative to the scene file's folder, as POV-Ray's `#include` reads from its own.
 
 use super::sections;
-use crate::limits::{MAX_FILE_BYTES, MAX_INCLUDES};
+use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_INCLUDES};
 use crate::scene::{SceneError, line_column};
 use std::io::Read;
 use std::ops::Range;
@@ -16,18 +16,34 @@ use std::path::{Path, PathBuf};
 pub(crate) struct Joined {
     /// The files, one after another (each on its own lines), `include` lines blanked.
     pub text: String,
-    /// `(where it starts in `text`, its name)` for each file, in order.
+    /// `(where it starts in `text`, its name)` for each file, in the order joined: a file,
+    /// then the files it includes.
     files: Vec<(usize, String)>,
+    /// Each file's place in the order its objects are read: the files it includes first
+    /// (in the order listed), then its own.
+    rank: Vec<usize>,
 }
 
 impl Joined {
+    /// The index in [`Joined::files`] of the file holding `offset`.
+    fn file_at(&self, offset: usize) -> usize {
+        self.files.partition_point(|&(start, _)| start <= offset).saturating_sub(1)
+    }
+
     /// The file, 1-based line and column of `offset` in [`Joined::text`].
     pub(crate) fn locate(&self, offset: usize) -> (String, usize, usize) {
-        let k = self.files.partition_point(|&(start, _)| start <= offset).saturating_sub(1);
+        let k = self.file_at(offset);
         let (start, file) = &self.files[k];
         let end = self.files.get(k + 1).map_or(self.text.len(), |&(next, _)| next);
         let (line, column) = line_column(&self.text[*start..end], offset - start);
         (file.clone(), line, column)
+    }
+
+    /// `objects` (sections of [`Joined::text`]) in reading order: an included file's
+    /// objects before the including file's own, so that a scene can instance the templates
+    /// of the files it includes.
+    pub(crate) fn reading_order(&self, objects: &mut [Range<usize>]) {
+        objects.sort_by_key(|r| self.rank[self.file_at(r.start)]);
     }
 }
 
@@ -40,64 +56,124 @@ fn at(file: &str, text: &str, offset: usize, message: String) -> SceneError {
 /// `text` (the scene file `file`) with the files it includes.
 pub(crate) fn join(text: &str, file: &str) -> Result<Joined, SceneError> {
     let folder = Path::new(file).parent().unwrap_or(Path::new("")).to_path_buf();
-    let mut joined = Joined { text: String::new(), files: Vec::new() };
-    let mut read = std::fs::canonicalize(file).into_iter().collect();
-    add(&mut joined, text.to_string(), file, &folder, &mut read, true)?;
+    let mut joined = Joined { text: String::new(), files: Vec::new(), rank: Vec::new() };
+    let mut reader = Reader { folder, read: Vec::new(), ranked: 0 };
+    let scene = std::fs::canonicalize(file).ok();
+    reader.add(&mut joined, text.to_string(), file, scene)?;
     Ok(joined)
 }
 
-/// One file's text, blanked, then the files it includes, in order.
-fn add(
-    joined: &mut Joined,
-    mut text: String,
-    file: &str,
-    folder: &Path,
-    read: &mut Vec<PathBuf>,
-    scene: bool,
-) -> Result<(), SceneError> {
-    let (list, blank) = includes(&text, file, scene)?;
-    // Spaces keep every other byte, and so every line and column, where it was.
-    let mut bytes = std::mem::take(&mut text).into_bytes();
-    bytes[blank].iter_mut().filter(|b| **b != b'\n').for_each(|b| *b = b' ');
-    let text = String::from_utf8(bytes).expect("ASCII put over whole characters");
-    joined.files.push((joined.text.len(), file.to_string()));
-    joined.text.push_str(&text);
-    joined.text.push('\n');
-    for (name, offset) in list {
-        let path = folder.join(&name);
-        let here = |message| at(file, &text, offset, message);
-        let canonical = std::fs::canonicalize(&path).map_err(|e| here(format!("include `{name}`: {e}")))?;
-        if read.contains(&canonical) {
-            return Err(here(format!("`{name}` is read already: each file is included once (no cycles)")));
+/// What joining has read so far.
+struct Reader {
+    /// The scene's folder, which every name is relative to.
+    folder: PathBuf,
+    /// Each file read (canonical path), and whether it is still being read (its includes
+    /// not all joined: naming it again is a cycle).
+    read: Vec<(PathBuf, bool)>,
+    /// How many files have their place in the reading order.
+    ranked: usize,
+}
+
+impl Reader {
+    /// One file's text, blanked, then the files it includes, in order.
+    fn add(
+        &mut self,
+        joined: &mut Joined,
+        text: String,
+        file: &str,
+        canonical: Option<PathBuf>,
+    ) -> Result<(), SceneError> {
+        let scene = joined.files.is_empty();
+        let (list, blank) = includes(&text, file, scene)?;
+        // Spaces keep every other byte, and so every line and column, where it was.
+        let mut bytes = text.into_bytes();
+        bytes[blank].iter_mut().filter(|b| **b != b'\n').for_each(|b| *b = b' ');
+        let text = String::from_utf8(bytes).expect("ASCII put over whole characters");
+        let index = joined.files.len();
+        joined.files.push((joined.text.len(), file.to_string()));
+        joined.rank.push(usize::MAX);
+        joined.text.push_str(&text);
+        joined.text.push('\n');
+        let me = canonical.map(|c| {
+            self.read.push((c, true));
+            self.read.len() - 1
+        });
+        for (name, offset) in list {
+            let here = |message| at(file, &text, offset, message);
+            let (canonical, included) = self.open(joined, &name).map_err(here)?;
+            self.add(joined, included, &self.folder.join(&name).display().to_string(), Some(canonical))?;
         }
-        if read.len() > MAX_INCLUDES {
-            return Err(here(format!("more than {MAX_INCLUDES} included files")));
+        if let Some(me) = me {
+            self.read[me].1 = false;
         }
-        read.push(canonical);
+        joined.rank[index] = self.ranked;
+        self.ranked += 1;
+        Ok(())
+    }
+
+    /// The file `name` includes, read (a leading byte-order mark dropped), and its canonical
+    /// path; refused if read before, past [`MAX_INCLUDES`] files or [`MAX_FILE_BYTES`] in all.
+    fn open(&self, joined: &Joined, name: &str) -> Result<(PathBuf, String), String> {
+        let path = self.folder.join(name);
+        let canonical = std::fs::canonicalize(&path).map_err(|e| format!("include `{name}`: {e}"))?;
+        if let Some((_, open)) = self.read.iter().find(|(c, _)| *c == canonical) {
+            return Err(if *open {
+                format!("`{name}` is being read: including it here is a cycle")
+            } else {
+                format!("`{name}` is included already: each file is read once (include it in one place)")
+            });
+        }
+        // The scene is the first file: the rest are included.
+        if joined.files.len() > MAX_INCLUDES {
+            return Err(format!("more than {MAX_INCLUDES} included files"));
+        }
         let left = MAX_FILE_BYTES.saturating_sub(joined.text.len() as u64);
         let mut bytes = Vec::new();
         std::fs::File::open(&path)
             .and_then(|f| f.take(left + 1).read_to_end(&mut bytes))
-            .map_err(|e| here(format!("include `{name}`: {e}")))?;
+            .map_err(|e| format!("include `{name}`: {e}"))?;
         if bytes.len() as u64 > left {
-            return Err(here(format!("the scene's files hold more than the limit of {MAX_FILE_BYTES} bytes")));
+            return Err(format!("the scene's files hold more than the limit of {MAX_FILE_BYTES} bytes"));
         }
-        let included = String::from_utf8(bytes).map_err(|_| here(format!("`{name}` is not UTF-8 text")))?;
-        add(joined, included, &path.display().to_string(), folder, read, false)?;
+        let text = String::from_utf8(bytes).map_err(|_| format!("`{name}` is not UTF-8 text"))?;
+        let text = text.strip_prefix('\u{feff}').map(str::to_string).unwrap_or(text);
+        Ok((canonical, text))
     }
-    Ok(())
 }
 
 /// Names of included files, each with its offset in the including file.
 type Names = Vec<(String, usize)>;
 
 /// The files `text` includes (with the offset of each name) and the span of its `include`
-/// line; in an included file, anything but `include`, `materials`, `lights` and `objects`
-/// is an error. A file that does not parse is left for the scene's reader to report.
+/// line. The scene file's own mistakes are left for the scene's reader to report; an
+/// included file must parse alone, give tables only (`[materials.NAME]`, `[[lights]]`,
+/// `[[objects]]`: a key-value outside them would join the including file's last table) and
+/// `include`.
 fn includes(text: &str, file: &str, scene: bool) -> Result<(Names, Range<usize>), SceneError> {
     let none = Ok((Vec::new(), 0..0));
-    let Ok(sections) = sections::split(text) else { return none };
-    let Ok(document) = toml::de::DeTable::parse(&sections.rest) else { return none };
+    let sections = match sections::split(text) {
+        Ok(s) => s,
+        Err(_) if scene => return none,
+        Err(m) => return Err(at(file, text, m.at, m.message)),
+    };
+    let tokens = sections::significant_tokens(&sections.rest);
+    if tokens > MAX_DOCUMENT_TOKENS {
+        if scene {
+            return none;
+        }
+        let message = format!(
+            "the file outside its `[[objects]]` tables holds {tokens} values, keys and brackets, more than the {MAX_DOCUMENT_TOKENS} read at once"
+        );
+        return Err(at(file, text, 0, message));
+    }
+    let document = match toml::de::DeTable::parse(&sections.rest) {
+        Ok(d) => d,
+        Err(_) if scene => return none,
+        Err(e) => {
+            let offset = sections.file_offset(e.span().map_or(0, |s| s.start));
+            return Err(at(file, text, offset, e.message().trim().to_string()));
+        }
+    };
     let mut list = Vec::new();
     let mut blank = 0..0;
     for (key, value) in document.get_ref() {
@@ -116,15 +192,21 @@ fn includes(text: &str, file: &str, scene: bool) -> Result<(Names, Range<usize>)
                 }
                 blank = offset..sections.file_offset(value.span().end);
             }
+            _ if scene => {}
+            other @ ("materials" | "lights" | "objects") if offset < sections.root_end => {
+                let message = format!(
+                    "`{other}` is given as a key outside a table: an included file is joined after another file's tables, so write it as a table (`[materials.NAME]`, `[[lights]]`, `[[objects]]`)"
+                );
+                return Err(at(file, text, offset, message));
+            }
             "materials" | "lights" | "objects" => {}
-            other if !scene => {
+            other => {
                 let message = format!(
                     "`{}` belongs in the scene file: an included file gives `[materials.NAME]`, `[[lights]]`, `[[objects]]` and `include`",
                     other.escape_debug()
                 );
                 return Err(at(file, text, offset, message));
             }
-            _ => {}
         }
     }
     Ok((list, blank))

@@ -1,7 +1,9 @@
 //! Instances: `type = "instance"` and `of = "NAME"` place a copy of an earlier named object
 //! under a further motor (`motor`, `transform` and `motion`, as any object's), applied after
-//! the object's own; `name`, `label` and `material` replace the object's where given. An
-//! object with `template = true` is only instanced, never drawn itself.
+//! the object's own; `name` and `material` replace the object's where given (an instance of
+//! an instance wears the nearest material given along the chain); a copy carries a label
+//! only where the instance gives its own, as a label names one thing. An object with
+//! `template = true` is only instanced, never drawn itself.
 
 use super::numbers::Nums;
 use super::transform::{Step, motion_at, world_motor};
@@ -38,14 +40,25 @@ impl InstanceSpec {
         })
     }
 
-    /// `original` placed as this instance: moved by `outer` after its own motor, named,
-    /// labelled and coloured by the instance where it says; never a template.
-    pub(crate) fn dress(self, mut original: ObjectSpec, outer: Option<Motor>) -> ObjectSpec {
+    /// Whether the instance gives its own label.
+    pub(crate) fn gives_label(&self) -> bool {
+        self.label.is_some()
+    }
+
+    /// `original` placed as this instance: moved by `outer` after its own motor, named by
+    /// the instance (or `NAME (instance)`), labelled only by its own `label`, in `material`
+    /// where the chain of instances gives one; never a template.
+    pub(crate) fn dress(
+        self,
+        mut original: ObjectSpec,
+        outer: Option<Motor>,
+        material: Option<Spanned<MaterialRef>>,
+    ) -> ObjectSpec {
         original.outer = outer;
         original.template = None;
         original.name = Some(self.name.unwrap_or_else(|| format!("{} (instance)", self.of.get_ref())));
         original.label = self.label;
-        if let Some(m) = self.material {
+        if let Some(m) = material {
             original.material = m;
         }
         original

@@ -982,7 +982,8 @@ impl ObjectSpec {
                     }
                     _ => return Err(form()),
                 };
-                Arc::new(SphereShape::new(place.point(c)?, place.length(r))?)
+                let axes = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]].map(|a| place.direction(a));
+                Arc::new(SphereShape::new(place.point(c)?, place.length(r))?.with_axes(axes))
             }
             Kind::Plane => {
                 let (p, n) = match (point, normal, &self.points) {
@@ -1099,8 +1100,17 @@ impl ObjectSpec {
         }
     }
 
+    /// Whether the object is a mesh whose triangles close a solid.
+    fn is_closed_mesh(&self, assets: &Assets) -> Result<bool, Invalid> {
+        match (self.kind, &self.file) {
+            (Kind::Mesh, Some(file)) => Ok(assets.mesh(file)?.is_closed()),
+            _ => Ok(false),
+        }
+    }
+
     /// A mesh's triangles, scaled, moved by `place`, with the file's normals (turned) and
-    /// texture coordinates. Triangles without area are left out: no ray sees them.
+    /// texture coordinates. Triangles without area (in the file, or once placed) are left
+    /// out: no ray sees them; a mesh left with none is refused.
     fn mesh(&self, place: &Placement, assets: &Assets) -> Result<Vec<Arc<dyn Shape>>, Invalid> {
         let file = self.file.as_ref().ok_or(Invalid::Form(Kind::Mesh.takes().1))?;
         let mesh = assets.mesh(file)?;
@@ -1122,10 +1132,17 @@ impl ObjectSpec {
                 normals: mesh.normals.as_ref().filter(|_| smooth).map(|n| t.map(|i| place.direction(n[corner(i)]))),
                 uvs: mesh.uvs.as_ref().map(|uv| t.map(|i| uv[corner(i)])),
             };
-            let triangle = TriangleShape::new([place.point(a)?, place.point(b)?, place.point(c)?])?;
+            // A sliver that placing far out makes flat is lost to rounding: no ray sees it.
+            let Ok(triangle) = TriangleShape::new([place.point(a)?, place.point(b)?, place.point(c)?]) else {
+                continue;
+            };
             shapes.push(Arc::new(
                 triangle.with_shading(shading).map_err(|e| Invalid::at("file", file.span(), e.into()))?,
             ));
+        }
+        if shapes.is_empty() && !mesh.triangles.is_empty() {
+            let why = "no triangle of the mesh has an area f64 can hold at this scale and place";
+            return Err(Invalid::at("file", file.span(), Invalid::Value(why)));
         }
         Ok(shapes)
     }
@@ -1245,7 +1262,9 @@ pub(crate) fn build_object(
     let built = assets.resolve(&spec.material).and_then(|(material, texture)| {
         let (shapes, anchor) = spec.shapes(method, frame, marks, assets)?;
         let label = spec.label(&shapes, anchor, material.colour)?;
-        let object = |shape| Object { name: name.clone(), shape, material, texture: texture.clone() };
+        // A closed glass mesh is one solid: light enters at one triangle and leaves at another.
+        let solid = (material.dielectric() && spec.is_closed_mesh(assets)?).then_some(index);
+        let object = |shape| Object { name: name.clone(), shape, material, texture: texture.clone(), solid };
         let objects = shapes.into_iter().map(object).collect();
         Ok((objects, label))
     });

@@ -20,6 +20,9 @@ pub(crate) struct Sections {
     /// Where the outermost bracket or brace left open at the end of the file opened, if one
     /// was (everything after it is inside a value, so no header is seen there).
     pub unclosed: Option<usize>,
+    /// Where the file's first table header starts (its end, if it has none): the root
+    /// table's key-values lie before it.
+    pub root_end: usize,
 }
 
 /// A header this reader cannot place: where it is and why.
@@ -55,6 +58,7 @@ pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     let mut objects: Vec<Range<usize>> = Vec::new();
     let mut open: Option<usize> = None;
     let (headers, unclosed) = headers(text);
+    let root_end = headers.first().map_or(text.len(), |h| h.start);
     for header in headers {
         if header.objects && !(header.array && header.only) && open.is_none() && !objects.is_empty() {
             let message = "a table under `objects` after another table: write it right after the `[[objects]]` table it belongs to (each object's tables are read together)".into();
@@ -85,7 +89,7 @@ pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
         rest.push_str(&text[from..range.start]);
         from = range.end;
     }
-    Ok(Sections { rest, pieces, objects, unclosed })
+    Ok(Sections { rest, pieces, objects, unclosed, root_end })
 }
 
 /// How many tokens of `text` are not whitespace, newlines or comments: what parsing it as

@@ -2,7 +2,8 @@
 //! splits the ray into a mirror ray of weight `F` and a ray refracted by Snell's law of
 //! weight `1 − F` (all of it reflected past the critical angle); inside, light is absorbed
 //! by Beer–Lambert's `exp(−a d)`. A flat dielectric (disk, plane, triangle) is a thin sheet:
-//! the transmitted ray goes on undeviated.
+//! the transmitted ray goes on undeviated; but the triangles of a closed mesh bound one
+//! solid, which a ray enters at one and leaves at another.
 //!
 //! Rays that meet a dielectric branch, so they are followed one at a time on a stack of
 //! weighted rays — `I = Σ w_i I_local,i` over the hits of the tree, each ray's weight the
@@ -13,16 +14,18 @@
 
 use super::{RayCounts, Renderer, SampleKey};
 use crate::backend::Backend;
+use crate::object::Object;
 use crate::ray::{Ray, leaving_origin, mirror, offset};
 use crate::shapes::ShadingPoint;
 use cga_core::euclid::{E3, add, dot, scale};
 use smallvec::SmallVec;
+use std::collections::HashMap;
 
 /// The weight below which a branch of a dielectric's tree of rays is dropped: 1/256, under
 /// half a level of an 8-bit picture.
 pub const CUTOFF: f64 = 1.0 / 256.0;
 
-/// A ray still to follow: its weight per channel, its bounces so far, and the dielectric it
+/// A ray still to follow: its weight per channel, its bounces so far, and the medium it
 /// travels inside (`None`: outside every one).
 struct Pending<C> {
     ray: Ray<C>,
@@ -112,8 +115,9 @@ impl<B: Backend> Renderer<'_, B> {
     ) {
         let objects = &self.scene.objects;
         let ior = objects[k].material.ior;
-        let outside = p.inside.filter(|&m| m != k).map_or(1.0, |m| objects[m].material.ior);
-        let (leaving, flat) = (p.inside == Some(k), self.flat[k]);
+        let here = self.medium[k];
+        let leaving = here.is_some() && p.inside == here;
+        let outside = p.inside.filter(|&m| Some(m) != here).map_or(1.0, |m| objects[m].material.ior);
         let (n1, n2) = if leaving { (ior, 1.0) } else { (outside, ior) };
         let (f, refracted) = fresnel(p.ray.dir, hit.normal, n1, n2);
         let error = self.errors[k];
@@ -122,15 +126,26 @@ impl<B: Backend> Renderer<'_, B> {
         let depth = p.depth + 1;
         push(stack, Pending { ray: B::ray(origin, r), weight: p.weight.map(|w| w * f), depth, inside: p.inside });
         let Some(t) = refracted else { return };
-        let (t, inside) = match (flat, leaving) {
-            (true, _) => (p.ray.dir, p.inside),
-            (false, true) => (t, None),
-            (false, false) => (t, Some(k)),
+        let (t, inside) = match (here, leaving) {
+            (None, _) => (p.ray.dir, p.inside),
+            (Some(_), true) => (t, None),
+            (Some(m), false) => (t, Some(m)),
         };
         let start = leaving_origin(hit.point, hit.normal, dot(hit.normal, t), offset(hit.point, p.ray.origin, error));
         cast.reflection += 1;
         push(stack, Pending { ray: B::ray(start, t), weight: p.weight.map(|w| w * (1.0 - f)), depth, inside });
     }
+}
+
+/// Each object's medium (see [`Renderer::medium`]): its solid's first object, or `None` for
+/// a thin sheet.
+pub(super) fn media(objects: &[Object]) -> Vec<Option<usize>> {
+    let mut first: HashMap<usize, usize> = HashMap::new();
+    let medium = |(k, o): (usize, &Object)| match o.solid {
+        Some(s) => Some(*first.entry(s).or_insert(k)),
+        None => (!o.shape.flat()).then_some(k),
+    };
+    objects.iter().enumerate().map(medium).collect()
 }
 
 /// `total += w c`.

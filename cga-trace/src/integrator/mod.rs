@@ -56,6 +56,10 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     pub(crate) bvh: Option<Bvh>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
     pub(crate) flat: Vec<bool>,
+    /// For each object, the solid it bounds as a dielectric, named by its first object (itself,
+    /// or a closed mesh's first triangle); `None` for a thin sheet (flat, and no part of a
+    /// closed solid), which light passes undeviated.
+    pub(crate) medium: Vec<Option<usize>>,
     /// Which objects are dielectrics: shadow rays pass them (as POV-Ray's through clear
     /// glass), caustics not being traced.
     pub(crate) clear: Vec<bool>,
@@ -90,6 +94,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
+        let medium = glass::media(&scene.objects);
         let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
         let textured = scene.objects.iter().any(|o| o.texture.is_some());
         let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
@@ -100,6 +105,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             bounds,
             bvh,
             flat,
+            medium,
             clear,
             textured,
             errors,

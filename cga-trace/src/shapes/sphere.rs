@@ -15,12 +15,21 @@ pub struct SphereShape {
     pub centre: E3,
     /// Radius.
     pub radius: f64,
+    /// Its own x, y and z axes (orthonormal): a texture's longitude is measured about z from
+    /// x, so that the texture turns with the sphere.
+    pub axes: [E3; 3],
 }
 
 impl SphereShape {
-    /// The sphere of `centre` and `radius`.
+    /// The sphere of `centre` and `radius`, its axes the frame's.
     pub fn new(centre: E3, radius: f64) -> Result<Self, GeometryError> {
-        Ok(SphereShape { sphere: Sphere::from_centre_radius(centre, radius)?, centre, radius })
+        let axes = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        Ok(SphereShape { sphere: Sphere::from_centre_radius(centre, radius)?, centre, radius, axes })
+    }
+
+    /// The sphere with its own `axes` (the frame's turned by the object's motor).
+    pub fn with_axes(self, axes: [E3; 3]) -> Self {
+        SphereShape { axes, ..self }
     }
 }
 
@@ -74,10 +83,11 @@ pub(crate) struct SphereCrossing<T: Select> {
 }
 
 impl Shape for SphereShape {
-    /// Longitude and colatitude about the z axis as fractions: `u = ½ + atan2(y, x)/2π`,
-    /// `v = acos(z/r)/π` (0 at the top), `(x, y, z)` the hit from the centre.
+    /// Longitude and colatitude about its own z axis as fractions: `u = ½ + atan2(y, x)/2π`,
+    /// `v = acos(z/r)/π` (0 at the top), `(x, y, z)` the hit from the centre on its own axes.
     fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
-        let [x, y, z] = sub(c.point, self.centre);
+        let d = sub(c.point, self.centre);
+        let [x, y, z] = self.axes.map(|a| dot(d, a));
         let r = (x * x + y * y + z * z).sqrt();
         let u = 0.5 + y.atan2(x) / std::f64::consts::TAU;
         Some(([u, (z / r).clamp(-1.0, 1.0).acos() / std::f64::consts::PI], Unit::Fraction))

@@ -274,22 +274,30 @@ pub fn table(name: &str) -> Table {
 }
 
 /// A shipped scene's included files written into it, as the renderer joins them (their
-/// materials added, their lights and objects after the scene's own), so that a similarity
-/// moves them too.
+/// materials added, their lights after the scene's own, their objects before), so that a
+/// similarity moves them too.
 fn include(table: &mut Table) {
     let Some(Value::Array(files)) = table.remove("include") else { return };
+    let mut objects = Vec::new();
     for file in files {
         let path = format!("{}/scenes/{}", env!("CARGO_MANIFEST_DIR"), file.as_str().expect("a file name"));
         let mut part: Table = std::fs::read_to_string(path).unwrap().parse().unwrap();
         include(&mut part);
         for (key, value) in part {
-            match (table.get_mut(&key), value) {
-                (Some(Value::Table(into)), Value::Table(from)) => into.extend(from),
-                (Some(Value::Array(into)), Value::Array(from)) => into.extend(from),
-                (None, value) => drop(table.insert(key, value)),
-                (_, _) => panic!("`{key}` in an included file and the scene differ in kind"),
+            match (key.as_str(), table.get_mut(&key), value) {
+                ("objects", _, Value::Array(from)) => objects.extend(from),
+                (_, Some(Value::Table(into)), Value::Table(from)) => into.extend(from),
+                (_, Some(Value::Array(into)), Value::Array(from)) => into.extend(from),
+                (_, None, value) => drop(table.insert(key, value)),
+                (_, _, _) => panic!("`{key}` in an included file and the scene differ in kind"),
             }
         }
+    }
+    if let Some(Value::Array(own)) = table.remove("objects") {
+        objects.extend(own);
+    }
+    if !objects.is_empty() {
+        table.insert("objects".into(), Value::Array(objects));
     }
 }
 
