@@ -49,13 +49,26 @@ impl TriangleMesh {
         Ok(mesh)
     }
 
-    /// Whether the triangles close a solid: every edge shared by exactly two of them.
+    /// Whether the triangles close a solid: every edge, between vertices at the same place
+    /// (a file repeats a corner for each normal or texture coordinate it has there), shared by
+    /// exactly two triangles.
     pub fn is_closed(&self) -> bool {
-        let mut edges: std::collections::HashMap<(u32, u32), u32> = std::collections::HashMap::new();
+        use std::collections::HashMap;
+        let mut places: HashMap<[u64; 3], u32> = HashMap::new();
+        let place: Vec<u32> = self
+            .positions
+            .iter()
+            .enumerate()
+            .map(|(k, p)| *places.entry(p.map(|x| (x + 0.0).to_bits())).or_insert(k as u32))
+            .collect();
+        let mut edges: HashMap<(u32, u32), u32> = HashMap::new();
         for t in &self.triangles {
+            let t = t.map(|k| place[k as usize]);
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);
-                *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+                if a != b {
+                    *edges.entry((a.min(b), a.max(b))).or_default() += 1;
+                }
             }
         }
         !edges.is_empty() && edges.values().all(|&n| n == 2)

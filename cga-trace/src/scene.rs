@@ -178,7 +178,7 @@ impl Scene {
                 toml::de::DeArray::new()
             }
         };
-        if let (Some(first), false) = (sections.objects.first(), inline.is_empty()) {
+        if let (Some(first), false) = (sections.objects.iter().min_by_key(|r| r.start), inline.is_empty()) {
             let (file, line, column) = at(first.start);
             let message = "duplicate key `objects`: given as an array and as `[[objects]]` tables".into();
             return Err(SceneError::Syntax { file, line, column, message });

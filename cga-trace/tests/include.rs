@@ -71,8 +71,12 @@ fn errors_name_the_included_file_and_its_own_line() {
             format!("lights = []\n{BALL}"),
             "keys.toml:1:1: `lights` is given as a key outside a table".into(),
         ),
-        // An included file that does not parse is reported in it, not where it was joined.
-        ("broken.toml", format!("{BALL}radius = [1.0,\n"), "broken.toml:7:".into()),
+        // A table that would add to the including file's last object.
+        (
+            "adds.toml",
+            "[objects.material]\ncolour = [1.0, 0.0, 0.0]\n".into(),
+            "adds.toml:1:1: a table under `objects` away from its object".into(),
+        ),
         ("dotted.toml", "materials.red = { colour = [1.0, 0.0, 0.0] }\n".into(), "dotted.toml:1:1: `materials`".into()),
     ];
     for (name, text, says) in cases {
@@ -117,4 +121,17 @@ fn a_file_included_twice_is_named_and_the_count_is_limited() {
             }
         }
     }
+}
+
+#[test]
+fn an_included_file_that_does_not_parse_is_reported_in_it() {
+    // The bracket left open would swallow the next file once joined: the error is the
+    // broken file's own, at its own line, not one found in the file after it.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write(d, "broken.toml", "[materials.red]\ncolour = [1.0, 0.0,\n");
+    write(d, "after.toml", LIGHTS);
+    write(d, "scene.toml", &format!("include = [\"broken.toml\", \"after.toml\"]\n{CAMERA}{MATERIALS}{BALL}"));
+    let e = load(d, "scene.toml").unwrap_err();
+    assert!(e.contains("broken.toml:") && !e.contains("after.toml"), "{e}");
 }

@@ -1110,7 +1110,7 @@ impl ObjectSpec {
 
     /// A mesh's triangles, scaled, moved by `place`, with the file's normals (turned) and
     /// texture coordinates. Triangles without area (in the file, or once placed) are left
-    /// out: no ray sees them; a mesh left with none is refused.
+    /// out: no ray sees them; a mesh left with none (or with no triangles) is refused.
     fn mesh(&self, place: &Placement, assets: &Assets) -> Result<Vec<Arc<dyn Shape>>, Invalid> {
         let file = self.file.as_ref().ok_or(Invalid::Form(Kind::Mesh.takes().1))?;
         let mesh = assets.mesh(file)?;
@@ -1122,9 +1122,11 @@ impl ObjectSpec {
         }
         let smooth = self.smooth.as_ref().is_none_or(|s| *s.get_ref());
         let mut shapes: Vec<Arc<dyn Shape>> = Vec::with_capacity(mesh.triangles.len());
+        let mut flat_in_file = 0;
         for t in &mesh.triangles {
             let [a, b, c] = t.map(|i| mesh.positions[i as usize].map(|x| x * s));
             if TriangleShape::new([a, b, c]).is_err() {
+                flat_in_file += 1;
                 continue;
             }
             let corner = |i: u32| i as usize;
@@ -1140,8 +1142,12 @@ impl ObjectSpec {
                 triangle.with_shading(shading).map_err(|e| Invalid::at("file", file.span(), e.into()))?,
             ));
         }
-        if shapes.is_empty() && !mesh.triangles.is_empty() {
-            let why = "no triangle of the mesh has an area f64 can hold at this scale and place";
+        if shapes.is_empty() {
+            let why = if flat_in_file == mesh.triangles.len() {
+                "no triangle of the mesh has an area: nothing to see"
+            } else {
+                "no triangle of the mesh has an area f64 can hold at this scale and place"
+            };
             return Err(Invalid::at("file", file.span(), Invalid::Value(why)));
         }
         Ok(shapes)

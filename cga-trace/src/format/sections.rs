@@ -51,8 +51,8 @@ struct Header {
     only: bool,
 }
 
-/// The sections of `text` ([`Sections`]); `Err` for a table under `objects` written after
-/// another table, away from its object (TOML allows it; this reader keeps each object's
+/// The sections of `text` ([`Sections`]); `Err` for a table under `objects` written away
+/// from its object (after another table, or before any `[[objects]]`) (TOML allows it; this reader keeps each object's
 /// tables together).
 pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     let mut objects: Vec<Range<usize>> = Vec::new();
@@ -60,8 +60,8 @@ pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     let (headers, unclosed) = headers(text);
     let root_end = headers.first().map_or(text.len(), |h| h.start);
     for header in headers {
-        if header.objects && !(header.array && header.only) && open.is_none() && !objects.is_empty() {
-            let message = "a table under `objects` after another table: write it right after the `[[objects]]` table it belongs to (each object's tables are read together)".into();
+        if header.objects && !(header.array && header.only) && open.is_none() {
+            let message = "a table under `objects` away from its object: write it right after the `[[objects]]` table it belongs to (each object's tables are read together; an included file's cannot add to another file's object)".into();
             return Err(Misplaced { at: header.start, message });
         }
         // An `[[objects]]` header opens a section; a header under `objects` stays in it;
@@ -179,6 +179,9 @@ mod tests {
         // A sub-table away from its object is refused where it is; an open bracket is found.
         let away = "[[objects]]\ntype = \"sphere\"\n[[lights]]\n[objects.material]\n";
         assert_eq!(split(away).err().map(|m| m.at), away.find("[objects.material]"));
+        // Before any object, too: it would add to another file's last object once joined.
+        let first = "[objects.material]\ncolour = [1.0, 0.0, 0.0]\n[[objects]]\n";
+        assert_eq!(split(first).err().map(|m| m.at), Some(0));
         let open = "[camera]\nx = [1,\n[[objects]]\n";
         assert_eq!(split(open).ok().unwrap().unclosed, open.find("[1"));
     }
