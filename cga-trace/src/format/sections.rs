@@ -60,7 +60,9 @@ pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     let (headers, unclosed) = headers(text);
     let root_end = headers.first().map_or(text.len(), |h| h.start);
     for header in headers {
-        if header.objects && !(header.array && header.only) && open.is_none() {
+        // (A lone `[objects]` before any object is left for the reader's own message.)
+        let away = !header.only || !objects.is_empty();
+        if header.objects && !(header.array && header.only) && open.is_none() && away {
             let message = "a table under `objects` away from its object: write it right after the `[[objects]]` table it belongs to (each object's tables are read together; an included file's cannot add to another file's object)".into();
             return Err(Misplaced { at: header.start, message });
         }
