@@ -4,7 +4,9 @@
 //!
 //! `cargo run --release -p cga-trace --example swept_time -- [WIDTH] [SCENE ...]`
 //!
-//! (default 640 wide, every scene with a swept surface). For profiling one scene's surface
+//! (default 640 wide, every scene with a swept surface). `SWEPT_LEAVES=n` sets the default
+//! method's cells; `SWEPT_SPLIT=1` also times the rays that hit the surface apart from those
+//! that miss it (one pass each). For profiling one scene's surface
 //! work: `perf record` on the same command; for instruction counts, which a shared machine's
 //! load does not change, `SWEPT_PASSES=1 valgrind --tool=callgrind` on it.
 
@@ -26,7 +28,11 @@ fn passes() -> usize {
 /// The swept surfaces of a scene, each with its exact methods: `(label, shape)`.
 fn swept(scene: &Scene) -> Vec<(String, Box<dyn Shape>)> {
     let mut out: Vec<(String, Box<dyn Shape>)> = Vec::new();
-    let methods = [("default", Method::default()), ("polynomial", Method::Polynomial { tolerance: 0.0 })];
+    let default = match std::env::var("SWEPT_LEAVES").ok().and_then(|l| l.parse().ok()) {
+        Some(leaves) => Method::Hybrid { leaves, tolerance: 0.0 },
+        None => Method::default(),
+    };
+    let methods = [("default", default), ("polynomial", Method::Polynomial { tolerance: 0.0 })];
     // `SWEPT_METHOD=default` times that one alone.
     let only = std::env::var("SWEPT_METHOD").ok();
     let methods: Vec<_> = methods.into_iter().filter(|(n, _)| only.as_deref().is_none_or(|o| o == *n)).collect();
@@ -72,6 +78,17 @@ fn main() {
             }
             times.sort_by(f64::total_cmp);
             let ns = times[times.len() / 2] * 1e9 / mine.len().max(1) as f64;
+            if std::env::var("SWEPT_SPLIT").is_ok() {
+                let (hit, miss): (Vec<_>, Vec<_>) =
+                    mine.iter().partition(|(ray, t)| shape.intersect(ray, 0.0, *t).is_some());
+                for (what, set) in [("hit", &hit), ("miss", &miss)] {
+                    let start = Instant::now();
+                    let found = set.iter().filter(|(ray, t)| shape.intersect(ray, 0.0, *t).is_some()).count();
+                    let seconds = start.elapsed().as_secs_f64();
+                    let per_ray = seconds * 1e9 / set.len().max(1) as f64;
+                    println!("  {what}: {} rays ({found} hit), {per_ray:.0} ns per ray, {seconds:.3} s", set.len());
+                }
+            }
             println!("| {name} | {label} | {} | {hits} | {ns:.0} |", mine.len());
         }
     }

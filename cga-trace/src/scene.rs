@@ -277,15 +277,22 @@ impl Scene {
                 Some(&placed) => {
                     let (instance, span) = instance_spec(&value, &map_of(k), &joined)?;
                     // The material of the last instance in the chain that gives one.
-                    let material = match placed.material {
-                        Some(m) if m == k => instance.material.clone(),
-                        Some(m) => instance_spec(&value_of(m)?, &map_of(m), &joined)?.0.material,
+                    let given = match placed.material {
+                        Some(m) if m == k => Some((m, instance.material.clone(), span.clone())),
+                        Some(m) => {
+                            let (giver, giver_span) = instance_spec(&value_of(m)?, &map_of(m), &joined)?;
+                            Some((m, giver.material, giver_span))
+                        }
                         None => None,
                     };
-                    if let (Some(material), Some(m)) = (&material, placed.material) {
+                    // Checked where it is given: the instance that gives it, at its own span.
+                    if let Some((m, Some(material), giver_span)) = &given {
                         let what = format!("object {}", m + 1);
-                        assets.resolve(material).map_err(|reason| invalid(&map_of(m), span.clone(), what, reason))?;
+                        assets
+                            .resolve(material)
+                            .map_err(|reason| invalid(&map_of(*m), giver_span.clone(), what, reason))?;
                     }
+                    let material = given.and_then(|(_, material, _)| material);
                     (placed.base, span, Some((instance, placed, material)))
                 }
                 None => (k, value.span(), None),
@@ -293,15 +300,15 @@ impl Scene {
             let base = if j == k { value } else { value_of(j)? };
             let mut spec =
                 ObjectSpec::deserialize(base.into_deserializer()).map_err(|e| syntax_error(&joined, &e, &map_of(j)))?;
-            // Where a field's span counts from: the object copied, or the instance giving it.
-            let (mut label_from, mut material_from) = (j, j);
+            // Where a field's span counts from: the object copied, or the instance giving it
+            // (a copy carries only its own instance's label).
+            let mut material_from = j;
             if let Some((instance, placed, material)) = dress {
-                label_from = if instance.gives_label() { k } else { j };
                 material_from = placed.material.unwrap_or(j);
                 spec = instance.dress(spec, placed.outer, material);
             }
             let owner = |reason: &Invalid| match reason.field() {
-                Some("label") => label_from,
+                Some("label") => k,
                 Some("material") => material_from,
                 _ => j,
             };

@@ -23,6 +23,8 @@ pub(crate) struct Assets {
     folder: PathBuf,
     images: Cache<Picture>,
     meshes: Cache<TriangleMesh>,
+    /// Whether each mesh read closes a solid, worked out once per file (not per instance).
+    closed: RefCell<BTreeMap<String, bool>>,
 }
 
 /// Files read so far, by the name the scene gives them.
@@ -36,6 +38,7 @@ impl Assets {
             folder: folder.to_path_buf(),
             images: Default::default(),
             meshes: Default::default(),
+            closed: Default::default(),
         }
     }
 
@@ -93,6 +96,16 @@ impl Assets {
     /// The mesh `file` names (relative to the scene's folder), read once.
     pub(crate) fn mesh(&self, file: &Spanned<String>) -> Result<Arc<TriangleMesh>, Invalid> {
         self.read(&self.meshes, ("file", "mesh files", MAX_MESH_FILES), file, TriangleMesh::load)
+    }
+
+    /// Whether the mesh in `file` closes a solid ([`TriangleMesh::is_closed`]).
+    pub(crate) fn mesh_is_closed(&self, file: &Spanned<String>) -> Result<bool, Invalid> {
+        if let Some(&closed) = self.closed.borrow().get(file.get_ref()) {
+            return Ok(closed);
+        }
+        let closed = self.mesh(file)?.is_closed();
+        self.closed.borrow_mut().insert(file.get_ref().clone(), closed);
+        Ok(closed)
     }
 
     /// `file` from `cache`, or read by `load` (errors at `field`) unless `limit` files of

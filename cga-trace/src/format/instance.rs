@@ -40,11 +40,6 @@ impl InstanceSpec {
         })
     }
 
-    /// Whether the instance gives its own label.
-    pub(crate) fn gives_label(&self) -> bool {
-        self.label.is_some()
-    }
-
     /// `original` placed as this instance: moved by `outer` after its own motor, named by
     /// the instance (or `NAME (instance)`), labelled only by its own `label`, in `material`
     /// where the chain of instances gives one; never a template.

@@ -1103,7 +1103,7 @@ impl ObjectSpec {
     /// Whether the object is a mesh whose triangles close a solid.
     fn is_closed_mesh(&self, assets: &Assets) -> Result<bool, Invalid> {
         match (self.kind, &self.file) {
-            (Kind::Mesh, Some(file)) => Ok(assets.mesh(file)?.is_closed()),
+            (Kind::Mesh, Some(file)) => assets.mesh_is_closed(file),
             _ => Ok(false),
         }
     }

@@ -194,49 +194,31 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
     /// error bound is de Casteljau's, `O(n ε) Σ |cₖ| Bₖ(t)`, at `O(n)` operations instead of
     /// `O(n²)` — two independent chains of `n` multiply-adds (root refinement runs on it).
     pub fn eval_with_slope(&self, t: T) -> (T, T) {
-        let n = self.degree;
-        let c = self.coefficients();
+        let (n, c) = (self.degree, self.coefficients());
         if n == 0 {
             return (c[0], T::zero());
         }
         let u = T::one() - t;
-        let flip = t > T::from_f64(0.5);
-        let (a, s) = if flip { (t, u / t) } else { (u, t / u) };
-        // The coefficients from the nearer end: eⱼ = cⱼ, or c_{n−j} when flipped.
-        let e = |j: usize| if flip { c[n - j] } else { c[j] };
-        let (rows, lower) = (&BINOMIALS[n], &BINOMIALS[n - 1]);
-        let (mut value, mut slope) = (e(n), e(n) - e(n - 1));
-        let mut power = T::one();
-        for j in (0..n).rev() {
-            value = value * s + T::from_f64(rows[j]) * e(j);
-            if j < n - 1 {
-                slope = slope * s + T::from_f64(lower[j]) * (e(j + 1) - e(j));
-            }
-            if j > 0 {
-                power = power * a;
-            }
+        // One loop per end (no branch per term, no copy of the coefficients).
+        if t > T::from_f64(0.5) {
+            let (value, slope) = horner(n, |j| c[n - j], u / t, t);
+            (value, -slope)
+        } else {
+            horner(n, |j| c[j], t / u, u)
         }
-        // power = aⁿ⁻¹; read from the other end the slope changes sign.
-        let slope = T::from_f64(n as f64) * slope * power;
-        (value * (power * a), if flip { -slope } else { slope })
     }
 
     /// `Σ |cₖ| Bₖ(t)`: the scale of `p(t)`'s rounding (de Casteljau's and Horner's error bound
     /// is `O(n ε)` times it), by Horner's rule from the nearer end as in
     /// [`Bernstein::eval_with_slope`].
     pub fn magnitude(&self, t: T) -> T {
-        let n = self.degree;
-        let c = self.coefficients();
+        let (n, c) = (self.degree, self.coefficients());
         let u = T::one() - t;
-        let flip = t > T::from_f64(0.5);
-        let (a, s) = if flip { (t, u / t) } else { (u, t / u) };
-        let e = |j: usize| if flip { c[n - j] } else { c[j] }.abs();
-        let (mut value, mut power) = (e(n), T::one());
-        for j in (0..n).rev() {
-            value = value * s + T::from_f64(binomial(n, j)) * e(j);
-            power = power * a;
+        if t > T::from_f64(0.5) {
+            horner_value(n, |j| c[n - j].abs(), u / t, t)
+        } else {
+            horner_value(n, |j| c[j].abs(), t / u, u)
         }
-        value * power
     }
 
     /// The same polynomial on `[0, s]` and `[s, 1]`, each reparametrised to [0, 1].
@@ -397,6 +379,37 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
                 .then(|| (T::from_f64(k as f64) + c0 / (c0 - c1)) / T::from_f64(n as f64))
         })
     }
+}
+
+/// `(p, p')` of the Bernstein coefficients `e(0) … e(n)` (degree `n ≥ 1`, read from the
+/// nearer end) at the point where `s = t/(1 − t)` (or its inverse) and `a = 1 − t` (or `t`):
+/// `p = aⁿ Σ C(n, j) eⱼ sʲ`, `p' = n aⁿ⁻¹ Σ C(n − 1, j) (eⱼ₊₁ − eⱼ) sʲ`, two independent chains
+/// of Horner's rule.
+#[inline(always)]
+fn horner<T: Real>(n: usize, e: impl Fn(usize) -> T, s: T, a: T) -> (T, T) {
+    let (rows, lower) = (&BINOMIALS[n][..n], &BINOMIALS[n - 1][..n]);
+    let mut value = e(n) * s + T::from_f64(rows[n - 1]) * e(n - 1);
+    let mut slope = e(n) - e(n - 1);
+    let mut power = T::one();
+    for j in (0..n - 1).rev() {
+        value = value * s + T::from_f64(rows[j]) * e(j);
+        slope = slope * s + T::from_f64(lower[j]) * (e(j + 1) - e(j));
+        power = power * a;
+    }
+    // power = aⁿ⁻¹.
+    (value * (power * a), T::from_f64(n as f64) * slope * power)
+}
+
+/// `p = aⁿ Σ C(n, j) eⱼ sʲ` alone, as [`horner`].
+#[inline(always)]
+fn horner_value<T: Real>(n: usize, e: impl Fn(usize) -> T, s: T, a: T) -> T {
+    let rows = &BINOMIALS[n];
+    let (mut value, mut power) = (e(n), T::one());
+    for j in (0..n).rev() {
+        value = value * s + T::from_f64(rows[j]) * e(j);
+        power = power * a;
+    }
+    value * power
 }
 
 #[cfg(test)]
