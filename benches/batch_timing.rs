@@ -13,7 +13,7 @@
 //! `cargo run --release -p cga-benches --example batch_timing`
 
 use cga_benches::kernels::{CircleCircle, MeetSphere, MotorMotor, MotorOnPoint, RotorRotor, ThreePoints};
-use cga_core::simd::{Kernel, Lanes, run, run_packed};
+use cga_core::simd::{F64x4, F64x8, Kernel, Lanes, map, run, run_packed};
 use cga_core::{Circle, Line, Motor, ProductKind, Rotor, Sandwich, Sphere, Vector, product_table};
 use std::hint::black_box;
 use std::time::Instant;
@@ -29,50 +29,84 @@ fn point(i: usize, seed: f64) -> Vector {
     cga_core::up(x)
 }
 
-fn median_ns(mut f: impl FnMut()) -> f64 {
-    let mut r: Vec<f64> = (0..ROUNDS)
-        .map(|_| {
+/// The median ns per operation of each of `forms`, timed in interleaved rounds (one round
+/// of each in turn) so that a change in the machine's load falls on all of them alike.
+fn medians_ns(forms: &mut [&mut dyn FnMut()]) -> Vec<f64> {
+    let mut rounds = vec![Vec::with_capacity(ROUNDS); forms.len()];
+    for _ in 0..ROUNDS {
+        for (f, times) in forms.iter_mut().zip(&mut rounds) {
             let t = Instant::now();
             for _ in 0..REPS {
                 f();
             }
-            t.elapsed().as_nanos() as f64 / (REPS * N) as f64
+            times.push(t.elapsed().as_nanos() as f64 / (REPS * N) as f64);
+        }
+    }
+    rounds
+        .into_iter()
+        .map(|mut r| {
+            r.sort_by(f64::total_cmp);
+            r[ROUNDS / 2]
         })
-        .collect();
-    r.sort_by(f64::total_cmp);
-    r[ROUNDS / 2]
+        .collect()
 }
 
-/// Times an operation over `input` one at a time (`scalar`), and through
-/// [`cga_core::simd::run`] (`batch`: packing, the lanes, unpacking, dispatched to AVX2
-/// where the CPU has it), printing both.
+/// Times an operation over `input` one at a time (`scalar`), through
+/// [`cga_core::simd::run`] (`batch`: packing, the lanes, unpacking, dispatched to the widest
+/// lanes the CPU has), through [`cga_core::simd::map`] with the kernel's body as an
+/// `#[inline(always)]` closure on four lanes (`map`) and on eight (`map8`), and over
+/// packets already in lanes (`packets`),
+/// printing each; every form gives the bits of one at a time.
 fn both<K: Kernel + Default>(name: &str, input: &[K::Input], op: impl Fn(K::Input) -> K::Output)
 where
     K::Output: Default + PartialEq + std::fmt::Debug,
 {
-    let mut out = vec![K::Output::default(); input.len()];
-    let scalar = median_ns(|| {
-        for (o, &x) in out.iter_mut().zip(black_box(input)) {
-            *o = op(x);
-        }
-        black_box(&out);
-    });
-    let one_at_a_time = out.clone();
-    let batch = median_ns(|| {
-        run(&K::default(), black_box(input), &mut out);
-        black_box(&out);
-    });
-    // What was timed gives the bits of one at a time.
-    assert_eq!(out, one_at_a_time, "{name}: run differs from one at a time");
+    let one_at_a_time: Vec<K::Output> = input.iter().map(|&x| op(x)).collect();
+    let mut scalar_out = vec![K::Output::default(); input.len()];
+    let (mut batch_out, mut map_out, mut map8_out) = (scalar_out.clone(), scalar_out.clone(), scalar_out.clone());
     let packed_in: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
     let mut packed_out: Vec<_> = packed_in.iter().map(|&x| K::default().apply(x)).collect();
-    let packets = median_ns(|| {
-        run_packed(&K::default(), black_box(&packed_in), &mut packed_out);
-        black_box(&packed_out);
-    });
-    println!("{name} scalar {scalar:.3}");
-    println!("{name} batch {batch:.3}");
-    println!("{name} packets {packets:.3}");
+    let kernel = K::default();
+    let medians = medians_ns(&mut [
+        &mut || {
+            for (o, &x) in scalar_out.iter_mut().zip(black_box(input)) {
+                *o = op(x);
+            }
+            black_box(&scalar_out);
+        },
+        &mut || {
+            run(&K::default(), black_box(input), &mut batch_out);
+            black_box(&batch_out);
+        },
+        &mut || {
+            map(
+                black_box(input),
+                &mut map_out,
+                #[inline(always)]
+                |x| kernel.apply::<F64x4>(x),
+            );
+            black_box(&map_out);
+        },
+        &mut || {
+            map(
+                black_box(input),
+                &mut map8_out,
+                #[inline(always)]
+                |x| kernel.apply::<F64x8>(x),
+            );
+            black_box(&map8_out);
+        },
+        &mut || {
+            run_packed(&K::default(), black_box(&packed_in), &mut packed_out);
+            black_box(&packed_out);
+        },
+    ]);
+    for (form, out) in [("scalar", &scalar_out), ("batch", &batch_out), ("map", &map_out), ("map8", &map8_out)] {
+        assert_eq!(*out, one_at_a_time, "{name}: {form} differs from one at a time");
+    }
+    for (form, ns) in ["scalar", "batch", "map", "map8", "packets"].iter().zip(medians) {
+        println!("{name} {form} {ns:.3}");
+    }
 }
 
 /// The multiplications of the generated products `(kind, lhs, rhs)` the operation chains.

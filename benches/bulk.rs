@@ -4,7 +4,7 @@
 //! `DAffine3::transform_point3`), which is what the README's figure quotes: on a shared,
 //! noisy machine only ratios measured side by side mean anything.
 
-use cga_core::simd::{self, F64x4, Kernel, Lane};
+use cga_core::simd::{self, F64x4, F64x8, Kernel, Lane};
 use cga_core::{Motor, Rotor, Sandwich, Vector, down, up};
 use criterion::{Criterion, Throughput};
 use glam::{DAffine3, DQuat, DVec3};
@@ -119,10 +119,11 @@ impl Kernel for MoveBy {
 type Conformal = (&'static str, Box<dyn Fn(&[Vector], &mut [Vector])>);
 
 /// Moving conformal points (`M X M̃`, all five coefficients) one at a time, through
-/// `simd::run` with a kernel and through `simd::map` with a closure: the closure form is
-/// meant to cost nothing over the kernel.
+/// `simd::run` with a kernel and through `simd::map` with a closure on eight lanes and on
+/// four, marked `#[inline(always)]` and not: the marked closure is meant to cost nothing
+/// over the kernel at the lane width `run` takes on this CPU.
 fn conformal_methods(m: Motor) -> Vec<Conformal> {
-    let lanes = simd::splat::<Motor, F64x4>(m);
+    let (lanes, eight) = (simd::splat::<Motor, F64x4>(m), simd::splat::<Motor, F64x8>(m));
     vec![
         (
             "sandwich, one at a time",
@@ -133,6 +134,30 @@ fn conformal_methods(m: Motor) -> Vec<Conformal> {
             }),
         ),
         ("simd::run(MoveBy)", Box::new(move |x: &[Vector], out: &mut [Vector]| simd::run(&MoveBy(m), x, out).unwrap())),
+        (
+            "simd::map(#[inline(always)] |x| …) ×8",
+            Box::new(move |x: &[Vector], out: &mut [Vector]| {
+                simd::map(
+                    x,
+                    out,
+                    #[inline(always)]
+                    |p: Vector<F64x8>| eight.sandwich(p),
+                )
+                .unwrap()
+            }),
+        ),
+        (
+            "simd::map(#[inline(always)] |x| …)",
+            Box::new(move |x: &[Vector], out: &mut [Vector]| {
+                simd::map(
+                    x,
+                    out,
+                    #[inline(always)]
+                    |p: Vector<F64x4>| lanes.sandwich(p),
+                )
+                .unwrap()
+            }),
+        ),
         (
             "simd::map(|x| m.sandwich(x))",
             Box::new(move |x: &[Vector], out: &mut [Vector]| {

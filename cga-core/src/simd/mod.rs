@@ -9,7 +9,7 @@
 //! - [`run`]: over slices of ordinary values, transposed into lanes and back in place:
 //!   eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on [`F64x4`]
 //!   with AVX2 (benches/README.md times both against Versor);
-//! - [`map`]: the same with a closure on four lanes.
+//! - [`map`]: the same with an `#[inline(always)]` closure on four or eight lanes.
 //!
 //! `run` and `run_packed` take the operation as a [`Kernel`] and compile it for each level
 //! the CPU may have (AVX-512, AVX2 + FMA, the baseline SSE2), choosing at run time: no
@@ -23,7 +23,7 @@
 //! let line = |k: usize| Line::through([k as f64 * 0.1, 0.0, -3.0], [0.0, 0.0, 3.0]).unwrap();
 //! let input: Vec<(Line, Sphere)> = (0..10).map(|k| (line(k), sphere)).collect();
 //! let mut pairs = vec![PointPair::zero(); 10];
-//! map(&input, &mut pairs, |(l, s): (Line<F64x4>, Sphere<F64x4>)| l & s);
+//! map(&input, &mut pairs, #[inline(always)] |(l, s): (Line<F64x4>, Sphere<F64x4>)| l & s);
 //! assert_eq!(pairs[7], line(7) & sphere); // the same bits as one at a time
 //! ```
 
@@ -91,82 +91,177 @@ pub trait Kernel {
     fn apply<L: Lane>(&self, x: Over<Self::Input, L>) -> Over<Self::Output, L>;
 }
 
-/// An operation on four lanes: a [`Kernel`] at [`F64x4`], or [`map`]'s closure.
-trait Four {
-    type Input: Lanes;
-    type Output: Lanes;
-    fn four(&self, x: Packed<Self::Input>) -> Packed<Self::Output>;
-}
+use rows::Op;
 
-/// A kernel on four lanes.
-struct AtFour<'a, K>(&'a K);
+/// A kernel at whichever lanes a loop takes.
+struct AtLanes<'a, K>(&'a K);
 
-impl<K: Kernel> Four for AtFour<'_, K> {
+impl<K: Kernel, L: Lane> Op<L> for AtLanes<'_, K> {
     type Input = K::Input;
     type Output = K::Output;
     #[inline(always)]
-    fn four(&self, x: Packed<K::Input>) -> Packed<K::Output> {
-        self.0.apply::<F64x4>(x)
+    fn op(&self, x: Over<K::Input, L>) -> Over<K::Output, L> {
+        self.0.apply::<L>(x)
     }
 }
 
-/// A closure on four lanes ([`map`]).
+/// A closure on the lanes `L` ([`map`]).
 struct Closure<I, R, F>(F, core::marker::PhantomData<fn(I) -> R>);
 
-impl<I: Lanes, R: Lanes, F: Fn(Packed<I>) -> Packed<R>> Four for Closure<I, R, F> {
+impl<L: Lane, I: Lanes, R: Lanes, F: Fn(Over<I, L>) -> Over<R, L>> Op<L> for Closure<I, R, F> {
     type Input = I;
     type Output = R;
     #[inline(always)]
-    fn four(&self, x: Packed<I>) -> Packed<R> {
+    fn op(&self, x: Over<I, L>) -> Over<R, L> {
         (self.0)(x)
     }
 }
 
-/// `out[k] = f(input[k])` for every `k`, four at a time on [`F64x4`] lanes (a tail of
-/// fewer than four is padded with copies of the last input), dispatched to AVX2 and FMA as
-/// [`run`] is, with the same bits. The closure is called from the AVX2 loop; LLVM inlines
-/// it there as it inlines any small function with one caller, and where it declines (a body
-/// of several hundred instructions) a [`Kernel`], whose `apply` is `#[inline(always)]` and
-/// which also runs on eight lanes, is the sure way. `None`, and nothing written, where the
-/// lengths differ.
+/// The lanes [`map`] runs a closure on: [`F64x4`] or [`F64x8`], each moved into and out of
+/// lanes by the transposes its CPU level has.
+pub trait Width: Lane + rows::Rows {}
+
+impl Width for F64x4 {}
+impl Width for F64x8 {}
+
+mod rows {
+    use super::{F64x4, F64x8, Lane, Lanes, Over};
+
+    /// An operation on the lanes `L`: a [`Kernel`](super::Kernel) at `L`, or
+    /// [`map`](super::map)'s closure.
+    pub trait Op<L: Lane> {
+        type Input: Lanes;
+        type Output: Lanes;
+        fn op(&self, x: Over<Self::Input, L>) -> Over<Self::Output, L>;
+    }
+
+    /// The loops over rows of one lane width, at the two x86-64 levels above baseline.
+    pub trait Rows: Lane + Sized {
+        /// The loop compiled with AVX2 and FMA enabled.
+        ///
+        /// # Safety
+        /// The CPU must have AVX2 and FMA.
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx2<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]);
+        /// The loop compiled with AVX-512 enabled.
+        ///
+        /// # Safety
+        /// The CPU must have AVX-512 F, DQ and VL, AVX2 and FMA.
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx512<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]);
+    }
+
+    impl Rows for F64x4 {
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx2<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX2.
+            unsafe { super::rows_avx2(f, input, out) }
+        }
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx512<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX-512.
+            unsafe { super::rows4_avx512(f, input, out) }
+        }
+    }
+
+    impl Rows for F64x8 {
+        /// Eight lanes are two AVX2 registers: packed by value (no eight-row transposes
+        /// without AVX-512).
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx2<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX2.
+            unsafe { super::by_value_avx2(f, input, out) }
+        }
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx512<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX-512.
+            unsafe { super::rows8_avx512(f, input, out) }
+        }
+    }
+}
+
+/// `out[k] = f(input[k])` for every `k`, `L::LANES` at a time on the lanes the closure
+/// takes ([`F64x4`] or [`F64x8`]; a tail is padded with copies of the last input),
+/// dispatched at run time to a loop compiled for AVX-512 or AVX2 and FMA as [`run`] is,
+/// with the same bits. `None`, and nothing written, where the lengths differ.
+///
+/// Mark the closure `#[inline(always)]`: the body is then compiled inside the dispatched
+/// loop, with its instruction set. Without the mark LLVM declines to inline a body of
+/// several hundred instructions (a motor's sandwich), and the call runs baseline SSE2 code
+/// (about 2.4× slower; `cargo bench --bench bulk` times both). [`run`] picks the lane width
+/// for the CPU; a closure has one: four lanes match `run` on AVX2 CPUs, eight on AVX-512
+/// ones (benches/README.md gives both against `run`).
+///
+/// ```
+/// use cga_core::simd::{F64x4, F64x8, map, splat};
+/// use cga_core::{Motor, Rotor, Sandwich, Vector, up};
+/// let m = Motor::from_rotor_translation(Rotor::from_axis_angle([0.0, 0.0, 1.0], 0.5).unwrap(), [1.0, 0.0, 0.0]);
+/// let points: Vec<Vector> = (0..9).map(|k| up([k as f64, 1.0, 2.0])).collect();
+/// let mut moved = vec![Vector::zero(); points.len()];
+/// let four = splat::<Motor, F64x4>(m);
+/// map(&points, &mut moved, #[inline(always)] |x: Vector<F64x4>| four.sandwich(x)).unwrap();
+/// assert_eq!(moved[8], m.sandwich(points[8]));
+/// let eight = splat::<Motor, F64x8>(m);
+/// map(&points, &mut moved, #[inline(always)] |x: Vector<F64x8>| eight.sandwich(x)).unwrap();
+/// assert_eq!(moved[8], m.sandwich(points[8]));
+/// ```
 #[inline]
-pub fn map<I: Lanes, R: Lanes>(input: &[I], out: &mut [R], f: impl Fn(Packed<I>) -> Packed<R>) -> Option<()> {
+pub fn map<L: Width, I: Lanes, R: Lanes>(
+    input: &[I],
+    out: &mut [R],
+    f: impl Fn(Over<I, L>) -> Over<R, L>,
+) -> Option<()> {
+    map_at(Level::detect(), input, out, f)
+}
+
+/// [`map`] at a given level (the tests run each one the CPU has).
+#[inline(always)]
+fn map_at<L: Width, I: Lanes, R: Lanes>(
+    level: Level,
+    input: &[I],
+    out: &mut [R],
+    f: impl Fn(Over<I, L>) -> Over<R, L>,
+) -> Option<()> {
     if input.len() != out.len() {
         return None;
     }
     let f = Closure(f, core::marker::PhantomData);
-    #[cfg(target_arch = "x86_64")]
-    if avx2() {
-        // SAFETY: the CPU has the features `rows_avx2` is compiled for.
-        unsafe { rows_avx2(&f, input, out) };
-        return Some(());
+    match level {
+        // SAFETY: `detect` found the features each loop is compiled for.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { L::rows_avx512(&f, input, out) },
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { L::rows_avx2(&f, input, out) },
+        Level::Baseline => by_value(&f, input, out),
     }
-    by_value(&f, input, out);
     Some(())
 }
 
-/// The baseline loop: four values packed by value, a tail of fewer than four padded with
-/// copies of the last input.
+/// The baseline loop: `L::LANES` values packed by value, a tail padded with copies of the
+/// last input.
 #[inline(always)]
-fn by_value<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
-    let whole = input.len() / 4 * 4;
-    for (x, out) in input.chunks_exact(4).zip(out.chunks_exact_mut(4)) {
-        out.copy_from_slice(&F::Output::unpack(f.four(F::Input::pack([x[0], x[1], x[2], x[3]]))));
+fn by_value<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+    let n = L::LANES;
+    let whole = input.len() / n * n;
+    for (x, out) in input[..whole].chunks_exact(n).zip(out[..whole].chunks_exact_mut(n)) {
+        F::Output::unpack_lanes(f.op(F::Input::pack_lanes(x)), out);
         not_across_iterations();
     }
     if whole < input.len() {
         let last = input.len() - 1;
-        let lanes = F::Output::unpack(f.four(F::Input::pack([0, 1, 2, 3].map(|k| input[(whole + k).min(last)]))));
+        let padded: [F::Input; 8] = core::array::from_fn(|k| input[(whole + k).min(last)]);
+        let mut lanes = [F::Output::pack_filler(); 8];
+        F::Output::unpack_lanes(f.op(F::Input::pack_lanes(&padded[..n])), &mut lanes[..n]);
         out[whole..].copy_from_slice(&lanes[..input.len() - whole]);
     }
 }
 
 /// `out[k] = K(input[k])` for every `k`: eight at a time on [`F64x8`] where the CPU has
-/// AVX-512 (F and DQ), four at a time on [`F64x4`] with AVX2 and FMA, four at a time in
-/// baseline code otherwise (detected once, at run time: the build stays baseline x86-64).
-/// The values go into and out of lanes by transposes in place. The results are the same
-/// bits at every level (no multiply–add is contracted). `None`, and nothing written, where
-/// the lengths differ.
+/// AVX-512 (F, DQ and VL), four at a time on [`F64x4`] with AVX2 and FMA, four at a time
+/// in baseline code otherwise (detected once, at run time: the build stays baseline
+/// x86-64). The values go into and out of lanes by transposes in place. The results are
+/// the same bits at every level (no multiply–add is contracted). `None`, and nothing
+/// written, where the lengths differ.
 pub fn run<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
     run_at(Level::detect(), kernel, input, out)
 }
@@ -200,13 +295,14 @@ fn run_at<K: Kernel>(level: Level, kernel: &K, input: &[K::Input], out: &mut [K:
     if input.len() != out.len() {
         return None;
     }
+    let kernel = AtLanes(kernel);
     match level {
         // SAFETY: `detect` found the features each loop is compiled for.
         #[cfg(target_arch = "x86_64")]
-        Level::Avx512 => unsafe { run_avx512(kernel, input, out) },
+        Level::Avx512 => unsafe { rows8_avx512(&kernel, input, out) },
         #[cfg(target_arch = "x86_64")]
-        Level::Avx2 => unsafe { rows_avx2(&AtFour(kernel), input, out) },
-        Level::Baseline => by_value(&AtFour(kernel), input, out),
+        Level::Avx2 => unsafe { rows_avx2(&kernel, input, out) },
+        Level::Baseline => by_value::<F64x4, _>(&kernel, input, out),
     }
     Some(())
 }
@@ -214,8 +310,24 @@ fn run_at<K: Kernel>(level: Level, kernel: &K, input: &[K::Input], out: &mut [K:
 /// The four-lane loop compiled with AVX2 and FMA enabled.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn rows_avx2<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+unsafe fn rows_avx2<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
     // SAFETY: the CPU has AVX2.
+    unsafe { rows4(f, input, out) }
+}
+
+/// The by-value loop compiled with AVX2 and FMA enabled (eight lanes as two registers).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn by_value_avx2<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+    by_value(f, input, out)
+}
+
+/// The four-lane loop compiled with AVX-512 enabled: a closure on four lanes with the 32
+/// vector registers AVX-512 gives (fewer spills than AVX2's 16).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+unsafe fn rows4_avx512<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+    // SAFETY: AVX-512 implies AVX.
     unsafe { rows4(f, input, out) }
 }
 
@@ -225,37 +337,37 @@ unsafe fn rows_avx2<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
 /// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn rows4<F: Four>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+unsafe fn rows4<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
     let whole = input.len() / 4 * 4;
     for (x, y) in input[..whole].chunks_exact(4).zip(out[..whole].chunks_exact_mut(4)) {
         let rows = y.as_mut_ptr();
         // SAFETY: the CPU has AVX; the rows are the chunks' four values.
         unsafe {
             let lanes = F::Input::pack_rows([0, 1, 2, 3].map(|i| &raw const x[i]));
-            F::Output::unpack_rows(f.four(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
+            F::Output::unpack_rows(f.op(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
         }
         not_across_iterations();
     }
-    by_value(f, &input[whole..], &mut out[whole..])
+    by_value::<F64x4, _>(f, &input[whole..], &mut out[whole..])
 }
 
-/// [`run`]'s loop compiled with AVX-512 enabled: eight at a time on [`F64x8`], the rest
-/// four at a time.
+/// Eight at a time on [`F64x8`] by AVX-512 transposes in place, compiled with AVX-512
+/// enabled, a tail of fewer than eight padded by value ([`run`]'s loop there, and
+/// [`map`]'s on eight lanes).
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx2,fma")]
-unsafe fn run_avx512<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) {
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+unsafe fn rows8_avx512<F: Op<F64x8>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
     let whole = input.len() / 8 * 8;
     for (x, y) in input[..whole].chunks_exact(8).zip(out[..whole].chunks_exact_mut(8)) {
         let rows = y.as_mut_ptr();
         // SAFETY: the CPU has AVX-512 F and DQ; the rows are the chunks' eight values.
         unsafe {
-            let lanes = K::Input::pack_rows8(core::array::from_fn(|i| &raw const x[i]));
-            K::Output::unpack_rows8(kernel.apply::<F64x8>(lanes), core::array::from_fn(|i| rows.add(i)));
+            let lanes = F::Input::pack_rows8(core::array::from_fn(|i| &raw const x[i]));
+            F::Output::unpack_rows8(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
         }
         not_across_iterations();
     }
-    // SAFETY: AVX-512 implies AVX.
-    unsafe { rows4(&AtFour(kernel), &input[whole..], &mut out[whole..]) }
+    by_value::<F64x8, _>(f, &input[whole..], &mut out[whole..])
 }
 
 /// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
@@ -283,12 +395,15 @@ pub fn avx2() -> bool {
     std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
 }
 
-/// Whether this CPU has AVX-512 F and DQ (and AVX2 and FMA), which [`run`]'s eight-lane
-/// loop is compiled for.
+/// Whether this CPU has AVX-512 F, DQ and VL (and AVX2 and FMA), which [`run`]'s eight-lane
+/// loop and [`map`]'s four-lane one are compiled for.
 #[cfg(target_arch = "x86_64")]
 #[inline]
 pub fn avx512() -> bool {
-    avx2() && std::is_x86_feature_detected!("avx512f") && std::is_x86_feature_detected!("avx512dq")
+    avx2()
+        && std::is_x86_feature_detected!("avx512f")
+        && std::is_x86_feature_detected!("avx512dq")
+        && std::is_x86_feature_detected!("avx512vl")
 }
 
 /// [`run_packed`]'s loop compiled with AVX2 and FMA enabled.
@@ -499,9 +614,16 @@ mod tests {
                 run_at(level, &Sandwiched, &moved, &mut got).unwrap();
                 assert_eq!(got, want, "run at {level:?}, n = {n}");
             }
-            got.fill(Vector::zero());
-            map(&moved, &mut got, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)).unwrap();
-            assert_eq!(got, want, "map, n = {n}");
+            for level in levels() {
+                got.fill(Vector::zero());
+                let f = |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x);
+                map_at(level, &moved, &mut got, f).unwrap();
+                assert_eq!(got, want, "map on four lanes at {level:?}, n = {n}");
+                got.fill(Vector::zero());
+                let f = |(m, x): (Motor<F64x8>, Vector<F64x8>)| m.sandwich(x);
+                map_at(level, &moved, &mut got, f).unwrap();
+                assert_eq!(got, want, "map on eight lanes at {level:?}, n = {n}");
+            }
 
             let circles: Vec<(Circle, Circle)> = (0..n)
                 .map(|k| {
