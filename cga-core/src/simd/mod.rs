@@ -117,8 +117,8 @@ impl<L: Lane, I: Lanes, R: Lanes, F: Fn(Over<I, L>) -> Over<R, L>> Op<L> for Clo
     }
 }
 
-/// The lanes [`map`] runs a closure on: [`F64x4`] or [`F64x8`], each moved into and out of
-/// lanes by the transposes its CPU level has.
+/// The lanes [`map`] runs a closure on: [`F64x4`] or [`F64x8`] (sealed: no others), each
+/// moved into and out of lanes by the transposes its CPU level has.
 pub trait Width: Lane + rows::Rows {}
 
 impl Width for F64x4 {}
@@ -188,7 +188,7 @@ mod rows {
 /// Mark the closure `#[inline(always)]`: the body is then compiled inside the dispatched
 /// loop, with its instruction set. Without the mark LLVM declines to inline a body of
 /// several hundred instructions (a motor's sandwich), and the call runs baseline SSE2 code
-/// (about 2.4× slower; `cargo bench --bench bulk` times both). [`run`] picks the lane width
+/// (2.4–2.7× `run`'s time moving a million points; `cargo bench --bench bulk` times both). [`run`] picks the lane width
 /// for the CPU; a closure has one: four lanes match `run` on AVX2 CPUs, eight on AVX-512
 /// ones (benches/README.md gives both against `run`).
 ///
@@ -248,6 +248,7 @@ fn by_value<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut [F::Output])
         not_across_iterations();
     }
     if whole < input.len() {
+        // Room for the widest lanes, eight (`Width` is sealed to four and eight).
         let last = input.len() - 1;
         let padded: [F::Input; 8] = core::array::from_fn(|k| input[(whole + k).min(last)]);
         let mut lanes = [F::Output::pack_filler(); 8];
