@@ -168,7 +168,7 @@ impl<T: Real> Line<T> {
 
     /// [`Line::from_point_direction`] for a direction already of unit length and finite
     /// input, unchecked: `−d` and `p × d` (for the rays of a renderer, made by the million).
-    #[inline]
+    #[inline(always)]
     pub fn from_point_unit_direction(p: E3<T>, d: E3<T>) -> Self {
         let m = cross(p, d);
         Line { e12i: m[2], e13i: -m[1], e23i: m[0], e1oi: -d[0], e2oi: -d[1], e3oi: -d[2] }

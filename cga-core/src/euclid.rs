@@ -7,31 +7,37 @@ use crate::Real;
 pub type E3<T = f64> = [T; 3];
 
 /// `a + b`.
+#[inline(always)]
 pub fn add<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
 /// `a − b`.
+#[inline(always)]
 pub fn sub<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 /// `s a`.
+#[inline(always)]
 pub fn scale<T: Real>(a: E3<T>, s: T) -> E3<T> {
     [a[0] * s, a[1] * s, a[2] * s]
 }
 
 /// `a · b`.
+#[inline(always)]
 pub fn dot<T: Real>(a: E3<T>, b: E3<T>) -> T {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// `a × b`.
+#[inline(always)]
 pub fn cross<T: Real>(a: E3<T>, b: E3<T>) -> E3<T> {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 /// The mirror image of direction `d` in a plane of unit normal `n`: `d − 2(d·n)n`.
+#[inline(always)]
 pub fn reflect<T: Real>(d: E3<T>, n: E3<T>) -> E3<T> {
     sub(d, scale(n, T::from_f64(2.0) * dot(d, n)))
 }

@@ -7,10 +7,11 @@
 //! lens whose rays leave a point of the lens disk and pass through the pinhole ray's point on
 //! the plane of focus (depth of field).
 
+use crate::backend::lane;
 use crate::limits::{EXTENT_OVER_FOCAL, MAX_PIXELS, MAX_SIDE};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, scale, sub, unit};
-use cga_core::simd::{F64x4, Lanes};
+use cga_core::simd::{Lane, Lanes};
 use cga_core::{Line, Motor, Real, Rotor, Sandwich, Translator, Vector, down, ei, up};
 
 /// Why a camera cannot be built.
@@ -130,8 +131,6 @@ pub struct Camera {
     /// `cam ∧ (M b M̃) ∧ ei` for the basis vectors `b = e1, e2, e3, eo, ei`: the ray of eq. 2
     /// is linear in `up(x)`, so it is these combined with `up(x)`'s coefficients.
     lines: [Line; 5],
-    /// The same lines in every lane of four, for [`Camera::rays4`].
-    lanes: [Line<F64x4>; 5],
 }
 
 impl Camera {
@@ -165,8 +164,7 @@ impl Camera {
             (cam ^ pose.sandwich(Vector::from_array(c))) ^ ei()
         };
         let lines = [basis(0), basis(1), basis(2), basis(3), basis(4)];
-        let lanes = lines.map(|l| Line::pack([l; 4]));
-        Ok(Camera { pose, focal, x_max, y_max, width, height, lens: Lens::Pinhole, position, cam, axes, lines, lanes })
+        Ok(Camera { pose, focal, x_max, y_max, width, height, lens: Lens::Pinhole, position, cam, axes, lines })
     }
 
     /// The same camera with lens `lens` (lengths in frame units).
@@ -236,16 +234,19 @@ impl Camera {
     }
 
     /// [`Camera::ray`] for four points `(u_k, v_k)` at once, on four lanes: the rays, and
-    /// their lines in lanes (for a [`Packet`](crate::backend::Packet)); the same operations
-    /// lane by lane, so the same bits. `None` where a ray cannot be formed.
+    /// their lines and unit directions in lanes (for a [`Packet`](crate::backend::Packet));
+    /// the same operations lane by lane, so the same bits. `None` where a ray cannot be
+    /// formed.
     #[inline(always)]
-    pub fn rays4(&self, u: [f64; 4], v: [f64; 4]) -> Option<([Ray; 4], Line<F64x4>)> {
+    pub fn rays4<L: Lane>(&self, u: [f64; 4], v: [f64; 4]) -> Option<([Ray; 4], Line<L>, E3<L>)> {
         let points: [E3; 4] = core::array::from_fn(|k| self.image_point(u[k], v[k]));
-        let x = up(core::array::from_fn(|k| F64x4::new(points.map(|p| p[k])))).to_array();
-        let (line, dir) = unit_line(&self.lanes, x)?;
-        let (lines, dir) = (Line::unpack(line), dir.map(F64x4::to_array));
-        let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: dir.map(|c| c[l]), carrier: lines[l] });
-        Some((rays, line))
+        let x = up(core::array::from_fn(|k| L::from_fn(|l| points[l][k]))).to_array();
+        let basis = |k: usize| self.lines[k].cast::<L>();
+        let (line, dir) = unit_line(&[basis(0), basis(1), basis(2), basis(3), basis(4)], x)?;
+        let mut lines = [Line::zero(); 4];
+        Line::unpack_lanes(line, &mut lines);
+        let rays = core::array::from_fn(|l| Ray { origin: self.position, dir: lane(&dir, l), carrier: lines[l] });
+        Some((rays, line, dir))
     }
 
     /// The same ray computed term by term as eq. 2 writes it (`cam ∧ M up(x) M̃ ∧ ei`), to
@@ -283,8 +284,11 @@ impl Camera {
 /// part: one division normalises both. Generic, so one ray and four lanes share it.
 #[inline(always)]
 fn unit_line<T: Real>(lines: &[Line<T>; 5], x: [T; 5]) -> Option<(Line<T>, E3<T>)> {
-    let line = (0..5).fold(Line::zero(), |l, k| l + lines[k].scale(x[k]));
+    let mut line = Line::zero();
+    for k in 0..5 {
+        line += lines[k].scale(x[k]);
+    }
     let d = [-line.e1oi, -line.e2oi, -line.e3oi];
     let inv = T::one() / cga_core::euclid::norm(d);
-    inv.is_finite().then(|| (line.scale(inv), scale(d, inv)))
+    if inv.is_finite() { Some((line.scale(inv), scale(d, inv))) } else { None }
 }

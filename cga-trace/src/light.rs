@@ -159,7 +159,8 @@ pub fn attenuation<T: Select>(c: [f64; 3], d: T) -> T {
 #[inline(always)]
 pub fn blinn_phong<T: Select>(colour: [T; 3], kd: T, ks: T, n_l: T, spec: T, sf: T, light: [f64; 3]) -> [T; 3] {
     let (facing, shine) = (n_l.max_lanes(T::zero()), ks * spec);
-    core::array::from_fn(|k| sf * (colour[k] * kd * facing + shine) * T::from_f64(light[k]))
+    let channel = |k: usize| sf * (colour[k] * kd * facing + shine) * T::from_f64(light[k]);
+    [channel(0), channel(1), channel(2)]
 }
 
 /// Whether a light adds anything at a hit: it lies ahead (`distance > 0`; not at the hit point,

@@ -110,6 +110,10 @@ struct Render {
     /// (the same image; for comparing their speed).
     #[arg(long)]
     no_packets: bool,
+    /// Trace the packets on four-lane arrays compiled for the baseline CPU, as on a CPU
+    /// without AVX2 (the same image; for comparing the two lane types' speed).
+    #[arg(long)]
+    no_avx2: bool,
     /// Leave out the objects' labels (a scene's `label` fields), which are written into
     /// shaded pictures of the whole image.
     #[arg(long)]
@@ -319,7 +323,7 @@ fn render_frame(
     };
     holds(&scene).map_err(anyhow::Error::msg).context("--backend")?;
     let start = Instant::now();
-    let packets = !args.no_packets;
+    let packets = Packets { on: !args.no_packets, avx2: !args.no_avx2 };
     let (film, RayCounts { primary, shadow, reflection }) = match scene.shutter {
         None => pool.install(|| render(&scene, args.aov, window, packets, (0, 1), &|| bar.inc(1))),
         Some(shutter) => {
@@ -418,9 +422,16 @@ fn configured(args: &Render, time: f64) -> anyhow::Result<(Scene, Option<String>
 }
 
 /// A back end's render, as [`render`] gives it.
-type RenderFn = fn(&Scene, Aov, Window, bool, (u32, u32), &(dyn Fn() + Sync)) -> (Film, RayCounts);
+type RenderFn = fn(&Scene, Aov, Window, Packets, (u32, u32), &(dyn Fn() + Sync)) -> (Film, RayCounts);
 /// A back end's [`holds`].
 type Holds = fn(&Scene) -> Result<(), String>;
+
+/// Whether rays go four at a time in packets, and whether those may run in AVX registers.
+#[derive(Clone, Copy)]
+struct Packets {
+    on: bool,
+    avx2: bool,
+}
 
 /// The image and the rays cast, on back end `B`, taking the samples `first, first + step, …`
 /// of each pixel.
@@ -428,13 +439,16 @@ fn render<B: Backend>(
     scene: &Scene,
     aov: Aov,
     window: Window,
-    packets: bool,
+    packets: Packets,
     (first, step): (u32, u32),
     on_row: &(dyn Fn() + Sync),
 ) -> (Film, RayCounts) {
     let mut renderer = Renderer::<B>::with_backend(scene).sample_subset(first, step);
-    if !packets {
+    if !packets.on {
         renderer = renderer.without_packets();
+    }
+    if !packets.avx2 {
+        renderer = renderer.without_avx2();
     }
     let film = renderer.render_window(aov, window, on_row);
     (film, renderer.counts())

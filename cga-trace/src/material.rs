@@ -96,14 +96,17 @@ pub fn shine<T: Lane, const N: usize>(m: &[&Material; N], n: [T; 3], lv: [T; 3])
     // The power only where some lane will take it.
     let q = m[0].whole_exponent().filter(|_| m.iter().all(|x| x.q == m[0].q) && T::any(T::zero().lt(c)));
     let powers = q.map(|q| power(c, q));
-    T::from_fn(|l| {
-        let (inv, c) = (inv.lane(l), c.lane(l));
-        match powers {
-            _ if !(inv.is_finite() && inv > 0.0) => rescaled(l),
-            Some(p) if c > 0.0 => p.lane(l),
-            _ => m[l].specular(c),
-        }
-    })
+    T::from_fn(
+        #[inline(always)]
+        |l| {
+            let (inv, c) = (inv.lane(l), c.lane(l));
+            match powers {
+                _ if !(inv.is_finite() && inv > 0.0) => rescaled(l),
+                Some(p) if c > 0.0 => p.lane(l),
+                _ => m[l].specular(c),
+            }
+        },
+    )
 }
 
 /// The coefficients a light's term takes ([`crate::light::blinn_phong`]): colour, `k_d`
@@ -122,8 +125,9 @@ impl<T: Lane> Reflectance<T> {
     /// The materials of a ray's hit or of a packet's, lane `l` being `m[l]`'s.
     #[inline(always)]
     pub fn lanes<const W: usize>(m: &[&Material; W]) -> Self {
+        let channel = |k: usize| T::from_fn(|l| m[l].colour[k]);
         Reflectance {
-            colour: core::array::from_fn(|k| T::from_fn(|l| m[l].colour[k])),
+            colour: [channel(0), channel(1), channel(2)],
             kd: T::from_fn(|l| m[l].kd),
             ks: T::from_fn(|l| m[l].ks),
         }

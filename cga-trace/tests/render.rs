@@ -440,6 +440,9 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         let packets = Renderer::new(&scene).render(Aov::Shaded, &|| {});
         let scalar = Renderer::new(&scene).without_packets().render(Aov::Shaded, &|| {});
         assert!(packets.pixels == scalar.pixels, "{name}: packets and single rays differ");
+        // The packets' other lane type (where the CPU has AVX2 the default runs in AVX registers).
+        let arrays = Renderer::new(&scene).without_avx2().render(Aov::Shaded, &|| {});
+        assert!(arrays.pixels == scalar.pixels, "{name}: packets on arrays and single rays differ");
         let (a, b) = (Renderer::new(&scene), Renderer::new(&scene).without_packets());
         a.render(Aov::Shaded, &|| {});
         b.render(Aov::Shaded, &|| {});
@@ -448,12 +451,16 @@ fn packets_render_the_bits_of_one_ray_at_a_time() {
         let plain = Renderer::<Plain>::with_backend(&scene).render(Aov::Shaded, &|| {});
         let single = Renderer::<Plain>::with_backend(&scene).without_packets().render(Aov::Shaded, &|| {});
         assert!(plain.pixels == single.pixels, "{name}: plain packets and single rays differ");
+        let arrays = Renderer::<Plain>::with_backend(&scene).without_avx2().render(Aov::Shaded, &|| {});
+        assert!(arrays.pixels == single.pixels, "{name}: plain packets on arrays and single rays differ");
         // Several samples per pixel: a packet per sample of four pixels.
         let mut sampled = load_sized(name, 13, 5);
         sampled.settings.spp = 5;
         let (a, b) = (Renderer::new(&sampled), Renderer::new(&sampled).without_packets());
         let (pa, pb) = (a.render(Aov::Shaded, &|| {}), b.render(Aov::Shaded, &|| {}));
         assert!(pa.pixels == pb.pixels, "{name}: packets and single rays differ at 5 samples per pixel");
+        let arrays = Renderer::new(&sampled).without_avx2().render(Aov::Shaded, &|| {});
+        assert!(arrays.pixels == pb.pixels, "{name}: packets on arrays differ at 5 samples per pixel");
         assert_eq!(a.counts(), b.counts(), "{name}: the same rays are cast at 5 samples per pixel");
     }
 }
@@ -475,6 +482,8 @@ fn packets_render_the_bits_of_one_ray_at_a_time_at_extreme_sizes() {
         let packets = Renderer::new(&scene).render(Aov::Shaded, &|| {});
         let scalar = Renderer::new(&scene).without_packets().render(Aov::Shaded, &|| {});
         assert!(packets.pixels == scalar.pixels, "{name}: packets and single rays differ");
+        let arrays = Renderer::new(&scene).without_avx2().render(Aov::Shaded, &|| {});
+        assert!(arrays.pixels == scalar.pixels, "{name}: packets on arrays and single rays differ");
         let sky_pixels = scalar.pixels.iter().filter(|p| p[2] > p[0] && p[2] > 0.05).count();
         assert!(name != "sky" || sky_pixels > 20, "{name}: the sky is seen ({sky_pixels} pixels)");
         let plain = Renderer::<Plain>::with_backend(&scene).render(Aov::Shaded, &|| {});

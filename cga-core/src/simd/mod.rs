@@ -445,14 +445,23 @@ mod tests {
         let (a, b) = ([1.0, f64::NAN, 3.0, -0.5], [2.0, 0.0, 3.0, f64::INFINITY]);
         let (x, y) = (F64x4(a), F64x4(b));
         for l in 0..4 {
-            assert_eq!(x.lt(y).0[l], a[l].lt(b[l]));
-            assert_eq!(x.le(y).0[l], a[l].le(b[l]));
-            assert_eq!(y.finite().0[l], Select::finite(b[l]));
+            assert_eq!(x.lt(y).lane(l), a[l].lt(b[l]));
+            assert_eq!(x.le(y).lane(l), a[l].le(b[l]));
+            assert_eq!(y.finite().lane(l), Select::finite(b[l]));
             assert_eq!(F64x4::select(x.lt(y), x, y).0[l].to_bits(), f64::select(a[l] < b[l], a[l], b[l]).to_bits());
             assert_eq!(x.min_lanes(y).0[l].to_bits(), a[l].min(b[l]).to_bits());
             assert_eq!(x.max_lanes(y).0[l].to_bits(), a[l].max(b[l]).to_bits());
         }
         assert!(F64x4::any(x.lt(y)) && !F64x4::all(x.lt(y)) && F64x4::all(!Mask4::default()));
+        // A mask from truth values, and its logic lane by lane.
+        let (m, n) = (Mask4::new([true, false, true, false]), Mask4::new([true, true, false, false]));
+        assert_eq!(m.to_array(), [true, false, true, false]);
+        assert_eq!((m & n).to_array(), [true, false, false, false]);
+        assert_eq!((m | n).to_array(), [true, true, true, false]);
+        assert_eq!((!m).to_array(), [false, true, false, true]);
+        assert_eq!(F64x4::select(m, x, y).to_array().map(f64::to_bits), [a[0], b[1], a[2], b[3]].map(f64::to_bits));
+        assert!(!F64x4::any(Mask4::default()) && F64x4::all(Mask4::new([true; 4])));
+        assert_eq!(format!("{m:?}"), "Mask4([true, false, true, false])");
     }
 
     #[test]
@@ -475,13 +484,13 @@ mod tests {
             for (l, v) in four.iter().enumerate() {
                 let (point, valid) = down_lanes(*v);
                 assert_eq!(valid, down(*v).is_ok(), "{v:?}");
-                assert_eq!(ok.0[l], valid, "lane {l}: {v:?}");
+                assert_eq!(ok.lane(l), valid, "lane {l}: {v:?}");
                 if let Ok(want) = down(*v) {
                     assert_eq!(point.map(f64::to_bits), want.map(f64::to_bits));
                     assert_eq!(points.map(|c| c.0[l].to_bits()), want.map(f64::to_bits), "lane {l}");
                 }
             }
-            assert_eq!(F64x4::any(ok), ok.0.iter().any(|&b| b));
+            assert_eq!(F64x4::any(ok), ok.to_array().iter().any(|&b| b));
         }
     }
     use crate::{Circle, Even, Line, Motor, Rotor, Sandwich, Sphere, Translator, Vector, up};

@@ -239,8 +239,45 @@ macro_rules! wide {
         }
 
         $(#[$mask_doc])*
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-        pub struct $mask(pub [bool; $n]);
+        ///
+        /// Each lane is all ones or all zeros, as a vector comparison leaves it, so that
+        /// comparisons, `&`, `|`, `!` and [`Select::select`] stay in vector registers.
+        #[derive(Clone, Copy, Default, PartialEq, Eq)]
+        pub struct $mask([u64; $n]);
+
+        impl $mask {
+            /// The mask with lane `l` set where `lanes[l]` is.
+            #[inline(always)]
+            pub fn new(lanes: [bool; $n]) -> Self {
+                $mask(lanes.map(|b| (b as u64).wrapping_neg()))
+            }
+
+            /// Whether lane `l` is set.
+            #[inline(always)]
+            pub fn lane(self, l: usize) -> bool {
+                self.0[l] != 0
+            }
+
+            /// The lanes as truth values.
+            #[inline(always)]
+            pub fn to_array(self) -> [bool; $n] {
+                self.0.map(|m| m != 0)
+            }
+
+            /// All ones where `f` of the lanes holds (written out lane by lane: the form
+            /// LLVM turns into one vector comparison).
+            #[inline(always)]
+            fn compare(a: $t, b: $t, f: impl Fn(f64, f64) -> bool) -> Self {
+                let (a, b) = (a.0, b.0);
+                $mask([$((f(a[$l], b[$l]) as u64).wrapping_neg()),*])
+            }
+        }
+
+        impl core::fmt::Debug for $mask {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.debug_tuple(stringify!($mask)).field(&self.to_array()).finish()
+            }
+        }
 
         impl core::ops::BitAnd for $mask {
             type Output = $mask;
@@ -262,7 +299,8 @@ macro_rules! wide {
             type Output = $mask;
             #[inline(always)]
             fn not(self) -> $mask {
-                $mask(self.0.map(|x| !x))
+                let a = self.0;
+                $mask([$(!a[$l]),*])
             }
         }
 
@@ -270,32 +308,31 @@ macro_rules! wide {
             type Mask = $mask;
             #[inline(always)]
             fn lt(self, other: Self) -> $mask {
-                let (a, b) = (self.0, other.0);
-                $mask([$(a[$l] < b[$l]),*])
+                $mask::compare(self, other, |x, y| x < y)
             }
             #[inline(always)]
             fn le(self, other: Self) -> $mask {
-                let (a, b) = (self.0, other.0);
-                $mask([$(a[$l] <= b[$l]),*])
+                $mask::compare(self, other, |x, y| x <= y)
             }
             #[inline(always)]
             fn finite(self) -> $mask {
-                $mask(self.0.map(f64::is_finite))
+                $mask::compare(self.abs(), $t::splat(f64::INFINITY), |x, inf| x < inf)
             }
+            /// Bitwise: `(a & m) | (b & !m)` (LLVM's blend).
             #[inline(always)]
             fn select(mask: $mask, if_true: Self, if_false: Self) -> Self {
                 let (m, a, b) = (mask.0, if_true.0, if_false.0);
-                $t([$($l),*].map(|l: usize| if m[l] { a[l] } else { b[l] }))
+                $t([$(f64::from_bits((a[$l].to_bits() & m[$l]) | (b[$l].to_bits() & !m[$l]))),*])
             }
             #[inline(always)]
             fn any(mask: $mask) -> bool {
                 let m = mask.0;
-                false $(| m[$l])*
+                (0 $(| m[$l])*) != 0
             }
             #[inline(always)]
             fn all(mask: $mask) -> bool {
                 let m = mask.0;
-                true $(& m[$l])*
+                (u64::MAX $(& m[$l])*) == u64::MAX
             }
         }
 
@@ -311,7 +348,7 @@ macro_rules! wide {
             }
             #[inline(always)]
             fn mask_lane(mask: $mask, l: usize) -> bool {
-                mask.0[l]
+                mask.lane(l)
             }
         }
     };

@@ -310,7 +310,7 @@ impl Gen<'_> {
                 /// The same coefficients in another scalar type, each through `f64`
                 /// (`U::from_f64(c.to_f64())`): exact from `f32` to `f64`, rounded the other way;
                 /// a dual number's derivative part is dropped (only its value goes through).
-                #[inline]
+                #[inline(always)]
                 pub fn cast<U: #real>(self) -> #ident<U> {
                     #ident { #(#fields: <U as #real>::from_f64(<T as #real>::to_f64(self.#fields))),* }
                 }

@@ -10,7 +10,7 @@ use crate::shapes::{
     Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle, point_in_range,
 };
 use cga_core::euclid::{E3, add, cross, dot, magnitude, norm, perpendicular, scale, sub, tolerance, unit};
-use cga_core::simd::F64x4;
+use cga_core::simd::Lane;
 use cga_core::{FlatPoint, LeftContraction, Line, Multivector, Scalar, Vector, down, ei, up};
 use std::sync::Arc;
 
@@ -198,10 +198,10 @@ impl Backend for Dense {
         facing(from_lines.or_else(|| unit(fallback)).unwrap_or([0.0, 0.0, 1.0]), ray.dir)
     }
 
-    type CarrierLanes = ();
+    type CarrierLanes<L: Lane> = ();
 
     #[inline(always)]
-    fn packet(origin: E3<F64x4>, dir: E3<F64x4>) -> Packet<Dense> {
+    fn packet<L: Lane>(origin: E3<L>, dir: E3<L>) -> Packet<Dense, L> {
         Packet::per_lane(origin, dir, ())
     }
 }

@@ -11,7 +11,7 @@ use cga_core::simd::{F64x4, Lane};
 
 /// `W` rays in lanes of `Self::T`: what the shading casts its shadow rays as.
 pub trait RayLanes<B: Backend, const W: usize>: Sized {
-    /// The lanes: `f64` for one ray, `F64x4` for four.
+    /// The lanes: `f64` for one ray, four lanes (`F64x4`, or one AVX register) for four.
     type T: Lane;
     /// The rays' origins.
     fn origin(&self) -> E3<Self::T>;
@@ -61,60 +61,70 @@ impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
 /// Points (or vectors), one per lane, as three coordinates in lanes.
 #[inline(always)]
 pub(crate) fn lanes3<T: Lane, const W: usize>(v: [E3; W]) -> E3<T> {
-    core::array::from_fn(|k| T::from_fn(|l| v[l][k]))
+    let at = |k: usize| T::from_fn(|l| v[l][k]);
+    [at(0), at(1), at(2)]
 }
 
 /// A crossing per lane, `None` where the lane's ray misses.
 pub type Crossings = [Option<Crossing>; 4];
 
-/// Four rays, lane `k` being ray `k`.
-pub struct Packet<B: Backend> {
+/// Four rays, lane `k` being ray `k`, in lanes of `L` (four of them).
+pub struct Packet<B: Backend, L: Lane = F64x4> {
     /// The scalar rays (for the per-lane steps).
     pub rays: [Ray<B::Carrier>; 4],
     /// Their origins in lanes.
-    pub origin: [F64x4; 3],
+    pub origin: E3<L>,
     /// Their unit directions in lanes.
-    pub dir: [F64x4; 3],
+    pub dir: E3<L>,
     /// Their carriers in lanes (the sparse back end: their lines).
-    pub carrier: B::CarrierLanes,
+    pub carrier: B::CarrierLanes<L>,
 }
 
-impl<B: Backend> Packet<B> {
+impl<B: Backend, L: Lane> Packet<B, L> {
     /// Four rays from origins along unit directions in lanes, each made by [`Backend::ray`],
     /// with `carrier` (for a back end whose rays carry nothing in lanes).
     #[inline(always)]
-    pub fn per_lane(origin: [F64x4; 3], dir: [F64x4; 3], carrier: B::CarrierLanes) -> Self {
+    pub fn per_lane(origin: E3<L>, dir: E3<L>, carrier: B::CarrierLanes<L>) -> Self {
         let rays = core::array::from_fn(|l| B::ray(lane(&origin, l), lane(&dir, l)));
         Packet { rays, origin, dir, carrier }
     }
+}
 
-    /// Four rays whose carriers are already in lanes.
-    #[inline(always)]
-    pub fn with_carrier(rays: [Ray<B::Carrier>; 4], carrier: B::CarrierLanes) -> Self {
-        let lanes = |f: fn(&Ray<B::Carrier>) -> E3| lanes3(rays.each_ref().map(f));
-        Packet { origin: lanes(|r| r.origin), dir: lanes(|r| r.dir), rays, carrier }
-    }
+/// The four lanes of `x` as an array.
+#[inline(always)]
+pub(crate) fn array<L: Lane>(x: L) -> [f64; 4] {
+    [x.lane(0), x.lane(1), x.lane(2), x.lane(3)]
+}
+
+/// The mask's four lanes as truth values.
+#[inline(always)]
+pub(crate) fn mask_array<L: Lane>(m: L::Mask) -> [bool; 4] {
+    let at = |l: usize| L::mask_lane(m, l);
+    [at(0), at(1), at(2), at(3)]
 }
 
 /// Lane `l` of a point in lanes.
 #[inline(always)]
-pub(crate) fn lane(x: &[F64x4; 3], l: usize) -> E3 {
-    [x[0].to_array()[l], x[1].to_array()[l], x[2].to_array()[l]]
+pub(crate) fn lane<L: Lane>(x: &E3<L>, l: usize) -> E3 {
+    [x[0].lane(l), x[1].lane(l), x[2].lane(l)]
 }
 
 /// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where
 /// there is no rim (a plane).
 #[inline(always)]
-pub(crate) fn inside_rim(x: &[F64x4; 3], rim: Option<(E3, f64)>) -> [bool; 4] {
-    rim.map_or([true; 4], |(c, r)| {
-        let d = sub(*x, c.map(F64x4::splat));
-        dot(d, d).to_array().map(|q| q <= r * r)
-    })
+pub(crate) fn inside_rim<L: Lane>(x: &E3<L>, rim: Option<(E3, f64)>) -> [bool; 4] {
+    match rim {
+        None => [true; 4],
+        Some((c, r)) => {
+            let d = sub(*x, c.map(L::from_f64));
+            array(dot(d, d)).map(|q| q <= r * r)
+        }
+    }
 }
 
 /// The crossings at `t` and points `x` of the lanes that are `ok`, the others `None`.
 #[inline(always)]
-pub(crate) fn crossings(ok: [bool; 4], t: [f64; 4], x: &[F64x4; 3]) -> Crossings {
+pub(crate) fn crossings<L: Lane>(ok: [bool; 4], t: [f64; 4], x: &E3<L>) -> Crossings {
     if !ok.iter().any(|&b| b) {
         return [None; 4];
     }
@@ -122,18 +132,18 @@ pub(crate) fn crossings(ok: [bool; 4], t: [f64; 4], x: &[F64x4; 3]) -> Crossings
 }
 
 /// Four rays in lanes.
-impl<B: Backend> RayLanes<B, 4> for Packet<B> {
-    type T = F64x4;
+impl<B: Backend, L: Lane> RayLanes<B, 4> for Packet<B, L> {
+    type T = L;
     #[inline(always)]
-    fn origin(&self) -> E3<F64x4> {
+    fn origin(&self) -> E3<L> {
         self.origin
     }
     #[inline(always)]
-    fn dir(&self) -> E3<F64x4> {
+    fn dir(&self) -> E3<L> {
         self.dir
     }
     #[inline(always)]
-    fn cast(origin: E3<F64x4>, dir: E3<F64x4>) -> Self {
+    fn cast(origin: E3<L>, dir: E3<L>) -> Self {
         B::packet(origin, dir)
     }
     #[inline(always)]

@@ -27,10 +27,10 @@ use crate::ray::Ray;
 use crate::scene::Scene;
 use crate::shapes::{Crossing, Shape};
 use cga_core::euclid::{E3, norm};
-use cga_core::simd::F64x4;
+use cga_core::simd::Lane;
 pub use dense::{Dense, DenseShape};
 pub use lanes::{Crossings, Packet, RayLanes};
-pub(crate) use lanes::{crossings, inside_rim, lane, lanes3};
+pub(crate) use lanes::{array, crossings, inside_rim, lane, lanes3, mask_array};
 pub use plain::{Plain, PlainShape};
 pub use sparse::{Sparse, SparseShape};
 use std::sync::Arc;
@@ -57,17 +57,17 @@ pub trait Backend: Send + Sync + 'static {
     /// Whether the renderer should trace this back end's rays four at a time ([`Packet`]):
     /// where it meets primitives in lanes ([`Backend::cross4`]).
     const PACKETS: bool = false;
-    /// What four rays carry in lanes (the sparse back end: their CGA lines).
-    type CarrierLanes: Copy;
+    /// What four rays carry in lanes `L` (the sparse back end: their CGA lines).
+    type CarrierLanes<L: Lane>: Copy;
     /// Four rays from origins along unit directions given in lanes (secondary rays), as
     /// [`Backend::ray`] makes each.
-    fn packet(origin: E3<F64x4>, dir: E3<F64x4>) -> Packet<Self>
+    fn packet<L: Lane>(origin: E3<L>, dir: E3<L>) -> Packet<Self, L>
     where
         Self: Sized;
     /// The camera rays through `(u_k, v_k)`, as [`Backend::camera_ray`] makes each; `None`
     /// where one cannot be formed, and for a back end without packets (the renderer then
     /// traces one ray at a time).
-    fn camera_packet(_camera: &Camera, _u: [f64; 4], _v: [f64; 4]) -> Option<Packet<Self>>
+    fn camera_packet<L: Lane>(_camera: &Camera, _u: [f64; 4], _v: [f64; 4]) -> Option<Packet<Self, L>>
     where
         Self: Sized,
     {
@@ -76,7 +76,7 @@ pub trait Backend: Send + Sync + 'static {
     /// The crossings of the packet's rays with a shape within their ranges, as
     /// [`Backend::intersect`] finds each (by default one lane at a time).
     #[inline(always)]
-    fn cross4(shape: &Self::Shape, p: &Packet<Self>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings
+    fn cross4<L: Lane>(shape: &Self::Shape, p: &Packet<Self, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings
     where
         Self: Sized,
     {

@@ -4,12 +4,12 @@
 //! in lanes, the same operations in the same order as glam's, so the same bits. Other shapes
 //! (evolved surfaces) use their own geometry, one lane at a time.
 
-use super::{Backend, Crossings, Packet, crossings, inside_rim, lanes3};
+use super::{Backend, Crossings, Packet, array, crossings, inside_rim, lanes3, mask_array};
 use crate::camera::Camera;
 use crate::ray::{Ray, in_range};
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
-use cga_core::simd::F64x4;
+use cga_core::simd::Lane;
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -137,34 +137,34 @@ impl Backend for Plain {
         facing(n.into(), ray.dir)
     }
 
-    type CarrierLanes = ();
+    type CarrierLanes<L: Lane> = ();
 
     #[inline(always)]
-    fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Plain> {
+    fn packet<L: Lane>(origin: E3<L>, dir: E3<L>) -> Packet<Plain, L> {
         Packet::per_lane(origin, dir, ())
     }
 
     /// `unit(x a + y b + z c)` from the camera's position, `(x, y, z)` the image-plane point
     /// and `(a, b, c)` the camera's axes, as [`Plain::camera_ray`] computes it.
     #[inline(always)]
-    fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Plain>> {
-        let points: [F64x4; 3] = lanes3::<F64x4, 4>(core::array::from_fn(|k| camera.image_point(u[k], v[k])));
+    fn camera_packet<L: Lane>(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Plain, L>> {
+        let points: E3<L> = lanes3::<L, 4>(core::array::from_fn(|k| camera.image_point(u[k], v[k])));
         let [a, b, c] = camera.axes();
-        let d: [F64x4; 3] = core::array::from_fn(|k| {
-            let axis = |e: E3| F64x4::splat(e[k]);
+        let d: E3<L> = core::array::from_fn(|k| {
+            let axis = |e: E3| L::from_f64(e[k]);
             points[0] * axis(a) + points[1] * axis(b) + points[2] * axis(c)
         });
-        let inv = F64x4::splat(1.0) / norm(d);
-        if !inv.to_array().iter().all(|i| i.is_finite() && *i > 0.0) {
+        let inv = L::one() / norm(d);
+        if !array(inv).iter().all(|i| i.is_finite() && *i > 0.0) {
             return None;
         }
         let dir = scale(d, inv);
-        let origin = camera.position().map(F64x4::splat);
+        let origin = camera.position().map(L::from_f64);
         Some(Self::packet(origin, dir))
     }
 
     #[inline(always)]
-    fn cross4(shape: &PlainShape, p: &Packet<Plain>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+    fn cross4<L: Lane>(shape: &PlainShape, p: &Packet<Plain, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
         match shape {
             PlainShape::Sphere { centre, radius } => sphere4(p, *centre, *radius, t_min, t_max),
             PlainShape::Plane { normal, offset } => plane4(p, *normal, *offset, None, t_min, t_max),
@@ -178,27 +178,28 @@ impl Backend for Plain {
 
 /// `v` in lanes.
 #[inline(always)]
-fn splat3(v: DVec3) -> [F64x4; 3] {
-    v.to_array().map(F64x4::splat)
+fn splat3<L: Lane>(v: DVec3) -> E3<L> {
+    v.to_array().map(L::from_f64)
 }
 
 /// The nearer root within range of `|o + t d − c|² = r²`: `t = −b ∓ √(b² − (|o − c|² − r²))`,
 /// `b = (o − c)·d`.
 #[inline(always)]
-fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+fn sphere4<L: Lane>(p: &Packet<Plain, L>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
     let c = splat3(centre);
     let oc = sub(p.origin, c);
     let b = dot(oc, p.dir);
-    let disc = b * b - (dot(oc, oc) - F64x4::splat(radius * radius));
-    let d = disc.to_array();
+    let disc = b * b - (dot(oc, oc) - L::from_f64(radius * radius));
+    let d = array(disc);
     if d.iter().all(|&x| x < 0.0) {
         return [None; 4];
     }
-    let s = F64x4::new(d.map(f64::sqrt));
+    let s = L::from_fn(|l| d[l].sqrt());
     let (near, far) = (-b - s, -b + s);
-    let range = (F64x4::new(*t_min), F64x4::new(*t_max));
-    let (near_in, far_in) = (in_range(near, range.0, range.1).0, in_range(far, range.0, range.1).0);
-    let (near, far) = (near.to_array(), far.to_array());
+    let range = (L::from_fn(|l| t_min[l]), L::from_fn(|l| t_max[l]));
+    let (near_in, far_in) =
+        (mask_array::<L>(in_range(near, range.0, range.1)), mask_array::<L>(in_range(far, range.0, range.1)));
+    let (near, far) = (array(near), array(far));
     let ok: [bool; 4] = core::array::from_fn(|l| (d[l] >= 0.0) & (near_in[l] | far_in[l]));
     if !ok.iter().any(|&o| o) {
         return [None; 4];
@@ -206,7 +207,7 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
     core::array::from_fn(|l| {
         ok[l].then(|| {
             let t = if near_in[l] { near[l] } else { far[l] };
-            let point = core::array::from_fn(|k| p.origin[k].to_array()[l] + t * p.dir[k].to_array()[l]);
+            let point = core::array::from_fn(|k| p.origin[k].lane(l) + t * p.dir[k].lane(l));
             Crossing { t, point, alpha: None }
         })
     })
@@ -214,8 +215,8 @@ fn sphere4(p: &Packet<Plain>, centre: DVec3, radius: f64, t_min: &[f64; 4], t_ma
 
 /// `t = (δ − n·o)/(n·d)` on the plane `n·x = δ`, within range, and for a disk within the rim.
 #[inline(always)]
-fn plane4(
-    p: &Packet<Plain>,
+fn plane4<L: Lane>(
+    p: &Packet<Plain, L>,
     normal: DVec3,
     offset: f64,
     rim: Option<(DVec3, f64)>,
@@ -224,11 +225,11 @@ fn plane4(
 ) -> Crossings {
     let n = splat3(normal);
     let denom = dot(n, p.dir);
-    let t = (F64x4::splat(offset) - dot(n, p.origin)) / denom;
+    let t = (L::from_f64(offset) - dot(n, p.origin)) / denom;
     // `o + t d` (glam's `t * d` per coordinate: the same products).
     let x = add(p.origin, scale(p.dir, t));
     let inside = inside_rim(&x, rim.map(|(c, r)| (c.to_array(), r)));
-    let (denom, t) = (denom.to_array(), t.to_array());
+    let (denom, t) = (array(denom), array(t));
     let ok = core::array::from_fn(|l| {
         (denom[l] != 0.0) & t[l].is_finite() & (t[l] > t_min[l]) & (t[l] < t_max[l]) & inside[l]
     });

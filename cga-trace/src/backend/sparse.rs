@@ -3,13 +3,13 @@
 //! instantiated on four f64 lanes, operation for operation, so the same bits; other shapes
 //! one lane at a time through their own code.
 
-use super::{Backend, Crossings, Packet, crossings, inside_rim, lane};
+use super::{Backend, Crossings, Packet, array, crossings, inside_rim, lane, mask_array};
 use crate::camera::Camera;
 use crate::ray::Ray;
 use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, sphere_crossing};
 use cga_core::euclid::{E3, dot, sub, tolerance};
-use cga_core::simd::{F64x4, Lanes};
-use cga_core::{Line, Plane, Select, Sphere};
+use cga_core::simd::{Lane, Lanes};
+use cga_core::{Line, Plane, Sphere};
 use std::sync::Arc;
 
 /// The generated grade-sparse types (the default back end).
@@ -84,30 +84,32 @@ impl Backend for Sparse {
         each_kind!(shape, s => s.normal(ray, crossing))
     }
 
-    type CarrierLanes = Line<F64x4>;
+    type CarrierLanes<L: Lane> = Line<L>;
 
     #[inline(always)]
-    fn packet(origin: [F64x4; 3], dir: [F64x4; 3]) -> Packet<Sparse> {
+    fn packet<L: Lane>(origin: E3<L>, dir: E3<L>) -> Packet<Sparse, L> {
         let line = Line::from_point_unit_direction(origin, dir);
-        let lines = Line::unpack(line);
+        let mut lines = [Line::zero(); 4];
+        Line::unpack_lanes(line, &mut lines);
         let rays = core::array::from_fn(|l| Ray { origin: lane(&origin, l), dir: lane(&dir, l), carrier: lines[l] });
         Packet { rays, origin, dir, carrier: line }
     }
 
     #[inline(always)]
-    fn camera_packet(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Sparse>> {
-        let (rays, line) = camera.rays4(u, v)?;
-        Some(Packet::with_carrier(rays, line))
+    fn camera_packet<L: Lane>(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Sparse, L>> {
+        let (rays, carrier, dir) = camera.rays4(u, v)?;
+        // The lanes as computed, not gathered back from the rays.
+        Some(Packet { rays, origin: camera.position().map(L::from_f64), dir, carrier })
     }
 
     #[inline(always)]
-    fn cross4(shape: &SparseShape, p: &Packet<Sparse>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+    fn cross4<L: Lane>(shape: &SparseShape, p: &Packet<Sparse, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
         match shape {
-            SparseShape::Sphere(s) => meet_sphere(p, &Sphere::pack([s.sphere; 4]), t_min, t_max),
-            SparseShape::Plane(s) => meet_plane(p, &Plane::pack([s.plane; 4]), None, t_min, t_max),
+            SparseShape::Sphere(s) => meet_sphere(p, &s.sphere.cast(), t_min, t_max),
+            SparseShape::Plane(s) => meet_plane(p, &s.plane.cast(), None, t_min, t_max),
             SparseShape::Disk(d) => {
                 let rim = Some((d.disk.centre, d.disk.radius));
-                meet_plane(p, &Plane::pack([d.disk.plane; 4]), rim, t_min, t_max)
+                meet_plane(p, &d.disk.plane.cast(), rim, t_min, t_max)
             }
             _ => core::array::from_fn(|l| Sparse::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
         }
@@ -115,24 +117,25 @@ impl Backend for Sparse {
 }
 
 /// `(x − o) · d` per lane, as [`Ray::t_of`] computes it.
-fn t_of4(p: &Packet<Sparse>, x: [F64x4; 3]) -> F64x4 {
+fn t_of4<L: Lane>(p: &Packet<Sparse, L>, x: E3<L>) -> L {
     dot(sub(x, p.origin), p.dir)
 }
 
 /// `L ∨ S` in lanes: [`sphere_crossing`], which [`SphereShape::intersect`](crate::shapes::SphereShape)
 /// runs for one ray.
 #[inline(always)]
-fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
-    let range = (F64x4::new(*t_min), F64x4::new(*t_max));
+fn meet_sphere<L: Lane>(p: &Packet<Sparse, L>, sphere: &Sphere<L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
+    let range = (L::from_fn(|l| t_min[l]), L::from_fn(|l| t_max[l]));
     let c = sphere_crossing(&p.carrier, sphere, (p.origin, p.dir), range);
-    if !F64x4::any(c.found) {
+    if !L::any(c.found) {
         return [None; 4];
     }
     let [a, b] = &c.points;
-    let (ta, tb) = (c.t[0].to_array(), c.t[1].to_array());
+    let (ta, tb) = (array(c.t[0]), array(c.t[1]));
+    let (found, second) = (mask_array::<L>(c.found), mask_array::<L>(c.second));
     core::array::from_fn(|l| {
-        c.found.0[l].then(|| {
-            let (t, x) = if c.second.0[l] { (tb[l], b) } else { (ta[l], a) };
+        found[l].then(|| {
+            let (t, x) = if second[l] { (tb[l], b) } else { (ta[l], a) };
             Crossing { t, point: lane(x, l), alpha: None }
         })
     })
@@ -141,18 +144,18 @@ fn meet_sphere(p: &Packet<Sparse>, sphere: &Sphere<F64x4>, t_min: &[f64; 4], t_m
 /// `L ∨ Π` in lanes, as the plane and disk shapes meet it: the flat point's point where
 /// its weight is not zero to rounding, within range, and for a disk within the rim.
 #[inline(always)]
-fn meet_plane(
-    p: &Packet<Sparse>,
-    plane: &Plane<F64x4>,
+fn meet_plane<L: Lane>(
+    p: &Packet<Sparse, L>,
+    plane: &Plane<L>,
     rim: Option<(E3, f64)>,
     t_min: &[f64; 4],
     t_max: &[f64; 4],
 ) -> Crossings {
     let flat = p.carrier & *plane;
-    let inv = F64x4::splat(1.0) / flat.eoi;
+    let inv = L::one() / flat.eoi;
     let x = [flat.e1i * inv, flat.e2i * inv, flat.e3i * inv];
-    let t = t_of4(p, x).to_array();
-    let (w, inv) = (flat.eoi.to_array(), inv.to_array());
+    let t = array(t_of4(p, x));
+    let (w, inv) = (array(flat.eoi), array(inv));
     let (inside, tol) = (inside_rim(&x, rim), tolerance(1.0));
     let ok = core::array::from_fn(|l| {
         (w[l].abs() > tol) & inv[l].is_finite() & (t[l] > t_min[l]) & (t[l] < t_max[l]) & inside[l]

@@ -15,6 +15,8 @@
 //! - `counts.rs`: the rays cast ([`RayCounts`]).
 
 mod aov;
+#[cfg(target_arch = "x86_64")]
+mod avx;
 mod counts;
 mod glass;
 mod nearest;
@@ -50,6 +52,8 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// Whether rays go four at a time through packets: where `B` has them, unless switched
     /// off or the scene has a hierarchy.
     pub(crate) packets: bool,
+    /// Whether packets may run in AVX registers where the CPU has AVX2 ([`Renderer::pixels4`]).
+    pub(crate) avx2: bool,
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
     pub(crate) bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
@@ -102,6 +106,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             scene,
             shapes,
             packets,
+            avx2: true,
             bounds,
             bvh,
             flat,
@@ -130,6 +135,14 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// The same renderer tracing one ray at a time, without packets (to compare them).
     pub fn without_packets(mut self) -> Self {
         self.packets = false;
+        self
+    }
+
+    /// The same renderer tracing its packets on four-lane arrays ([`F64x4`](cga_core::simd::F64x4))
+    /// compiled for the baseline CPU, as on a CPU without AVX2, even where this one has it
+    /// (to compare the two lane types).
+    pub fn without_avx2(mut self) -> Self {
+        self.avx2 = false;
         self
     }
 

@@ -2,6 +2,8 @@
 //! through them, one pixel at a time or four neighbours of a row as a packet, and the mean
 //! over samples.
 
+#[cfg(target_arch = "x86_64")]
+use super::avx::Ymm;
 use super::{Aov, RayCounts, Renderer};
 use crate::backend::{Backend, Packet, RayLanes, lanes3};
 use crate::camera::Lens;
@@ -124,7 +126,7 @@ impl<B: Backend> Renderer<'_, B> {
     /// them (the lanes then run in one register each).
     pub(super) fn pixels4(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
         #[cfg(target_arch = "x86_64")]
-        if avx2() {
+        if self.avx2 && avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
             return unsafe { self.pixels4_avx2(i0, j, cast) };
         }
@@ -134,7 +136,7 @@ impl<B: Backend> Renderer<'_, B> {
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     unsafe fn pixels4_avx2(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        self.pixels::<Packet<B>, 4>(i0, j, Aov::Shaded, cast)
+        self.pixels::<Packet<B, Ymm>, 4>(i0, j, Aov::Shaded, cast)
     }
 }
 
