@@ -21,6 +21,7 @@ for _ in $(seq "$rounds"); do
     cpu anchor "$out/anchor/release/glam-whitted" 1280 960 "$out/anchor.png" 1
     cpu sparse "$ours" render "$scene" -o "$out/sparse.png" --threads 1
     cpu sparse-no-packets "$ours" render "$scene" -o "$out/scalar.png" --threads 1 --no-packets
+    cpu sparse-no-avx2 "$ours" render "$scene" -o "$out/arrays.png" --threads 1 --no-avx2
     cpu plain "$ours" render "$scene" -o "$out/plain.png" --threads 1 --backend plain
     cpu plain-no-packets "$ours" render "$scene" -o "$out/plain.png" --threads 1 --backend plain --no-packets
     cpu anchor-2 "$out/anchor/release/glam-whitted" 1280 960 "$out/anchor.png" 2
@@ -37,7 +38,7 @@ for line in open(sys.argv[1]):
         cpu[parts[0]].append(float(parts[1]) + float(parts[2])); wall[parts[0]].append(float(parts[3]))
 m = {k: statistics.median(v) for k, v in cpu.items()}
 print("| program (1 thread) | CPU s | / anchor |\n|---|---:|---:|")
-for k in ["anchor", "sparse", "sparse-no-packets", "plain", "plain-no-packets"]:
+for k in ["anchor", "sparse", "sparse-no-avx2", "sparse-no-packets", "plain", "plain-no-packets"]:
     print(f"| {k} | {m[k]:.3f} | {m[k] / m['anchor']:.2f}× |")
 w = {k: statistics.median(v) for k, v in wall.items()}
 print(f"\nwall, 2 threads / 1 thread: cga-trace {w['sparse-1-wall'] / w['sparse-2-wall']:.2f}× "

@@ -7,7 +7,7 @@
 //! lens whose rays leave a point of the lens disk and pass through the pinhole ray's point on
 //! the plane of focus (depth of field).
 
-use crate::backend::lane;
+use crate::backend::{lane, lanes3};
 use crate::limits::{EXTENT_OVER_FOCAL, MAX_PIXELS, MAX_SIDE};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, scale, sub, unit};
@@ -240,7 +240,7 @@ impl Camera {
     #[inline(always)]
     pub fn rays4<L: Lane>(&self, u: [f64; 4], v: [f64; 4]) -> Option<([Ray; 4], Line<L>, E3<L>)> {
         let points: [E3; 4] = core::array::from_fn(|k| self.image_point(u[k], v[k]));
-        let x = up(core::array::from_fn(|k| L::from_fn(|l| points[l][k]))).to_array();
+        let x = up(lanes3::<L, 4>(points)).to_array();
         let basis = |k: usize| self.lines[k].cast::<L>();
         let (line, dir) = unit_line(&[basis(0), basis(1), basis(2), basis(3), basis(4)], x)?;
         let mut lines = [Line::zero(); 4];

@@ -150,10 +150,12 @@ impl Backend for Plain {
     fn camera_packet<L: Lane>(camera: &Camera, u: [f64; 4], v: [f64; 4]) -> Option<Packet<Plain, L>> {
         let points: E3<L> = lanes3::<L, 4>(core::array::from_fn(|k| camera.image_point(u[k], v[k])));
         let [a, b, c] = camera.axes();
-        let d: E3<L> = core::array::from_fn(|k| {
+        let along = |k: usize| {
             let axis = |e: E3| L::from_f64(e[k]);
             points[0] * axis(a) + points[1] * axis(b) + points[2] * axis(c)
-        });
+        };
+        // Written out (as lanes3): `from_fn` over lanes may stay out of line, without AVX.
+        let d: E3<L> = [along(0), along(1), along(2)];
         let inv = L::one() / norm(d);
         if !array(inv).iter().all(|i| i.is_finite() && *i > 0.0) {
             return None;
