@@ -50,8 +50,7 @@ impl Ymm {
     }
 
     /// Built in registers (`vunpcklpd`, `vinsertf128`, or one broadcast where the lanes are
-    /// one value): through memory, four 8-byte stores and a 32-byte load would stall the load
-    /// until the stores retire (no store forwarding across them).
+    /// one value).
     #[inline(always)]
     fn from_array(a: [f64; 4]) -> Self {
         Ymm(avx!(_mm256_setr_pd(a[0], a[1], a[2], a[3])))
