@@ -100,18 +100,19 @@ impl PartialOrd for Ymm {
     }
 }
 
+/// The operators `$trait` of `$t` (a register newtype), each one intrinsic.
 macro_rules! binary {
-    ($($trait:ident $method:ident $intrinsic:ident),*) => {$(
-        impl $trait for Ymm {
-            type Output = Ymm;
+    ($t:ident: $($trait:ident $method:ident $intrinsic:ident),*) => {$(
+        impl $trait for $t {
+            type Output = $t;
             #[inline(always)]
-            fn $method(self, rhs: Ymm) -> Ymm {
-                Ymm(avx!($intrinsic(self.0, rhs.0)))
+            fn $method(self, rhs: $t) -> $t {
+                $t(avx!($intrinsic(self.0, rhs.0)))
             }
         }
     )*};
 }
-binary!(Add add _mm256_add_pd, Sub sub _mm256_sub_pd, Mul mul _mm256_mul_pd, Div div _mm256_div_pd);
+binary!(Ymm: Add add _mm256_add_pd, Sub sub _mm256_sub_pd, Mul mul _mm256_mul_pd, Div div _mm256_div_pd);
 
 impl Neg for Ymm {
     type Output = Ymm;
@@ -208,18 +209,7 @@ impl Real for Ymm {
     }
 }
 
-macro_rules! bitwise {
-    ($($trait:ident $method:ident $intrinsic:ident),*) => {$(
-        impl $trait for YmmMask {
-            type Output = YmmMask;
-            #[inline(always)]
-            fn $method(self, rhs: YmmMask) -> YmmMask {
-                YmmMask(avx!($intrinsic(self.0, rhs.0)))
-            }
-        }
-    )*};
-}
-bitwise!(BitAnd bitand _mm256_and_pd, BitOr bitor _mm256_or_pd);
+binary!(YmmMask: BitAnd bitand _mm256_and_pd, BitOr bitor _mm256_or_pd);
 
 impl Not for YmmMask {
     type Output = YmmMask;
