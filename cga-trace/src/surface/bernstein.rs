@@ -46,9 +46,30 @@ const BINOMIALS: [[f64; LARGEST_DEGREE + 1]; LARGEST_DEGREE + 1] = {
     t
 };
 
+/// `1 / C(n, k)`, rounded once (the same bits as dividing at run time).
+const INVERSE_BINOMIALS: [[f64; LARGEST_DEGREE + 1]; LARGEST_DEGREE + 1] = {
+    const M: usize = LARGEST_DEGREE + 1;
+    let mut t = [[0.0; M]; M];
+    let mut n = 0;
+    while n < M {
+        let mut k = 0;
+        while k <= n {
+            t[n][k] = 1.0 / BINOMIALS[n][k];
+            k += 1;
+        }
+        n += 1;
+    }
+    t
+};
+
 /// `C(n, k)` for `n ≤ 36`.
 pub(crate) fn binomial(n: usize, k: usize) -> f64 {
     BINOMIALS[n][k]
+}
+
+/// `1 / C(n, k)` for `n ≤ 36`.
+pub(crate) fn inverse_binomial(n: usize, k: usize) -> f64 {
+    INVERSE_BINOMIALS[n][k]
 }
 
 /// Roots found in one call: rarely more than a few.
@@ -158,8 +179,9 @@ impl<T: Real, const N: usize> Scaled<T, N> {
     /// In the Bernstein basis: `cₖ / C(n, k)`.
     pub fn bernstein(&self) -> Bernstein<T, N> {
         let mut c = self.c;
-        for (k, x) in c.iter_mut().enumerate().take(self.degree + 1) {
-            *x = *x * T::from_f64(1.0 / binomial(self.degree, k));
+        let inverse = &INVERSE_BINOMIALS[self.degree][..=self.degree];
+        for (x, &w) in c.iter_mut().zip(inverse) {
+            *x = *x * T::from_f64(w);
         }
         Bernstein { c, degree: self.degree }
     }
@@ -353,7 +375,7 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
     /// The single root in `(a, b) ⊆ [0, 1]`, where `p(a)`, `p(b)` differ in sign: Newton
     /// steps with the exact slope, replaced by bisection whenever one leaves the bracket,
     /// until the bracket or the step is below `tolerance` (rounding level at least).
-    fn refine(&self, a: T, b: T, tolerance: T) -> T {
+    pub(super) fn refine(&self, a: T, b: T, tolerance: T) -> T {
         let (pa, pb) = (self.eval(a), self.eval(b));
         let positive_at_a = pa > T::zero();
         // Below this, |p| is rounding noise (de Casteljau is backward stable: the error is a

@@ -4,6 +4,7 @@
 use super::bernstein::Roots;
 use super::cells::{Cells, PAD};
 use super::family::{Circles, TwoCircles};
+use super::unsquared::Unsquared;
 use super::{Family, Finder, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
@@ -25,6 +26,9 @@ pub struct EvolvedSurface<C = TwoCircles<f64>> {
     method: Method,
     /// Bounding spheres and tubes over α-intervals, for the methods that cull with them.
     cells: Option<Cells>,
+    /// The crossing condition unsquared on the same cells, for the families and methods that
+    /// use it (a spline segment's, with the hybrid method).
+    unsquared: Option<Box<Unsquared<f64>>>,
 }
 
 /// Circles whose centres and radii differ by less than this times the radius, and whose
@@ -109,19 +113,29 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
             radius = radius.max(norm(c) + r);
         }
         let cells = Self::cells(&circles, method)?;
-        Ok(EvolvedSurface { family: Family::of(circles), origin, radius: radius * PAD, method, cells })
+        let unsquared = Self::unsquared(&circles, method);
+        Ok(EvolvedSurface { family: Family::of(circles), origin, radius: radius * PAD, method, cells, unsquared })
     }
 
     /// The same surface (the same circles, oriented as they are) intersected by another
     /// method.
     pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
         let cells = Self::cells(&self.family.circles, method)?;
-        Ok(EvolvedSurface { family: self.family.clone(), method, cells, ..*self })
+        let unsquared = Self::unsquared(&self.family.circles, method);
+        Ok(EvolvedSurface { family: self.family.clone(), method, cells, unsquared, ..*self })
     }
 
     /// The culling cells, for the methods that cull with them.
     fn cells(circles: &C, method: Method) -> Result<Option<Cells>, SurfaceError> {
         method.cells().map(|count| Cells::new(circles, count)).transpose()
+    }
+
+    /// The unsquared condition on the hybrid method's cells, where the family has it.
+    fn unsquared(circles: &C, method: Method) -> Option<Box<Unsquared<f64>>> {
+        match method {
+            Method::Hybrid { .. } => circles.unsquared(method.cells()?).map(Box::new),
+            _ => None,
+        }
     }
 
     /// The bounding sphere `(centre, radius)` in world coordinates.
@@ -157,12 +171,28 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// Candidate α for a ray in the local frame: what the method's root finder returns over
     /// the α-intervals it reaches, in increasing α per interval.
     pub fn candidates(&self, local: &Ray, t_min: f64, t_max: f64) -> Roots<f64> {
-        let mut out = Roots::new();
+        let (mut placed, rest) = self.candidates_placed(local, t_min, t_max);
+        placed.extend(rest);
+        placed
+    }
+
+    /// [`EvolvedSurface::candidates`] in two lists: those already placed on `f` to rounding
+    /// (the unsquared condition's), and the rest (a polynomial's, or samples), which the
+    /// crossing kept refines on `f`.
+    fn candidates_placed(&self, local: &Ray, t_min: f64, t_max: f64) -> (Roots<f64>, Roots<f64>) {
+        let (mut placed, mut out) = (Roots::new(), Roots::new());
         let line = &local.carrier;
         match &self.cells {
             Some(cells) => {
                 let intervals = cells.intervals(local, t_min, t_max);
-                if let (true, Finder::Polynomial(tolerance)) = (C::HIGH_DEGREE, self.method.finder(1)) {
+                if let (Some(unsquared), Finder::Polynomial(tolerance)) = (&self.unsquared, self.method.finder(1)) {
+                    // Most intervals are decided without the squared polynomial; it is built
+                    // (once) for the rest.
+                    let undecided = unsquared.roots(line, &intervals, &mut placed);
+                    if !undecided.is_empty() {
+                        self.family.roots_on(line, tolerance, undecided.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
+                    }
+                } else if let (true, Finder::Polynomial(tolerance)) = (C::HIGH_DEGREE, self.method.finder(1)) {
                     // A high-degree polynomial (a spline segment's) is built once and
                     // restricted to each interval: cheaper than building it on each.
                     self.family.roots_on(line, tolerance, intervals.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
@@ -174,7 +204,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
             }
             None => self.family.roots(line, self.method.finder(1), 0.0, 1.0, &mut out),
         }
-        out
+        (placed, out)
     }
 
     /// The nearest crossing with `t_min < t < t_max`. Only the ray's origin and direction
@@ -186,10 +216,13 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// [`EvolvedSurface::intersect`] for a ray already in the local frame (surfaces sharing a
     /// frame, the segments of a spline, build it once).
     pub fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let alphas = self.candidates(local, t_min, t_max);
+        let (placed, alphas) = self.candidates_placed(local, t_min, t_max);
         let polish = self.method.finder(1).polishes();
         let ray = (local.origin, local.dir, &local.carrier);
-        let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish)?;
+        // Placed candidates are verified as they are; the others' kept crossing is refined.
+        let first = self.family.nearest(ray, &placed, t_min, t_max, false);
+        let t_max = first.map_or(t_max, |(t, _, _)| t);
+        let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish).or(first)?;
         Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })
     }
 

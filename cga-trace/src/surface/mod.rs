@@ -31,6 +31,8 @@ mod ruled;
 pub mod segment;
 #[cfg(feature = "evolved")]
 mod spline;
+#[cfg(feature = "evolved")]
+pub mod unsquared;
 
 use cga_core::{GeometryError, InterpolationError};
 #[cfg(feature = "evolved")]

@@ -25,6 +25,7 @@
 
 use super::bernstein::{Bernstein, LARGEST_DEGREE, Scaled, binomial};
 use super::family::{Circles, convolve as family_convolve};
+use super::unsquared::Unsquared;
 use cga_core::{Circle, Dual, InterpolationError, Line, Real, ScalarQuadvector, Vector};
 use smallvec::SmallVec;
 
@@ -33,6 +34,9 @@ const CAPACITY: usize = LARGEST_DEGREE + 1;
 
 /// Coefficient sequences in the scaled Bernstein basis, one blade per power.
 type Blades<X> = SmallVec<[X; 10]>;
+
+/// `X`, `⟨Q X⟩₃` (blades), `S` and `q` (coefficients) in the scaled basis.
+pub(super) type Parts<'a, T> = (&'a [Circle<T>], &'a [Circle<T>], &'a [T], &'a [T]);
 
 /// One Bézier segment of circles, with its per-surface constants.
 #[derive(Clone, Debug)]
@@ -93,7 +97,7 @@ const WEIGHTS: usize = 13;
 /// A scalar the circles of a segment are evaluated in: `T` itself, or dual numbers over it
 /// for the slope. Sums of constant blades and coefficients with weights in `Self`: for dual
 /// weights the constants are not lifted, which saves a third of the products.
-trait Weight<T: Real>: Real {
+pub(super) trait Weight<T: Real>: Real {
     /// `Σₖ cₖ wₖ`.
     fn blades(c: &[Circle<T>], w: &[Self]) -> Circle<Self>;
     /// `Σₖ cₖ wₖ`.
@@ -124,7 +128,7 @@ impl<T: Real> Weight<T> for Dual<T> {
 }
 
 /// The scaled Bernstein basis of degree `n` at `t`: `(1 − t)ⁿ⁻ᵏ tᵏ`, `k = 0 … n`.
-fn basis<U: Real>(t: U, n: usize) -> [U; WEIGHTS] {
+pub(super) fn basis<U: Real>(t: U, n: usize) -> [U; WEIGHTS] {
     let u = U::one() - t;
     let mut w = [U::one(); WEIGHTS];
     let mut power = U::one();
@@ -148,28 +152,54 @@ fn basis<U: Real>(t: U, n: usize) -> [U; WEIGHTS] {
 /// without its products.
 fn circle_at<T: Real, U: Weight<T>>(segment: &BezierSegment<T>, t: U) -> Result<Circle<U>, InterpolationError> {
     let d = segment.x.len() - 1;
-    // One basis per degree in use: X (d), S (2d), ⟨Q X⟩₃ (3d), q (4d).
-    let [w1, w2, w3, w4] = [1, 2, 3, 4].map(|k| basis(t, k * d));
-    let big_s = U::scalars(segment.s.coefficients(), &w2);
-    let q2 = U::scalars(segment.q.coefficients(), &w4);
-    let disc = big_s * big_s - q2;
-    if disc < U::zero() || !disc.is_finite() {
-        return Err(InterpolationError::NoRealRoot { alpha: t.to_f64(), s: big_s.to_f64(), q2: q2.to_f64() });
-    }
-    let root = disc.sqrt();
-    // 2σ, without cancellation when S < 0.
-    let two_sigma = if big_s >= U::zero() { big_s + root } else { q2 / (big_s - root) };
+    let two_sigma = segment.two_sigma(t)?;
     let singular = InterpolationError::Singular { alpha: t.to_f64() };
-    if two_sigma <= U::zero() || !two_sigma.is_finite() {
-        return Err(singular);
-    }
-    let (x, qx) = (U::blades(&segment.x, &w1), U::blades(&segment.qx, &w3));
+    let (x, qx) = (U::blades(&segment.x, &basis(t, d)), U::blades(&segment.qx, &basis(t, 3 * d)));
     (x * two_sigma + qx * (-U::one())).try_normalise().ok_or(singular)
+}
+
+impl<T: Real> BezierSegment<T> {
+    /// `2σ(t)`, `σ` the larger root of `σ² − Sσ + q/4 = 0`, in any scalar `U` (dual numbers for
+    /// the slope): `S + √(S² − q)`, or `q / (S − √(S² − q))` without cancellation when `S < 0`.
+    pub(super) fn two_sigma<U: Weight<T>>(&self, t: U) -> Result<U, InterpolationError> {
+        let d = self.x.len() - 1;
+        let big_s = U::scalars(self.s.coefficients(), &basis(t, 2 * d));
+        let q2 = U::scalars(self.q.coefficients(), &basis(t, 4 * d));
+        let disc = big_s * big_s - q2;
+        if disc < U::zero() || !disc.is_finite() {
+            return Err(InterpolationError::NoRealRoot { alpha: t.to_f64(), s: big_s.to_f64(), q2: q2.to_f64() });
+        }
+        let root = disc.sqrt();
+        let two_sigma = if big_s >= U::zero() { big_s + root } else { q2 / (big_s - root) };
+        if two_sigma <= U::zero() || !two_sigma.is_finite() {
+            return Err(InterpolationError::Singular { alpha: t.to_f64() });
+        }
+        Ok(two_sigma)
+    }
+
+    /// The Bézier degree `d`.
+    pub(super) fn degree(&self) -> usize {
+        self.x.len() - 1
+    }
+
+    /// Whether the controls are co-spherical (`Q ≡ 0`).
+    pub(super) fn cospherical(&self) -> bool {
+        self.cospherical
+    }
+
+    /// `X`, `⟨Q X⟩₃`, `S` and `q` in the scaled basis.
+    pub(super) fn parts(&self) -> Parts<'_, T> {
+        (&self.x, &self.qx, self.s.coefficients(), self.q.coefficients())
+    }
 }
 
 impl<T: Real> Circles<T> for BezierSegment<T> {
     type Polynomial = Bernstein<T, CAPACITY>;
     const HIGH_DEGREE: bool = true;
+
+    fn unsquared(&self, cells: usize) -> Option<Unsquared<T>> {
+        Unsquared::new(self, cells)
+    }
 
     fn at(&self, t: T) -> Result<Circle<T>, InterpolationError> {
         circle_at(self, t)
@@ -222,9 +252,9 @@ impl<T: Real> BezierSegment<T> {
 
 /// `t²(1 − t)² R` of the module docs in the scaled basis, from the meets `A = X ∨ L`
 /// (`VA = d + 1` blades) and `B = ⟨Q X⟩₃ ∨ L` (`VB = 3d + 1`) and the segment's `S` (`SA = 2d + 1`
-/// coefficients) and `q` (`P = 4d + 1`): `a = A²`, `p = A·B`, `b = B²`, `N = q a − b`
-/// (`BB = 6d + 1`), `D = 4(S a − p)`, and `N² − S N D + q D²/4 = N (N − S D) + q D²/4`
-/// (`R1 = 12d + 1`; `DD = 8d + 1` for `D²`), a third fewer products than as written.
+/// coefficients) and `q` (`P = 4d + 1`): `N² − S N D + q D²/4 = N (N − S D) + q D²/4`
+/// (`R1 = 12d + 1`; `DD = 8d + 1` for `D²`) of [`numerators`], a third fewer products than as
+/// written.
 #[allow(clippy::many_single_char_names)]
 fn eliminate<
     T: Real,
@@ -241,23 +271,59 @@ fn eliminate<
     s: &[T],
     q: &[T],
 ) -> [T; R1] {
-    let a_seq: [Vector<T>; VA] = core::array::from_fn(|k| a_seq[k]);
-    let b_seq: [Vector<T>; VB] = core::array::from_fn(|k| b_seq[k]);
+    let (n, d) = numerators::<T, VA, VB, SA, P, BB>(a_seq, b_seq, s, q);
     let s: [T; SA] = core::array::from_fn(|k| s[k]);
     let q: [T; P] = core::array::from_fn(|k| q[k]);
-    let a: [T; SA] = squares(&a_seq);
-    let p: [T; P] = core::array::from_fn(|k| pairs(&a_seq, &b_seq, k));
-    let b: [T; BB] = squares(&b_seq);
-    let qa: [T; BB] = family_convolve(&q, &a);
-    let n: [T; BB] = core::array::from_fn(|k| qa[k] - b[k]);
-    let sa: [T; P] = family_convolve(&s, &a);
-    let d: [T; P] = core::array::from_fn(|k| T::from_f64(4.0) * (sa[k] - p[k]));
     let sd: [T; BB] = family_convolve(&s, &d);
     let m: [T; BB] = core::array::from_fn(|k| n[k] - sd[k]);
     let nm: [T; R1] = family_convolve(&n, &m);
     let dd: [T; DD] = family_convolve(&d, &d);
     let qdd: [T; R1] = family_convolve(&q, &dd);
     core::array::from_fn(|k| nm[k] + T::from_f64(0.25) * qdd[k])
+}
+
+/// `N = q a − b` (`BB = 6d + 1` coefficients) and `D = 4(S a − p)` (`P = 4d + 1`) in the scaled
+/// basis, from the meets `A = X ∨ L` (`VA = d + 1` blades) and `B = ⟨Q X⟩₃ ∨ L`
+/// (`VB = 3d + 1`) and the segment's `S` (`SA = 2d + 1`) and `q` (`P`), with `a = A²`,
+/// `p = A·B`, `b = B²`: the crossing condition is `σ D − N = 0` (module docs).
+#[allow(clippy::many_single_char_names)]
+#[inline(always)]
+pub(super) fn numerators<
+    T: Real,
+    const VA: usize,
+    const VB: usize,
+    const SA: usize,
+    const P: usize,
+    const BB: usize,
+>(
+    a_seq: &[Vector<T>],
+    b_seq: &[Vector<T>],
+    s: &[T],
+    q: &[T],
+) -> ([T; BB], [T; P]) {
+    let a_seq: [Vector<T>; VA] = filled(Vector::zero(), |k| a_seq[k]);
+    let b_seq: [Vector<T>; VB] = filled(Vector::zero(), |k| b_seq[k]);
+    let s: [T; SA] = filled(T::zero(), |k| s[k]);
+    let q: [T; P] = filled(T::zero(), |k| q[k]);
+    let a: [T; SA] = squares(&a_seq);
+    let p: [T; P] = filled(T::zero(), |k| pairs(&a_seq, &b_seq, k));
+    let b: [T; BB] = squares(&b_seq);
+    let qa: [T; BB] = family_convolve(&q, &a);
+    let n: [T; BB] = filled(T::zero(), |k| qa[k] - b[k]);
+    let sa: [T; P] = family_convolve(&s, &a);
+    let d: [T; P] = filled(T::zero(), |k| T::from_f64(4.0) * (sa[k] - p[k]));
+    (n, d)
+}
+
+/// `[f(0), …, f(N − 1)]`, written in a loop that inlines (`core::array::from_fn` was left out
+/// of line here, a call per element).
+#[inline(always)]
+pub(super) fn filled<X: Copy, const N: usize>(zero: X, f: impl Fn(usize) -> X) -> [X; N] {
+    let mut out = [zero; N];
+    for (k, slot) in out.iter_mut().enumerate() {
+        *slot = f(k);
+    }
+    out
 }
 
 /// `Σ_{i+j=k} uᵢ · uⱼ` for every `k`, each pair `i < j` formed once.

@@ -1,0 +1,465 @@
+//! A spline segment's crossings on one cell from its condition unsquared.
+//!
+//! The line meets `C_t` exactly where `F(t) = σ(t) D(t) − N(t)` vanishes (`segment.rs`: `D` and
+//! `N` are polynomials built from the ray's meets, `σ` is the larger root of
+//! `σ² − Sσ + q/4 = 0`, and `F = (2σA − B)²`). Squaring the radical out gives the polynomial
+//! `R` of degree `12d − 4` (32 for a cubic segment), whose construction, restriction and
+//! isolation were most of a spline ray's time. Here σ — the same for every ray — is replaced
+//! on each cell by the polynomial `σ̃` of degree `2d` interpolating it at Chebyshev points,
+//! with `δ ≥ |σ − σ̃|` and `δ' ≥ |σ' − σ̃'|` over the cell measured when the scene loads. Then
+//! `G = σ̃ D − N` has degree `6d` (18, not 32), `|F − G| ≤ δ |D|` and
+//! `|F' − G'| ≤ δ' |D| + δ |D'|`, and on a cell (coefficients in the Bernstein basis, which
+//! bound a polynomial and its slope by their convex hull):
+//! - every coefficient of `G` beyond the band `δ max|D|` plus `G`'s rounding, all of one
+//!   sign: `F` keeps that sign, no crossing;
+//! - `G`'s end values beyond the band with opposite signs, and every coefficient of `G'`
+//!   beyond its band with one sign: `F` is monotone and crosses once, within `band / |F'|`
+//!   of `G`'s root, which Newton on `G` finds (the crossing kept is then placed on `f`
+//!   itself, [`Family::nearest`](super::Family::nearest));
+//! - otherwise the cell is halved, up to [`DEPTH`] times. What is still undecided — a touch,
+//!   two roots closer than the last halving, a root on an edge, a ray whose coefficients lie
+//!   inside the band — is left to `R` over the cells' whole interval.
+//!
+//! `δ` is measured, not proven: `σ` is analytic on the cell (the family has a real circle
+//! there), `σ − σ̃` a smooth function with `2d + 1` zeros, sampled at [`SAMPLES`] points and
+//! doubled.
+
+use super::bernstein::{Bernstein, Roots, Scaled, binomial, inverse_binomial};
+use super::cells::Intervals;
+use super::family::convolve;
+use super::segment::{BezierSegment, filled, numerators};
+use cga_core::{Dual, Line, Real, Vector};
+use smallvec::SmallVec;
+
+/// Halvings of a cell before it is left to the squared polynomial.
+pub const DEPTH: usize = 4;
+/// Newton steps on `F` for a root before its cell is left undecided.
+const NEWTON: usize = 8;
+/// Points per cell at which `|σ − σ̃|` and its slope are measured.
+pub const SAMPLES: usize = 512;
+/// The most cells a segment is given `σ̃` for (more are left to the squared polynomial alone).
+pub const MAX_CELLS: usize = 256;
+/// `G`'s rounding, in units of `ε` times the scale of its terms: a few hundred operations
+/// of rounding each, with room.
+const ROUNDING: f64 = 256.0;
+/// The polynomials' capacity: `N` and `G` have degree `6d ≤ 18`.
+const CAPACITY: usize = 19;
+
+/// A polynomial on a cell, in the Bernstein basis.
+type Poly<T> = Bernstein<T, CAPACITY>;
+
+/// A linear map of Bernstein coefficients, by columns.
+type Matrix<T> = [[T; CAPACITY]; CAPACITY];
+
+/// The map restricting a polynomial of degree `n` on [0, 1] to `[lo, hi]`: column `k` is the
+/// `k`-th basis polynomial restricted by de Casteljau's algorithm (nonnegative entries, each
+/// row summing to one: as stable as de Casteljau itself).
+fn restriction<T: Real>(n: usize, lo: T, hi: T) -> Box<Matrix<T>> {
+    let mut m = Box::new([[T::zero(); CAPACITY]; CAPACITY]);
+    for (k, column) in m.iter_mut().enumerate().take(n + 1) {
+        let mut unit = [T::zero(); CAPACITY];
+        unit[k] = T::one();
+        let restricted = Bernstein::<T, CAPACITY>::new(&unit[..=n]).restrict(lo, hi);
+        column[..=n].copy_from_slice(restricted.coefficients());
+    }
+    m
+}
+
+/// `m p` for `p` of `N` coefficients: columns scaled and summed (independent lanes, which
+/// vectorise).
+#[inline(always)]
+fn restrict<T: Real, const N: usize>(m: &Matrix<T>, p: &Poly<T>) -> Poly<T> {
+    let mut out = [T::zero(); CAPACITY];
+    for (column, &x) in m.iter().zip(&p.c).take(N) {
+        for (slot, &e) in out.iter_mut().zip(column).take(N) {
+            *slot = *slot + e * x;
+        }
+    }
+    Bernstein { c: out, degree: N - 1 }
+}
+
+/// The cells of one Bézier segment (quadratic or cubic, not co-spherical), each with its
+/// `σ̃` and bounds.
+#[derive(Clone, Debug)]
+pub struct Unsquared<T: Real> {
+    segment: BezierSegment<T>,
+    cells: Vec<Cell<T>>,
+    /// The scale of `G`'s terms per `‖L‖₁²`: `4 σ (S X̄² + X̄ Ȳ) + q X̄² + Ȳ²` with the largest
+    /// Bernstein coefficients over the segment (`X̄`, `Ȳ` in the 1-norm of `X` and `⟨Q X⟩₃`).
+    scale: T,
+}
+
+/// One cell: `σ̃` in the scaled basis on the cell's own parameter, its bounds, and the
+/// restriction of `N` and `D` to it.
+#[derive(Clone, Debug)]
+struct Cell<T: Real> {
+    /// Column `k`: the Bernstein coefficients on the cell of the `k`-th basis polynomial of
+    /// degree `6d` (for `N`) and `4d` (for `D`) over the segment.
+    to_n: Box<Matrix<T>>,
+    to_d: Box<Matrix<T>>,
+    sigma: [T; 7],
+    /// `|σ − σ̃|` and `|dσ/du − dσ̃/du|` (per unit of the cell's parameter) at most; `None`
+    /// where `σ` could not be evaluated everywhere on the cell.
+    delta: Option<(T, T)>,
+}
+
+impl<T: Real> Unsquared<T> {
+    /// The cells over `count` equal intervals of `segment`; `None` for a segment this does not
+    /// serve (linear, co-spherical) and for more than [`MAX_CELLS`] cells.
+    pub fn new(segment: &BezierSegment<T>, count: usize) -> Option<Self> {
+        let d = segment.degree();
+        if !(2..=3).contains(&d) || segment.cospherical() || !(1..=MAX_CELLS).contains(&count) {
+            return None;
+        }
+        let width = 1.0 / count as f64;
+        let cells: Vec<Cell<T>> = (0..count)
+            .map(|i| Cell::new(segment, T::from_f64(i as f64 * width), T::from_f64((i + 1) as f64 * width)))
+            .collect();
+        let sigma_max = cells.iter().fold(T::zero(), |m, c| {
+            let delta = c.delta.map_or(T::zero(), |d| d.0);
+            c.sigma
+                .iter()
+                .enumerate()
+                .take(2 * d + 1)
+                .fold(m, |m, (k, &v)| m.max(v.abs() * T::from_f64(inverse_binomial(2 * d, k)) + delta))
+        });
+        let scale = Self::scale(segment, sigma_max);
+        Some(Unsquared { segment: segment.clone(), cells, scale })
+    }
+
+    /// [`Unsquared::scale`]: the largest Bernstein coefficients of the terms `G` is made of.
+    fn scale(segment: &BezierSegment<T>, sigma_max: T) -> T {
+        let (x, qx, s, q) = segment.parts();
+        let largest = |c: &[T]| {
+            let n = c.len() - 1;
+            c.iter().enumerate().fold(T::zero(), |m, (k, &v)| m.max(v.abs() * T::from_f64(inverse_binomial(n, k))))
+        };
+        let norm1 = |c: &[cga_core::Circle<T>]| {
+            let n = c.len() - 1;
+            c.iter().enumerate().fold(T::zero(), |m, (k, b)| {
+                let size = b.to_array().iter().fold(T::zero(), |s, v| s + v.abs());
+                m.max(size * T::from_f64(inverse_binomial(n, k)))
+            })
+        };
+        let (xb, yb) = (norm1(x), norm1(qx));
+        T::from_f64(4.0) * sigma_max * (largest(s) * xb * xb + xb * yb) + largest(q) * xb * xb + yb * yb
+    }
+
+    /// Candidate α on each of `intervals` (runs of whole cells, as the culling cells give
+    /// them) appended to `out`; the intervals some cell of which is undecided are returned, and
+    /// nothing of theirs is appended.
+    pub fn roots(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
+        if intervals.is_empty() {
+            return Intervals::new();
+        }
+        #[cfg(target_arch = "x86_64")]
+        if cga_core::simd::avx2() {
+            // SAFETY: the CPU has the features the function is compiled for.
+            return unsafe { self.roots_avx2(line, intervals, out) };
+        }
+        self.roots_here(line, intervals, out)
+    }
+
+    /// [`Unsquared::roots`] compiled for AVX2 (the restrictions' columns four lanes at a time;
+    /// the same operations, so the same bits).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn roots_avx2(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
+        self.roots_here(line, intervals, out)
+    }
+
+    #[inline(always)]
+    fn roots_here(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
+        match self.segment.degree() {
+            2 => self.roots_of::<3, 7, 5, 9, 13>(line, intervals, out),
+            _ => self.roots_of::<4, 10, 7, 13, 19>(line, intervals, out),
+        }
+    }
+
+    /// [`Unsquared::roots`] for a segment of degree `d`: `VA = d + 1` and `VB = 3d + 1` meets,
+    /// `σ̃` and `S` of `SA = 2d + 1` coefficients, `D` and `q` of `P = 4d + 1`, `N` and `G` of
+    /// `BB = 6d + 1`. `N` and `D` are built once over the segment and restricted to each cell
+    /// by its matrices.
+    #[inline(always)]
+    fn roots_of<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
+        &self,
+        line: &Line<T>,
+        intervals: &Intervals,
+        out: &mut Roots<T>,
+    ) -> Intervals {
+        let (n, d) = self.numerators::<VA, VB, SA, P, BB>(line);
+        let size: T = line.to_array().iter().fold(T::zero(), |m, &c| m + c.abs());
+        let rounding = T::from_f64(ROUNDING) * T::epsilon() * self.scale * size * size;
+        let count = self.cells.len();
+        let mut undecided = Intervals::new();
+        for &(lo, hi, cells) in intervals {
+            let first = (lo * count as f64).round() as usize;
+            let last = (first + cells).min(count);
+            let start = out.len();
+            for i in first..last {
+                let cell = &self.cells[i];
+                let (cell_n, cell_d) = (restrict::<T, BB>(&cell.to_n, &n), restrict::<T, P>(&cell.to_d, &d));
+                let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
+                if !self.cell_roots::<SA, P, BB>(i, &cell_n, &cell_d, rounding, alpha, out) {
+                    out.truncate(start);
+                    undecided.push((lo, hi, cells));
+                    break;
+                }
+            }
+        }
+        undecided
+    }
+
+    /// `N` and `D` over the segment, in the Bernstein basis.
+    #[inline(always)]
+    fn numerators<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
+        &self,
+        line: &Line<T>,
+    ) -> (Poly<T>, Poly<T>) {
+        let (x, qx, s, q) = self.segment.parts();
+        let a_seq: [Vector<T>; VA] = filled(Vector::zero(), |k| line.meet_circle(&x[k]));
+        let b_seq: [Vector<T>; VB] = filled(Vector::zero(), |k| line.meet_circle(&qx[k]));
+        let (n, d) = numerators::<T, VA, VB, SA, P, BB>(&a_seq, &b_seq, s, q);
+        (Scaled::<T, CAPACITY>::new(&n).bernstein(), Scaled::<T, CAPACITY>::new(&d).bernstein())
+    }
+
+    /// `F`'s roots on cell `i`, where `N` and `D` are `n` and `d`, as α (`alpha` maps the
+    /// cell's parameter), appended to `out`; `false` if undecided.
+    #[inline(always)]
+    fn cell_roots<const SA: usize, const P: usize, const BB: usize>(
+        &self,
+        i: usize,
+        n: &Poly<T>,
+        d: &Poly<T>,
+        rounding: T,
+        alpha: impl Fn(T) -> T,
+        out: &mut Roots<T>,
+    ) -> bool {
+        let cell = &self.cells[i];
+        let Some((delta, delta_slope)) = cell.delta else { return false };
+        let g = cell.g::<SA, P, BB>(n, d);
+        let d_max = d.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
+        let d_slope = (d.coefficients().windows(2)).fold(T::zero(), |m, w| m.max((w[1] - w[0]).abs()))
+            * T::from_f64((P - 1) as f64);
+        let band = delta * d_max + rounding;
+        let band_slope = delta_slope * d_max + delta * d_slope + T::from_f64(2.0 * (BB - 1) as f64) * rounding;
+        let mut brackets: SmallVec<[(T, T, T); 4]> = SmallVec::new();
+        if !isolate(&g, band, band_slope, (T::zero(), T::one()), 0, &mut brackets) {
+            return false;
+        }
+        // G's root is F's to `band / |F'|` (1e-6 in α on a quadratic segment): Newton on F
+        // itself, with G's slope (F's to `band_slope`), kept in the bracket where F is
+        // monotone, places it to rounding — or the cell is left undecided.
+        let four_ulps = T::from_f64(4.0) * T::epsilon();
+        for &(u0, u1, root) in &brackets {
+            let mut u = root;
+            let mut settled = false;
+            for _ in 0..NEWTON {
+                let Ok(two_sigma) = self.segment.two_sigma(alpha(u)) else { break };
+                let f = T::from_f64(0.5) * two_sigma * d.eval(u) - n.eval(u);
+                let next = u - f / g.eval_with_slope(u).1;
+                if !(next >= u0 && next <= u1) {
+                    break;
+                }
+                settled = (next - u).abs() <= four_ulps;
+                u = next;
+                if settled {
+                    break;
+                }
+            }
+            if !settled {
+                return false;
+            }
+            out.push(alpha(u));
+        }
+        true
+    }
+}
+
+impl<T: Real> Cell<T> {
+    /// `σ̃` on `[lo, hi]` of `segment`: `σ` interpolated at the Chebyshev–Lobatto points (the
+    /// ends among them), and its error measured at [`SAMPLES`] points.
+    fn new(segment: &BezierSegment<T>, lo: T, hi: T) -> Self {
+        let m = 2 * segment.degree();
+        let at = |u: T| lo + (hi - lo) * u;
+        let half = T::from_f64(0.5);
+        let nodes: SmallVec<[T; 7]> =
+            (0..=m).map(|j| T::from_f64(0.5 - 0.5 * (std::f64::consts::PI * j as f64 / m as f64).cos())).collect();
+        let values: Option<SmallVec<[T; 7]>> =
+            nodes.iter().map(|&u| segment.two_sigma(at(u)).ok().map(|s| s * half)).collect();
+        let (to_n, to_d) = (restriction(6 * segment.degree(), lo, hi), restriction(4 * segment.degree(), lo, hi));
+        let Some(fitted) = values.and_then(|v| interpolate(&nodes, &v)) else {
+            return Cell { to_n, to_d, sigma: [T::zero(); 7], delta: None };
+        };
+        let mut sigma = [T::zero(); 7];
+        sigma[..=m].copy_from_slice(&fitted);
+        let bernstein = Scaled::<T, CAPACITY>::new(&fitted).bernstein();
+        let (mut value_error, mut slope_error, mut largest) = (T::zero(), T::zero(), T::zero());
+        for k in 0..=SAMPLES {
+            let u = T::from_f64(k as f64 / SAMPLES as f64);
+            // On dual numbers: σ and dσ/du = (hi − lo) dσ/dα.
+            let Ok(two) = segment.two_sigma(Dual { re: at(u), du: hi - lo }) else {
+                return Cell { to_n, to_d, sigma, delta: None };
+            };
+            let (value, slope) = bernstein.eval_with_slope(u);
+            value_error = value_error.max((two.re * half - value).abs());
+            slope_error = slope_error.max((two.du * half - slope).abs());
+            largest = largest.max(two.re * half).max(two.du.abs() * half);
+        }
+        // Doubled; and never below σ's own rounding.
+        let (two, floor) = (T::from_f64(2.0), T::from_f64(8.0) * T::epsilon() * largest);
+        Cell { to_n, to_d, sigma, delta: Some((two * value_error + floor, two * slope_error + floor)) }
+    }
+
+    /// `G = σ̃ D − N` on the cell (`n`, `d` there), through the scaled basis.
+    #[inline(always)]
+    fn g<const SA: usize, const P: usize, const BB: usize>(&self, n: &Poly<T>, d: &Poly<T>) -> Poly<T> {
+        let sigma: [T; SA] = filled(T::zero(), |k| self.sigma[k]);
+        let d: [T; P] = filled(T::zero(), |k| d.c[k] * T::from_f64(binomial(P - 1, k)));
+        let sd: [T; BB] = convolve(&sigma, &d);
+        let g: [T; BB] = filled(T::zero(), |k| sd[k] * T::from_f64(inverse_binomial(BB - 1, k)) - n.c[k]);
+        Bernstein::new(&g)
+    }
+}
+
+/// Brackets of `F`'s roots on `[u0, u1]` (of the cell's parameter), each `(lo, hi, G's root)`
+/// with `F` monotone on it, appended to `out`; `g` is `G` on `[u0, u1]`
+/// reparametrised to [0, 1] and `band`, `band_slope` bound `|F − G|` and `|F' − G'|` in that
+/// parameter. `false` if some part is undecided.
+fn isolate<T: Real>(
+    g: &Bernstein<T, CAPACITY>,
+    band: T,
+    band_slope: T,
+    (u0, u1): (T, T),
+    depth: usize,
+    out: &mut SmallVec<[(T, T, T); 4]>,
+) -> bool {
+    let c = g.coefficients();
+    let above = |v: T| v > band;
+    let below = |v: T| v < -band;
+    if c.iter().all(|&v| above(v)) || c.iter().all(|&v| below(v)) {
+        return true;
+    }
+    let (first, last) = (c[0], c[c.len() - 1]);
+    if (above(first) && below(last)) || (below(first) && above(last)) {
+        let slope = g.derivative();
+        let s = slope.coefficients();
+        if s.iter().all(|&v| v > band_slope) || s.iter().all(|&v| v < -band_slope) {
+            let root = u0 + (u1 - u0) * g.refine(T::zero(), T::one(), T::zero());
+            out.push((u0, u1, root));
+            return true;
+        }
+    }
+    if depth == DEPTH {
+        return false;
+    }
+    let half = T::from_f64(0.5);
+    let mid = half * (u0 + u1);
+    let (left, right) = g.split(half);
+    isolate(&left, band, band_slope * half, (u0, mid), depth + 1, out)
+        && isolate(&right, band, band_slope * half, (mid, u1), depth + 1, out)
+}
+
+/// The scaled Bernstein coefficients of the polynomial of degree `n = nodes.len() − 1` through
+/// `(nodes[j], values[j])`: the collocation system solved by Gaussian elimination with partial
+/// pivoting (`n ≤ 6`, Chebyshev nodes: well conditioned). `None` if it is singular.
+fn interpolate<T: Real>(nodes: &[T], values: &[T]) -> Option<SmallVec<[T; 7]>> {
+    let n = nodes.len();
+    let mut rows: SmallVec<[SmallVec<[T; 8]>; 7]> = nodes
+        .iter()
+        .zip(values)
+        .map(|(&u, &v)| {
+            let mut row: SmallVec<[T; 8]> = super::segment::basis(u, n - 1)[..n].iter().copied().collect();
+            row.push(v);
+            row
+        })
+        .collect();
+    for col in 0..n {
+        let pivot = (col..n).max_by(|&a, &b| rows[a][col].abs().to_f64().total_cmp(&rows[b][col].abs().to_f64()))?;
+        rows.swap(col, pivot);
+        if rows[col][col] == T::zero() {
+            return None;
+        }
+        for r in col + 1..n {
+            let factor = rows[r][col] / rows[col][col];
+            for k in col..=n {
+                let v = rows[col][k];
+                rows[r][k] = rows[r][k] - factor * v;
+            }
+        }
+    }
+    let mut out: SmallVec<[T; 7]> = SmallVec::from_elem(T::zero(), n);
+    for r in (0..n).rev() {
+        let sum = (r + 1..n).fold(rows[r][n], |s, k| s - rows[r][k] * out[k]);
+        out[r] = sum / rows[r][r];
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cga_core::{Circle, Joining, Spline};
+
+    /// The Fig. 3 circles joined quadratically and cubically: each one segment.
+    fn segments() -> Vec<BezierSegment<f64>> {
+        let circles = [
+            ([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], 2.0),
+            ([1.2, 0.0, 1.8], [0.4, 0.0, 1.0], 0.9),
+            ([-0.3, 0.3, 3.6], [-0.4, 0.2, 1.0], 1.7),
+            ([0.4, 0.0, 5.6], [0.0, 0.3, 1.0], 0.8),
+        ];
+        let circles: Vec<Circle> =
+            circles.iter().map(|&(c, n, r)| Circle::from_centre_normal_radius(c, n, r).unwrap()).collect();
+        let quadratic = [circles[0], circles[1], circles[3]];
+        [(quadratic.to_vec(), Joining::Quadratic), (circles, Joining::Cubic)]
+            .into_iter()
+            .map(|(c, joining)| BezierSegment::new(Spline::new(&c, joining).unwrap().segment(0)))
+            .collect()
+    }
+
+    fn stream(mut state: u64) -> impl FnMut() -> f64 {
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    /// `|F − G| ≤ band` at 256 points of every cell, for random lines: `F = σ D − N` with `σ`
+    /// itself, `G` with `σ̃`, `N` and `D` restricted to the cell as a ray's are.
+    #[test]
+    fn g_stays_within_its_band_of_f() {
+        let mut random = stream(7);
+        for segment in segments() {
+            let cells = Unsquared::new(&segment, 16).unwrap();
+            for _ in 0..50 {
+                let o = [0, 1, 2].map(|_| 8.0 * random() - 4.0);
+                let d = cga_core::euclid::unit([0, 1, 2].map(|_| random() - 0.5)).unwrap();
+                let line = Line::from_point_unit_direction(o, d);
+                let (n, d) = match segment.degree() {
+                    2 => cells.numerators::<3, 7, 5, 9, 13>(&line),
+                    _ => cells.numerators::<4, 10, 7, 13, 19>(&line),
+                };
+                let size: f64 = line.to_array().iter().map(|c| c.abs()).sum();
+                for (i, cell) in cells.cells.iter().enumerate() {
+                    let (lo, hi) = (i as f64 / 16.0, (i + 1) as f64 / 16.0);
+                    let (n, d) = (n.restrict(lo, hi), d.restrict(lo, hi));
+                    let g = match segment.degree() {
+                        2 => cell.g::<5, 9, 13>(&n, &d),
+                        _ => cell.g::<7, 13, 19>(&n, &d),
+                    };
+                    let d_max = d.coefficients().iter().fold(0.0f64, |m, c| m.max(c.abs()));
+                    let band = cell.delta.unwrap().0 * d_max + ROUNDING * f64::EPSILON * cells.scale * size * size;
+                    for k in 0..=256 {
+                        let u = k as f64 / 256.0;
+                        let sigma = 0.5 * segment.two_sigma(lo + (hi - lo) * u).unwrap();
+                        let f = sigma * d.eval(u) - n.eval(u);
+                        assert!((f - g.eval(u)).abs() <= band, "u = {u}: F {f:e}, G {:e}, band {band:e}", g.eval(u));
+                    }
+                }
+            }
+        }
+    }
+}
