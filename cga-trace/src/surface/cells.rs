@@ -11,7 +11,7 @@ use smallvec::SmallVec;
 pub type Intervals = SmallVec<[(f64, f64, usize); 8]>;
 
 /// Samples per cell when bounding it.
-const CELL_SAMPLES: usize = 8;
+const CELL_SAMPLES: usize = 32;
 /// Relative padding of every bounding sphere.
 pub const PAD: f64 = 1.02;
 
@@ -105,8 +105,9 @@ pub struct Cells {
 
 impl Cells {
     /// The cells over `cells` (a power of two) equal α-intervals: each bounds the circles
-    /// sampled over its interval, padded by the largest motion between samples (centre,
-    /// radius and tilt) twice over.
+    /// sampled over its interval (32 samples), the sphere padded by the largest motion between
+    /// samples (centre, radius and tilt) and the tube by twice it (a circle between samples is
+    /// within one step of both neighbours).
     pub fn new(circles: &impl Circles<f64>, cells: usize) -> Result<Self, SurfaceError> {
         let mut fours = vec![Four { radius: [-1.0; 4], ..Four::default() }; cells.div_ceil(4)];
         for cell in 0..cells {
@@ -182,8 +183,8 @@ fn cell_bounds(family: &impl Circles<f64>, lo: f64, hi: f64) -> Result<((E3, f64
     let step = circles.windows(2).map(|w| apart(&w[0], &w[1])).fold(0.0, f64::max);
     let radius = circles.iter().map(|(c, _, r)| norm(sub(*c, centre)) + r).fold(0.0, f64::max) + step;
     let mid = circles[CELL_SAMPLES / 2];
-    let delta = circles.iter().map(|c| apart(c, &mid)).fold(0.0, f64::max) + step;
-    let tube = Tube { centre: mid.0, normal: mid.1, radius: mid.2, delta: 2.0 * delta };
+    let delta = circles.iter().map(|c| apart(c, &mid)).fold(0.0, f64::max) + 2.0 * step;
+    let tube = Tube { centre: mid.0, normal: mid.1, radius: mid.2, delta };
     Ok(((centre, radius * PAD), tube))
 }
 
