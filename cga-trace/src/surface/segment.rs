@@ -100,16 +100,16 @@ const WEIGHTS: usize = 13;
 pub(super) trait Weight<T: Real>: Real {
     /// `Σₖ cₖ wₖ`.
     fn blades(c: &[Circle<T>], w: &[Self]) -> Circle<Self>;
-    /// `c` as a constant.
-    fn lift(c: T) -> Self;
+    /// `Σₖ cₖ wₖ`.
+    fn scalars(c: &[T], w: &[Self]) -> Self;
 }
 
 impl<T: Real> Weight<T> for T {
     fn blades(c: &[Circle<T>], w: &[T]) -> Circle<T> {
         c.iter().zip(w).fold(Circle::zero(), |sum, (c, &w)| sum + *c * w)
     }
-    fn lift(c: T) -> T {
-        c
+    fn scalars(c: &[T], w: &[T]) -> T {
+        c.iter().zip(w).fold(T::zero(), |sum, (&c, &w)| sum + c * w)
     }
 }
 
@@ -120,47 +120,28 @@ impl<T: Real> Weight<T> for Dual<T> {
         let (re, du) = (re.to_array(), du.to_array());
         Circle::from_array(core::array::from_fn(|k| Dual { re: re[k], du: du[k] }))
     }
-    fn lift(c: T) -> Dual<T> {
-        Dual { re: c, du: T::zero() }
+    fn scalars(c: &[T], w: &[Dual<T>]) -> Dual<T> {
+        let re = c.iter().zip(w).fold(T::zero(), |sum, (&c, w)| sum + c * w.re);
+        let du = c.iter().zip(w).fold(T::zero(), |sum, (&c, w)| sum + c * w.du);
+        Dual { re, du }
     }
 }
 
-/// The scaled Bernstein basis of degree `n` at `t`: `tᵏ (1 − t)ⁿ⁻ᵏ`, `k = 0 … n`.
+/// The scaled Bernstein basis of degree `n` at `t`: `(1 − t)ⁿ⁻ᵏ tᵏ`, `k = 0 … n`.
 pub(super) fn basis<U: Real>(t: U, n: usize) -> [U; WEIGHTS] {
-    let (mut tk, mut uk) = ([U::one(); WEIGHTS], [U::one(); WEIGHTS]);
     let u = U::one() - t;
-    for k in 1..=n {
-        tk[k] = tk[k - 1] * t;
-        uk[k] = uk[k - 1] * u;
+    let mut w = [U::one(); WEIGHTS];
+    let mut power = U::one();
+    for slot in w.iter_mut().take(n + 1).skip(1) {
+        power = power * t;
+        *slot = power;
     }
-    let mut w = [U::zero(); WEIGHTS];
-    for ((slot, &a), &b) in w.iter_mut().zip(&tk[..=n]).zip(uk[..=n].iter().rev()) {
-        *slot = a * b;
+    let mut other = U::one();
+    for k in (0..n).rev() {
+        other = other * u;
+        w[k] = w[k] * other;
     }
     w
-}
-
-/// `t` for Horner's rule in the scaled basis from the nearer end: `(s, a, far)` with
-/// `s = t / (1 − t)`, `a = 1 − t` for `t ≤ ½` and `s = (1 − t) / t`, `a = t` beyond, so that
-/// `s ≤ 1`; `far` says which.
-#[inline(always)]
-fn horner_at<U: Real>(t: U) -> (U, U, bool) {
-    let u = U::one() - t;
-    if t.to_f64() > 0.5 { (u / t, t, true) } else { (t / u, u, false) }
-}
-
-/// `Σ cₖ tᵏ (1 − t)ⁿ⁻ᵏ = aⁿ Σ cₖ sᵏ` (or from `cₙ` beyond ½) by Horner's rule, `(s, a, far)`
-/// from [`horner_at`]: `O(n)`, and de Casteljau's error bound.
-#[inline(always)]
-fn scaled_at<T: Real, U: Weight<T>>(c: &[T], (s, a, far): (U, U, bool)) -> U {
-    let n = c.len() - 1;
-    let (mut value, mut power) = (U::zero(), U::one());
-    for j in 0..=n {
-        let k = if far { j } else { n - j };
-        value = value * s + U::lift(c[k]);
-        power = if j == 0 { power } else { power * a };
-    }
-    value * power
 }
 
 /// `C_t` in closed form from what the segment precomputes, in any scalar `U` (dual numbers for
@@ -181,8 +162,9 @@ impl<T: Real> BezierSegment<T> {
     /// `2σ(t)`, `σ` the larger root of `σ² − Sσ + q/4 = 0`, in any scalar `U` (dual numbers for
     /// the slope): `S + √(S² − q)`, or `q / (S − √(S² − q))` without cancellation when `S < 0`.
     pub(super) fn two_sigma<U: Weight<T>>(&self, t: U) -> Result<U, InterpolationError> {
-        let at = horner_at(t);
-        let (big_s, q2) = (scaled_at(self.s.coefficients(), at), scaled_at(self.q.coefficients(), at));
+        let d = self.x.len() - 1;
+        let big_s = U::scalars(self.s.coefficients(), &basis(t, 2 * d));
+        let q2 = U::scalars(self.q.coefficients(), &basis(t, 4 * d));
         let disc = big_s * big_s - q2;
         if disc < U::zero() || !disc.is_finite() {
             return Err(InterpolationError::NoRealRoot { alpha: t.to_f64(), s: big_s.to_f64(), q2: q2.to_f64() });

@@ -146,8 +146,8 @@ impl<T: Real> Unsquared<T> {
     }
 
     /// Candidate α on each of `intervals` (runs of whole cells, as the culling cells give
-    /// them) appended to `out`, cell by cell; the undecided cells are returned (neighbours
-    /// merged), and nothing of theirs is appended.
+    /// them) appended to `out`; the intervals some cell of which is undecided are returned, and
+    /// nothing of theirs is appended.
     pub fn roots(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
         if intervals.is_empty() {
             return Intervals::new();
@@ -191,25 +191,19 @@ impl<T: Real> Unsquared<T> {
         let size: T = line.to_array().iter().fold(T::zero(), |m, &c| m + c.abs());
         let rounding = T::from_f64(ROUNDING) * T::epsilon() * self.scale * size * size;
         let count = self.cells.len();
-        let width = 1.0 / count as f64;
         let mut undecided = Intervals::new();
-        for &(lo, _, cells) in intervals {
+        for &(lo, hi, cells) in intervals {
             let first = (lo * count as f64).round() as usize;
-            for i in first..(first + cells).min(count) {
+            let last = (first + cells).min(count);
+            let start = out.len();
+            for i in first..last {
                 let cell = &self.cells[i];
                 let (cell_n, cell_d) = (restrict::<T, BB>(&cell.to_n, &n), restrict::<T, P>(&cell.to_d, &d));
-                let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(width);
-                let start = out.len();
+                let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
                 if !self.cell_roots::<SA, P, BB>(i, &cell_n, &cell_d, rounding, alpha, out) {
                     out.truncate(start);
-                    let (cell_lo, cell_hi) = (i as f64 * width, (i + 1) as f64 * width);
-                    match undecided.last_mut() {
-                        Some(last) if last.1 == cell_lo => {
-                            last.1 = cell_hi;
-                            last.2 += 1;
-                        }
-                        _ => undecided.push((cell_lo, cell_hi, 1)),
-                    }
+                    undecided.push((lo, hi, cells));
+                    break;
                 }
             }
         }
@@ -254,26 +248,16 @@ impl<T: Real> Unsquared<T> {
             return false;
         }
         // G's root is F's to `band / |F'|` (1e-6 in α on a quadratic segment): Newton on F
-        // itself, with G's slope at its root (F's to `band_slope`, and so a contraction by
-        // about `band_slope / |G'|` per step), kept in the bracket where F is monotone,
-        // places it to rounding — or the cell is left undecided.
+        // itself, with G's slope (F's to `band_slope`), kept in the bracket where F is
+        // monotone, places it to rounding — or the cell is left undecided.
         let four_ulps = T::from_f64(4.0) * T::epsilon();
-        let half = T::from_f64(0.5);
         for &(u0, u1, root) in &brackets {
-            let (mut u, slope) = (root, g.eval_with_slope(root).1);
+            let mut u = root;
             let mut settled = false;
-            for step in 0..NEWTON {
+            for _ in 0..NEWTON {
                 let Ok(two_sigma) = self.segment.two_sigma(alpha(u)) else { break };
-                let f = half * two_sigma * d.eval(u) - n.eval(u);
-                // Where steps stay above four ulps, F is down to its own rounding (a few ulps
-                // of its terms) at u, as near its root as it can tell.
-                if step > 0
-                    && f.abs() <= T::from_f64(8.0) * T::epsilon() * (half * two_sigma * d.magnitude(u) + n.magnitude(u))
-                {
-                    settled = true;
-                    break;
-                }
-                let next = u - f / slope;
+                let f = T::from_f64(0.5) * two_sigma * d.eval(u) - n.eval(u);
+                let next = u - f / g.eval_with_slope(u).1;
                 if !(next >= u0 && next <= u1) {
                     break;
                 }
