@@ -35,7 +35,7 @@ fn same_axis(got: E3, want: E3, tol: f64) -> bool {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
-    /// Objects of size `s` (1e-3 … 1e3) at up to `10^far` sizes from the origin: every
+    /// Objects of size `s` (1e-3 … 1e3) at up to `10^far` sizes (and 1e6 radii) from the origin: every
     /// parameter read back within `64 ε (1 + ρ)²` of the object's size, `ρ` its distance over
     /// its size (the coefficients hold `|c|²/r`-sized terms beside `r`-sized ones).
     #[test]
@@ -58,6 +58,11 @@ proptest! {
         let c = scale(at, s * 10f64.powf(far));
         let r = r * s;
         let rho = norm(c) / r;
+        // A round's `⟨X X⟩₀ ∝ r⁴` sums terms of about `r² |c|²`, so from `ρ = 1/√(192 ε)`
+        // (about 3.9e6) on it is zero to the classifier's `64 ε` and reads as a tangent.
+        if rho > 1e6 {
+            return Ok(());
+        }
         let tol = 64.0 * f64::EPSILON * (1.0 + rho).powi(2) * r;
         let msg = |what: &str, d: &Drawing| format!("{what}: {d:?}, c {c:?} r {r:e} tol {tol:e}");
 
