@@ -8,14 +8,22 @@
 //! on each cell by the polynomial `σ̃` of degree `2d` interpolating it at Chebyshev points,
 //! with `δ ≥ |σ − σ̃|` and `δ' ≥ |σ' − σ̃'|` over the cell measured when the scene loads. Then
 //! `G = σ̃ D − N` has degree `6d` (18, not 32), `|F − G| ≤ δ |D|` and
-//! `|F' − G'| ≤ δ' |D| + δ |D'|`, and on a cell (coefficients in the Bernstein basis, which
+//! `|F' − G'| ≤ δ' |D| + δ |D'|`. On a sixteenth of the segment `G` is smooth enough to be
+//! reduced further, to degree 11 (8 for `d = 2`): each cell holds the map from `N`'s and `D`'s
+//! Bernstein coefficients over the segment straight to the reduced `G`'s on the cell
+//! (restriction, product with `σ̃` and interpolation at Chebyshev–Lobatto points folded into
+//! one matrix), and per coefficient the bound on the reduction's error and slope error (the
+//! residual's coefficients in the full degree), so that a ray's bands are
+//! `δ max|D| + Σ |nₖ| eₖ + Σ |dₖ| e'ₖ` plus rounding; `|D|` and `|D'|` are bounded the same
+//! way from `D` reduced to a cubic. Then on a cell (coefficients in the Bernstein basis, which
 //! bound a polynomial and its slope by their convex hull):
 //! - every coefficient of `G` beyond the band `δ max|D|` plus `G`'s rounding, all of one
 //!   sign: `F` keeps that sign, no crossing;
 //! - `G`'s end values beyond the band with opposite signs, and every coefficient of `G'`
 //!   beyond its band with one sign: `F` is monotone and crosses once, within `band / |F'|`
-//!   of `G`'s root, which Newton on `G` finds (the crossing kept is then placed on `f`
-//!   itself, [`Family::nearest`](super::Family::nearest));
+//!   of `G`'s root, which Newton on `G` finds; Newton on `F` itself (with `N` and `D`
+//!   restricted to the cell, `G`'s slope) then places it to `F`'s rounding: 4 ulps, or where
+//!   the steps turn back at most [`TURNED`] ulps;
 //! - otherwise the cell is halved, up to [`DEPTH`] times. What is still undecided — a touch,
 //!   two roots closer than the last halving, a root on an edge, a ray whose coefficients lie
 //!   inside the band — is left to `R` over the cells' whole interval.
@@ -26,7 +34,6 @@
 
 use super::bernstein::{Bernstein, Roots, Scaled, binomial, inverse_binomial};
 use super::cells::Intervals;
-use super::family::convolve;
 use super::segment::{BezierSegment, filled, numerators};
 use cga_core::{Dual, Line, Real, Vector};
 use smallvec::SmallVec;
@@ -35,6 +42,10 @@ use smallvec::SmallVec;
 pub const DEPTH: usize = 4;
 /// Newton steps on `F` for a root before its cell is left undecided.
 const NEWTON: usize = 8;
+/// A Newton step on `F` that turns back and is at most this many `ε` (of the cell's parameter,
+/// a sixteenth of that in α) has met `F`'s rounding: the root lies between the last two
+/// iterates.
+const TURNED: f64 = 256.0;
 /// Points per cell at which `|σ − σ̃|` and its slope are measured.
 pub const SAMPLES: usize = 512;
 /// The most cells a segment is given `σ̃` for (more are left to the squared polynomial alone).
@@ -44,12 +55,26 @@ pub const MAX_CELLS: usize = 256;
 const ROUNDING: f64 = 256.0;
 /// The polynomials' capacity: `N` and `G` have degree `6d ≤ 18`.
 const CAPACITY: usize = 19;
+/// The reduced `G`'s capacity (three AVX2 registers): its degree on a cell is
+/// [`reduced_degree`], at most 11.
+const LOW: usize = 12;
+/// The degree `D` is reduced to on a cell, for the bounds on `|D|` and `|D'|` alone.
+const D_DEGREE: usize = 3;
 
-/// A polynomial on a cell, in the Bernstein basis.
+/// A polynomial over a segment, in the Bernstein basis.
 type Poly<T> = Bernstein<T, CAPACITY>;
+/// `G` reduced on a cell, in the Bernstein basis.
+type Low<T> = Bernstein<T, LOW>;
 
 /// A linear map of Bernstein coefficients, by columns.
 type Matrix<T> = [[T; CAPACITY]; CAPACITY];
+
+/// The degree `G` (of degree `6d`) is reduced to on a cell of a degree-`d` segment: where the
+/// cell is a sixteenth of the segment, the terms beyond it are below `G`'s band of `σ̃`'s
+/// error (measured when the scene loads, and bounded per ray all the same).
+fn reduced_degree(d: usize) -> usize {
+    if d == 2 { 8 } else { 11 }
+}
 
 /// The map restricting a polynomial of degree `n` on [0, 1] to `[lo, hi]`: column `k` is the
 /// `k`-th basis polynomial restricted by de Casteljau's algorithm (nonnegative entries, each
@@ -89,15 +114,37 @@ pub struct Unsquared<T: Real> {
     scale: T,
 }
 
-/// One cell: `σ̃` in the scaled basis on the cell's own parameter, its bounds, and the
-/// restriction of `N` and `D` to it.
+/// One cell: the maps from a ray's `N` and `D` over the segment to `G = σ̃ D − N` reduced to
+/// [`reduced_degree`] on the cell and `D` reduced to [`D_DEGREE`], with what bounds the
+/// reductions' error per coefficient of `N` and `D`, and `σ̃`'s own error.
 #[derive(Clone, Debug)]
 struct Cell<T: Real> {
+    /// Column `k`: the reduced `G`'s Bernstein coefficients per unit of `N`'s `k`-th
+    /// (`−` the `k`-th basis polynomial of degree `6d`, restricted to the cell and reduced).
+    g_from_n: Box<[[T; LOW]; CAPACITY]>,
+    /// Column `k`: per unit of `D`'s `k`-th coefficient (`σ̃` times the `k`-th basis
+    /// polynomial of degree `4d`, reduced).
+    g_from_d: Box<[[T; LOW]; CAPACITY]>,
+    /// Column `k`: `D` reduced to [`D_DEGREE`] on the cell, per unit of its `k`-th coefficient.
+    d_from_d: Box<[[T; 4]; CAPACITY]>,
+    /// Per unit of `|N|`'s `k`-th coefficient: the bound on the reduced `G`'s error in value and
+    /// slope (and zeros); per unit of `|D|`'s: the same, then the reduced `D`'s.
+    n_bounds: Box<[[T; 4]; CAPACITY]>,
+    d_bounds: Box<[[T; 4]; CAPACITY]>,
     /// Column `k`: the Bernstein coefficients on the cell of the `k`-th basis polynomial of
-    /// degree `6d` (for `N`) and `4d` (for `D`) over the segment.
+    /// degree `6d` (for `N`) and `4d` (for `D`) over the segment, to place roots on (a
+    /// polynomial restricted to the cell is a smooth function of the cell's parameter, its
+    /// rounding frozen into its coefficients, so that Newton's steps settle).
     to_n: Box<Matrix<T>>,
     to_d: Box<Matrix<T>>,
-    sigma: [T; 7],
+    /// The reduced degree.
+    degree: usize,
+    /// `max |σ̃| + δ` on the cell.
+    sigma_max: T,
+    /// How much the maps can enlarge the rounding `N` and `D` carry: the largest row sum of
+    /// `|g_from_n|`, and of `|g_from_d|` per unit of `σ̃` (the rounding's scale holds `σ`), at
+    /// least 1.
+    amplification: T,
     /// `|σ − σ̃|` and `|dσ/du − dσ̃/du|` (per unit of the cell's parameter) at most; `None`
     /// where `σ` could not be evaluated everywhere on the cell.
     delta: Option<(T, T)>,
@@ -111,18 +158,12 @@ impl<T: Real> Unsquared<T> {
         if !(2..=3).contains(&d) || segment.cospherical() || !(1..=MAX_CELLS).contains(&count) {
             return None;
         }
+        let reducers = (Reducer::new(reduced_degree(d))?, Reducer::new(D_DEGREE)?);
         let width = 1.0 / count as f64;
         let cells: Vec<Cell<T>> = (0..count)
-            .map(|i| Cell::new(segment, T::from_f64(i as f64 * width), T::from_f64((i + 1) as f64 * width)))
+            .map(|i| Cell::new(segment, T::from_f64(i as f64 * width), T::from_f64((i + 1) as f64 * width), &reducers))
             .collect();
-        let sigma_max = cells.iter().fold(T::zero(), |m, c| {
-            let delta = c.delta.map_or(T::zero(), |d| d.0);
-            c.sigma
-                .iter()
-                .enumerate()
-                .take(2 * d + 1)
-                .fold(m, |m, (k, &v)| m.max(v.abs() * T::from_f64(inverse_binomial(2 * d, k)) + delta))
-        });
+        let sigma_max = cells.iter().fold(T::zero(), |m, c| m.max(c.sigma_max));
         let scale = Self::scale(segment, sigma_max);
         Some(Unsquared { segment: segment.clone(), cells, scale })
     }
@@ -197,10 +238,8 @@ impl<T: Real> Unsquared<T> {
             let last = (first + cells).min(count);
             let start = out.len();
             for i in first..last {
-                let cell = &self.cells[i];
-                let (cell_n, cell_d) = (restrict::<T, BB>(&cell.to_n, &n), restrict::<T, P>(&cell.to_d, &d));
                 let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
-                if !self.cell_roots::<SA, P, BB>(i, &cell_n, &cell_d, rounding, alpha, out) {
+                if !self.cell_roots::<P, BB>(i, &n, &d, rounding, alpha, out) {
                     out.truncate(start);
                     undecided.push((lo, hi, cells));
                     break;
@@ -223,10 +262,10 @@ impl<T: Real> Unsquared<T> {
         (Scaled::<T, CAPACITY>::new(&n).bernstein(), Scaled::<T, CAPACITY>::new(&d).bernstein())
     }
 
-    /// `F`'s roots on cell `i`, where `N` and `D` are `n` and `d`, as α (`alpha` maps the
-    /// cell's parameter), appended to `out`; `false` if undecided.
+    /// `F`'s roots on cell `i`, where `N` and `D` over the segment are `n` and `d`, as α
+    /// (`alpha` maps the cell's parameter), appended to `out`; `false` if undecided.
     #[inline(always)]
-    fn cell_roots<const SA: usize, const P: usize, const BB: usize>(
+    fn cell_roots<const P: usize, const BB: usize>(
         &self,
         i: usize,
         n: &Poly<T>,
@@ -235,14 +274,7 @@ impl<T: Real> Unsquared<T> {
         alpha: impl Fn(T) -> T,
         out: &mut Roots<T>,
     ) -> bool {
-        let cell = &self.cells[i];
-        let Some((delta, delta_slope)) = cell.delta else { return false };
-        let g = cell.g::<SA, P, BB>(n, d);
-        let d_max = d.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
-        let d_slope = (d.coefficients().windows(2)).fold(T::zero(), |m, w| m.max((w[1] - w[0]).abs()))
-            * T::from_f64((P - 1) as f64);
-        let band = delta * d_max + rounding;
-        let band_slope = delta_slope * d_max + delta * d_slope + T::from_f64(2.0 * (BB - 1) as f64) * rounding;
+        let Some((g, band, band_slope)) = self.cells[i].reduced::<P, BB>(n, d, rounding) else { return false };
         let mut brackets: SmallVec<[(T, T, T); 4]> = SmallVec::new();
         if !isolate(&g, band, band_slope, (T::zero(), T::one()), 0, &mut brackets) {
             return false;
@@ -250,19 +282,28 @@ impl<T: Real> Unsquared<T> {
         // G's root is F's to `band / |F'|` (1e-6 in α on a quadratic segment): Newton on F
         // itself, with G's slope (F's to `band_slope`), kept in the bracket where F is
         // monotone, places it to rounding — or the cell is left undecided.
-        let four_ulps = T::from_f64(4.0) * T::epsilon();
+        let (four_ulps, turned) = (T::from_f64(4.0) * T::epsilon(), T::from_f64(TURNED) * T::epsilon());
+        if brackets.is_empty() {
+            return true;
+        }
+        let cell = &self.cells[i];
+        let (n, d) = (restrict::<T, BB>(&cell.to_n, n), restrict::<T, P>(&cell.to_d, d));
         for &(u0, u1, root) in &brackets {
-            let mut u = root;
+            let (mut u, mut last_step) = (root, T::zero());
             let mut settled = false;
             for _ in 0..NEWTON {
-                let Ok(two_sigma) = self.segment.two_sigma(alpha(u)) else { break };
+                let a = alpha(u);
+                let Ok(two_sigma) = self.segment.two_sigma(a) else { break };
                 let f = T::from_f64(0.5) * two_sigma * d.eval(u) - n.eval(u);
                 let next = u - f / g.eval_with_slope(u).1;
                 if !(next >= u0 && next <= u1) {
                     break;
                 }
-                settled = (next - u).abs() <= four_ulps;
-                u = next;
+                // Settled at 4 ulps; or where the steps turn back at F's rounding, the root
+                // between the last two iterates.
+                let step = next - u;
+                settled = step.abs() <= four_ulps || (step * last_step < T::zero() && step.abs() <= turned);
+                (u, last_step) = (next, step);
                 if settled {
                     break;
                 }
@@ -278,29 +319,37 @@ impl<T: Real> Unsquared<T> {
 
 impl<T: Real> Cell<T> {
     /// `σ̃` on `[lo, hi]` of `segment`: `σ` interpolated at the Chebyshev–Lobatto points (the
-    /// ends among them), and its error measured at [`SAMPLES`] points.
-    fn new(segment: &BezierSegment<T>, lo: T, hi: T) -> Self {
-        let m = 2 * segment.degree();
+    /// ends among them), its error measured at [`SAMPLES`] points; and the reductions.
+    fn new(segment: &BezierSegment<T>, lo: T, hi: T, (g_reducer, d_reducer): &(Reducer<T>, Reducer<T>)) -> Self {
+        let d = segment.degree();
+        let m = 2 * d;
         let at = |u: T| lo + (hi - lo) * u;
         let half = T::from_f64(0.5);
-        let nodes: SmallVec<[T; 7]> =
-            (0..=m).map(|j| T::from_f64(0.5 - 0.5 * (std::f64::consts::PI * j as f64 / m as f64).cos())).collect();
-        let values: Option<SmallVec<[T; 7]>> =
+        let nodes = chebyshev_lobatto::<T>(m);
+        let values: Option<SmallVec<[T; LOW]>> =
             nodes.iter().map(|&u| segment.two_sigma(at(u)).ok().map(|s| s * half)).collect();
-        let (to_n, to_d) = (restriction(6 * segment.degree(), lo, hi), restriction(4 * segment.degree(), lo, hi));
-        let Some(fitted) = values.and_then(|v| interpolate(&nodes, &v)) else {
-            return Cell { to_n, to_d, sigma: [T::zero(); 7], delta: None };
+        let (n_degree, d_degree) = (6 * d, 4 * d);
+        let mut cell = Cell {
+            to_n: restriction(n_degree, lo, hi),
+            to_d: restriction(d_degree, lo, hi),
+            g_from_n: Box::new([[T::zero(); LOW]; CAPACITY]),
+            g_from_d: Box::new([[T::zero(); LOW]; CAPACITY]),
+            d_from_d: Box::new([[T::zero(); 4]; CAPACITY]),
+            n_bounds: Box::new([[T::zero(); 4]; CAPACITY]),
+            d_bounds: Box::new([[T::zero(); 4]; CAPACITY]),
+            degree: reduced_degree(d),
+            amplification: T::one(),
+            sigma_max: T::zero(),
+            delta: None,
         };
-        let mut sigma = [T::zero(); 7];
-        sigma[..=m].copy_from_slice(&fitted);
-        let bernstein = Scaled::<T, CAPACITY>::new(&fitted).bernstein();
+        let Some(fitted) = values.and_then(|v| interpolate(&nodes, &v)) else { return cell };
+        let sigma = Scaled::<T, CAPACITY>::new(&fitted);
+        let bernstein = sigma.bernstein();
         let (mut value_error, mut slope_error, mut largest) = (T::zero(), T::zero(), T::zero());
         for k in 0..=SAMPLES {
             let u = T::from_f64(k as f64 / SAMPLES as f64);
             // On dual numbers: σ and dσ/du = (hi − lo) dσ/dα.
-            let Ok(two) = segment.two_sigma(Dual { re: at(u), du: hi - lo }) else {
-                return Cell { to_n, to_d, sigma, delta: None };
-            };
+            let Ok(two) = segment.two_sigma(Dual { re: at(u), du: hi - lo }) else { return cell };
             let (value, slope) = bernstein.eval_with_slope(u);
             value_error = value_error.max((two.re * half - value).abs());
             slope_error = slope_error.max((two.du * half - slope).abs());
@@ -308,17 +357,137 @@ impl<T: Real> Cell<T> {
         }
         // Doubled; and never below σ's own rounding.
         let (two, floor) = (T::from_f64(2.0), T::from_f64(8.0) * T::epsilon() * largest);
-        Cell { to_n, to_d, sigma, delta: Some((two * value_error + floor, two * slope_error + floor)) }
+        cell.delta = Some((two * value_error + floor, two * slope_error + floor));
+        for (k, column) in cell.to_n.iter().enumerate().take(n_degree + 1) {
+            let (low, value, slope) = g_reducer.reduce::<LOW>(&Bernstein::new(&column[..=n_degree]));
+            cell.g_from_n[k] = low.map(|x| -x);
+            cell.n_bounds[k] = [value, slope, T::zero(), T::zero()];
+        }
+        for (k, column) in cell.to_d.iter().enumerate().take(d_degree + 1) {
+            let column = Bernstein::<T, CAPACITY>::new(&column[..=d_degree]);
+            let scaled: [T; CAPACITY] = filled(T::zero(), |j| column.c[j] * T::from_f64(binomial(d_degree, j)));
+            let product = sigma.mul(&Scaled::new(&scaled[..=d_degree])).bernstein();
+            let (low, value, slope) = g_reducer.reduce::<LOW>(&product);
+            let (low_d, value_d, slope_d) = d_reducer.reduce::<4>(&column);
+            (cell.g_from_d[k], cell.d_from_d[k]) = (low, low_d);
+            cell.d_bounds[k] = [value, slope, value_d, slope_d];
+        }
+        let sigma_max = bernstein.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs())) + two * value_error;
+        cell.sigma_max = sigma_max;
+        let row_sum = |columns: &[[T; LOW]; CAPACITY], i: usize| columns.iter().fold(T::zero(), |s, c| s + c[i].abs());
+        cell.amplification = (0..LOW)
+            .fold(T::one(), |a, i| a.max(row_sum(&cell.g_from_n, i)).max(row_sum(&cell.g_from_d, i) / sigma_max));
+        cell
     }
 
-    /// `G = σ̃ D − N` on the cell (`n`, `d` there), through the scaled basis.
+    /// The reduced `G` on the cell for a ray's `N` and `D` over the segment, with the bands
+    /// that bound `|F − G|` and `|F' − G'|` there: `δ max|D| + ` the reduction's error
+    /// `+ rounding`, and `δ' max|D| + δ max|D'| +` the same for the slope.
     #[inline(always)]
-    fn g<const SA: usize, const P: usize, const BB: usize>(&self, n: &Poly<T>, d: &Poly<T>) -> Poly<T> {
-        let sigma: [T; SA] = filled(T::zero(), |k| self.sigma[k]);
-        let d: [T; P] = filled(T::zero(), |k| d.c[k] * T::from_f64(binomial(P - 1, k)));
-        let sd: [T; BB] = convolve(&sigma, &d);
-        let g: [T; BB] = filled(T::zero(), |k| sd[k] * T::from_f64(inverse_binomial(BB - 1, k)) - n.c[k]);
-        Bernstein::new(&g)
+    fn reduced<const P: usize, const BB: usize>(
+        &self,
+        n: &Poly<T>,
+        d: &Poly<T>,
+        rounding: T,
+    ) -> Option<(Low<T>, T, T)> {
+        let (delta, delta_slope) = self.delta?;
+        let (mut g, mut low_d, mut bounds) = ([T::zero(); LOW], [T::zero(); 4], [T::zero(); 4]);
+        // Every lane of each column (zero beyond the reduced degree): loops of fixed length,
+        // which vectorise.
+        for k in 0..BB {
+            let (x, size) = (n.c[k], n.c[k].abs());
+            for (slot, &e) in g.iter_mut().zip(&self.g_from_n[k]) {
+                *slot = *slot + e * x;
+            }
+            for (slot, &e) in bounds.iter_mut().zip(&self.n_bounds[k]) {
+                *slot = *slot + e * size;
+            }
+        }
+        for k in 0..P {
+            let (x, size) = (d.c[k], d.c[k].abs());
+            for (slot, &e) in g.iter_mut().zip(&self.g_from_d[k]) {
+                *slot = *slot + e * x;
+            }
+            for (slot, &e) in low_d.iter_mut().zip(&self.d_from_d[k]) {
+                *slot = *slot + e * x;
+            }
+            for (slot, &e) in bounds.iter_mut().zip(&self.d_bounds[k]) {
+                *slot = *slot + e * size;
+            }
+        }
+        let [g_error, g_slope_error, d_error, d_slope_error] = bounds;
+        let d_max = low_d.iter().fold(T::zero(), |m, c| m.max(c.abs())) + d_error;
+        let d_slope = low_d.windows(2).fold(T::zero(), |m, w| m.max((w[1] - w[0]).abs()))
+            * T::from_f64(D_DEGREE as f64)
+            + d_slope_error;
+        let rounding = rounding * self.amplification;
+        let band = delta * d_max + g_error + rounding;
+        let band_slope =
+            delta_slope * d_max + delta * d_slope + g_slope_error + T::from_f64(2.0 * self.degree as f64) * rounding;
+        Some((Bernstein::new(&g[..=self.degree]), band, band_slope))
+    }
+}
+
+/// The `m + 1` Chebyshev–Lobatto points on [0, 1], ends included.
+fn chebyshev_lobatto<T: Real>(m: usize) -> SmallVec<[T; LOW]> {
+    (0..=m).map(|j| T::from_f64(0.5 - 0.5 * (std::f64::consts::PI * j as f64 / m as f64).cos())).collect()
+}
+
+/// Interpolation at the `m + 1` Chebyshev–Lobatto points in the Bernstein basis of degree `m`:
+/// the collocation system's inverse, solved once for every polynomial a cell reduces.
+struct Reducer<T: Real> {
+    nodes: SmallVec<[T; LOW]>,
+    /// Column `j`: the Bernstein coefficients of the polynomial that is 1 at node `j` and 0 at
+    /// the others.
+    inverse: SmallVec<[[T; LOW]; LOW]>,
+}
+
+impl<T: Real> Reducer<T> {
+    /// The reducer to degree `m < LOW`; `None` if the collocation system is singular.
+    fn new(m: usize) -> Option<Self> {
+        let nodes = chebyshev_lobatto::<T>(m);
+        let inverse = (0..=m)
+            .map(|j| {
+                let unit: SmallVec<[T; LOW]> = (0..=m).map(|i| if i == j { T::one() } else { T::zero() }).collect();
+                let scaled = interpolate(&nodes, &unit)?;
+                Some(filled(T::zero(), |k| {
+                    if k <= m { scaled[k] * T::from_f64(inverse_binomial(m, k)) } else { T::zero() }
+                }))
+            })
+            .collect::<Option<_>>()?;
+        Some(Reducer { nodes, inverse })
+    }
+
+    /// `p` (degree `n > m`) reduced to degree `m < L`, in the Bernstein basis, with bounds on
+    /// the error `|p − p̃|` and on its slope: the residual `p − p̃` in the degree-`n` basis (`p̃`
+    /// elevated) bounds both by its coefficients and their differences, whatever the
+    /// interpolation's own rounding; `64 ε max|p̃ₖ|` more for the rounding of the sums a ray
+    /// forms with these coefficients.
+    fn reduce<const L: usize>(&self, p: &Poly<T>) -> ([T; L], T, T) {
+        let (n, m) = (p.degree, self.nodes.len() - 1);
+        debug_assert!(m < n && m < L, "a reduction to a lower degree");
+        let mut low = [T::zero(); L];
+        for (&u, column) in self.nodes.iter().zip(&self.inverse) {
+            let value = p.eval(u);
+            for (slot, &e) in low.iter_mut().zip(column) {
+                *slot = *slot + e * value;
+            }
+        }
+        let mut elevated: SmallVec<[T; CAPACITY]> = low[..=m].iter().copied().collect();
+        for r in m..n {
+            // From degree r to r + 1.
+            let last = elevated[r];
+            for i in (1..=r).rev() {
+                let w = T::from_f64(i as f64 / (r + 1) as f64);
+                elevated[i] = w * elevated[i - 1] + (T::one() - w) * elevated[i];
+            }
+            elevated.push(last);
+        }
+        let residual: SmallVec<[T; CAPACITY]> = p.coefficients().iter().zip(&elevated).map(|(&a, &b)| a - b).collect();
+        let value = residual.iter().fold(T::zero(), |s, r| s.max(r.abs()));
+        let slope = residual.windows(2).fold(T::zero(), |s, w| s.max((w[1] - w[0]).abs())) * T::from_f64(n as f64);
+        let rounding = T::from_f64(64.0) * T::epsilon() * low.iter().fold(T::zero(), |s, x| s.max(x.abs()));
+        (low, value + rounding, slope + T::from_f64(2.0 * m as f64) * rounding)
     }
 }
 
@@ -326,8 +495,8 @@ impl<T: Real> Cell<T> {
 /// with `F` monotone on it, appended to `out`; `g` is `G` on `[u0, u1]`
 /// reparametrised to [0, 1] and `band`, `band_slope` bound `|F − G|` and `|F' − G'|` in that
 /// parameter. `false` if some part is undecided.
-fn isolate<T: Real>(
-    g: &Bernstein<T, CAPACITY>,
+fn isolate<T: Real, const N: usize>(
+    g: &Bernstein<T, N>,
     band: T,
     band_slope: T,
     (u0, u1): (T, T),
@@ -363,13 +532,15 @@ fn isolate<T: Real>(
 /// The scaled Bernstein coefficients of the polynomial of degree `n = nodes.len() − 1` through
 /// `(nodes[j], values[j])`: the collocation system solved by Gaussian elimination with partial
 /// pivoting (`n ≤ 6`, Chebyshev nodes: well conditioned). `None` if it is singular.
-fn interpolate<T: Real>(nodes: &[T], values: &[T]) -> Option<SmallVec<[T; 7]>> {
+fn interpolate<T: Real>(nodes: &[T], values: &[T]) -> Option<SmallVec<[T; LOW]>> {
     let n = nodes.len();
-    let mut rows: SmallVec<[SmallVec<[T; 8]>; 7]> = nodes
+    let mut rows: SmallVec<[SmallVec<[T; 13]>; LOW]> = nodes
         .iter()
         .zip(values)
         .map(|(&u, &v)| {
-            let mut row: SmallVec<[T; 8]> = super::segment::basis(u, n - 1)[..n].iter().copied().collect();
+            // The scaled basis `(1 − u)ⁿ⁻¹⁻ᵏ uᵏ`.
+            let power = |x: T, k: usize| (0..k).fold(T::one(), |p, _| p * x);
+            let mut row: SmallVec<[T; 13]> = (0..n).map(|k| power(u, k) * power(T::one() - u, n - 1 - k)).collect();
             row.push(v);
             row
         })
@@ -388,7 +559,7 @@ fn interpolate<T: Real>(nodes: &[T], values: &[T]) -> Option<SmallVec<[T; 7]>> {
             }
         }
     }
-    let mut out: SmallVec<[T; 7]> = SmallVec::from_elem(T::zero(), n);
+    let mut out: SmallVec<[T; LOW]> = SmallVec::from_elem(T::zero(), n);
     for r in (0..n).rev() {
         let sum = (r + 1..n).fold(rows[r][n], |s, k| s - rows[r][k] * out[k]);
         out[r] = sum / rows[r][r];
@@ -427,8 +598,9 @@ mod tests {
         }
     }
 
-    /// `|F − G| ≤ band` at 256 points of every cell, for random lines: `F = σ D − N` with `σ`
-    /// itself, `G` with `σ̃`, `N` and `D` restricted to the cell as a ray's are.
+    /// `|F − G| ≤ band` and `|F' − G'| ≤ band_slope` at 256 points of every cell, for random
+    /// lines: `F = σ D − N` with `σ` itself and `N`, `D` over the segment, `G` reduced on the
+    /// cell as a ray's is.
     #[test]
     fn g_stays_within_its_band_of_f() {
         let mut random = stream(7);
@@ -443,20 +615,28 @@ mod tests {
                     _ => cells.numerators::<4, 10, 7, 13, 19>(&line),
                 };
                 let size: f64 = line.to_array().iter().map(|c| c.abs()).sum();
+                let rounding = ROUNDING * f64::EPSILON * cells.scale * size * size;
+                let (n_slope, d_slope) = (n.derivative(), d.derivative());
                 for (i, cell) in cells.cells.iter().enumerate() {
                     let (lo, hi) = (i as f64 / 16.0, (i + 1) as f64 / 16.0);
-                    let (n, d) = (n.restrict(lo, hi), d.restrict(lo, hi));
-                    let g = match segment.degree() {
-                        2 => cell.g::<5, 9, 13>(&n, &d),
-                        _ => cell.g::<7, 13, 19>(&n, &d),
-                    };
-                    let d_max = d.coefficients().iter().fold(0.0f64, |m, c| m.max(c.abs()));
-                    let band = cell.delta.unwrap().0 * d_max + ROUNDING * f64::EPSILON * cells.scale * size * size;
+                    let (g, band, band_slope) = match segment.degree() {
+                        2 => cell.reduced::<9, 13>(&n, &d, rounding),
+                        _ => cell.reduced::<13, 19>(&n, &d, rounding),
+                    }
+                    .unwrap();
                     for k in 0..=256 {
                         let u = k as f64 / 256.0;
-                        let sigma = 0.5 * segment.two_sigma(lo + (hi - lo) * u).unwrap();
-                        let f = sigma * d.eval(u) - n.eval(u);
-                        assert!((f - g.eval(u)).abs() <= band, "u = {u}: F {f:e}, G {:e}, band {band:e}", g.eval(u));
+                        let a = lo + (hi - lo) * u;
+                        let two = segment.two_sigma(Dual { re: a, du: 1.0 }).unwrap();
+                        let f = 0.5 * two.re * d.eval(a) - n.eval(a);
+                        let slope =
+                            (hi - lo) * (0.5 * two.du * d.eval(a) + 0.5 * two.re * d_slope.eval(a) - n_slope.eval(a));
+                        let (value, g_slope) = g.eval_with_slope(u);
+                        assert!((f - value).abs() <= band, "u = {u}: F {f:e}, G {value:e}, band {band:e}");
+                        assert!(
+                            (slope - g_slope).abs() <= band_slope,
+                            "u = {u}: F' {slope:e}, G' {g_slope:e}, band {band_slope:e}"
+                        );
                     }
                 }
             }
