@@ -45,7 +45,7 @@ const NEWTON: usize = 8;
 /// A Newton step on `F` that turns back and is at most this many `ε` (of the cell's parameter,
 /// a sixteenth of that in α) has met `F`'s rounding: the root lies between the last two
 /// iterates.
-const TURNED: f64 = 256.0;
+pub const TURNED: f64 = 256.0;
 /// Points per cell at which `|σ − σ̃|` and its slope are measured.
 pub const SAMPLES: usize = 512;
 /// The most cells a segment is given `σ̃` for (more are left to the squared polynomial alone).
