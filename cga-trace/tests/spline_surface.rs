@@ -381,3 +381,31 @@ fn roots_near_a_segment_end_for_every_degree() {
         assert!(aimed * 10 >= total * 8, "{name}: {aimed} of {total} at the aimed point");
     }
 }
+
+/// A shadow ray's test stops at the first crossing it verifies: it answers as the nearest
+/// crossing does, on the rays of renders, their shadow rays and adversarial rays, with ranges
+/// that end before, between and after the crossings (`t_max` at a crossing's `t` and either
+/// side of it).
+#[test]
+fn occlusion_is_whether_a_crossing_is_in_range() {
+    let mut rng = XorShiftRng::seed_from_u64(5);
+    for (name, surface) in surfaces() {
+        let mut rays = render_rays(&surface);
+        rays.extend(adversarial_rays(&surface, &mut rng));
+        let (mut blocked, mut tested) = (0, 0);
+        for ray in rays.iter().step_by(3) {
+            let nearest = surface.intersect(ray, 0.0, f64::INFINITY);
+            let ends = match nearest {
+                Some(c) => vec![f64::INFINITY, c.t * (1.0 + 1e-9), c.t * (1.0 - 1e-9), 0.5 * c.t, 2.0 * c.t],
+                None => vec![f64::INFINITY, 30.0],
+            };
+            for t_max in ends {
+                let want = surface.intersect(ray, 0.0, t_max).is_some();
+                assert_eq!(surface.occludes(ray, 0.0, t_max), want, "{name}: {ray:?} to {t_max}");
+                blocked += usize::from(want);
+                tested += 1;
+            }
+        }
+        assert!(blocked > 0 && blocked < tested, "{name}: {blocked} of {tested} blocked");
+    }
+}

@@ -28,6 +28,9 @@ pub trait RayLanes<B: Backend, const W: usize>: Sized {
     /// The crossings of the rays with `shape` within their ranges, as [`Backend::intersect`]
     /// finds each; a lane with `t_max = −∞` finds nothing.
     fn cross(&self, shape: &B::Shape, t_min: &[f64; W], t_max: &[f64; W]) -> [Option<Crossing>; W];
+    /// Whether each ray crosses `shape` within its range, as [`Backend::occludes`] answers
+    /// each; a lane with `t_max = −∞` is never blocked.
+    fn occluded_by(&self, shape: &B::Shape, t_min: &[f64; W], t_max: &[f64; W]) -> [bool; W];
 }
 
 impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
@@ -55,6 +58,10 @@ impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
     #[inline(always)]
     fn cross(&self, shape: &B::Shape, t_min: &[f64; 1], t_max: &[f64; 1]) -> [Option<Crossing>; 1] {
         [B::intersect(shape, self, t_min[0], t_max[0])]
+    }
+    #[inline(always)]
+    fn occluded_by(&self, shape: &B::Shape, t_min: &[f64; 1], t_max: &[f64; 1]) -> [bool; 1] {
+        [B::occludes(shape, self, t_min[0], t_max[0])]
     }
 }
 
@@ -157,5 +164,9 @@ impl<B: Backend, L: Lane> RayLanes<B, 4> for Packet<B, L> {
     #[inline(always)]
     fn cross(&self, shape: &B::Shape, t_min: &[f64; 4], t_max: &[f64; 4]) -> Crossings {
         B::cross4(shape, self, t_min, t_max)
+    }
+    #[inline(always)]
+    fn occluded_by(&self, shape: &B::Shape, t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
+        B::occludes4(shape, self, t_min, t_max)
     }
 }

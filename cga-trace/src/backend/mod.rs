@@ -52,6 +52,11 @@ pub trait Backend: Send + Sync + 'static {
     fn prepare(shape: &Arc<dyn Shape>) -> Self::Shape;
     /// The nearest crossing with `t_min < t < t_max`.
     fn intersect(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> Option<Crossing>;
+    /// Whether the ray crosses the shape with `t_min < t < t_max` (a shadow ray's test): by
+    /// default [`Backend::intersect`]`.is_some()`.
+    fn occludes(shape: &Self::Shape, ray: &Ray<Self::Carrier>, t_min: f64, t_max: f64) -> bool {
+        Self::intersect(shape, ray, t_min, t_max).is_some()
+    }
     /// The unit normal at a crossing, facing the ray.
     fn normal(shape: &Self::Shape, ray: &Ray<Self::Carrier>, crossing: &Crossing) -> E3;
     /// Whether the renderer should trace this back end's rays four at a time ([`Packet`]):
@@ -81,6 +86,15 @@ pub trait Backend: Send + Sync + 'static {
         Self: Sized,
     {
         core::array::from_fn(|l| Self::intersect(shape, &p.rays[l], t_min[l], t_max[l]))
+    }
+    /// Whether each of the packet's rays crosses the shape within its range, as
+    /// [`Backend::occludes`] answers each (by default from [`Backend::cross4`]).
+    #[inline(always)]
+    fn occludes4<L: Lane>(shape: &Self::Shape, p: &Packet<Self, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4]
+    where
+        Self: Sized,
+    {
+        Self::cross4(shape, p, t_min, t_max).map(|c| c.is_some())
     }
     /// How far this back end's crossings of `shape` may lie from it ([`Shape::crossing_error`],
     /// which fits the null basis and plain vectors; a back end with other arithmetic says

@@ -80,6 +80,11 @@ impl Backend for Sparse {
         each_kind!(shape, s => s.intersect(ray, t_min, t_max))
     }
 
+    #[inline(always)]
+    fn occludes(shape: &SparseShape, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        each_kind!(shape, s => s.occludes(ray, t_min, t_max))
+    }
+
     fn normal(shape: &SparseShape, ray: &Ray, crossing: &Crossing) -> E3 {
         each_kind!(shape, s => s.normal(ray, crossing))
     }
@@ -112,6 +117,14 @@ impl Backend for Sparse {
                 meet_plane(p, &d.disk.plane.cast(), rim, t_min, t_max)
             }
             _ => core::array::from_fn(|l| Sparse::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
+        }
+    }
+
+    #[inline(always)]
+    fn occludes4<L: Lane>(shape: &SparseShape, p: &Packet<Sparse, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
+        match shape {
+            SparseShape::Other(s) => core::array::from_fn(|l| s.occludes(&p.rays[l], t_min[l], t_max[l])),
+            _ => Sparse::cross4(shape, p, t_min, t_max).map(|c| c.is_some()),
         }
     }
 }

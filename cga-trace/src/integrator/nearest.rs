@@ -86,7 +86,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 let ray = rays.ray(l);
                 bvh.traverse(ray.origin, ray.dir, 0.0, t_max[l], |k, t| {
                     blocked[l] = Some(k) != skip[l]
-                        && B::intersect(&self.shapes[k], ray, self.t_min(k, 0.0), t).is_some()
+                        && B::occludes(&self.shapes[k], ray, self.t_min(k, 0.0), t)
                         && !self.clear[k];
                     (!blocked[l]).then_some(t)
                 });
@@ -105,9 +105,10 @@ impl<'a, B: Backend> Renderer<'a, B> {
             if self.culled(rays, k, 0.0, &range) {
                 continue;
             }
-            for (l, c) in rays.cross(&self.shapes[k], &[self.t_min(k, 0.0); W], &range).into_iter().enumerate() {
+            for (l, hit) in rays.occluded_by(&self.shapes[k], &[self.t_min(k, 0.0); W], &range).into_iter().enumerate()
+            {
                 // A dielectric asked only once it is met: the test costs nothing elsewhere.
-                blocked[l] |= c.is_some() && !self.clear[k];
+                blocked[l] |= hit && !self.clear[k];
             }
         }
         core::array::from_fn(|l| active[l] && blocked[l])

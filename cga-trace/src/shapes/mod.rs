@@ -63,6 +63,13 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// The nearest crossing with `t_min < t < t_max`.
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing>;
 
+    /// Whether the ray crosses the shape with `t_min < t < t_max` (a shadow ray's test):
+    /// `intersect(…).is_some()`, which a shape may answer sooner (at the first crossing it
+    /// finds rather than the nearest).
+    fn occludes(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        self.intersect(ray, t_min, t_max).is_some()
+    }
+
     /// The unit normal at a crossing of `ray`, facing the ray.
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3;
 

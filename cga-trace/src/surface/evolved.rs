@@ -226,6 +226,36 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })
     }
 
+    /// Whether the surface crosses the ray with `t_min < t < t_max` (a shadow ray's test):
+    /// [`EvolvedSurface::intersect`]`.is_some()`, but where the unsquared condition decides,
+    /// interval by interval, stopping at the first crossing verified.
+    pub fn occludes<L>(&self, ray: &Ray<L>, t_min: f64, t_max: f64) -> bool {
+        self.local_ray(ray, t_min, t_max).is_some_and(|local| self.occludes_local(&local, t_min, t_max))
+    }
+
+    /// [`EvolvedSurface::occludes`] for a ray already in the local frame.
+    pub fn occludes_local(&self, local: &Ray, t_min: f64, t_max: f64) -> bool {
+        let (Some(cells), Some(unsquared), Finder::Polynomial(tolerance)) =
+            (&self.cells, &self.unsquared, self.method.finder(1))
+        else {
+            return self.intersect_local(local, t_min, t_max).is_some();
+        };
+        let ray = (local.origin, local.dir, &local.carrier);
+        let mut placed = Roots::new();
+        let mut found = false;
+        let intervals = cells.intervals(local, t_min, t_max);
+        let undecided = unsquared.roots_until(&local.carrier, &intervals, &mut placed, |roots| {
+            found = self.family.nearest(ray, roots, t_min, t_max, false).is_some();
+            found
+        });
+        if found || undecided.is_empty() {
+            return found;
+        }
+        let mut out = Roots::new();
+        self.family.roots_on(&local.carrier, tolerance, undecided.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
+        self.family.nearest(ray, &out, t_min, t_max, self.method.finder(1).polishes()).is_some()
+    }
+
     /// The unit normal at a crossing (eq. 6–11, sign not yet turned to the ray). Where the
     /// circles do not move (`Ẋ = 0`, so `N = 0`) the surface has no normal of its own; the
     /// circle's outward radial direction is used there.
@@ -252,6 +282,10 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
 impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         EvolvedSurface::intersect(self, ray, t_min, t_max)
+    }
+
+    fn occludes(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        EvolvedSurface::occludes(self, ray, t_min, t_max)
     }
 
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {

@@ -30,6 +30,14 @@ impl Segment {
         }
     }
 
+    /// Whether the ray crosses the segment, in the shared local frame.
+    fn occludes_local(&self, local: &Ray, t_min: f64, t_max: f64) -> bool {
+        match self {
+            Segment::Linear(s) => s.occludes_local(local, t_min, t_max),
+            Segment::Curved(s) => s.occludes_local(local, t_min, t_max),
+        }
+    }
+
     fn normal(&self, crossing: &Crossing) -> E3 {
         match self {
             Segment::Linear(s) => s.normal(crossing),
@@ -133,6 +141,12 @@ impl SplineSurface {
         self.origin
     }
 
+    /// The ray in the local frame (every segment shares it).
+    fn local(&self, ray: &Ray) -> Ray {
+        let o = sub(ray.origin, self.origin);
+        Ray { origin: o, dir: ray.dir, carrier: Line::from_point_unit_direction(o, ray.dir) }
+    }
+
     /// The segment holding `α`, and the parameter within it.
     fn locate(&self, alpha: f64) -> (usize, f64) {
         let m = self.segments.len();
@@ -153,16 +167,24 @@ impl Shape for SplineSurface {
             if !crosses(ray, centre, radius, t_min, t_max) {
                 continue;
             }
-            let local = local.get_or_insert_with(|| {
-                let o = sub(ray.origin, self.origin);
-                Ray { origin: o, dir: ray.dir, carrier: Line::from_point_unit_direction(o, ray.dir) }
-            });
+            let local = local.get_or_insert_with(|| self.local(ray));
             if let Some(c) = segment.intersect_local(local, t_min, t_max) {
                 t_max = c.t;
                 best = Some(Crossing { alpha: c.alpha.map(|t| (j as f64 + t) / m), ..c });
             }
         }
         best
+    }
+
+    fn occludes(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let mut local: Option<Ray> = None;
+        self.segments.iter().any(|segment| {
+            let (centre, radius) = segment.bounds();
+            crosses(ray, centre, radius, t_min, t_max) && {
+                let local = local.get_or_insert_with(|| self.local(ray));
+                segment.occludes_local(local, t_min, t_max)
+            }
+        })
     }
 
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {

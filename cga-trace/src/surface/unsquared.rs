@@ -190,43 +190,69 @@ impl<T: Real> Unsquared<T> {
     /// them) appended to `out`; the intervals some cell of which is undecided are returned, and
     /// nothing of theirs is appended.
     pub fn roots(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
+        self.roots_until(line, intervals, out, |_| false)
+    }
+
+    /// [`Unsquared::roots`], interval by interval, until `stop` is true of the roots an
+    /// interval appended (an occlusion test stops at the first crossing it verifies); the
+    /// undecided intervals met so far are returned.
+    pub fn roots_until(
+        &self,
+        line: &Line<T>,
+        intervals: &Intervals,
+        out: &mut Roots<T>,
+        stop: impl FnMut(&[T]) -> bool,
+    ) -> Intervals {
         if intervals.is_empty() {
             return Intervals::new();
         }
         #[cfg(target_arch = "x86_64")]
         if cga_core::simd::avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.roots_avx2(line, intervals, out) };
+            return unsafe { self.roots_avx2(line, intervals, out, stop) };
         }
-        self.roots_here(line, intervals, out)
+        self.roots_here(line, intervals, out, stop)
     }
 
-    /// [`Unsquared::roots`] compiled for AVX2 (the restrictions' columns four lanes at a time;
+    /// [`Unsquared::roots_until`] compiled for AVX2 (the maps' columns four lanes at a time;
     /// the same operations, so the same bits).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn roots_avx2(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
-        self.roots_here(line, intervals, out)
+    unsafe fn roots_avx2(
+        &self,
+        line: &Line<T>,
+        intervals: &Intervals,
+        out: &mut Roots<T>,
+        stop: impl FnMut(&[T]) -> bool,
+    ) -> Intervals {
+        self.roots_here(line, intervals, out, stop)
     }
 
     #[inline(always)]
-    fn roots_here(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
+    fn roots_here(
+        &self,
+        line: &Line<T>,
+        intervals: &Intervals,
+        out: &mut Roots<T>,
+        stop: impl FnMut(&[T]) -> bool,
+    ) -> Intervals {
         match self.segment.degree() {
-            2 => self.roots_of::<3, 7, 5, 9, 13>(line, intervals, out),
-            _ => self.roots_of::<4, 10, 7, 13, 19>(line, intervals, out),
+            2 => self.roots_of::<3, 7, 5, 9, 13>(line, intervals, out, stop),
+            _ => self.roots_of::<4, 10, 7, 13, 19>(line, intervals, out, stop),
         }
     }
 
-    /// [`Unsquared::roots`] for a segment of degree `d`: `VA = d + 1` and `VB = 3d + 1` meets,
-    /// `σ̃` and `S` of `SA = 2d + 1` coefficients, `D` and `q` of `P = 4d + 1`, `N` and `G` of
-    /// `BB = 6d + 1`. `N` and `D` are built once over the segment and restricted to each cell
-    /// by its matrices.
+    /// [`Unsquared::roots_until`] for a segment of degree `d`: `VA = d + 1` and `VB = 3d + 1`
+    /// meets, `σ̃` and `S` of `SA = 2d + 1` coefficients, `D` and `q` of `P = 4d + 1`, `N` and
+    /// `G` of `BB = 6d + 1`. `N` and `D` are built once over the segment and mapped to each
+    /// cell by its matrices.
     #[inline(always)]
     fn roots_of<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
         &self,
         line: &Line<T>,
         intervals: &Intervals,
         out: &mut Roots<T>,
+        mut stop: impl FnMut(&[T]) -> bool,
     ) -> Intervals {
         let (n, d) = self.numerators::<VA, VB, SA, P, BB>(line);
         let size: T = line.to_array().iter().fold(T::zero(), |m, &c| m + c.abs());
@@ -237,13 +263,18 @@ impl<T: Real> Unsquared<T> {
             let first = (lo * count as f64).round() as usize;
             let last = (first + cells).min(count);
             let start = out.len();
+            let mut decided = true;
             for i in first..last {
                 let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
                 if !self.cell_roots::<P, BB>(i, &n, &d, rounding, alpha, out) {
                     out.truncate(start);
                     undecided.push((lo, hi, cells));
+                    decided = false;
                     break;
                 }
+            }
+            if decided && out.len() > start && stop(&out[start..]) {
+                break;
             }
         }
         undecided
