@@ -76,6 +76,8 @@ struct Tally {
     /// answer is right to rounding.
     tangent: usize,
     worst_alpha: f64,
+    /// Rays whose shadow test (`Shape::occludes`) disagrees with their nearest crossing.
+    occlusion: usize,
     seconds: f64,
 }
 
@@ -85,6 +87,7 @@ impl Tally {
         assert!(self.missed.is_empty(), "{what}: {} missed: {}", self.missed.len(), show(&self.missed));
         assert!(self.false_hits.is_empty(), "{what}: {} false: {}", self.false_hits.len(), show(&self.false_hits));
         assert!(self.worst_alpha <= 1e-9, "{what}: α off by {:e}", self.worst_alpha);
+        assert_eq!(self.occlusion, 0, "{what}: shadow tests that disagree with the nearest crossing");
     }
 }
 
@@ -103,6 +106,9 @@ fn compare(surface: Swept, rays: &[TestRay], samples: usize) -> Vec<(String, Tal
         let start = Instant::now();
         let gots: Vec<_> = rays.iter().map(|(r, t_max)| method.intersect(r, 0.0, *t_max)).collect();
         tally.seconds = start.elapsed().as_secs_f64();
+        tally.occlusion = (rays.iter().zip(&gots))
+            .filter(|((r, t_max), got)| method.occludes(r, 0.0, *t_max) != got.is_some())
+            .count();
         for (((ray, t_max), want), got) in rays.iter().zip(&wants).zip(&gots) {
             let mut want = *want;
             let agree = |want: Option<(f64, f64)>| match (want, got) {
@@ -187,7 +193,7 @@ fn check_scene(name: &str, window: &Window, samples: usize) -> Vec<(String, Stri
         for (method, tally) in compare(surface, &rays, samples) {
             let what = format!("{name}, {} \"{}\", {method}", surface.kind(), object.name);
             println!(
-                "{what}: {} rays, {} hits ({} to {:.0e} in t), {} missed, {} false, {} nearer (within {:.0e}), {} tangent, α to {:.1e}",
+                "{what}: {} rays, {} hits ({} to {:.0e} in t), {} missed, {} false, {} nearer (within {:.0e}), {} tangent, α to {:.1e}, {} shadow tests off",
                 tally.rays,
                 tally.hits,
                 tally.within_error,
@@ -197,7 +203,8 @@ fn check_scene(name: &str, window: &Window, samples: usize) -> Vec<(String, Stri
                 tally.nearer,
                 tally.worst_nearer,
                 tally.tangent,
-                tally.worst_alpha
+                tally.worst_alpha,
+                tally.occlusion
             );
             out.push((format!("{name}: {} \"{}\"", surface.kind(), object.name), method, tally));
         }

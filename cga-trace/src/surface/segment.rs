@@ -127,8 +127,42 @@ impl<T: Real> Weight<T> for Dual<T> {
     }
 }
 
-/// The scaled Bernstein basis of degree `n` at `t`: `(1 − t)ⁿ⁻ᵏ tᵏ`, `k = 0 … n`.
+/// The scaled Bernstein basis of degree `n` at `t`: `(1 − t)ⁿ⁻ᵏ tᵏ`, `k = 0 … n`; for the
+/// degrees a segment evaluates, through loops of constant length (unrolled).
+#[inline(always)]
 pub(super) fn basis<U: Real>(t: U, n: usize) -> [U; WEIGHTS] {
+    match n {
+        2 => basis_of::<U, 2>(t),
+        3 => basis_of::<U, 3>(t),
+        4 => basis_of::<U, 4>(t),
+        6 => basis_of::<U, 6>(t),
+        8 => basis_of::<U, 8>(t),
+        9 => basis_of::<U, 9>(t),
+        12 => basis_of::<U, 12>(t),
+        _ => basis_any(t, n),
+    }
+}
+
+/// [`basis`] of degree `N`.
+#[inline(always)]
+fn basis_of<U: Real, const N: usize>(t: U) -> [U; WEIGHTS] {
+    let u = U::one() - t;
+    let mut w = [U::one(); WEIGHTS];
+    let mut power = U::one();
+    for slot in w[1..=N].iter_mut() {
+        power = power * t;
+        *slot = power;
+    }
+    let mut other = U::one();
+    for slot in w[..N].iter_mut().rev() {
+        other = other * u;
+        *slot = *slot * other;
+    }
+    w
+}
+
+/// [`basis`] of any degree `n < WEIGHTS`.
+fn basis_any<U: Real>(t: U, n: usize) -> [U; WEIGHTS] {
     let u = U::one() - t;
     let mut w = [U::one(); WEIGHTS];
     let mut power = U::one();
