@@ -154,10 +154,12 @@ macro_rules! wide {
         }
 
         impl Real for $t {
-            /// Lane-wise maximum.
+            /// Lane-wise maximum, `f64::max`'s (the other where one is NaN), with its one
+            /// freedom fixed: of `±0` the first, as `vmaxpd` gives (`f64::max` may give
+            /// either, and an optimised build did not give what a debug one does).
             #[inline(always)]
             fn max(self, other: Self) -> Self {
-                self.zip(other, f64::max)
+                self.zip(other, |a, b| if a.is_nan() || b > a { b } else { a })
             }
             #[inline(always)]
             fn zero() -> Self {
