@@ -382,10 +382,11 @@ fn roots_near_a_segment_end_for_every_degree() {
     }
 }
 
-/// A shadow ray's test stops at the first crossing it verifies: it answers as the nearest
-/// crossing does, on the rays of renders, their shadow rays and adversarial rays, with ranges
-/// that end before, between and after the crossings (`t_max` at a crossing's `t` and either
-/// side of it).
+/// A shadow ray's test stops at the first crossing it verifies, or at one proved to lie within
+/// its range: it answers as the nearest crossing does, on the rays of renders, their shadow
+/// rays and adversarial rays, with ranges that end before, between and after the crossings (`t_max`
+/// at a crossing's `t` and either side of it) and that start at, before and just after one
+/// (a shadow ray leaving the surface).
 #[test]
 fn occlusion_is_whether_a_crossing_is_in_range() {
     let mut rng = XorShiftRng::seed_from_u64(5);
@@ -395,13 +396,24 @@ fn occlusion_is_whether_a_crossing_is_in_range() {
         let (mut blocked, mut tested) = (0, 0);
         for ray in rays.iter().step_by(3) {
             let nearest = surface.intersect(ray, 0.0, f64::INFINITY);
-            let ends = match nearest {
-                Some(c) => vec![f64::INFINITY, c.t * (1.0 + 1e-9), c.t * (1.0 - 1e-9), 0.5 * c.t, 2.0 * c.t],
-                None => vec![f64::INFINITY, 30.0],
+            let inf = f64::INFINITY;
+            let ranges = match nearest {
+                Some(c) => vec![
+                    (0.0, inf),
+                    (0.0, c.t * (1.0 + 1e-9)),
+                    (0.0, c.t * (1.0 - 1e-9)),
+                    (0.0, 0.5 * c.t),
+                    (0.0, 2.0 * c.t),
+                    (c.t * (1.0 - 1e-9), inf),
+                    (c.t * (1.0 + 1e-9), inf),
+                    (c.t + 1e-5, inf),
+                    (c.t - 1e-5, c.t + 1e-5),
+                ],
+                None => vec![(0.0, inf), (0.0, 30.0)],
             };
-            for t_max in ends {
-                let want = surface.intersect(ray, 0.0, t_max).is_some();
-                assert_eq!(surface.occludes(ray, 0.0, t_max), want, "{name}: {ray:?} to {t_max}");
+            for (t_min, t_max) in ranges {
+                let want = surface.intersect(ray, t_min, t_max).is_some();
+                assert_eq!(surface.occludes(ray, t_min, t_max), want, "{name}: {ray:?} in ({t_min}, {t_max})");
                 blocked += usize::from(want);
                 tested += 1;
             }

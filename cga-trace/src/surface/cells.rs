@@ -10,6 +10,14 @@ use smallvec::SmallVec;
 /// α-intervals a ray reaches, `(lo, hi, cells)`, touching ones merged.
 pub type Intervals = SmallVec<[(f64, f64, usize); 8]>;
 
+/// Cells as bits, 64 to a word (cell `i` is bit `i % 64` of word `i / 64`).
+pub type CellBits = SmallVec<[u64; 4]>;
+
+/// Whether bit `i` of `bits` is set.
+pub fn has(bits: &[u64], i: usize) -> bool {
+    bits.get(i / 64).is_some_and(|w| w >> (i % 64) & 1 == 1)
+}
+
 /// Samples per cell when bounding it.
 const CELL_SAMPLES: usize = 32;
 /// Relative padding of every bounding sphere.
@@ -57,12 +65,14 @@ impl Four {
 
     /// Which of the four cells the ray can reach within `(t_min, t_max)`: through the
     /// sphere (as [`crosses`](crate::ray::crosses) tests) and within the tube ([`Tube`]),
-    /// lane by lane.
+    /// lane by lane; and of those, which have part of their sphere at `t ≤ t_min` or
+    /// `t ≥ t_max` (where a crossing can lie outside the window).
     #[inline(always)]
-    fn reached(&self, ray: &Ray, t_min: f64, t_max: f64) -> [bool; 4] {
+    fn reached(&self, ray: &Ray, t_min: f64, t_max: f64) -> ([bool; 4], [bool; 4]) {
         let (o, d) = (ray.origin, ray.dir);
         let mut out = [false; 4];
-        for (l, slot) in out.iter_mut().enumerate() {
+        let mut ends = [false; 4];
+        for (l, (slot, end)) in out.iter_mut().zip(&mut ends).enumerate() {
             // `&` rather than `&&`: every lane computes everything, with no branch to mispredict.
             let oc = [0, 1, 2].map(|k| o[k] - self.centre[k][l]);
             let tc = -dot(oc, d);
@@ -84,8 +94,9 @@ impl Four {
             // `t₀ = −on / |d·n|` within `δ / |d·n|` of (t_min, t_max), times |d·n|.
             let near = ring & (delta - on > t_min * adn) & (-on - delta < t_max * adn);
             *slot = sphere & ((adn < PARALLEL) | near);
+            *end = *slot & ((tc - r <= t_min) | (tc + r >= t_max));
         }
-        out
+        (out, ends)
     }
 }
 
@@ -118,34 +129,40 @@ impl Cells {
     }
 
     /// The α-intervals whose cells the ray reaches within `(t_min, t_max)`, in increasing α,
-    /// neighbours merged. Four lanes at once in AVX2 where the CPU has it (chosen at run time).
-    pub fn intervals(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
+    /// neighbours merged; and the cells reached whose bounding sphere reaches to `t ≤ t_min`
+    /// or `t ≥ t_max` (the others hold only crossings within the window). Four lanes at once
+    /// in AVX2 where the CPU has it (chosen at run time).
+    pub fn reach(&self, ray: &Ray, t_min: f64, t_max: f64) -> (Intervals, CellBits) {
         #[cfg(target_arch = "x86_64")]
         if cga_core::simd::avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.intervals_avx2(ray, t_min, t_max) };
+            return unsafe { self.reach_avx2(ray, t_min, t_max) };
         }
-        self.intervals_lanes(ray, t_min, t_max)
+        self.reach_lanes(ray, t_min, t_max)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn intervals_avx2(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
-        self.intervals_lanes(ray, t_min, t_max)
+    unsafe fn reach_avx2(&self, ray: &Ray, t_min: f64, t_max: f64) -> (Intervals, CellBits) {
+        self.reach_lanes(ray, t_min, t_max)
     }
 
     /// The cells reached as bits, 64 cells to a word, then read off run by run (a branch
     /// per interval, not per cell).
     #[inline(always)]
-    fn intervals_lanes(&self, ray: &Ray, t_min: f64, t_max: f64) -> Intervals {
+    fn reach_lanes(&self, ray: &Ray, t_min: f64, t_max: f64) -> (Intervals, CellBits) {
         let mut out = Intervals::new();
+        let mut ends = CellBits::new();
         let width = 1.0 / self.cells as f64;
+        let bits = |lanes: [bool; 4]| lanes.iter().rev().fold(0u64, |m, &r| (m << 1) | u64::from(r));
         for (b, block) in self.fours.chunks(16).enumerate() {
-            let mut mask = 0u64;
+            let (mut mask, mut end) = (0u64, 0u64);
             for (g, four) in block.iter().enumerate() {
-                let bits = four.reached(ray, t_min, t_max).iter().rev().fold(0u64, |m, &r| (m << 1) | u64::from(r));
-                mask |= bits << (4 * g);
+                let (reached, beyond) = four.reached(ray, t_min, t_max);
+                mask |= bits(reached) << (4 * g);
+                end |= bits(beyond) << (4 * g);
             }
+            ends.push(end);
             while mask != 0 {
                 let start = mask.trailing_zeros() as usize;
                 let run = (!(mask >> start)).trailing_zeros() as usize;
@@ -161,7 +178,7 @@ impl Cells {
                 }
             }
         }
-        out
+        (out, ends)
     }
 }
 
@@ -220,8 +237,10 @@ mod tests {
     }
 
     /// Culling never loses a hit: every ray through a point of `C_α` — from any direction,
-    /// grazing and in the circle's plane included — reaches an interval holding α; and it
-    /// culls: rays that pass the surface by reach nothing, and a hitting ray few cells.
+    /// grazing and in the circle's plane included — reaches an interval holding α, and where
+    /// a window leaves the point out, its cell is marked as one whose crossings can lie
+    /// outside; and it culls: rays that pass the surface by reach nothing, and a hitting ray
+    /// few cells.
     #[test]
     fn every_ray_through_a_circle_reaches_its_cell() {
         let circles = twisted();
@@ -234,7 +253,7 @@ mod tests {
                 let (x, _) = on_circle(&circles, alpha, angle);
                 let dir = unit([next() - 0.5, next() - 0.5, next() - 0.5]).unwrap();
                 let ray = Ray::new(sub(x, scale(dir, 3.0)), dir).unwrap();
-                let found = cells.intervals(&ray, 0.0, f64::INFINITY);
+                let found = cells.reach(&ray, 0.0, f64::INFINITY).0;
                 assert!(found.iter().any(|&(lo, hi, _)| lo <= alpha && alpha <= hi), "{count} cells, α = {alpha}");
                 // Intervals are disjoint, increasing, and count their cells.
                 for w in found.windows(2) {
@@ -253,17 +272,25 @@ mod tests {
             // Every fourth ray lies in the circle's plane.
             let dir = if k % 4 == 0 { unit(sub(random, scale(n, dot(random, n)))).unwrap() } else { random };
             let ray = Ray::new(sub(x, scale(dir, 3.0)), dir).unwrap();
-            let found = cells.intervals(&ray, 0.0, f64::INFINITY);
+            let found = cells.reach(&ray, 0.0, f64::INFINITY).0;
             assert!(found.iter().any(|&(lo, hi, _)| lo <= alpha && alpha <= hi), "α = {alpha}, {ray:?}: {found:?}");
             // The point lies at t = 3: a shorter ray does not get there.
-            let short = cells.intervals(&ray, 0.0, 3.0 + 1e-9);
+            let short = cells.reach(&ray, 0.0, 3.0 + 1e-9).0;
             assert!(short.iter().any(|&(lo, hi, _)| lo <= alpha && alpha <= hi), "α = {alpha}, t_max 3");
+            // A window that leaves the point out marks its cell, where it reaches it, as one
+            // whose crossings can lie outside.
+            let cell = ((alpha * 16.0) as usize).min(15);
+            for (t_min, t_max) in [(0.0, 3.0 - 1e-9), (3.0 + 1e-9, f64::INFINITY)] {
+                let (found, ends) = cells.reach(&ray, t_min, t_max);
+                let reached = found.iter().any(|&(lo, hi, _)| lo * 16.0 <= cell as f64 && (cell as f64) < hi * 16.0);
+                assert!(!reached || has(&ends, cell), "α = {alpha} in ({t_min}, {t_max}): cell {cell} not marked");
+            }
             reached += found.iter().map(|i| i.2).sum::<usize>();
         }
         assert!(reached < 20_000 * 12, "{} cells per ray on average", reached as f64 / 20_000.0);
         let passing_by = Ray::new([5.0, 5.0, 0.0], [0.0, 0.0, 1.0]).unwrap();
-        assert!(cells.intervals(&passing_by, 0.0, f64::INFINITY).is_empty());
+        assert!(cells.reach(&passing_by, 0.0, f64::INFINITY).0.is_empty());
         let behind = Ray::new([0.0, 0.0, 10.0], [0.0, 0.0, 1.0]).unwrap();
-        assert!(cells.intervals(&behind, 0.0, f64::INFINITY).is_empty());
+        assert!(cells.reach(&behind, 0.0, f64::INFINITY).0.is_empty());
     }
 }

@@ -4,7 +4,7 @@
 use super::bernstein::Roots;
 use super::cells::{Cells, PAD};
 use super::family::{Circles, TwoCircles};
-use super::unsquared::Unsquared;
+use super::unsquared::{Unsquared, Window};
 use super::{Family, Finder, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
@@ -184,11 +184,12 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         let line = &local.carrier;
         match &self.cells {
             Some(cells) => {
-                let intervals = cells.intervals(local, t_min, t_max);
+                let (intervals, ends) = cells.reach(local, t_min, t_max);
                 if let (Some(unsquared), Finder::Polynomial(tolerance)) = (&self.unsquared, self.method.finder(1)) {
                     // Most intervals are decided without the squared polynomial; it is built
                     // (once) for the rest.
-                    let undecided = unsquared.roots(line, &intervals, &mut placed);
+                    let window = Window { origin: local.origin, dir: local.dir, t_min, t_max, ends: &ends, any: false };
+                    let (undecided, _) = unsquared.roots_until(line, Some(&window), &intervals, &mut placed, |_| false);
                     if !undecided.is_empty() {
                         self.family.roots_on(line, tolerance, undecided.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
                     }
@@ -243,13 +244,15 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         let ray = (local.origin, local.dir, &local.carrier);
         let mut placed = Roots::new();
         let mut found = false;
-        let intervals = cells.intervals(local, t_min, t_max);
-        let undecided = unsquared.roots_until(&local.carrier, &intervals, &mut placed, |roots| {
-            found = self.family.nearest(ray, roots, t_min, t_max, false).is_some();
-            found
-        });
-        if found || undecided.is_empty() {
-            return found;
+        let (intervals, ends) = cells.reach(local, t_min, t_max);
+        let window = Window { origin: local.origin, dir: local.dir, t_min, t_max, ends: &ends, any: true };
+        let (undecided, within) =
+            unsquared.roots_until(&local.carrier, Some(&window), &intervals, &mut placed, |roots| {
+                found = self.family.nearest(ray, roots, t_min, t_max, false).is_some();
+                found
+            });
+        if within || found || undecided.is_empty() {
+            return within || found;
         }
         let mut out = Roots::new();
         self.family.roots_on(&local.carrier, tolerance, undecided.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);

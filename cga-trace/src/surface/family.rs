@@ -259,14 +259,29 @@ fn restrict_quadratic<T: Real>(q: [T; 3], lo: T, hi: T) -> [T; 3] {
 }
 
 /// `x y` for polynomials in the scaled Bernstein basis: a convolution, `C = A + B − 1`
-/// coefficients.
+/// coefficients, as `Σⱼ yⱼ (x shifted by j)` over the shorter factor `y`.
+///
+/// The longer factor is read from a zero-padded copy, so that every pass adds a whole
+/// product `c[0..C]` in place: the sum `c[i..i + B] += xᵢ y` instead made each pass read
+/// what the one before had just stored one slot over, and a load that partly overlaps a
+/// store cannot take its value from the store buffer (a stall per pass; it was the hottest
+/// instruction of a spline ray).
 #[inline(always)]
 pub(super) fn convolve<T: Real, const A: usize, const B: usize, const C: usize>(x: &[T; A], y: &[T; B]) -> [T; C] {
     const { assert!(C + 1 == A + B, "the product has A + B − 1 coefficients") };
+    if A < B {
+        return convolve(y, x);
+    }
+    // `x` with B − 1 zeros on each side; C + B − 1 ≤ PADDED for the degrees here (A ≤ 25).
+    const PADDED: usize = 64;
+    const { assert!(A + 2 * B <= PADDED + 2, "within the padded copy") };
+    let mut padded = [T::zero(); PADDED];
+    padded[B - 1..B - 1 + A].copy_from_slice(x);
     let mut c = [T::zero(); C];
-    for (i, xi) in x.iter().enumerate() {
-        for (j, yj) in y.iter().enumerate() {
-            c[i + j] = c[i + j] + *xi * *yj;
+    for (j, &yj) in y.iter().enumerate() {
+        let shifted = &padded[B - 1 - j..B - 1 - j + C];
+        for (slot, &v) in c.iter_mut().zip(shifted) {
+            *slot = *slot + yj * v;
         }
     }
     c

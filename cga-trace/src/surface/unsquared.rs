@@ -33,8 +33,9 @@
 //! doubled.
 
 use super::bernstein::{Bernstein, Roots, Scaled, binomial, inverse_binomial};
-use super::cells::Intervals;
-use super::segment::{BezierSegment, filled, numerators};
+use super::cells::{Intervals, has};
+use super::segment::{BezierSegment, basis, filled, numerators};
+use cga_core::euclid::E3;
 use cga_core::{Dual, Line, Real, Vector};
 use smallvec::SmallVec;
 
@@ -53,6 +54,10 @@ pub const MAX_CELLS: usize = 256;
 /// `G`'s rounding, in units of `ε` times the scale of its terms: a few hundred operations
 /// of rounding each, with room.
 const ROUNDING: f64 = 256.0;
+/// A crossing whose distance along the ray, from `G`'s root, is out of the window by more than
+/// its error bound is not placed: its α error bound, at most this (beyond it the bound's linear
+/// term is not trusted).
+const SKIP_ALPHA: f64 = 1e-6;
 /// The polynomials' capacity: `N` and `G` have degree `6d ≤ 18`.
 const CAPACITY: usize = 19;
 /// The reduced `G`'s capacity (three AVX2 registers): its degree on a cell is
@@ -60,6 +65,46 @@ const CAPACITY: usize = 19;
 const LOW: usize = 12;
 /// The degree `D` is reduced to on a cell, for the bounds on `|D|` and `|D'|` alone.
 const D_DEGREE: usize = 3;
+
+/// The part of a ray's line that counts: the points `origin + t dir` with
+/// `t_min < t < t_max`, in the segment's frame (`dir` a unit vector). Crossings provably
+/// outside it are not placed (a shadow ray from the surface meets it at `t ≈ 0`, below
+/// `t_min`, at every test).
+#[derive(Clone, Copy, Debug)]
+pub struct Window<'a, T> {
+    /// The ray's origin.
+    pub origin: E3<T>,
+    /// Its unit direction.
+    pub dir: E3<T>,
+    /// The nearest distance that counts (exclusive).
+    pub t_min: T,
+    /// The farthest (exclusive).
+    pub t_max: T,
+    /// The cells (bits, as [`Cells::reach`](super::cells::Cells::reach) gives them) where a
+    /// crossing can lie outside `(t_min, t_max)`: only their crossings are tested.
+    pub ends: &'a [u64],
+    /// Whether any crossing within the window answers the query (an occlusion test): one
+    /// proved to lie within it ends the search unplaced.
+    pub any: bool,
+}
+
+/// Where a crossing lies against a [`Window`], where that is proved.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Side {
+    Outside,
+    Within,
+}
+
+/// What became of a cell.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Verdict {
+    /// Its crossings are placed (or there are none).
+    Decided,
+    /// Left to the squared polynomial.
+    Undecided,
+    /// A crossing proved to lie within an [`any`](Window::any) window.
+    Within,
+}
 
 /// A polynomial over a segment, in the Bernstein basis.
 type Poly<T> = Bernstein<T, CAPACITY>;
@@ -190,28 +235,31 @@ impl<T: Real> Unsquared<T> {
     /// them) appended to `out`; the intervals some cell of which is undecided are returned, and
     /// nothing of theirs is appended.
     pub fn roots(&self, line: &Line<T>, intervals: &Intervals, out: &mut Roots<T>) -> Intervals {
-        self.roots_until(line, intervals, out, |_| false)
+        self.roots_until(line, None, intervals, out, |_| false).0
     }
 
     /// [`Unsquared::roots`], interval by interval, until `stop` is true of the roots an
     /// interval appended (an occlusion test stops at the first crossing it verifies); the
-    /// undecided intervals met so far are returned.
+    /// undecided intervals met so far are returned. With a `window` (the ray's, for `line`),
+    /// crossings provably outside it are left out; and the flag says whether the search ended
+    /// at a crossing proved to lie within an [`any`](Window::any) window.
     pub fn roots_until(
         &self,
         line: &Line<T>,
+        window: Option<&Window<'_, T>>,
         intervals: &Intervals,
         out: &mut Roots<T>,
         stop: impl FnMut(&[T]) -> bool,
-    ) -> Intervals {
+    ) -> (Intervals, bool) {
         if intervals.is_empty() {
-            return Intervals::new();
+            return (Intervals::new(), false);
         }
         #[cfg(target_arch = "x86_64")]
         if cga_core::simd::avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.roots_avx2(line, intervals, out, stop) };
+            return unsafe { self.roots_avx2(line, window, intervals, out, stop) };
         }
-        self.roots_here(line, intervals, out, stop)
+        self.roots_here(line, window, intervals, out, stop)
     }
 
     /// [`Unsquared::roots_until`] compiled for AVX2 (the maps' columns four lanes at a time;
@@ -221,24 +269,26 @@ impl<T: Real> Unsquared<T> {
     unsafe fn roots_avx2(
         &self,
         line: &Line<T>,
+        window: Option<&Window<'_, T>>,
         intervals: &Intervals,
         out: &mut Roots<T>,
         stop: impl FnMut(&[T]) -> bool,
-    ) -> Intervals {
-        self.roots_here(line, intervals, out, stop)
+    ) -> (Intervals, bool) {
+        self.roots_here(line, window, intervals, out, stop)
     }
 
     #[inline(always)]
     fn roots_here(
         &self,
         line: &Line<T>,
+        window: Option<&Window<'_, T>>,
         intervals: &Intervals,
         out: &mut Roots<T>,
         stop: impl FnMut(&[T]) -> bool,
-    ) -> Intervals {
+    ) -> (Intervals, bool) {
         match self.segment.degree() {
-            2 => self.roots_of::<3, 7, 5, 9, 13>(line, intervals, out, stop),
-            _ => self.roots_of::<4, 10, 7, 13, 19>(line, intervals, out, stop),
+            2 => self.roots_of::<3, 7, 5, 9, 13, 9>(line, window, intervals, out, stop),
+            _ => self.roots_of::<4, 10, 7, 13, 19, 12>(line, window, intervals, out, stop),
         }
     }
 
@@ -247,14 +297,17 @@ impl<T: Real> Unsquared<T> {
     /// `G` of `BB = 6d + 1`. `N` and `D` are built once over the segment and mapped to each
     /// cell by its matrices.
     #[inline(always)]
-    fn roots_of<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
+    fn roots_of<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize, const M: usize>(
         &self,
         line: &Line<T>,
+        window: Option<&Window<'_, T>>,
         intervals: &Intervals,
         out: &mut Roots<T>,
         mut stop: impl FnMut(&[T]) -> bool,
-    ) -> Intervals {
-        let (n, d) = self.numerators::<VA, VB, SA, P, BB>(line);
+    ) -> (Intervals, bool) {
+        let meets = self.meets::<VA, VB>(line);
+        let (n, d) = self.numerators::<VA, VB, SA, P, BB>(&meets);
+        let window = window.map(|w| (w, &meets.0[..], &meets.1[..]));
         let size: T = line.to_array().iter().fold(T::zero(), |m, &c| m + c.abs());
         let rounding = T::from_f64(ROUNDING) * T::epsilon() * self.scale * size * size;
         let count = self.cells.len();
@@ -266,60 +319,94 @@ impl<T: Real> Unsquared<T> {
             let mut decided = true;
             for i in first..last {
                 let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
-                if !self.cell_roots::<P, BB>(i, &n, &d, rounding, alpha, out) {
-                    out.truncate(start);
-                    undecided.push((lo, hi, cells));
-                    decided = false;
-                    break;
+                match self.cell_roots::<P, BB, M>(i, &n, &d, rounding, window, alpha, out) {
+                    Verdict::Decided => {}
+                    Verdict::Undecided => {
+                        out.truncate(start);
+                        undecided.push((lo, hi, cells));
+                        decided = false;
+                        break;
+                    }
+                    Verdict::Within => return (undecided, true),
                 }
             }
             if decided && out.len() > start && stop(&out[start..]) {
                 break;
             }
         }
-        undecided
+        (undecided, false)
     }
 
-    /// `N` and `D` over the segment, in the Bernstein basis.
+    /// The meets `A = X ∨ L` and `B = ⟨Q X⟩₃ ∨ L` of the segment's blades, in the scaled
+    /// basis.
+    #[inline(always)]
+    fn meets<const VA: usize, const VB: usize>(&self, line: &Line<T>) -> Meets<T, VA, VB> {
+        let (x, qx, _, _) = self.segment.parts();
+        (filled(Vector::zero(), |k| line.meet_circle(&x[k])), filled(Vector::zero(), |k| line.meet_circle(&qx[k])))
+    }
+
+    /// `N` and `D` over the segment from the meets, in the Bernstein basis.
     #[inline(always)]
     fn numerators<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
         &self,
-        line: &Line<T>,
+        (a_seq, b_seq): &Meets<T, VA, VB>,
     ) -> (Poly<T>, Poly<T>) {
-        let (x, qx, s, q) = self.segment.parts();
-        let a_seq: [Vector<T>; VA] = filled(Vector::zero(), |k| line.meet_circle(&x[k]));
-        let b_seq: [Vector<T>; VB] = filled(Vector::zero(), |k| line.meet_circle(&qx[k]));
-        let (n, d) = numerators::<T, VA, VB, SA, P, BB>(&a_seq, &b_seq, s, q);
+        let (_, _, s, q) = self.segment.parts();
+        let (n, d) = numerators::<T, VA, VB, SA, P, BB>(a_seq, b_seq, s, q);
         (Scaled::<T, CAPACITY>::new(&n).bernstein(), Scaled::<T, CAPACITY>::new(&d).bernstein())
     }
 
     /// `F`'s roots on cell `i`, where `N` and `D` over the segment are `n` and `d`, as α
-    /// (`alpha` maps the cell's parameter), appended to `out`; `false` if undecided.
+    /// (`alpha` maps the cell's parameter), appended to `out` (those provably outside
+    /// `window` left out).
     #[inline(always)]
-    fn cell_roots<const P: usize, const BB: usize>(
+    #[allow(clippy::too_many_arguments)]
+    fn cell_roots<const P: usize, const BB: usize, const M: usize>(
         &self,
         i: usize,
         n: &Poly<T>,
         d: &Poly<T>,
         rounding: T,
+        window: Option<WindowMeets<'_, T>>,
         alpha: impl Fn(T) -> T,
         out: &mut Roots<T>,
-    ) -> bool {
-        let Some((g, band, band_slope)) = self.cells[i].reduced::<P, BB>(n, d, rounding) else { return false };
-        let mut brackets: SmallVec<[(T, T, T); 4]> = SmallVec::new();
-        if !isolate(&g, band, band_slope, (T::zero(), T::one()), 0, &mut brackets) {
-            return false;
+    ) -> Verdict {
+        let Some((g, band, band_slope)) = self.cells[i].reduced::<P, BB>(n, d, rounding) else {
+            return Verdict::Undecided;
+        };
+        debug_assert_eq!(g.degree + 1, M, "G's coefficients on a cell");
+        let mut brackets: SmallVec<[Bracket<T>; 4]> = SmallVec::new();
+        if !isolate::<T, M>(&core::array::from_fn(|k| g.c[k]), band, band_slope, &mut brackets) {
+            return Verdict::Undecided;
+        }
+        // F's root lies within `error` of G's, and is a crossing (F = (C_α ∨ L)², up to a
+        // positive factor): one provably outside the ray's window is not placed, and one
+        // provably within answers an `any` window.
+        if let Some((window, a_seq, b_seq)) = window.filter(|(w, _, _)| w.any || has(w.ends, i)) {
+            let width = T::from_f64(1.0 / self.cells.len() as f64);
+            let mut within = false;
+            brackets.retain(|b| match self.side(window, a_seq, b_seq, alpha(b.root), b.error * width) {
+                Some(Side::Outside) => false,
+                Some(Side::Within) => {
+                    within = true;
+                    true
+                }
+                None => true,
+            });
+            if within && window.any {
+                return Verdict::Within;
+            }
         }
         // G's root is F's to `band / |F'|` (1e-6 in α on a quadratic segment): Newton on F
         // itself, with G's slope (F's to `band_slope`), kept in the bracket where F is
         // monotone, places it to rounding — or the cell is left undecided.
         let (four_ulps, turned) = (T::from_f64(4.0) * T::epsilon(), T::from_f64(TURNED) * T::epsilon());
         if brackets.is_empty() {
-            return true;
+            return Verdict::Decided;
         }
         let cell = &self.cells[i];
         let (n, d) = (restrict::<T, BB>(&cell.to_n, n), restrict::<T, P>(&cell.to_d, d));
-        for &(u0, u1, root) in &brackets {
+        for &Bracket { lo: u0, hi: u1, root, .. } in &brackets {
             let (mut u, mut last_step) = (root, T::zero());
             let mut settled = false;
             for _ in 0..NEWTON {
@@ -340,11 +427,78 @@ impl<T: Real> Unsquared<T> {
                 }
             }
             if !settled {
-                return false;
+                return Verdict::Undecided;
             }
             out.push(alpha(u));
         }
-        true
+        Verdict::Decided
+    }
+}
+
+/// A ray's window, with the meets of its line with the segment's blades (`A` and `B`).
+type WindowMeets<'a, T> = (&'a Window<'a, T>, &'a [Vector<T>], &'a [Vector<T>]);
+
+/// The meets of a ray's line with the segment's blades `X` and `⟨Q X⟩₃`.
+type Meets<T, const VA: usize, const VB: usize> = ([Vector<T>; VA], [Vector<T>; VB]);
+
+impl<T: Real> Unsquared<T> {
+    /// Where the crossing at `α`, known to `error` in α, lies against `window`: `C_α ∨ L ∝
+    /// V = 2σA − B` is a dual sphere centred where the line crosses `C_α`'s plane (at a
+    /// crossing, the point itself), at `t = (v/w − o)·d`; with `t'` from dual numbers, the
+    /// crossing's `t` is within `2|t'| error` of it, plus `V`'s rounding amplified by
+    /// `1/|w|`. `None` where that leaves it in doubt.
+    fn side(
+        &self,
+        window: &Window<'_, T>,
+        a_seq: &[Vector<T>],
+        b_seq: &[Vector<T>],
+        alpha: T,
+        error: T,
+    ) -> Option<Side> {
+        // (NaN is not small.)
+        let small = error <= T::from_f64(SKIP_ALPHA);
+        if !small {
+            return None;
+        }
+        let a = Dual::variable(alpha);
+        let two_sigma = self.segment.two_sigma(a).ok()?;
+        let d = self.segment.degree();
+        let (wa, wb) = (basis(a, d), basis(a, 3 * d));
+        // The components e1, e2, e3 and the weight eo of V, and the size of its terms.
+        let zero = Dual::constant(T::zero());
+        let (mut a_sum, mut b_sum, mut size) = ([zero; 4], [zero; 4], T::zero());
+        let parts = |m: &Vector<T>| [m.e1, m.e2, m.e3, m.eo];
+        let mut add = |sum: &mut [Dual<T>; 4], m: &Vector<T>, w: Dual<T>, scale: T| {
+            let c = parts(m);
+            for (slot, &x) in sum.iter_mut().zip(&c) {
+                *slot = Dual { re: slot.re + w.re * x, du: slot.du + w.du * x };
+            }
+            size = size + (w.re * scale).abs() * c.iter().fold(T::zero(), |s, x| s + x.abs());
+        };
+        for (m, &w) in a_seq.iter().zip(&wa) {
+            add(&mut a_sum, m, w, two_sigma.re);
+        }
+        for (m, &w) in b_seq.iter().zip(&wb) {
+            add(&mut b_sum, m, w, T::one());
+        }
+        let [x, y, z, weight] = core::array::from_fn(|k| two_sigma * a_sum[k] - b_sum[k]);
+        let (o, dir) = (window.origin, window.dir);
+        let along = (x * Dual::constant(dir[0]) + y * Dual::constant(dir[1]) + z * Dual::constant(dir[2])) / weight;
+        let o_along = o[0] * dir[0] + o[1] * dir[1] + o[2] * dir[2];
+        let t = along.re - o_along;
+        // V's components carry rounding of 64 ε of its terms' size; through the quotient.
+        let rounding = T::from_f64(64.0) * T::epsilon() * size * (T::from_f64(3.0) + along.re.abs()) / weight.re.abs()
+            + T::from_f64(16.0) * T::epsilon() * (o_along.abs() + along.re.abs());
+        let margin = T::from_f64(2.0) * along.du.abs() * error + rounding;
+        if !margin.is_finite() {
+            None
+        } else if t + margin < window.t_min || t - margin > window.t_max {
+            Some(Side::Outside)
+        } else if t - margin > window.t_min && t + margin < window.t_max {
+            Some(Side::Within)
+        } else {
+            None
+        }
     }
 }
 
@@ -522,42 +676,109 @@ impl<T: Real> Reducer<T> {
     }
 }
 
-/// Brackets of `F`'s roots on `[u0, u1]` (of the cell's parameter), each `(lo, hi, G's root)`
-/// with `F` monotone on it, appended to `out`; `g` is `G` on `[u0, u1]`
-/// reparametrised to [0, 1] and `band`, `band_slope` bound `|F − G|` and `|F' − G'|` in that
-/// parameter. `false` if some part is undecided.
-fn isolate<T: Real, const N: usize>(
-    g: &Bernstein<T, N>,
-    band: T,
-    band_slope: T,
-    (u0, u1): (T, T),
-    depth: usize,
-    out: &mut SmallVec<[(T, T, T); 4]>,
-) -> bool {
-    let c = g.coefficients();
+/// A bracket of one of `F`'s roots, in the cell's parameter: `F` is monotone on `[lo, hi]`,
+/// and its root lies within `error` of `G`'s `root`.
+#[derive(Clone, Copy, Debug)]
+struct Bracket<T> {
+    lo: T,
+    hi: T,
+    root: T,
+    error: T,
+}
+
+/// Brackets of `F`'s roots on the cell, appended to `out` in increasing order; `g` is `G`'s
+/// `M` Bernstein coefficients on the cell and `band`, `band_slope` bound `|F − G|` and
+/// `|F' − G'|` there. `false` if some part is undecided after [`DEPTH`] halvings.
+///
+/// Depth first, the left half before the right (one right half pending per level), on arrays
+/// of the fixed length `M`: the halving ([`halves`]) stays in registers.
+#[inline(always)]
+fn isolate<T: Real, const M: usize>(g: &[T; M], band: T, band_slope: T, out: &mut SmallVec<[Bracket<T>; 4]>) -> bool {
+    let half = T::from_f64(0.5);
+    // (coefficients, interval, band of the slope there, depth)
+    let mut pending = [([T::zero(); M], (T::zero(), T::zero()), T::zero(), 0usize); DEPTH];
+    let mut waiting = 0;
+    let (mut c, mut span, mut slope_band, mut depth) = (*g, (T::zero(), T::one()), band_slope, 0);
+    loop {
+        match decide(&c, band, slope_band) {
+            Decision::None => {}
+            Decision::Root(v, least) => {
+                let (u0, u1) = span;
+                let error = (Bernstein::<T, LOW>::new(&c).eval(v).abs() + band) / least * (u1 - u0);
+                out.push(Bracket { lo: u0, hi: u1, root: u0 + (u1 - u0) * v, error });
+            }
+            Decision::Split => {
+                if depth == DEPTH {
+                    return false;
+                }
+                let (left, right) = halves(&c);
+                let mid = half * (span.0 + span.1);
+                pending[waiting] = (right, (mid, span.1), slope_band * half, depth + 1);
+                waiting += 1;
+                (c, span, slope_band, depth) = (left, (span.0, mid), slope_band * half, depth + 1);
+                continue;
+            }
+        }
+        if waiting == 0 {
+            return true;
+        }
+        waiting -= 1;
+        (c, span, slope_band, depth) = pending[waiting];
+    }
+}
+
+/// What `G`'s coefficients on an interval decide.
+enum Decision<T> {
+    /// Every coefficient beyond the band, of one sign: `F` keeps its sign.
+    None,
+    /// The ends beyond the band with opposite signs and `G'` beyond its band, of one sign: `F`
+    /// is monotone and crosses once; `G`'s root (in the interval's parameter, refined no
+    /// closer than `F`'s is known) and the least `|F'|` there.
+    Root(T, T),
+    /// Neither.
+    Split,
+}
+
+#[inline(always)]
+fn decide<T: Real, const M: usize>(c: &[T; M], band: T, slope_band: T) -> Decision<T> {
     let above = |v: T| v > band;
     let below = |v: T| v < -band;
     if c.iter().all(|&v| above(v)) || c.iter().all(|&v| below(v)) {
-        return true;
+        return Decision::None;
     }
-    let (first, last) = (c[0], c[c.len() - 1]);
+    let (first, last) = (c[0], c[M - 1]);
     if (above(first) && below(last)) || (below(first) && above(last)) {
-        let slope = g.derivative();
-        let s = slope.coefficients();
-        if s.iter().all(|&v| v > band_slope) || s.iter().all(|&v| v < -band_slope) {
-            let root = u0 + (u1 - u0) * g.refine(T::zero(), T::one(), T::zero());
-            out.push((u0, u1, root));
-            return true;
+        let n = T::from_f64((M - 1) as f64);
+        let slope: [T; M] = core::array::from_fn(|k| if k + 1 < M { n * (c[k + 1] - c[k]) } else { T::zero() });
+        let s = &slope[..M - 1];
+        if s.iter().all(|&v| v > slope_band) || s.iter().all(|&v| v < -slope_band) {
+            // |F'| ≥ min |G'| − slope_band, and |F| ≤ |G| + band at G's root.
+            let least =
+                s.iter().fold(T::from_f64(f64::INFINITY), |m, &v| if v.abs() < m { v.abs() } else { m }) - slope_band;
+            let v = Bernstein::<T, LOW>::new(c).refine(T::zero(), T::one(), band / least);
+            return Decision::Root(v, least);
         }
     }
-    if depth == DEPTH {
-        return false;
-    }
+    Decision::Split
+}
+
+/// The polynomial of Bernstein coefficients `c` on `[0, ½]` and `[½, 1]`, each reparametrised to
+/// [0, 1]: de Casteljau's triangle at ½ on the whole fixed-length row (the entries past a row's
+/// end are not read), with constant indices, so that it stays in registers — halving in place
+/// in memory stalled on every row (each read one slot past what the row before had just
+/// stored).
+#[inline(always)]
+fn halves<T: Real, const M: usize>(c: &[T; M]) -> ([T; M], [T; M]) {
     let half = T::from_f64(0.5);
-    let mid = half * (u0 + u1);
-    let (left, right) = g.split(half);
-    isolate(&left, band, band_slope * half, (u0, mid), depth + 1, out)
-        && isolate(&right, band, band_slope * half, (mid, u1), depth + 1, out)
+    let (mut row, mut left, mut right) = (*c, *c, *c);
+    for r in 1..M {
+        for k in 0..M - 1 {
+            row[k] = (row[k] + row[k + 1]) * half;
+        }
+        left[r] = row[0];
+        right[M - 1 - r] = row[M - 1 - r];
+    }
+    (left, right)
 }
 
 /// The scaled Bernstein coefficients of the polynomial of degree `n = nodes.len() − 1` through
@@ -629,6 +850,17 @@ mod tests {
         }
     }
 
+    /// A random point `x` of a random circle `C_α` of `segment`, and a random unit direction.
+    fn aimed(segment: &BezierSegment<f64>, random: &mut impl FnMut() -> f64) -> (f64, [f64; 3], [f64; 3]) {
+        use crate::surface::Circles;
+        let alpha = random();
+        let (c, n, r) = segment.at(alpha).unwrap().centre_normal_radius().unwrap();
+        let (u, v) = crate::light::orthonormal(n);
+        let angle = std::f64::consts::TAU * random();
+        let x = [0, 1, 2].map(|k| c[k] + r * (angle.cos() * u[k] + angle.sin() * v[k]));
+        (alpha, x, cga_core::euclid::unit([0, 1, 2].map(|_| random() - 0.5)).unwrap())
+    }
+
     /// `|F − G| ≤ band` and `|F' − G'| ≤ band_slope` at 256 points of every cell, for random
     /// lines: `F = σ D − N` with `σ` itself and `N`, `D` over the segment, `G` reduced on the
     /// cell as a ray's is.
@@ -642,8 +874,8 @@ mod tests {
                 let d = cga_core::euclid::unit([0, 1, 2].map(|_| random() - 0.5)).unwrap();
                 let line = Line::from_point_unit_direction(o, d);
                 let (n, d) = match segment.degree() {
-                    2 => cells.numerators::<3, 7, 5, 9, 13>(&line),
-                    _ => cells.numerators::<4, 10, 7, 13, 19>(&line),
+                    2 => cells.numerators::<3, 7, 5, 9, 13>(&cells.meets(&line)),
+                    _ => cells.numerators::<4, 10, 7, 13, 19>(&cells.meets(&line)),
                 };
                 let size: f64 = line.to_array().iter().map(|c| c.abs()).sum();
                 let rounding = ROUNDING * f64::EPSILON * cells.scale * size * size;
@@ -679,7 +911,7 @@ mod tests {
     /// polynomial finds, each to 1e-9 in α, and none of them is missing; most rays are decided.
     #[test]
     fn decided_roots_are_the_squared_polynomial_s() {
-        use crate::surface::{Circles, Family, Finder};
+        use crate::surface::{Family, Finder};
         let mut random = stream(11);
         for segment in segments() {
             let cells = Unsquared::new(&segment, 16).unwrap();
@@ -687,12 +919,7 @@ mod tests {
             let all: Intervals = [(0.0, 1.0, 16)].into_iter().collect();
             let (mut decided, mut total) = (0, 0);
             for _ in 0..2000 {
-                let alpha = random();
-                let (c, n, r) = segment.at(alpha).unwrap().centre_normal_radius().unwrap();
-                let (u, v) = crate::light::orthonormal(n);
-                let angle = std::f64::consts::TAU * random();
-                let x = [0, 1, 2].map(|k| c[k] + r * (angle.cos() * u[k] + angle.sin() * v[k]));
-                let d = cga_core::euclid::unit([0, 1, 2].map(|_| random() - 0.5)).unwrap();
+                let (alpha, x, d) = aimed(&segment, &mut random);
                 let line = Line::from_point_unit_direction(x, d);
                 let mut mine = Roots::new();
                 total += 1;
@@ -713,6 +940,82 @@ mod tests {
                 assert!(mine.iter().any(|m| (m - alpha).abs() <= 1e-9), "aimed at {alpha}: {mine:?}");
             }
             assert!(decided * 10 >= total * 9, "{decided} of {total} rays decided");
+        }
+    }
+
+    /// The halving on fixed-length arrays is de Casteljau's at ½, bit for bit.
+    #[test]
+    fn halves_are_the_split_at_a_half() {
+        let mut random = stream(3);
+        for _ in 0..200 {
+            let c: [f64; 12] = core::array::from_fn(|_| 2.0 * random() - 1.0);
+            let (left, right) = halves(&c);
+            let (l, r) = Bernstein::<f64, LOW>::new(&c).split(0.5);
+            assert_eq!((&left[..], &right[..]), (l.coefficients(), r.coefficients()));
+        }
+    }
+
+    /// Crossings provably outside a ray's window are left out, and only those. Rays are aimed
+    /// at random points of each segment from 3 units away; windows end 1e-7 and 1e-5 either
+    /// side of that crossing (t = 3). Every crossing whose own `t` lies within a window is
+    /// kept; where the window ends 1e-5 away (a shadow ray's offset is about that), the aimed
+    /// crossing is left out when it lies outside, and an `any` window around it ends the
+    /// search there, three times in four at least (the rest are placed and verified: their `G`'s
+    /// band leaves `t` in doubt). An `any` window ends the search only where a
+    /// crossing lies within it.
+    #[test]
+    fn windows_leave_out_only_crossings_outside_them() {
+        use crate::surface::Family;
+        use cga_core::euclid::{scale, sub};
+        let mut random = stream(13);
+        let ends = [!0u64];
+        for segment in segments() {
+            let cells = Unsquared::new(&segment, 16).unwrap();
+            let family = Family::of(segment.clone());
+            let all: Intervals = [(0.0, 1.0, 16)].into_iter().collect();
+            let (mut outside, mut left_out, mut within, mut ended) = (0, 0, 0, 0);
+            for _ in 0..2000 {
+                let (_, x, d) = aimed(&segment, &mut random);
+                let o = sub(x, scale(d, 3.0));
+                let line = Line::from_point_unit_direction(o, d);
+                let mut every = Roots::new();
+                if !cells.roots(&line, &all, &mut every).is_empty() {
+                    continue;
+                }
+                let ray = (o, d, &line);
+                let crossings: Vec<(f64, f64)> = (every.iter())
+                    .filter_map(|&a| {
+                        family.nearest(ray, &[a], f64::NEG_INFINITY, f64::INFINITY, false).map(|c| (a, c.0))
+                    })
+                    .collect();
+                let windows =
+                    [1e-7, 1e-5].map(|gap| [(0.0, 3.0 - gap), (3.0 + gap, f64::INFINITY), (3.0 - gap, 3.0 + gap)]);
+                for (wide, (t_min, t_max)) in windows.iter().flatten().enumerate().map(|(k, &w)| (k >= 3, w)) {
+                    let window = Window { origin: o, dir: d, t_min, t_max, ends: &ends, any: false };
+                    let mut kept = Roots::new();
+                    let (undecided, _) = cells.roots_until(&line, Some(&window), &all, &mut kept, |_| false);
+                    assert!(undecided.is_empty(), "decided without a window, undecided with one");
+                    for &(a, t) in &crossings {
+                        let inside = t > t_min && t < t_max;
+                        let has = kept.iter().any(|&k| (k - a).abs() <= 1e-12);
+                        assert!(has || !inside, "α = {a} at t = {t} left out of ({t_min}, {t_max})");
+                        if wide && (t - 3.0).abs() < 1e-9 && !inside {
+                            outside += 1;
+                            left_out += usize::from(!has);
+                        }
+                    }
+                    let any = Window { any: true, ..window };
+                    let (_, ended_within) = cells.roots_until(&line, Some(&any), &all, &mut Roots::new(), |_| false);
+                    let crossing_inside = crossings.iter().any(|&(_, t)| t > t_min && t < t_max);
+                    assert!(crossing_inside || !ended_within, "ended within ({t_min}, {t_max}) with no crossing there");
+                    if wide && crossing_inside {
+                        within += 1;
+                        ended += usize::from(ended_within);
+                    }
+                }
+            }
+            assert!(outside > 1000 && left_out * 4 >= outside * 3, "{left_out} of {outside} left out");
+            assert!(within > 1000 && ended * 4 >= within * 3, "{ended} of {within} ended within");
         }
     }
 }
