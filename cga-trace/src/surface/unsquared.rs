@@ -375,14 +375,21 @@ impl<T: Real> Unsquared<T> {
             return Verdict::Undecided;
         };
         debug_assert_eq!(g.degree + 1, M, "G's coefficients on a cell");
+        // A cell whose every point lies within the window (its sphere does): any crossing
+        // there answers an `any` window, wherever it is, so its roots need not be refined.
+        let inner = window.is_some_and(|(w, _, _)| !has(w.ends, i));
+        let answers = inner && window.is_some_and(|(w, _, _)| w.any);
         let mut brackets: SmallVec<[Bracket<T>; 4]> = SmallVec::new();
-        if !isolate::<T, M>(&core::array::from_fn(|k| g.c[k]), band, band_slope, &mut brackets) {
+        if !isolate::<T, M>(&core::array::from_fn(|k| g.c[k]), band, band_slope, !answers, &mut brackets) {
             return Verdict::Undecided;
+        }
+        if answers && !brackets.is_empty() {
+            return Verdict::Within;
         }
         // F's root lies within `error` of G's, and is a crossing (F = (C_α ∨ L)², up to a
         // positive factor): one provably outside the ray's window is not placed, and one
         // provably within answers an `any` window.
-        if let Some((window, a_seq, b_seq)) = window.filter(|(w, _, _)| w.any || has(w.ends, i)) {
+        if let Some((window, a_seq, b_seq)) = window.filter(|_| !inner) {
             let width = T::from_f64(1.0 / self.cells.len() as f64);
             let mut within = false;
             brackets.retain(|b| match self.side(window, a_seq, b_seq, alpha(b.root), b.error * width) {
@@ -691,9 +698,17 @@ struct Bracket<T> {
 /// `|F' − G'|` there. `false` if some part is undecided after [`DEPTH`] halvings.
 ///
 /// Depth first, the left half before the right (one right half pending per level), on arrays
-/// of the fixed length `M`: the halving ([`halves`]) stays in registers.
+/// of the fixed length `M`: the halving ([`halves`]) stays in registers. Without `refine`,
+/// each bracket's root is its middle and its error unbounded (where only a crossing's
+/// existence matters).
 #[inline(always)]
-fn isolate<T: Real, const M: usize>(g: &[T; M], band: T, band_slope: T, out: &mut SmallVec<[Bracket<T>; 4]>) -> bool {
+fn isolate<T: Real, const M: usize>(
+    g: &[T; M],
+    band: T,
+    band_slope: T,
+    refine: bool,
+    out: &mut SmallVec<[Bracket<T>; 4]>,
+) -> bool {
     let half = T::from_f64(0.5);
     // (coefficients, interval, band of the slope there, depth)
     let mut pending = [([T::zero(); M], (T::zero(), T::zero()), T::zero(), 0usize); DEPTH];
@@ -702,9 +717,17 @@ fn isolate<T: Real, const M: usize>(g: &[T; M], band: T, band_slope: T, out: &mu
     loop {
         match decide(&c, band, slope_band) {
             Decision::None => {}
-            Decision::Root(v, least) => {
+            Decision::Root(least) => {
                 let (u0, u1) = span;
-                let error = (Bernstein::<T, LOW>::new(&c).eval(v).abs() + band) / least * (u1 - u0);
+                let (v, error) = if refine {
+                    // No closer than F's root is known (Newton on F takes it from there); F's
+                    // root is within (|G| + band) / least of G's.
+                    let g = Bernstein::<T, LOW>::new(&c);
+                    let v = g.refine(T::zero(), T::one(), band / least);
+                    (v, (g.eval(v).abs() + band) / least * (u1 - u0))
+                } else {
+                    (T::from_f64(0.5), T::from_f64(f64::INFINITY))
+                };
                 out.push(Bracket { lo: u0, hi: u1, root: u0 + (u1 - u0) * v, error });
             }
             Decision::Split => {
@@ -732,9 +755,8 @@ enum Decision<T> {
     /// Every coefficient beyond the band, of one sign: `F` keeps its sign.
     None,
     /// The ends beyond the band with opposite signs and `G'` beyond its band, of one sign: `F`
-    /// is monotone and crosses once; `G`'s root (in the interval's parameter, refined no
-    /// closer than `F`'s is known) and the least `|F'|` there.
-    Root(T, T),
+    /// is monotone and crosses once; the least `|F'|` there.
+    Root(T),
     /// Neither.
     Split,
 }
@@ -752,11 +774,10 @@ fn decide<T: Real, const M: usize>(c: &[T; M], band: T, slope_band: T) -> Decisi
         let slope: [T; M] = core::array::from_fn(|k| if k + 1 < M { n * (c[k + 1] - c[k]) } else { T::zero() });
         let s = &slope[..M - 1];
         if s.iter().all(|&v| v > slope_band) || s.iter().all(|&v| v < -slope_band) {
-            // |F'| ≥ min |G'| − slope_band, and |F| ≤ |G| + band at G's root.
+            // |F'| ≥ min |G'| − slope_band.
             let least =
                 s.iter().fold(T::from_f64(f64::INFINITY), |m, &v| if v.abs() < m { v.abs() } else { m }) - slope_band;
-            let v = Bernstein::<T, LOW>::new(c).refine(T::zero(), T::one(), band / least);
-            return Decision::Root(v, least);
+            return Decision::Root(least);
         }
     }
     Decision::Split
