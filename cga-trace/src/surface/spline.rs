@@ -51,6 +51,13 @@ impl Segment {
             Segment::Curved(s) => s.bounds(),
         }
     }
+
+    fn frame_radius(&self) -> f64 {
+        match self {
+            Segment::Linear(s) => s.frame_radius(),
+            Segment::Curved(s) => s.frame_radius(),
+        }
+    }
 }
 
 /// A surface swept by the circles of a spline; `α ∈ [0, 1]` runs over all of it, segment `j`
@@ -109,7 +116,7 @@ impl SplineSurface {
                 })
             })
             .collect::<Result<Vec<_>, SurfaceError>>()?;
-        let radius = segments.iter().map(|s| s.bounds().1).fold(0.0, f64::max);
+        let radius = segments.iter().map(Segment::frame_radius).fold(0.0, f64::max);
         Ok(SplineSurface { segments, spline, origin, radius })
     }
 
@@ -193,7 +200,7 @@ impl Shape for SplineSurface {
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {
-        // Every segment's sphere is centred on the shared origin.
+        // Every segment lies within its radius about the shared origin.
         Some((self.origin, self.radius))
     }
 
