@@ -80,8 +80,8 @@ pub struct Window<'a, T> {
     pub t_min: T,
     /// The farthest (exclusive).
     pub t_max: T,
-    /// The cells (bits, as [`Cells::reach`](super::cells::Cells::reach) gives them) where a
-    /// crossing can lie outside `(t_min, t_max)`: only their crossings are tested.
+    /// The cells (one bit each, as the renderer's cell culling marks them) where a crossing
+    /// can lie outside `(t_min, t_max)`: only their crossings are tested.
     pub ends: &'a [u64],
     /// Whether any crossing within the window answers the query (an occlusion test): one
     /// proved to lie within it ends the search unplaced.
