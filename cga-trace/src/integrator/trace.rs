@@ -104,12 +104,13 @@ impl<B: Backend> Renderer<'_, B> {
             // instructions on the anchor scene.)
             let t_max = active.map(|a| if a { f64::INFINITY } else { f64::NEG_INFINITY });
             let nearest = self.crossings(&rays, 0.0, t_max);
-            let hits: [Option<(ShadingPoint, usize)>; W] = core::array::from_fn(|l| {
-                nearest[l].map(|(c, k)| {
+            let mut hits: [Option<(ShadingPoint, usize)>; W] = [None; W];
+            for (l, hit) in hits.iter_mut().enumerate() {
+                *hit = nearest[l].map(|(c, k)| {
                     let normal = B::normal(&self.shapes[k], rays.ray(l), &c);
                     (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
-                })
-            });
+                });
+            }
             let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
             let local = self.shade(&rays, &hits, keys, cast);
             let mut bounce = [false; W];

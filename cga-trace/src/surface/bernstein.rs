@@ -20,6 +20,11 @@ pub const MAX_DEGREE: usize = 8;
 /// `d ≤ 3`.
 pub const LARGEST_DEGREE: usize = 36;
 
+/// How closely (in the interval's own parameter) an extremum that splits a pair of roots is
+/// placed: moving it by δ changes `p` there by `p'' δ²/2`, far below the touch level at 1e-9,
+/// and the roots on either side are refined on `p` itself.
+const EXTREMUM: f64 = 1e-9;
+
 /// A polynomial of degree `degree < N` in the Bernstein basis on [0, 1].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bernstein<T, const N: usize = { MAX_DEGREE + 1 }> {
@@ -328,14 +333,21 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
                 0 if opposite => out.push(to_alpha(self.refine(T::zero(), T::one(), tol))),
                 0 => {}
                 1 if n >= 2 => {
-                    let e = slope.refine(T::zero(), T::one(), T::zero());
+                    let e = slope.refine(T::zero(), T::one(), T::from_f64(EXTREMUM));
                     let pe = self.eval(e);
                     let crossed = |end: T| pe != T::zero() && end != T::zero() && (pe > T::zero()) != (end > T::zero());
-                    if crossed(first) {
-                        out.push(to_alpha(self.refine(T::zero(), e, tol)));
+                    let (left, right) = (crossed(first), crossed(last));
+                    // Each root's Newton iteration starts where the control polygon of its
+                    // side crosses zero (the chord from the extremum, where p is flat, starts
+                    // it far off).
+                    let (below, above) = if left || right { self.split(e) } else { (*self, *self) };
+                    if left {
+                        let start = below.polygon_crossing().map(|r| e * r);
+                        out.push(to_alpha(self.refine_from(T::zero(), e, tol, start)));
                     }
-                    if crossed(last) {
-                        out.push(to_alpha(self.refine(e, T::one(), tol)));
+                    if right {
+                        let start = above.polygon_crossing().map(|r| e + (T::one() - e) * r);
+                        out.push(to_alpha(self.refine_from(e, T::one(), tol, start)));
                     }
                     // A double root that rounding split into two, or lifted off zero.
                     if pe.abs() <= floor {
@@ -376,6 +388,15 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
     /// steps with the exact slope, replaced by bisection whenever one leaves the bracket,
     /// until the bracket or the step is below `tolerance` (rounding level at least).
     pub(super) fn refine(&self, a: T, b: T, tolerance: T) -> T {
+        // Over the whole interval the control polygon's crossing lies within O(1/n²) of the
+        // root.
+        let start = if a == T::zero() && b == T::one() { self.polygon_crossing() } else { None };
+        self.refine_from(a, b, tolerance, start)
+    }
+
+    /// [`Bernstein::refine`] from `start` where given (inside the bracket), else where the
+    /// chord crosses zero.
+    fn refine_from(&self, a: T, b: T, tolerance: T, start: Option<T>) -> T {
         let (pa, pb) = (self.eval(a), self.eval(b));
         let positive_at_a = pa > T::zero();
         // Below this, |p| is rounding noise (de Casteljau is backward stable: the error is a
@@ -383,9 +404,6 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
         let largest = self.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
         let noise = T::from_f64(16.0) * T::epsilon() * largest;
         let tolerance = tolerance.max(T::epsilon() * T::from_f64(4.0));
-        // Start where the control polygon crosses zero (over the whole interval: it lies
-        // within O(1/n²) of the curve), or where the chord does.
-        let start = if a == T::zero() && b == T::one() { self.polygon_crossing() } else { None };
         let start = start.unwrap_or_else(|| a + (b - a) * pa / (pa - pb));
         let stop = Stop { noise, absolute: tolerance, relative: T::zero(), iterations: 100 };
         let noise_at = |t: T| T::from_f64(16.0) * T::epsilon() * self.magnitude(t);

@@ -24,6 +24,11 @@ const TOUCH_REACH: f64 = 1e-4;
 /// `|f|` at or below this after Newton is a simple root placed to rounding (`f` is
 /// dimensionless: the meet of a normalised circle and line).
 const SIMPLE: f64 = 1e-13;
+/// The α tolerance to which a polynomial's roots are refined where the crossing kept is then
+/// placed on `f` itself ([`Finder::polishes`]): Newton's last, confirming step on the
+/// polynomial is saved, and the Taylor step from `f`'s own slope ([`Family::nearest`]) takes
+/// its place.
+const CANDIDATE: f64 = 1e-10;
 
 /// A one-parameter family of circles `C_α`, `α ∈ [0, 1]`: between two circles
 /// ([`TwoCircles`]) or along one segment of a spline ([`BezierSegment`](super::BezierSegment)). It gives the circles
@@ -392,6 +397,7 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
         let (first, last) = (c[0], c[c.len() - 1]);
         let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
         let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
+        let tolerance = if Finder::Polynomial(tolerance).polishes() { CANDIDATE } else { tolerance };
         restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
         for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
             // Kept only if it stays by the end: a polish that wanders off converges (slowly,
@@ -689,27 +695,29 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
             return best;
         }
         let line = ray.2.lift();
-        // (t, point, α, what the evaluation at α gave)
-        let mut best: Option<(T, E3<T>, T, Option<Slope<T>>)> = None;
+        // (t, point, α, whether α was polished)
+        let mut best: Option<(T, E3<T>, T, bool)> = None;
         for &alpha in alphas {
-            let mut slope = self.slope(&line, alpha);
-            let mut points = slope.as_ref().map_or_else(SmallVec::new, |s| hit_points(&s.circle, ray));
-            let mut alpha = alpha;
+            let mut points = self.verified(alpha, ray);
+            let (mut alpha, mut polished) = (alpha, false);
             if points.is_empty() {
-                let polished = self.polish_near(&line, alpha);
-                if polished != alpha {
-                    (alpha, slope) = (polished, None);
+                let moved = self.polish_near(&line, alpha);
+                if moved != alpha {
+                    (alpha, polished) = (moved, true);
                     points = self.verified(alpha, ray);
                 }
             }
             for x in points {
                 match in_range(&x) {
-                    Some(t) if best.as_ref().is_none_or(|b| t < b.0) => best = Some((t, x, alpha, slope)),
+                    Some(t) if best.as_ref().is_none_or(|b| t < b.0) => best = Some((t, x, alpha, polished)),
                     _ => {}
                 }
             }
         }
-        let (t, x, alpha, slope) = best?;
+        let (t, x, alpha, polished) = best?;
+        // The slope on dual numbers only for the crossing kept (its circle's real part is
+        // the circle verified).
+        let slope = if polished { None } else { self.slope(&line, alpha) };
         let step = slope.as_ref().map(|s| (s.f / s.df, s));
         let (refined, circle) = match step {
             Some((delta, s))
