@@ -7,6 +7,7 @@ use image::{ImageBuffer, ImageFormat, Rgb};
 use rayon::prelude::*;
 use std::io::{Seek, Write};
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// A rendered image in linear RGB.
 #[derive(Clone, Debug, PartialEq)]
@@ -105,9 +106,10 @@ impl Film {
 
     /// 8-bit RGB, top row first, encoded.
     pub fn to_rgb8(&self, encoding: Encoding) -> image::RgbImage {
-        // `encode` is in [0, 1]: adding ½ and truncating rounds (`f64::round` is a libm call
-        // on the baseline target, 4 % of a frame's instructions).
-        self.image(|v| (encode(v, encoding) * 255.0 + 0.5) as u8)
+        match encoding {
+            Encoding::Srgb => self.image(srgb8),
+            Encoding::Linear => self.image(|v| level8(v, encoding)),
+        }
     }
 
     /// 16-bit RGB, top row first, encoded.
@@ -138,6 +140,37 @@ impl Film {
     }
 }
 
+/// The 8-bit level of a linear value: `encode` scaled to 255 and rounded.
+fn level8(v: f64, encoding: Encoding) -> u8 {
+    // `encode` is in [0, 1]: adding ½ and truncating rounds (`f64::round` is a libm call on
+    // the baseline target, 4 % of a frame's instructions).
+    (encode(v, encoding) * 255.0 + 0.5) as u8
+}
+
+/// [`level8`] for sRGB without `powf` per channel (a twentieth of a two-circle surface's
+/// render): the level is the number of the 255 thresholds — the least `v` in `[0, 1]` at
+/// which each level is reached, found once by bisection on the bits of `v` with `level8`
+/// itself — that `v` has reached (`level8` is non-decreasing in `v`, so the two agree bit for
+/// bit; test `srgb_levels_from_thresholds_are_encode_s`).
+fn srgb8(v: f64) -> u8 {
+    static THRESHOLDS: OnceLock<[f64; 255]> = OnceLock::new();
+    let thresholds = THRESHOLDS.get_or_init(|| core::array::from_fn(|k| least_reaching(k as u8 + 1)));
+    let v = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+    thresholds.partition_point(|&t| t <= v) as u8
+}
+
+/// The least `v ∈ [0, 1]` whose sRGB level is at least `level` (non-negative doubles are
+/// ordered as their bits).
+fn least_reaching(level: u8) -> f64 {
+    let reaches = |bits: u64| level8(f64::from_bits(bits), Encoding::Srgb) >= level;
+    let (mut below, mut at) = (0u64, 1f64.to_bits());
+    while at - below > 1 {
+        let mid = below + (at - below) / 2;
+        if reaches(mid) { at = mid } else { below = mid }
+    }
+    f64::from_bits(at)
+}
+
 /// One channel in `[0, 1]`: clipped (NaN as 0, +∞ as 1: a colour that overflows is as
 /// bright as can be), then sRGB-encoded or not.
 pub fn encode(v: f64, encoding: Encoding) -> f64 {
@@ -152,6 +185,32 @@ pub fn encode(v: f64, encoding: Encoding) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn srgb_levels_from_thresholds_are_encode_s() {
+        let direct = |v: f64| level8(v, Encoding::Srgb);
+        // Every threshold and its neighbours in the bits, where a disagreement would show.
+        for level in 1..=255u8 {
+            let t = least_reaching(level);
+            for bits in t.to_bits().saturating_sub(2)..=t.to_bits() + 2 {
+                let v = f64::from_bits(bits);
+                assert_eq!(srgb8(v), direct(v), "{v:e} by level {level}");
+            }
+            assert!(direct(t) >= level && direct(f64::from_bits(t.to_bits() - 1)) < level);
+        }
+        // A spread of values, and the ones `encode` clips.
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..100_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let v = (x >> 11) as f64 / (1u64 << 53) as f64 * 1.2 - 0.1;
+            assert_eq!(srgb8(v), direct(v), "{v:e}");
+        }
+        for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, -0.0, 0.0, 1.0, 2.0, 0.003_130_8] {
+            assert_eq!(srgb8(v), direct(v), "{v:e}");
+        }
+    }
 
     #[test]
     fn overflowing_colours_are_white_and_nan_black() {

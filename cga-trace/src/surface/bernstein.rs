@@ -337,17 +337,19 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
                     let pe = self.eval(e);
                     let crossed = |end: T| pe != T::zero() && end != T::zero() && (pe > T::zero()) != (end > T::zero());
                     let (left, right) = (crossed(first), crossed(last));
-                    // Each root's Newton iteration starts where the control polygon of its
-                    // side crosses zero (the chord from the extremum, where p is flat, starts
-                    // it far off).
-                    let (below, above) = if left || right { self.split(e) } else { (*self, *self) };
-                    if left {
-                        let start = below.polygon_crossing().map(|r| e * r);
-                        out.push(to_alpha(self.refine_from(T::zero(), e, tol, start)));
-                    }
-                    if right {
-                        let start = above.polygon_crossing().map(|r| e + (T::one() - e) * r);
-                        out.push(to_alpha(self.refine_from(e, T::one(), tol, start)));
+                    if left || right {
+                        // Each root's Newton iteration starts where the control polygon of
+                        // its side crosses zero (the chord from the extremum, where p is
+                        // flat, starts it far off).
+                        let (below, above) = self.split(e);
+                        if left {
+                            let start = below.polygon_crossing().map(|r| e * r);
+                            out.push(to_alpha(self.refine_from(T::zero(), e, tol, start)));
+                        }
+                        if right {
+                            let start = above.polygon_crossing().map(|r| e + (T::one() - e) * r);
+                            out.push(to_alpha(self.refine_from(e, T::one(), tol, start)));
+                        }
                     }
                     // A double root that rounding split into two, or lifted off zero.
                     if pe.abs() <= floor {
