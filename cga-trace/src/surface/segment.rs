@@ -337,16 +337,54 @@ pub(super) fn numerators<
 ) -> ([T; BB], [T; P]) {
     let a_seq: [Vector<T>; VA] = filled(Vector::zero(), |k| a_seq[k]);
     let b_seq: [Vector<T>; VB] = filled(Vector::zero(), |k| b_seq[k]);
+    let p = filled(T::zero(), |k| pairs(&a_seq, &b_seq, k));
+    from_products::<T, SA, P, BB>(squares(&a_seq), p, squares(&b_seq), s, q)
+}
+
+/// `N = q a − b` and `D = 4(S a − p)` from the products `a`, `p`, `b` of the meets.
+#[inline(always)]
+fn from_products<T: Real, const SA: usize, const P: usize, const BB: usize>(
+    a: [T; SA],
+    p: [T; P],
+    b: [T; BB],
+    s: &[T],
+    q: &[T],
+) -> ([T; BB], [T; P]) {
     let s: [T; SA] = filled(T::zero(), |k| s[k]);
     let q: [T; P] = filled(T::zero(), |k| q[k]);
-    let a: [T; SA] = squares(&a_seq);
-    let p: [T; P] = filled(T::zero(), |k| pairs(&a_seq, &b_seq, k));
-    let b: [T; BB] = squares(&b_seq);
     let qa: [T; BB] = family_convolve(&q, &a);
     let n: [T; BB] = filled(T::zero(), |k| qa[k] - b[k]);
     let sa: [T; P] = family_convolve(&s, &a);
     let d: [T; P] = filled(T::zero(), |k| T::from_f64(4.0) * (sa[k] - p[k]));
     (n, d)
+}
+
+/// The symmetric bilinear form `β` with `β(x, x) =` [`numerators`]`(x)`: `N` and `D` with `a`,
+/// `p`, `b` the products `A₁·A₂`, `½(A₁·B₂ + A₂·B₁)`, `B₁·B₂` of two lines' meets `(A₁, B₁)` and
+/// `(A₂, B₂)`. The meets are linear in the line, `X ∨ Σ lⱼEⱼ = Σ lⱼ (X ∨ Eⱼ)`, so `N` and `D`
+/// are quadratic forms in its six coefficients: `Σⱼ lⱼ² β(Eⱼ, Eⱼ) + Σ_{j<k} 2 lⱼlₖ β(Eⱼ, Eₖ)`.
+#[allow(clippy::many_single_char_names)]
+pub(super) fn numerators_between<
+    T: Real,
+    const VA: usize,
+    const VB: usize,
+    const SA: usize,
+    const P: usize,
+    const BB: usize,
+>(
+    (a1, b1): (&[Vector<T>], &[Vector<T>]),
+    (a2, b2): (&[Vector<T>], &[Vector<T>]),
+    s: &[T],
+    q: &[T],
+) -> ([T; BB], [T; P]) {
+    let blades = |u: &[Vector<T>]| -> [Vector<T>; VB] {
+        filled(Vector::zero(), |k| u.get(k).copied().unwrap_or(Vector::zero()))
+    };
+    let (a1, b1, a2, b2) = (blades(a1), blades(b1), blades(a2), blades(b2));
+    let half = T::from_f64(0.5);
+    let a = filled(T::zero(), |k| pairs(&a1, &a2, k));
+    let p = filled(T::zero(), |k| half * (pairs(&a1, &b2, k) + pairs(&a2, &b1, k)));
+    from_products::<T, SA, P, BB>(a, p, filled(T::zero(), |k| pairs(&b1, &b2, k)), s, q)
 }
 
 /// `[f(0), …, f(N − 1)]`, written in a loop that inlines (`core::array::from_fn` was left out

@@ -34,9 +34,10 @@
 
 use super::bernstein::{Bernstein, Roots, Scaled, binomial, inverse_binomial};
 use super::cells::{Intervals, has};
-use super::segment::{BezierSegment, basis, filled, numerators};
+use super::segment::{BezierSegment, basis, filled, numerators_between};
 use cga_core::euclid::E3;
 use cga_core::{Dual, Line, Real, Vector};
+use core::cell::OnceCell;
 use smallvec::SmallVec;
 
 /// Halvings of a cell before it is left to the squared polynomial.
@@ -114,6 +115,13 @@ type Low<T> = Bernstein<T, LOW>;
 /// A linear map of Bernstein coefficients, by columns.
 type Matrix<T> = [[T; CAPACITY]; CAPACITY];
 
+/// A line's six coefficients taken two at a time, `j ≤ k`.
+const PAIRS: usize = 21;
+
+/// A polynomial quadratic in a line's coefficients `l`: row `p`, for the `p`-th pair `j ≤ k`,
+/// holds the Bernstein coefficients of the term in `lⱼlₖ`.
+type Form<T> = [[T; CAPACITY]; PAIRS];
+
 /// The degree `G` (of degree `6d`) is reduced to on a cell of a degree-`d` segment: where the
 /// cell is a sixteenth of the segment, the terms beyond it are below `G`'s band of `σ̃`'s
 /// error (measured when the scene loads, and bounded per ray all the same).
@@ -154,6 +162,11 @@ fn restrict<T: Real, const N: usize>(m: &Matrix<T>, p: &Poly<T>) -> Poly<T> {
 pub struct Unsquared<T: Real> {
     segment: BezierSegment<T>,
     cells: Vec<Cell<T>>,
+    /// `N` and `D` over the segment as quadratic forms in the line's coefficients
+    /// ([`numerators_between`]): a ray's are 21 rows scaled and summed, in place of the
+    /// meets and their products.
+    n_form: Box<Form<T>>,
+    d_form: Box<Form<T>>,
     /// The scale of `G`'s terms per `‖L‖₁²`: `4 σ (S X̄² + X̄ Ȳ) + q X̄² + Ȳ²` with the largest
     /// Bernstein coefficients over the segment (`X̄`, `Ȳ` in the 1-norm of `X` and `⟨Q X⟩₃`).
     scale: T,
@@ -210,7 +223,11 @@ impl<T: Real> Unsquared<T> {
             .collect();
         let sigma_max = cells.iter().fold(T::zero(), |m, c| m.max(c.sigma_max));
         let scale = Self::scale(segment, sigma_max);
-        Some(Unsquared { segment: segment.clone(), cells, scale })
+        let (n_form, d_form) = match d {
+            2 => forms::<T, 3, 7, 5, 9, 13>(segment),
+            _ => forms::<T, 4, 10, 7, 13, 19>(segment),
+        };
+        Some(Unsquared { segment: segment.clone(), cells, n_form, d_form, scale })
     }
 
     /// [`Unsquared::scale`]: the largest Bernstein coefficients of the terms `G` is made of.
@@ -305,9 +322,10 @@ impl<T: Real> Unsquared<T> {
         out: &mut Roots<T>,
         mut stop: impl FnMut(&[T]) -> bool,
     ) -> (Intervals, bool) {
-        let meets = self.meets::<VA, VB>(line);
-        let (n, d) = self.numerators::<VA, VB, SA, P, BB>(&meets);
-        let window = window.map(|w| (w, &meets.0[..], &meets.1[..]));
+        let (n, d) = self.numerators::<P, BB>(line);
+        // The meets themselves only where a crossing is placed against the window.
+        let meets = OnceCell::new();
+        let window = window.map(|w| (w, line, &meets));
         let size: T = line.to_array().iter().fold(T::zero(), |m, &c| m + c.abs());
         let rounding = T::from_f64(ROUNDING) * T::epsilon() * self.scale * size * size;
         let count = self.cells.len();
@@ -319,7 +337,7 @@ impl<T: Real> Unsquared<T> {
             let mut decided = true;
             for i in first..last {
                 let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
-                match self.cell_roots::<P, BB, M>(i, &n, &d, rounding, window, alpha, out) {
+                match self.cell_roots::<VA, VB, P, BB, M>(i, &n, &d, rounding, window, alpha, out) {
                     Verdict::Decided => {}
                     Verdict::Undecided => {
                         out.truncate(start);
@@ -337,23 +355,22 @@ impl<T: Real> Unsquared<T> {
         (undecided, false)
     }
 
-    /// The meets `A = X ∨ L` and `B = ⟨Q X⟩₃ ∨ L` of the segment's blades, in the scaled
-    /// basis.
+    /// `N` (`BB` coefficients) and `D` (`P`) over the segment for `line`, in the Bernstein
+    /// basis: the forms' rows scaled by the products `lⱼlₖ` of its coefficients and summed.
     #[inline(always)]
-    fn meets<const VA: usize, const VB: usize>(&self, line: &Line<T>) -> Meets<T, VA, VB> {
-        let (x, qx, _, _) = self.segment.parts();
-        (filled(Vector::zero(), |k| line.meet_circle(&x[k])), filled(Vector::zero(), |k| line.meet_circle(&qx[k])))
-    }
-
-    /// `N` and `D` over the segment from the meets, in the Bernstein basis.
-    #[inline(always)]
-    fn numerators<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
-        &self,
-        (a_seq, b_seq): &Meets<T, VA, VB>,
-    ) -> (Poly<T>, Poly<T>) {
-        let (_, _, s, q) = self.segment.parts();
-        let (n, d) = numerators::<T, VA, VB, SA, P, BB>(a_seq, b_seq, s, q);
-        (Scaled::<T, CAPACITY>::new(&n).bernstein(), Scaled::<T, CAPACITY>::new(&d).bernstein())
+    fn numerators<const P: usize, const BB: usize>(&self, line: &Line<T>) -> (Poly<T>, Poly<T>) {
+        let l = line.to_array();
+        let (mut n, mut d) = ([T::zero(); CAPACITY], [T::zero(); CAPACITY]);
+        for (p, (j, k)) in line_pairs().enumerate() {
+            let w = l[j] * l[k];
+            for (slot, &e) in n.iter_mut().zip(&self.n_form[p]).take(BB) {
+                *slot = *slot + w * e;
+            }
+            for (slot, &e) in d.iter_mut().zip(&self.d_form[p]).take(P) {
+                *slot = *slot + w * e;
+            }
+        }
+        (Bernstein { c: n, degree: BB - 1 }, Bernstein { c: d, degree: P - 1 })
     }
 
     /// `F`'s roots on cell `i`, where `N` and `D` over the segment are `n` and `d`, as α
@@ -361,13 +378,13 @@ impl<T: Real> Unsquared<T> {
     /// `window` left out).
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn cell_roots<const P: usize, const BB: usize, const M: usize>(
+    fn cell_roots<const VA: usize, const VB: usize, const P: usize, const BB: usize, const M: usize>(
         &self,
         i: usize,
         n: &Poly<T>,
         d: &Poly<T>,
         rounding: T,
-        window: Option<WindowMeets<'_, T>>,
+        window: Option<WindowLine<'_, T, VA, VB>>,
         alpha: impl Fn(T) -> T,
         out: &mut Roots<T>,
     ) -> Verdict {
@@ -389,9 +406,10 @@ impl<T: Real> Unsquared<T> {
         // F's root lies within `error` of G's, and is a crossing (F = (C_α ∨ L)², up to a
         // positive factor): one provably outside the ray's window is not placed, and one
         // provably within answers an `any` window.
-        if let Some((window, a_seq, b_seq)) = window.filter(|_| !inner) {
+        if let Some((window, line, meets)) = window.filter(|_| !inner) {
             let width = T::from_f64(1.0 / self.cells.len() as f64);
             let mut within = false;
+            let (a_seq, b_seq) = meets.get_or_init(|| meets_of(&self.segment, line));
             brackets.retain(|b| match self.side(window, a_seq, b_seq, alpha(b.root), b.error * width) {
                 Some(Side::Outside) => false,
                 Some(Side::Within) => {
@@ -442,11 +460,46 @@ impl<T: Real> Unsquared<T> {
     }
 }
 
-/// A ray's window, with the meets of its line with the segment's blades (`A` and `B`).
-type WindowMeets<'a, T> = (&'a Window<'a, T>, &'a [Vector<T>], &'a [Vector<T>]);
+/// A ray's window, with its line and the line's meets with the segment's blades (`A` and
+/// `B`), found when first needed.
+type WindowLine<'a, T, const VA: usize, const VB: usize> =
+    (&'a Window<'a, T>, &'a Line<T>, &'a OnceCell<Meets<T, VA, VB>>);
 
 /// The meets of a ray's line with the segment's blades `X` and `⟨Q X⟩₃`.
 type Meets<T, const VA: usize, const VB: usize> = ([Vector<T>; VA], [Vector<T>; VB]);
+
+/// The meets `A = X ∨ L` and `B = ⟨Q X⟩₃ ∨ L` of `segment`'s blades, in the scaled basis.
+#[inline(always)]
+fn meets_of<T: Real, const VA: usize, const VB: usize>(segment: &BezierSegment<T>, line: &Line<T>) -> Meets<T, VA, VB> {
+    let (x, qx, _, _) = segment.parts();
+    (filled(Vector::zero(), |k| line.meet_circle(&x[k])), filled(Vector::zero(), |k| line.meet_circle(&qx[k])))
+}
+
+/// The pairs `(j, k)`, `j ≤ k`, of a line's six coefficients, in the order of a [`Form`]'s rows.
+fn line_pairs() -> impl Iterator<Item = (usize, usize)> {
+    (0..6).flat_map(|j| (j..6).map(move |k| (j, k)))
+}
+
+/// `N` and `D` over `segment` as [`Form`]s: for the unit lines `Eⱼ` (one coefficient 1), row
+/// `(j, k)` is [`numerators_between`]`(Eⱼ, Eₖ)`, doubled where `j < k`, in the Bernstein basis.
+fn forms<T: Real, const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
+    segment: &BezierSegment<T>,
+) -> (Box<Form<T>>, Box<Form<T>>) {
+    let (_, _, s, q) = segment.parts();
+    let unit = |j: usize| Line::from_array(core::array::from_fn(|k| if k == j { T::one() } else { T::zero() }));
+    let meets: [Meets<T, VA, VB>; 6] = core::array::from_fn(|j| meets_of(segment, &unit(j)));
+    let (mut n_form, mut d_form) = (Box::new([[T::zero(); CAPACITY]; PAIRS]), Box::new([[T::zero(); CAPACITY]; PAIRS]));
+    for (p, (j, k)) in line_pairs().enumerate() {
+        let ((mj_a, mj_b), (mk_a, mk_b)) = (&meets[j], &meets[k]);
+        let (n, d) = numerators_between::<T, VA, VB, SA, P, BB>((mj_a, mj_b), (mk_a, mk_b), s, q);
+        let times = T::from_f64(if j == k { 1.0 } else { 2.0 });
+        let n: [T; BB] = filled(T::zero(), |i| times * n[i]);
+        let d: [T; P] = filled(T::zero(), |i| times * d[i]);
+        n_form[p][..BB].copy_from_slice(Scaled::<T, CAPACITY>::new(&n).bernstein().coefficients());
+        d_form[p][..P].copy_from_slice(Scaled::<T, CAPACITY>::new(&d).bernstein().coefficients());
+    }
+    (n_form, d_form)
+}
 
 impl<T: Real> Unsquared<T> {
     /// Where the crossing at `α`, known to `error` in α, lies against `window`: `C_α ∨ L ∝
@@ -895,8 +948,8 @@ mod tests {
                 let d = cga_core::euclid::unit([0, 1, 2].map(|_| random() - 0.5)).unwrap();
                 let line = Line::from_point_unit_direction(o, d);
                 let (n, d) = match segment.degree() {
-                    2 => cells.numerators::<3, 7, 5, 9, 13>(&cells.meets(&line)),
-                    _ => cells.numerators::<4, 10, 7, 13, 19>(&cells.meets(&line)),
+                    2 => cells.numerators::<9, 13>(&line),
+                    _ => cells.numerators::<13, 19>(&line),
                 };
                 let size: f64 = line.to_array().iter().map(|c| c.abs()).sum();
                 let rounding = ROUNDING * f64::EPSILON * cells.scale * size * size;
@@ -924,6 +977,49 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// `N` and `D` from the forms are those from the meets and their products (the products
+    /// [`segment::numerators`](super::super::segment) forms, converted to the Bernstein basis)
+    /// to `ε scale ‖L‖₁²` (a 256th of the rounding `G`'s band allows; measured 1e-3 of it), for
+    /// lines near the segment and up to 1e4 of its size away, in every direction.
+    #[test]
+    fn forms_give_the_meets_numerators() {
+        use super::super::segment::numerators;
+        let mut random = stream(5);
+        for segment in segments() {
+            let cells = Unsquared::new(&segment, 16).unwrap();
+            let (_, _, s, q) = segment.parts();
+            let mut worst = 0.0f64;
+            for k in 0..3000 {
+                let far = [1.0, 1e2, 1e4][k % 3];
+                let o = [0, 1, 2].map(|_| far * (8.0 * random() - 4.0));
+                let dir = cga_core::euclid::unit([0, 1, 2].map(|_| random() - 0.5)).unwrap();
+                let line = Line::from_point_unit_direction(o, dir);
+                let ((n, d), (n_meets, d_meets)) = match segment.degree() {
+                    2 => {
+                        let (a, b) = meets_of::<f64, 3, 7>(&segment, &line);
+                        let (n, d) = numerators::<f64, 3, 7, 5, 9, 13>(&a, &b, s, q);
+                        (cells.numerators::<9, 13>(&line), (Scaled::<f64, CAPACITY>::new(&n), Scaled::new(&d)))
+                    }
+                    _ => {
+                        let (a, b) = meets_of::<f64, 4, 10>(&segment, &line);
+                        let (n, d) = numerators::<f64, 4, 10, 7, 13, 19>(&a, &b, s, q);
+                        (cells.numerators::<13, 19>(&line), (Scaled::<f64, CAPACITY>::new(&n), Scaled::new(&d)))
+                    }
+                };
+                let size: f64 = line.to_array().iter().map(|c| c.abs()).sum();
+                let unit = f64::EPSILON * cells.scale * size * size;
+                let pairs = [(n, n_meets.bernstein()), (d, d_meets.bernstein())];
+                for (mine, theirs) in pairs {
+                    assert_eq!(mine.degree, theirs.degree);
+                    for (a, b) in mine.coefficients().iter().zip(theirs.coefficients()) {
+                        worst = worst.max((a - b).abs() / unit);
+                    }
+                }
+            }
+            assert!(worst <= 1.0, "degree {}: {worst} ε scale ‖L‖²", segment.degree());
         }
     }
 
