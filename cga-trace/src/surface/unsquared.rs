@@ -41,7 +41,7 @@ use core::cell::OnceCell;
 use smallvec::SmallVec;
 
 /// Halvings of a cell before it is left to the squared polynomial.
-pub const DEPTH: usize = 4;
+pub const DEPTH: usize = 12;
 /// Newton steps on `F` for a root before its cell is left undecided.
 const NEWTON: usize = 8;
 /// A Newton step on `F` that turns back and is at most this many `ε` (of the cell's parameter,
