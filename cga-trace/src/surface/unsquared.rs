@@ -15,8 +15,11 @@
 //! one matrix), and per coefficient the bound on the reduction's error and slope error (the
 //! residual's coefficients in the full degree), so that a ray's bands are
 //! `δ max|D| + Σ |nₖ| eₖ + Σ |dₖ| e'ₖ` plus rounding; `|D|` and `|D'|` are bounded the same
-//! way from `D` reduced to a cubic. Then on a cell (coefficients in the Bernstein basis, which
-//! bound a polynomial and its slope by their convex hull):
+//! way from `D` reduced to a cubic. A ray's `N` and `D` over the segment are quadratic forms
+//! in its line's six coefficients, whose rows are built once per segment
+//! (`segment::numerators_between`): their rounding, `ε scale ‖L‖₁²`, is what the band's
+//! rounding term allows. Then on a cell (coefficients in the Bernstein basis, which bound a
+//! polynomial and its slope by their convex hull):
 //! - every coefficient of `G` beyond the band `δ max|D|` plus `G`'s rounding, all of one
 //!   sign: `F` keeps that sign, no crossing;
 //! - `G`'s end values beyond the band with opposite signs, and every coefficient of `G'`
