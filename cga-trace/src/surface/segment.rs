@@ -377,10 +377,10 @@ pub(super) fn numerators_between<
     s: &[T],
     q: &[T],
 ) -> ([T; BB], [T; P]) {
-    let blades = |u: &[Vector<T>]| -> [Vector<T>; VB] {
-        filled(Vector::zero(), |k| u.get(k).copied().unwrap_or(Vector::zero()))
-    };
-    let (a1, b1, a2, b2) = (blades(a1), blades(b1), blades(a2), blades(b2));
+    let (a1, a2): ([Vector<T>; VA], [Vector<T>; VA]) =
+        (filled(Vector::zero(), |k| a1[k]), filled(Vector::zero(), |k| a2[k]));
+    let (b1, b2): ([Vector<T>; VB], [Vector<T>; VB]) =
+        (filled(Vector::zero(), |k| b1[k]), filled(Vector::zero(), |k| b2[k]));
     let half = T::from_f64(0.5);
     let a = filled(T::zero(), |k| pairs(&a1, &a2, k));
     let p = filled(T::zero(), |k| half * (pairs(&a1, &b2, k) + pairs(&a2, &b1, k)));

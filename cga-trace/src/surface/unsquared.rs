@@ -121,6 +121,21 @@ type Matrix<T> = [[T; CAPACITY]; CAPACITY];
 /// A line's six coefficients taken two at a time, `j ≤ k`.
 const PAIRS: usize = 21;
 
+/// The pairs `(j, k)`, `j ≤ k`, of a line's six coefficients, in the order of a [`Form`]'s rows.
+const LINE_PAIRS: [(usize, usize); PAIRS] = {
+    let mut pairs = [(0, 0); PAIRS];
+    let (mut j, mut p) = (0, 0);
+    while j < 6 {
+        let mut k = j;
+        while k < 6 {
+            pairs[p] = (j, k);
+            (k, p) = (k + 1, p + 1);
+        }
+        j += 1;
+    }
+    pairs
+};
+
 /// A polynomial quadratic in a line's coefficients `l`: row `p`, for the `p`-th pair `j ≤ k`,
 /// holds the Bernstein coefficients of the term in `lⱼlₖ`.
 type Form<T> = [[T; CAPACITY]; PAIRS];
@@ -364,7 +379,7 @@ impl<T: Real> Unsquared<T> {
     fn numerators<const P: usize, const BB: usize>(&self, line: &Line<T>) -> (Poly<T>, Poly<T>) {
         let l = line.to_array();
         let (mut n, mut d) = ([T::zero(); CAPACITY], [T::zero(); CAPACITY]);
-        for (p, (j, k)) in line_pairs().enumerate() {
+        for (p, &(j, k)) in LINE_PAIRS.iter().enumerate() {
             let w = l[j] * l[k];
             for (slot, &e) in n.iter_mut().zip(&self.n_form[p]).take(BB) {
                 *slot = *slot + w * e;
@@ -478,11 +493,6 @@ fn meets_of<T: Real, const VA: usize, const VB: usize>(segment: &BezierSegment<T
     (filled(Vector::zero(), |k| line.meet_circle(&x[k])), filled(Vector::zero(), |k| line.meet_circle(&qx[k])))
 }
 
-/// The pairs `(j, k)`, `j ≤ k`, of a line's six coefficients, in the order of a [`Form`]'s rows.
-fn line_pairs() -> impl Iterator<Item = (usize, usize)> {
-    (0..6).flat_map(|j| (j..6).map(move |k| (j, k)))
-}
-
 /// `N` and `D` over `segment` as [`Form`]s: for the unit lines `Eⱼ` (one coefficient 1), row
 /// `(j, k)` is [`numerators_between`]`(Eⱼ, Eₖ)`, doubled where `j < k`, in the Bernstein basis.
 fn forms<T: Real, const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize>(
@@ -492,7 +502,7 @@ fn forms<T: Real, const VA: usize, const VB: usize, const SA: usize, const P: us
     let unit = |j: usize| Line::from_array(core::array::from_fn(|k| if k == j { T::one() } else { T::zero() }));
     let meets: [Meets<T, VA, VB>; 6] = core::array::from_fn(|j| meets_of(segment, &unit(j)));
     let (mut n_form, mut d_form) = (Box::new([[T::zero(); CAPACITY]; PAIRS]), Box::new([[T::zero(); CAPACITY]; PAIRS]));
-    for (p, (j, k)) in line_pairs().enumerate() {
+    for (p, &(j, k)) in LINE_PAIRS.iter().enumerate() {
         let ((mj_a, mj_b), (mk_a, mk_b)) = (&meets[j], &meets[k]);
         let (n, d) = numerators_between::<T, VA, VB, SA, P, BB>((mj_a, mj_b), (mk_a, mk_b), s, q);
         let times = T::from_f64(if j == k { 1.0 } else { 2.0 });
