@@ -1,12 +1,14 @@
 //! Triangle meshes read from other tools: Wavefront OBJ (through `tobj`) and PLY, text or
 //! binary (through `ply-rs-bw`), with their vertex normals and texture coordinates where the
 //! file has them. Polygons are cut into fans of triangles. The file's size is checked
-//! against [`MAX_MESH_FILE_BYTES`] before it is read, which bounds what reading it holds.
+//! against [`MAX_MESH_FILE_BYTES`] before it is read, and it is streamed, a PLY element at a
+//! time, so that what reading holds is bounded per vertex and triangle, not per file byte.
 
+use crate::input::open_regular;
 use crate::invalid::Invalid;
-use crate::limits::MAX_MESH_FILE_BYTES;
+use crate::limits::{MAX_MESH_FILE_BYTES, MAX_MESH_VERTICES_READ, MAX_OBJECTS};
 use cga_core::euclid::E3;
-use std::io::Read;
+use std::io::{BufRead, Read};
 use std::path::Path;
 
 /// A triangle mesh as its file gives it (world units), one index for a vertex's position,
@@ -26,22 +28,27 @@ pub struct TriangleMesh {
 }
 
 impl TriangleMesh {
-    /// Read `path`: `.obj` or `.ply` by its extension. Every coordinate must be finite and
-    /// every index name a vertex.
+    /// Read `path` ([`TriangleMesh::read`]).
     pub fn load(path: &Path) -> Result<TriangleMesh, Invalid> {
+        let (file, _, size) = open_regular(path).map_err(|e| Invalid::Mesh(format!("{}: {e}", path.display())))?;
+        TriangleMesh::read(file, size, path)
+    }
+
+    /// Read the mesh in `file` (`size` bytes, at `path`, whose extension says `.obj` or
+    /// `.ply`), streamed: the file is never held whole, and a PLY file's vertices and
+    /// faces are counted from its header against [`MAX_MESH_VERTICES_READ`] and
+    /// [`MAX_OBJECTS`] before any is read, so that reading holds at most 64 bytes a vertex
+    /// and 12 a triangle. Every coordinate must be finite and every index name a vertex.
+    pub fn read(file: std::fs::File, size: u64, path: &Path) -> Result<TriangleMesh, Invalid> {
         let why = |e: &dyn std::fmt::Display| Invalid::Mesh(format!("{}: {e}", path.display()));
-        let size = std::fs::metadata(path).map_err(|e| why(&e))?.len();
         if size > MAX_MESH_FILE_BYTES {
             return Err(why(&format!("{size} bytes, more than the limit of {MAX_MESH_FILE_BYTES}")));
         }
-        let mut bytes = Vec::new();
-        std::fs::File::open(path)
-            .and_then(|f| f.take(MAX_MESH_FILE_BYTES).read_to_end(&mut bytes))
-            .map_err(|e| why(&e))?;
+        let mut reader = std::io::BufReader::new(file.take(MAX_MESH_FILE_BYTES));
         let extension = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
         let mesh = match extension.as_deref() {
-            Some("obj") => from_obj(&bytes),
-            Some("ply") => from_ply(&bytes),
+            Some("obj") => from_obj(&mut reader),
+            Some("ply") => from_ply(&mut reader, size),
             _ => Err("give a mesh as `.obj` or `.ply`".into()),
         }
         .map_err(|e| why(&e))?;
@@ -110,9 +117,9 @@ impl TriangleMesh {
 }
 
 /// An OBJ file's faces (all its groups), polygons cut into fans; its materials are not read.
-fn from_obj(bytes: &[u8]) -> Result<TriangleMesh, String> {
+fn from_obj(reader: &mut impl BufRead) -> Result<TriangleMesh, String> {
     let options = tobj::LoadOptions { single_index: true, triangulate: true, ..Default::default() };
-    let (models, _) = tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |_| Ok(Default::default()))
+    let (models, _) = tobj::load_obj_buf(reader, &options, |_| Ok(Default::default()))
         .map_err(|e| format!("not a readable OBJ file: {e}"))?;
     let mut mesh = TriangleMesh::default();
     let (mut normals, mut uvs) = (Some(Vec::new()), Some(Vec::new()));
@@ -137,52 +144,174 @@ fn from_obj(bytes: &[u8]) -> Result<TriangleMesh, String> {
 }
 
 /// A PLY file's `vertex` (`x y z`, and `nx ny nz`, `u v` or `s t` where given) and `face`
-/// (`vertex_indices` or `vertex_index`) elements.
-fn from_ply(bytes: &[u8]) -> Result<TriangleMesh, String> {
-    use ply_rs_bw::ply::{DefaultElement, Property};
-    let parser = ply_rs_bw::parser::Parser::<DefaultElement>::new();
-    let ply = parser.read_ply(&mut std::io::Cursor::new(bytes)).map_err(|e| format!("not a readable PLY file: {e}"))?;
-    let number = |e: &DefaultElement, k: &str| -> Option<f64> {
-        Some(match e.get(k)? {
-            Property::Char(x) => f64::from(*x),
-            Property::UChar(x) => f64::from(*x),
-            Property::Short(x) => f64::from(*x),
-            Property::UShort(x) => f64::from(*x),
-            Property::Int(x) => f64::from(*x),
-            Property::UInt(x) => f64::from(*x),
-            Property::Float(x) => f64::from(*x),
-            Property::Double(x) => *x,
-            _ => return None,
-        })
-    };
-    let triple = |e: &DefaultElement, keys: [&str; 3]| -> Option<E3> {
-        Some([number(e, keys[0])?, number(e, keys[1])?, number(e, keys[2])?])
-    };
-    let vertices = ply.payload.get("vertex").ok_or("no `vertex` element")?;
-    let positions: Option<Vec<E3>> = vertices.iter().map(|v| triple(v, ["x", "y", "z"])).collect();
-    let positions = positions.ok_or("a vertex without numbers `x`, `y`, `z`")?;
-    let normals = vertices.iter().map(|v| triple(v, ["nx", "ny", "nz"])).collect();
-    let uv = |v: &DefaultElement| Some([number(v, "u").or(number(v, "s"))?, 1.0 - number(v, "v").or(number(v, "t"))?]);
-    let uvs = vertices.iter().map(uv).collect();
-    let faces = ply.payload.get("face").ok_or("no `face` element")?;
-    let mut triangles = Vec::new();
-    for (k, face) in faces.iter().enumerate() {
-        let list = face.get("vertex_indices").or_else(|| face.get("vertex_index"));
-        let indices: Vec<i64> = match list {
-            Some(Property::ListChar(l)) => l.iter().map(|&i| i64::from(i)).collect(),
-            Some(Property::ListUChar(l)) => l.iter().map(|&i| i64::from(i)).collect(),
-            Some(Property::ListShort(l)) => l.iter().map(|&i| i64::from(i)).collect(),
-            Some(Property::ListUShort(l)) => l.iter().map(|&i| i64::from(i)).collect(),
-            Some(Property::ListInt(l)) => l.iter().map(|&i| i64::from(i)).collect(),
-            Some(Property::ListUInt(l)) => l.iter().map(|&i| i64::from(i)).collect(),
-            _ => return Err(format!("face {} has no integer list `vertex_indices`", k + 1)),
-        };
-        let index = |i: i64| u32::try_from(i).map_err(|_| format!("face {} names vertex {i}", k + 1));
-        for j in 1..indices.len().saturating_sub(1) {
-            triangles.push([index(indices[0])?, index(indices[j])?, index(indices[j + 1])?]);
+/// (`vertex_indices` or `vertex_index`) elements, read one element at a time (other elements
+/// read and dropped); `size` is the file's length, which bounds what is reserved ahead.
+fn from_ply(source: &mut impl BufRead, size: u64) -> Result<TriangleMesh, String> {
+    use ply_rs_bw::parser::{Parser, Reader};
+    use ply_rs_bw::ply::Encoding;
+    let unreadable = |e: &dyn std::fmt::Display| format!("not a readable PLY file: {e}");
+    let mut reader = Reader::new(source);
+    let header = Parser::<PlyVertex>::new().read_header(&mut reader).map_err(|e| unreadable(&e))?;
+    let count = |name: &str| header.elements.get(name).map(|e| e.count);
+    let vertices = count("vertex").ok_or("no `vertex` element")?;
+    let faces = count("face").ok_or("no `face` element")?;
+    if vertices > MAX_MESH_VERTICES_READ {
+        return Err(format!("{vertices} vertices, more than the limit of {MAX_MESH_VERTICES_READ}"));
+    }
+    if faces > MAX_OBJECTS {
+        return Err(format!("{faces} faces, more than the limit of {MAX_OBJECTS} shapes in a scene"));
+    }
+    // A header may promise more than the file holds: reserve no more than its bytes allow
+    // (every vertex takes at least 3 bytes).
+    let ahead = |n: usize| n.min(usize::try_from(size / 3).unwrap_or(usize::MAX));
+    let mut mesh = TriangleMesh { positions: Vec::with_capacity(ahead(vertices)), ..Default::default() };
+    let (mut normals, mut uvs) = (Vec::new(), Vec::new());
+    let (mut have_normals, mut have_uvs) = (true, true);
+    let (vertex, face, skip) = (Parser::<PlyVertex>::new(), Parser::<PlyFace>::new(), Parser::<Skip>::new());
+    let mut line = String::new();
+    for (name, def) in &header.elements {
+        for k in 0..def.count {
+            // One element: its line (ASCII) or its bytes.
+            macro_rules! next {
+                ($parser:expr) => {
+                    match header.encoding {
+                        Encoding::Ascii => {
+                            line.clear();
+                            if reader.get_mut().read_line(&mut line).map_err(|e| unreadable(&e))? == 0 {
+                                return Err(format!("the file ends at {name} {} of {}", k + 1, def.count));
+                            }
+                            $parser.read_ascii_element(&line, def)
+                        }
+                        Encoding::BinaryLittleEndian => $parser.read_little_endian_element(reader.get_mut(), def),
+                        Encoding::BinaryBigEndian => $parser.read_big_endian_element(reader.get_mut(), def),
+                    }
+                    .map_err(|e| format!("{name} {}: {}", k + 1, unreadable(&e)))?
+                };
+            }
+            match name.as_str() {
+                "vertex" => {
+                    let v: PlyVertex = next!(vertex);
+                    mesh.positions.push(v.position().ok_or("a vertex without numbers `x`, `y`, `z`")?);
+                    have_normals &= v.normal.iter().all(Option::is_some);
+                    have_uvs &= v.uv.iter().all(Option::is_some);
+                    if have_normals {
+                        normals.push(v.normal.map(|x| x.unwrap_or(0.0)));
+                    }
+                    if have_uvs {
+                        uvs.push([v.uv[0].unwrap_or(0.0), 1.0 - v.uv[1].unwrap_or(0.0)]);
+                    }
+                }
+                "face" => {
+                    let f: PlyFace = next!(face);
+                    let indices =
+                        f.indices.ok_or_else(|| format!("face {} has no integer list `vertex_indices`", k + 1))?;
+                    let index = |i: i64| u32::try_from(i).map_err(|_| format!("face {} names vertex {i}", k + 1));
+                    for j in 1..indices.len().saturating_sub(1) {
+                        mesh.triangles.push([index(indices[0])?, index(indices[j])?, index(indices[j + 1])?]);
+                    }
+                    if mesh.triangles.len() > MAX_OBJECTS {
+                        return Err(format!("more than {MAX_OBJECTS} triangles, the limit of shapes in a scene"));
+                    }
+                }
+                _ => {
+                    let _: Skip = next!(skip);
+                }
+            }
         }
     }
-    Ok(TriangleMesh { positions, normals, uvs, triangles })
+    mesh.normals = (have_normals && !normals.is_empty()).then_some(normals);
+    mesh.uvs = (have_uvs && !uvs.is_empty()).then_some(uvs);
+    Ok(mesh)
+}
+
+/// A PLY property's number, whatever its type.
+fn ply_number(p: &ply_rs_bw::ply::Property) -> Option<f64> {
+    use ply_rs_bw::ply::Property;
+    Some(match *p {
+        Property::Char(x) => f64::from(x),
+        Property::UChar(x) => f64::from(x),
+        Property::Short(x) => f64::from(x),
+        Property::UShort(x) => f64::from(x),
+        Property::Int(x) => f64::from(x),
+        Property::UInt(x) => f64::from(x),
+        Property::Float(x) => f64::from(x),
+        Property::Double(x) => x,
+        _ => return None,
+    })
+}
+
+/// The properties of a PLY vertex this reader keeps.
+#[derive(Default)]
+struct PlyVertex {
+    position: [Option<f64>; 3],
+    normal: [Option<f64>; 3],
+    uv: [Option<f64>; 2],
+}
+
+impl PlyVertex {
+    fn position(&self) -> Option<E3> {
+        Some([self.position[0]?, self.position[1]?, self.position[2]?])
+    }
+}
+
+impl ply_rs_bw::ply::PropertyAccess for PlyVertex {
+    fn new() -> Self {
+        PlyVertex::default()
+    }
+
+    fn set_property(&mut self, name: &str, property: ply_rs_bw::ply::Property) -> ply_rs_bw::ply::PropertyAccessResult {
+        let slot = match name {
+            "x" => &mut self.position[0],
+            "y" => &mut self.position[1],
+            "z" => &mut self.position[2],
+            "nx" => &mut self.normal[0],
+            "ny" => &mut self.normal[1],
+            "nz" => &mut self.normal[2],
+            "u" | "s" => &mut self.uv[0],
+            "v" | "t" => &mut self.uv[1],
+            _ => return ply_rs_bw::ply::PropertyAccessResult::Ignored,
+        };
+        *slot = ply_number(&property);
+        ply_rs_bw::ply::PropertyAccessResult::Set
+    }
+}
+
+/// A PLY face's vertex indices (`vertex_indices` or `vertex_index`), if an integer list.
+#[derive(Default)]
+struct PlyFace {
+    indices: Option<Vec<i64>>,
+}
+
+impl ply_rs_bw::ply::PropertyAccess for PlyFace {
+    fn new() -> Self {
+        PlyFace::default()
+    }
+
+    fn set_property(&mut self, name: &str, property: ply_rs_bw::ply::Property) -> ply_rs_bw::ply::PropertyAccessResult {
+        use ply_rs_bw::ply::Property;
+        if name != "vertex_indices" && name != "vertex_index" {
+            return ply_rs_bw::ply::PropertyAccessResult::Ignored;
+        }
+        self.indices = match property {
+            Property::ListChar(l) => Some(l.into_iter().map(i64::from).collect()),
+            Property::ListUChar(l) => Some(l.into_iter().map(i64::from).collect()),
+            Property::ListShort(l) => Some(l.into_iter().map(i64::from).collect()),
+            Property::ListUShort(l) => Some(l.into_iter().map(i64::from).collect()),
+            Property::ListInt(l) => Some(l.into_iter().map(i64::from).collect()),
+            Property::ListUInt(l) => Some(l.into_iter().map(i64::from).collect()),
+            _ => None,
+        };
+        ply_rs_bw::ply::PropertyAccessResult::Set
+    }
+}
+
+/// An element this reader does not keep (read past).
+struct Skip;
+
+impl ply_rs_bw::ply::PropertyAccess for Skip {
+    fn new() -> Self {
+        Skip
+    }
 }
 
 #[cfg(test)]
@@ -192,7 +321,7 @@ mod tests {
     #[test]
     fn an_obj_square_becomes_two_triangles_with_its_normals() {
         let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\n";
-        let mesh = from_obj(text.as_bytes()).unwrap();
+        let mesh = from_obj(&mut text.as_bytes()).unwrap();
         assert_eq!(mesh.triangles.len(), 2);
         assert_eq!(mesh.normals.as_ref().map(Vec::len), Some(mesh.positions.len()));
         assert_eq!(mesh.uvs, None);
@@ -202,7 +331,7 @@ mod tests {
     #[test]
     fn a_ply_quad_is_a_fan_and_bad_indices_are_named() {
         let text = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 7\n";
-        let mesh = from_ply(text.as_bytes()).unwrap();
+        let mesh = from_ply(&mut text.as_bytes(), text.len() as u64).unwrap();
         assert_eq!(mesh.triangles, vec![[0, 1, 2], [0, 2, 7]]);
         assert_eq!(mesh.check().unwrap_err(), "a face names vertex 8 of 4");
     }

@@ -60,6 +60,15 @@ pub enum Invalid {
         /// Why.
         reason: Box<Invalid>,
     },
+    /// The problem is with one field of a table whose fields carry no place of their own
+    /// (a material's): named, at the table's place.
+    #[error("`{field}`: {reason}")]
+    Of {
+        /// The field's name.
+        field: &'static str,
+        /// Why.
+        reason: Box<Invalid>,
+    },
     /// The surface method's settings.
     #[error("surface_method: {0}")]
     SurfaceMethod(&'static str),
@@ -108,6 +117,11 @@ impl Invalid {
     /// `reason`, about the field `field` at `span`.
     pub fn at(field: &'static str, span: Range<usize>, reason: Invalid) -> Invalid {
         Invalid::Field { field, span, reason: Box::new(reason) }
+    }
+
+    /// `reason`, about the field `field` of a table whose fields have no span.
+    pub fn of(field: &'static str, reason: Invalid) -> Invalid {
+        Invalid::Of { field, reason: Box::new(reason) }
     }
 
     /// The field this is about, if it is about one.

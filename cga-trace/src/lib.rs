@@ -16,6 +16,7 @@ pub mod film;
 pub mod format;
 pub mod frame;
 pub mod import;
+pub mod input;
 pub mod integrator;
 pub mod invalid;
 pub mod light;

@@ -34,6 +34,11 @@ pub const MAX_LIGHTS: usize = 1024;
 /// Points of an area light that light each hit (`samples`): each is a shadow ray.
 pub const MAX_LIGHT_SAMPLES: u32 = 4096;
 
+/// Shadow rays one hit may cast: a point, spot or directional light casts one, an area light
+/// its `samples`, summed over the scene's lights. 2¹⁶ bounds the time one pixel can take
+/// (1,024 lights of 4,096 samples each would be 4.2 million shadow rays at every hit).
+pub const MAX_SHADOW_RAYS: u64 = 1 << 16;
+
 /// Instants a shutter is sampled at (`time_samples`): each is the scene placed anew.
 pub const MAX_TIME_SAMPLES: u32 = 4096;
 
@@ -42,12 +47,24 @@ pub const MAX_TIME_SAMPLES: u32 = 4096;
 /// it is decoded.
 pub const MAX_IMAGE_PIXELS: u64 = 1 << 26;
 
+/// Pixels of all the images a scene reads together: 2²⁷ (two 8K × 8K maps), at most 1.6 GB
+/// held. Each image is read once however many names it is given (by device and inode), and
+/// its size is checked against what is left before it is decoded, so that many large images
+/// are refused by name rather than by an allocation failing.
+pub const MAX_SCENE_IMAGE_PIXELS: u64 = 1 << 27;
+
 /// Images a scene reads (textures and its environment).
 pub const MAX_IMAGES: usize = 64;
 
 /// Bytes of a mesh file a scene reads (OBJ or PLY): 2²⁷ (128 MiB), checked before it is
 /// read. Its triangles count against [`MAX_OBJECTS`] with the scene's other shapes.
 pub const MAX_MESH_FILE_BYTES: u64 = 1 << 27;
+
+/// Vertices of a mesh file a scene reads, checked against the file's header before any is
+/// read: four for each shape a scene may hold ([`MAX_OBJECTS`]). Reading holds 64 bytes a
+/// vertex (position, normal and texture coordinates as f64) and 12 a triangle; the file's
+/// bytes are streamed, never held whole.
+pub const MAX_MESH_VERTICES_READ: usize = 4 * MAX_OBJECTS;
 
 /// Files a scene includes (`include = […]`, followed through the files it names); all of
 /// them together hold at most [`MAX_FILE_BYTES`].

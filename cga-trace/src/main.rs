@@ -6,6 +6,7 @@ use cga_trace::film::Output;
 use cga_trace::integrator::{RayCounts, Window};
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
+use cga_trace::scene::Source;
 use cga_trace::settings::ToneMap;
 use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
 use clap::{Parser, Subcommand};
@@ -173,8 +174,7 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
-            let text = e.render().to_string();
-            say!("{} (see --help)", text.lines().next().unwrap_or("error: bad arguments"));
+            say!("{} (see --help)", clap_line(&e.render().to_string()));
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -195,6 +195,22 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// clap's message on one line: its first line with the lines that name what is missing or
+/// wrong (`the following required arguments were not provided:` is followed by them), up
+/// to the usage and tips.
+fn clap_line(text: &str) -> String {
+    let mut line = String::new();
+    for part in text.lines().map(str::trim).take_while(|l| !l.starts_with("Usage:") && !l.starts_with("tip:")) {
+        if !part.is_empty() {
+            if !line.is_empty() {
+                line.push(' ');
+            }
+            line.push_str(part);
+        }
+    }
+    if line.is_empty() { "error: bad arguments".into() } else { line }
 }
 
 /// The error and its causes on one line, each cause left out when an earlier message
@@ -218,6 +234,7 @@ fn mesh_command(args: MeshArgs) -> anyhow::Result<()> {
     let format = cga_trace::mesh::MeshFormat::of(&args.output)?;
     let mut file = OutputFile::create(&args.output, &[("scene", &args.scene)])?;
     let scene = Scene::load(&args.scene)?;
+    file.refuse(&scene.inputs)?;
     let mesh = scene.mesh(&args.object, args.rings, args.segments)?;
     mesh.save(&mut file, format).with_context(|| format!("writing {}", args.output.display()))?;
     file.commit()?;
@@ -252,7 +269,7 @@ fn scale_path(output: &Path) -> PathBuf {
 
 fn render_command(args: Render) -> anyhow::Result<()> {
     let pool = thread_pool(args.threads)?;
-    let Some(frames) = args.frames else { return render_frame(&args, &pool, &args.output, 0.0, true) };
+    let Some(frames) = args.frames else { return render_frame(&args, &pool, &args.output, 0.0, true, &mut None) };
     if !(1..=MAX_FRAMES).contains(&frames) {
         anyhow::bail!("--frames {frames}: give 1 to {MAX_FRAMES}");
     }
@@ -266,21 +283,29 @@ fn render_command(args: Render) -> anyhow::Result<()> {
             args.output.display()
         );
     }
+    // No frame may be written over another through a link, this command's or another's.
+    let outputs: Vec<PathBuf> = (0..frames).map(|frame| numbered(&args.output, frame, frames)).collect();
+    cga_trace::output::distinct(&outputs).context("--frames")?;
+    // The scene's files are read once, for every frame.
+    let mut source = None;
     for frame in first..end {
         let time = if frames > 1 { frame as f64 / (frames - 1) as f64 } else { 0.0 };
         let output = numbered(&args.output, frame, frames);
-        render_frame(&args, &pool, &output, time, frame == first).with_context(|| format!("frame {frame}"))?;
+        render_frame(&args, &pool, &output, time, frame == first, &mut source)
+            .with_context(|| format!("frame {frame}"))?;
     }
     Ok(())
 }
 
-/// One picture of the scene at the frame time `time`, written to `output`.
+/// One picture of the scene at the frame time `time`, written to `output`; the scene's files
+/// are read into `source` the first time (after the outputs are checked) and kept.
 fn render_frame(
     args: &Render,
     pool: &rayon::ThreadPool,
     output_path: &Path,
     time: f64,
     notes: bool,
+    source: &mut Option<Source>,
 ) -> anyhow::Result<()> {
     // Everything that can be wrong with the command line and the outputs is found before the
     // scene is read; nothing is written over until the render has succeeded.
@@ -294,7 +319,16 @@ fn render_frame(
         None
     };
 
-    let (scene, resized) = configured(args, time)?;
+    let source = match source {
+        Some(source) => source,
+        None => source.insert(Source::load(&args.scene)?),
+    };
+    let (scene, resized) = configured(args, source, time)?;
+    // Only the scene knows the files it reads: none may be an output.
+    image.refuse(&scene.inputs)?;
+    if let Some(file) = &scale_file {
+        file.refuse(&scene.inputs)?;
+    }
     // An animation's notes are the same for every frame: said once.
     if notes {
         for note in scene.notes().into_iter().chain(resized) {
@@ -332,7 +366,7 @@ fn render_frame(
             bar.set_length(window.rows.len() as u64 * instants as u64);
             let mut counts = RayCounts::default();
             let film = shutter.expose(time, scene.settings.spp, |t, subset| {
-                let (at, _) = configured(args, t).context("the shutter")?;
+                let (at, _) = configured(args, source, t).context("the shutter")?;
                 holds(&at).map_err(anyhow::Error::msg).context("--backend")?;
                 let (film, cast) =
                     pool.install(|| render(&at, args.aov, window.clone(), packets, subset, &|| bar.inc(1)));
@@ -395,12 +429,12 @@ fn render_frame(
     Ok(())
 }
 
-/// The scene at the motion's time `time`, with the command line's settings, and a note
+/// The scene at the motion's time `time`, placed from its files as read, with the command line's settings, and a note
 /// where resizing it leaves pixels that are not square.
-fn configured(args: &Render, time: f64) -> anyhow::Result<(Scene, Option<String>)> {
+fn configured(args: &Render, source: &mut Source, time: f64) -> anyhow::Result<(Scene, Option<String>)> {
     // A camera without `width` and `height` takes the command line's.
     let size = args.width.zip(args.height);
-    let mut scene = Scene::load_at(&args.scene, size, time)?;
+    let mut scene = source.scene(size, time)?;
     if let Some(degrees) = args.fov {
         scene.set_fov(degrees).context("--fov")?;
     }

@@ -38,13 +38,21 @@ impl Material {
 
     /// Every value finite and non-negative.
     pub fn check(&self) -> Result<(), Invalid> {
-        let all = self
-            .colour
-            .iter()
-            .chain([&self.ka, &self.kd, &self.ks, &self.q, &self.kr, &self.ior])
-            .chain(&self.absorption);
-        if all.clone().any(|x| !x.is_finite() || *x < 0.0) {
-            return Err(Invalid::Value("material values must be finite and ≥ 0"));
+        let bad = |x: &f64| !x.is_finite() || *x < 0.0;
+        let scalars = [("ka", self.ka), ("kd", self.kd), ("ks", self.ks), ("q", self.q), ("kr", self.kr)];
+        if self.colour.iter().any(bad) {
+            return Err(Invalid::of("colour", Invalid::Value("each channel must be finite and ≥ 0")));
+        }
+        if let Some((field, _)) = scalars.iter().find(|(_, x)| bad(x)) {
+            return Err(Invalid::of(field, Invalid::Value("must be finite and ≥ 0")));
+        }
+        if bad(&self.ior) {
+            let why = "must be finite and ≥ 0: 0 for an opaque material, the refractive index (about 1.5 for glass) for a dielectric";
+            return Err(Invalid::of("ior", Invalid::Value(why)));
+        }
+        if self.absorption.iter().any(bad) {
+            let why = "each channel must be finite and ≥ 0 (absorption per world unit; 0 for clear glass)";
+            return Err(Invalid::of("absorption", Invalid::Value(why)));
         }
         Ok(())
     }

@@ -76,6 +76,11 @@ pub enum MeshError {
     /// No object of that name.
     #[error("no object named `{0}` in the scene")]
     NoObject(String),
+    /// The object is a template, which the scene holds only as its instances.
+    #[error(
+        "`{0}` is a template (`template = true`): the scene draws only its instances; name one of them, or give the surface without `template`"
+    )]
+    Template(String),
     /// The object is not a swept surface.
     #[error("`{0}` is not an evolved, spline or ruled surface")]
     NotSwept(String),
@@ -362,6 +367,10 @@ impl Scene {
     }
 
     fn object(&self, name: &str) -> Result<&crate::object::Object, MeshError> {
-        self.objects.iter().find(|o| o.name == name).ok_or_else(|| MeshError::NoObject(name.into()))
+        match self.objects.iter().find(|o| o.name == name) {
+            Some(object) => Ok(object),
+            None if self.templates.iter().any(|t| t == name) => Err(MeshError::Template(name.into())),
+            None => Err(MeshError::NoObject(name.into())),
+        }
     }
 }

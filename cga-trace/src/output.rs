@@ -9,6 +9,7 @@
 //! `/dev/full`) is written to directly and never removed; directories, pipes, sockets and
 //! block devices are refused.
 
+use crate::input::{Identity, Input};
 use std::fs;
 use std::io::{self, BufWriter, Cursor, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
@@ -25,10 +26,18 @@ pub enum OutputFileError {
     SameFile {
         /// The output, as given.
         output: String,
-        /// What the input is (`scene`, `image`).
+        /// What the input is (`scene`, `texture`, `mesh`, …).
         role: &'static str,
         /// The input, as given.
         input: String,
+    },
+    /// Two outputs of one command are one file (numbered frames through links).
+    #[error("`{first}` and `{second}` are the same file: one would be written over the other")]
+    Aliased {
+        /// The first output, as given.
+        first: String,
+        /// The later one.
+        second: String,
     },
     /// The target is a directory, a pipe, a socket or a block device.
     #[error("cannot write `{path}`: it is {kind}")]
@@ -149,6 +158,24 @@ impl OutputFile {
         Ok(OutputFile { shown, target, sink: Sink::Temporary(BufWriter::new(temporary)) })
     }
 
+    /// Refuse the output if it is one of `inputs` (the files a scene was read from, found
+    /// only once it is loaded): by path, symbolic link or hard link, as [`OutputFile::create`]
+    /// refuses the inputs it is given. Nothing has been written yet, so nothing is lost.
+    pub fn refuse(&self, inputs: &[Input]) -> Result<(), OutputFileError> {
+        let existing = fs::metadata(&self.shown).ok();
+        for input in inputs {
+            let same = existing.as_ref().is_some_and(|m| same_file(&self.shown, m, &input.path));
+            if same || self.shown == input.path || self.target == input.path {
+                return Err(OutputFileError::SameFile {
+                    output: self.shown.display().to_string(),
+                    role: input.role,
+                    input: input.path.display().to_string(),
+                });
+            }
+        }
+        Ok(())
+    }
+
     /// Whether the output is a character device (written directly, with nothing beside it).
     pub fn is_device(&self) -> bool {
         matches!(self.sink, Sink::Device(_))
@@ -201,6 +228,34 @@ impl Seek for OutputFile {
             Sink::Device(w) => w.seek(to),
         }
     }
+}
+
+/// Refuse `outputs` (all that one command will write, such as an animation's frames) if
+/// any two are one file: the same file by device and inode where they exist (hard links,
+/// symbolic links), or the same path once their links are followed and their folders made
+/// canonical (a dangling link to a file not yet written).
+pub fn distinct(outputs: &[PathBuf]) -> Result<(), OutputFileError> {
+    use std::collections::HashMap;
+    let mut seen: HashMap<Identity, usize> = HashMap::with_capacity(2 * outputs.len());
+    for (k, path) in outputs.iter().enumerate() {
+        let failed = |source| OutputFileError::Io { path: path.display().to_string(), source };
+        let target = resolve(path).map_err(failed)?;
+        let folder = match target.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        let name = target.file_name().map(PathBuf::from).unwrap_or_default();
+        let place = fs::canonicalize(folder).map_or(target.clone(), |f| f.join(name));
+        let keys = [Some(Identity::Path(place)), Identity::of(path).ok()];
+        for key in keys.into_iter().flatten() {
+            if let Some(&j) = seen.get(&key) {
+                let (first, second) = (outputs[j].display().to_string(), path.display().to_string());
+                return Err(OutputFileError::Aliased { first, second });
+            }
+            seen.insert(key, k);
+        }
+    }
+    Ok(())
 }
 
 /// `path` with its symbolic links followed to the file they name (which need not exist).

@@ -3,8 +3,10 @@
 //! `u` wrapping around, `v` from the top edge down.
 
 use crate::colour::srgb_to_linear;
+use crate::input::open_regular;
 use crate::invalid::Invalid;
-use crate::limits::MAX_IMAGE_PIXELS;
+use crate::limits::{MAX_IMAGE_PIXELS, MAX_SCENE_IMAGE_PIXELS};
+use std::io::Seek;
 use std::path::Path;
 
 /// A linear RGB image.
@@ -19,22 +21,39 @@ pub struct Picture {
 }
 
 impl Picture {
-    /// The image at `path`: its size checked against [`MAX_IMAGE_PIXELS`] from the header
-    /// before it is decoded.
+    /// The image at `path` ([`Picture::read`] with the whole budget of one image).
     pub fn load(path: &Path) -> Result<Picture, Invalid> {
+        let (file, _, _) = open_regular(path).map_err(|e| Invalid::Image(format!("{}: {e}", path.display())))?;
+        Picture::read(file, path, MAX_IMAGE_PIXELS)
+    }
+
+    /// The image in `file` (read from `path`, which messages name): its size checked from
+    /// the header, against [`MAX_IMAGE_PIXELS`] and against `budget` (the pixels the scene's
+    /// images may still take, [`MAX_SCENE_IMAGE_PIXELS`] in all), before it is decoded.
+    /// Decoding holds the file's own pixels and the linear copy, so at most 16 bytes a pixel
+    /// for an 8-bit PNG.
+    pub fn read(file: std::fs::File, path: &Path, budget: u64) -> Result<Picture, Invalid> {
         let why = |e: &dyn std::fmt::Display| Invalid::Image(format!("{}: {e}", path.display()));
-        let reader = image::ImageReader::open(path).map_err(|e| why(&e))?.with_guessed_format().map_err(|e| why(&e))?;
+        let mut source = std::io::BufReader::new(file);
+        let reader = image::ImageReader::new(&mut source).with_guessed_format().map_err(|e| why(&e))?;
         let format = reader.format();
         let (width, height) = reader.into_dimensions().map_err(|e| why(&e))?;
-        if u64::from(width) * u64::from(height) > MAX_IMAGE_PIXELS || width == 0 || height == 0 {
+        let pixels = u64::from(width) * u64::from(height);
+        if pixels > MAX_IMAGE_PIXELS || width == 0 || height == 0 {
             return Err(why(&format!("{width} × {height} pixels: give an image of 1 to {MAX_IMAGE_PIXELS} pixels")));
         }
-        let reader = image::ImageReader::open(path).map_err(|e| why(&e))?.with_guessed_format().map_err(|e| why(&e))?;
+        if pixels > budget {
+            return Err(why(&format!(
+                "{width} × {height} pixels: the scene's images would hold more than the limit of {MAX_SCENE_IMAGE_PIXELS} pixels in all"
+            )));
+        }
+        source.seek(std::io::SeekFrom::Start(0)).map_err(|e| why(&e))?;
+        let reader = image::ImageReader::new(source).with_guessed_format().map_err(|e| why(&e))?;
         let decoded = reader.decode().map_err(|e| why(&e))?;
         let pixels = if format == Some(image::ImageFormat::Png) {
-            decoded.to_rgb8().pixels().map(|p| p.0.map(|c| srgb_to_linear(c) as f32)).collect()
+            decoded.into_rgb8().pixels().map(|p| p.0.map(|c| srgb_to_linear(c) as f32)).collect()
         } else {
-            decoded.to_rgb32f().pixels().map(|p| p.0).collect()
+            decoded.into_rgb32f().pixels().map(|p| p.0).collect()
         };
         Ok(Picture { width, height, pixels })
     }

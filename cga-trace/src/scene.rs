@@ -8,11 +8,12 @@ use crate::environment::Environment;
 use crate::figure::{Label, Marks};
 use crate::format::include::{self, Joined};
 use crate::format::instance::{InstanceSpec, is_instance, is_template, name_of};
-use crate::format::{ObjectSpec, SceneFile, build_object, sections};
+use crate::format::{Assets, ObjectSpec, SceneFile, build_object, sections};
 use crate::frame::Frame;
+use crate::input::Input;
 use crate::invalid::Invalid;
 use crate::light::Light;
-use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_MATERIALS, MAX_OBJECTS};
+use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_MATERIALS, MAX_OBJECTS, MAX_SHADOW_RAYS};
 pub use crate::object::Object;
 use crate::settings::Settings;
 use crate::shutter::Shutter;
@@ -47,6 +48,11 @@ pub struct Scene {
     pub shutter: Option<Shutter>,
     /// What rays leaving the scene see (the background colour where none).
     pub environment: Option<Environment>,
+    /// Every file the scene was read from, with its role: the scene file, the files it
+    /// includes, its images and meshes (an output must be none of them).
+    pub inputs: Vec<Input>,
+    /// The names of the file's templates (`template = true`), drawn only as their instances.
+    pub templates: Vec<String>,
 }
 
 /// What is wrong with a scene file.
@@ -101,20 +107,7 @@ impl Scene {
 
     /// [`Scene::load_sized`] at the frame time `time` ([`Scene::parse_at`]).
     pub fn load_at(path: &Path, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
-        use std::io::Read;
-        let file = path.display().to_string();
-        let io = |source| SceneError::Io { file: file.clone(), source };
-        let mut bytes = Vec::new();
-        std::fs::File::open(path).and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)).map_err(io)?;
-        if bytes.len() as u64 > MAX_FILE_BYTES {
-            let message = format!("the file is larger than the limit of {MAX_FILE_BYTES} bytes");
-            return Err(SceneError::Syntax { file, line: 1, column: 1, message });
-        }
-        let text = String::from_utf8(bytes).map_err(|e| {
-            let (line, column) = line_column_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
-            SceneError::Syntax { file: file.clone(), line, column, message: "the file is not UTF-8 text".into() }
-        })?;
-        Scene::parse_at(&text, &file, size, time)
+        Source::load(path)?.scene(size, time)
     }
 
     /// Check a scene given as text; `file` names it in errors.
@@ -135,9 +128,56 @@ impl Scene {
     /// [`Scene::parse_sized`] at the frame time `time` in [0, 1] (clamped): objects and the
     /// camera with a `motion` are placed by their keyframes' screw motion at that time.
     pub fn parse_at(text: &str, file: &str, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
+        Source::parse(text, file)?.scene(size, time)
+    }
+}
+
+/// A scene file and every file it reads, read once: the text with its includes joined, and
+/// the images and meshes it names, each decoded once. [`Source::scene`] places it at any
+/// time of its motion without reading a file again, as a shutter's instants and an
+/// animation's frames need.
+pub struct Source {
+    joined: Joined,
+    assets: Assets,
+    /// The scene file's name, for errors.
+    file: String,
+}
+
+impl Source {
+    /// Read the scene file `path` (at most [`MAX_FILE_BYTES`]) and the files it includes.
+    pub fn load(path: &Path) -> Result<Source, SceneError> {
+        use std::io::Read;
+        let file = path.display().to_string();
+        let io = |source| SceneError::Io { file: file.clone(), source };
+        let mut bytes = Vec::new();
+        std::fs::File::open(path).and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes)).map_err(io)?;
+        if bytes.len() as u64 > MAX_FILE_BYTES {
+            let message = format!("the file is larger than the limit of {MAX_FILE_BYTES} bytes");
+            return Err(SceneError::Syntax { file, line: 1, column: 1, message });
+        }
+        let text = String::from_utf8(bytes).map_err(|e| {
+            let (line, column) = line_column_bytes(e.as_bytes(), e.utf8_error().valid_up_to());
+            SceneError::Syntax { file: file.clone(), line, column, message: "the file is not UTF-8 text".into() }
+        })?;
+        Source::parse(&text, &file)
+    }
+
+    /// A scene given as text (`file` names it in errors, and its folder is where the files
+    /// it names are read from), with the files it includes.
+    pub fn parse(text: &str, file: &str) -> Result<Source, SceneError> {
+        let joined = include::join(text, file)?;
+        let folder = Path::new(file).parent().unwrap_or(Path::new(""));
+        Ok(Source { joined, assets: crate::format::Assets::new(folder), file: file.into() })
+    }
+
+    /// The scene at the frame time `time` in [0, 1] (clamped; NaN is the start), with `size`
+    /// (width, height) for a camera that gives neither: objects and the camera with a
+    /// `motion` placed by their keyframes' screw motion at that time. Images and meshes are
+    /// read the first time they are needed and kept for every later time.
+    pub fn scene(&mut self, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
+        let (joined, assets, file) = (&self.joined, &mut self.assets, self.file.as_str());
         // NaN is no time: the start.
         let time = if time.is_nan() { 0.0 } else { time.clamp(0.0, 1.0) };
-        let joined = include::join(text, file)?;
         let text = joined.text.as_str();
         let at = |offset: usize| joined.locate(offset);
         let mut sections = sections::split(text).map_err(|m| {
@@ -164,7 +204,7 @@ impl Scene {
             let (file, line, column) = at(map(reason.span().unwrap_or(span).start));
             SceneError::Invalid { file, line, column, what, reason }
         };
-        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(|e| syntax_error(&joined, &e, &rest))?;
+        let mut document = toml::de::DeTable::parse(&sections.rest).map_err(|e| syntax_error(joined, &e, &rest))?;
         // `objects = [ … ]` written as one array in the root, instead of `[[objects]]` tables.
         let inline = match document.get_mut().remove_entry("objects") {
             None => toml::de::DeArray::new(),
@@ -184,7 +224,7 @@ impl Scene {
             return Err(SceneError::Syntax { file, line, column, message });
         }
         let spec: SceneFile = SceneFile::deserialize(toml::de::Deserializer::from(document))
-            .map_err(|e| syntax_error(&joined, &e, &rest))?;
+            .map_err(|e| syntax_error(joined, &e, &rest))?;
         let (settings, render_span) =
             spec.render.map_or((Settings::default(), 0..0), |r| (Settings::from(*r.get_ref()), r.span()));
         settings.check().map_err(|reason| invalid(&rest, render_span, "render".into(), reason))?;
@@ -204,23 +244,22 @@ impl Scene {
         let (camera, position, pinned, shutter) = (built.camera, built.position, built.pinned, built.shutter);
         // Objects size the frame; lights do not (a light far away is only a direction). Each
         // object's placement is read first (a few of its fields), before any is built.
-        let folder = Path::new(file).parent().unwrap_or(Path::new(""));
-        let mut assets = crate::format::Assets::new(folder);
         // Object `k` as parsed, and where its spans count from.
         let start_of = |k: usize| sections.objects.get(k).map(|r| r.start);
         let map_of = |k: usize| move |offset: usize| start_of(k).map_or_else(|| rest(offset), |s| s + offset);
         let value_of = |k: usize| match sections.objects.get(k) {
-            Some(range) => section_object(&text[range.clone()]).map_err(|e| syntax_error(&joined, &e, &map_of(k))),
+            Some(range) => section_object(&text[range.clone()]).map_err(|e| syntax_error(joined, &e, &map_of(k))),
             None => Ok(inline[k].clone()),
         };
         // Each instance as placed: read in order, so that an instance names an object before it.
         let mut named: HashMap<String, Placed> = HashMap::new();
         let mut instances: HashMap<usize, Placed> = HashMap::new();
         let mut sizes = Vec::with_capacity(count);
+        let mut templates = Vec::new();
         for k in 0..count {
             let value = value_of(k)?;
             let placed = if is_instance(&value) {
-                let (spec, span) = instance_spec(&value, &map_of(k), &joined)?;
+                let (spec, span) = instance_spec(&value, &map_of(k), joined)?;
                 let located = |reason| invalid(&map_of(k), span.clone(), format!("object {}", k + 1), reason);
                 let of = named.get(spec.of.get_ref()).ok_or_else(|| {
                     let why = format!("no object named `{}` before this one", spec.of.get_ref().escape_debug());
@@ -236,11 +275,12 @@ impl Scene {
                 named.insert(name, placed);
             }
             if is_template(&value) {
+                templates.extend(name_of(&value));
                 continue;
             }
             let base = if placed.base == k { value } else { value_of(placed.base)? };
-            let extent = ObjectSpec::extent_of(&base, time, placed.outer, &assets);
-            sizes.extend(extent.map_err(|e| syntax_error(&joined, &e, &map_of(placed.base)))?);
+            let extent = ObjectSpec::extent_of(&base, time, placed.outer, assets);
+            sizes.extend(extent.map_err(|e| syntax_error(joined, &e, &map_of(placed.base)))?);
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
         let marks = Marks::for_scene(&sizes, position, pixel);
@@ -254,15 +294,26 @@ impl Scene {
         }
         let environment = match &spec.environment {
             Some(e) => Some(
-                e.get_ref().build(&assets).map_err(|reason| invalid(&rest, e.span(), "environment".into(), reason))?,
+                e.get_ref().build(assets).map_err(|reason| invalid(&rest, e.span(), "environment".into(), reason))?,
             ),
             None => None,
         };
-        let mut lights = Vec::with_capacity(spec.lights.len());
+        let mut lights: Vec<Light> = Vec::with_capacity(spec.lights.len());
+        let mut rays = 0;
         for (k, light) in spec.lights.into_iter().enumerate() {
             let span = light.span();
             let what = format!("light {}", k + 1);
-            lights.push(light.into_inner().build(&frame).map_err(|reason| invalid(&rest, span, what, reason))?);
+            lights.push(light.into_inner().build(&frame).map_err(|reason| invalid(&rest, span.clone(), what, reason))?);
+            // Every light casts a shadow ray at every hit, an area light one per sample.
+            rays += u64::from(lights[k].samples().unwrap_or(1));
+            if rays > MAX_SHADOW_RAYS {
+                let reason = Invalid::Limit {
+                    what: "shadow rays a hit (lights and their samples)",
+                    found: rays,
+                    limit: MAX_SHADOW_RAYS,
+                };
+                return Err(invalid(&rest, span, format!("light {}", k + 1), reason));
+            }
         }
         let mut built = Vec::with_capacity(count);
         let mut labels = Vec::new();
@@ -275,12 +326,12 @@ impl Scene {
             // but for those the instance gives.
             let (j, span, dress) = match instances.get(&k) {
                 Some(&placed) => {
-                    let (instance, span) = instance_spec(&value, &map_of(k), &joined)?;
+                    let (instance, span) = instance_spec(&value, &map_of(k), joined)?;
                     // The material of the last instance in the chain that gives one.
                     let given = match placed.material {
                         Some(m) if m == k => Some((m, instance.material.clone(), span.clone())),
                         Some(m) => {
-                            let (giver, giver_span) = instance_spec(&value_of(m)?, &map_of(m), &joined)?;
+                            let (giver, giver_span) = instance_spec(&value_of(m)?, &map_of(m), joined)?;
                             Some((m, giver.material, giver_span))
                         }
                         None => None,
@@ -299,7 +350,7 @@ impl Scene {
             };
             let base = if j == k { value } else { value_of(j)? };
             let mut spec =
-                ObjectSpec::deserialize(base.into_deserializer()).map_err(|e| syntax_error(&joined, &e, &map_of(j)))?;
+                ObjectSpec::deserialize(base.into_deserializer()).map_err(|e| syntax_error(joined, &e, &map_of(j)))?;
             // Where a field's span counts from: the object copied, or the instance giving it
             // (a copy carries only its own instance's label).
             let mut material_from = j;
@@ -313,7 +364,7 @@ impl Scene {
                 _ => j,
             };
             spec.time = time;
-            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, &assets);
+            let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, assets);
             let what = format!("object `{name}`");
             // Errors at a field where that field is written; others at the object.
             let at = |reason: Invalid| match reason.span() {
@@ -328,7 +379,21 @@ impl Scene {
             built.extend(objects);
             labels.extend(label);
         }
-        Ok(Scene { frame, camera, objects: built, lights, settings, labels, pinned, shutter, environment })
+        let mut inputs = joined.inputs();
+        inputs.extend(assets.inputs());
+        Ok(Scene {
+            frame,
+            camera,
+            objects: built,
+            lights,
+            settings,
+            labels,
+            pinned,
+            shutter,
+            environment,
+            inputs,
+            templates,
+        })
     }
 }
 

@@ -6,6 +6,7 @@
 //! relative to the scene file's folder, as POV-Ray's `#include` reads from its own.
 
 use super::sections;
+use crate::input::{Input, open_regular};
 use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_INCLUDES};
 use crate::scene::{SceneError, line_column};
 use std::io::Read;
@@ -37,6 +38,12 @@ impl Joined {
         let end = self.files.get(k + 1).map_or(self.text.len(), |&(next, _)| next);
         let (line, column) = line_column(&self.text[*start..end], offset - start);
         (file.clone(), line, column)
+    }
+
+    /// The files joined: the scene, then each included file.
+    pub(crate) fn inputs(&self) -> Vec<Input> {
+        let role = |k: usize| if k == 0 { "scene" } else { "included file" };
+        self.files.iter().enumerate().map(|(k, (_, name))| Input { role: role(k), path: name.into() }).collect()
     }
 
     /// `objects` (sections of [`Joined::text`]) in reading order: an included file's
@@ -129,8 +136,8 @@ impl Reader {
         }
         let left = MAX_FILE_BYTES.saturating_sub(joined.text.len() as u64);
         let mut bytes = Vec::new();
-        std::fs::File::open(&path)
-            .and_then(|f| f.take(left + 1).read_to_end(&mut bytes))
+        open_regular(&path)
+            .and_then(|(f, _, _)| f.take(left + 1).read_to_end(&mut bytes))
             .map_err(|e| format!("include `{name}`: {e}"))?;
         if bytes.len() as u64 > left {
             return Err(format!("the scene's files hold more than the limit of {MAX_FILE_BYTES} bytes"));

@@ -119,7 +119,7 @@ impl EnvironmentSpec {
                     return Err(why("strength", self.strength.as_ref().expect("given").span(), "must be ≥ 0"));
                 }
                 let turn = self.rotate.as_ref().map_or(0.0, |r| r.get_ref().0).to_radians();
-                Ok(Environment::Map { picture: assets.image(file)?, turn, strength })
+                Ok(Environment::Map { picture: assets.image(file, "environment image")?, turn, strength })
             }
             (None, Some(_)) => {
                 if let Some((field, span)) = first_given(&[("rotate", &self.rotate), ("strength", &self.strength)]) {
@@ -502,11 +502,12 @@ impl CameraSpec {
         let samples = self.time_samples.as_ref().map(|n| *n.get_ref());
         if let Some(n) = samples.filter(|n| !(1..=MAX_TIME_SAMPLES).contains(n)) {
             let span = self.time_samples.as_ref().expect("given").span();
-            return Err(Invalid::at(
-                "time_samples",
-                span,
-                Invalid::Limit { what: "time samples", found: u64::from(n), limit: u64::from(MAX_TIME_SAMPLES) },
-            ));
+            const _: () = assert!(MAX_TIME_SAMPLES == 4096, "the message below names the limit");
+            let why = match n {
+                0 => Invalid::Value("a shutter is sampled at 1 or more instants: give 1 to 4096"),
+                _ => Invalid::Limit { what: "time samples", found: u64::from(n), limit: u64::from(MAX_TIME_SAMPLES) },
+            };
+            return Err(Invalid::at("time_samples", span, why));
         }
         Ok(Some(Shutter { open, close, samples }))
     }
@@ -790,7 +791,7 @@ impl ObjectSpec {
         let (point, extent) = if let Some(drawn) = self.drawn_extent() {
             drawn?
         } else if let (Kind::Mesh, Some(file)) = (self.kind, &self.file) {
-            let (c, r) = assets.mesh(file).ok()?.bounds()?;
+            let (c, r) = assets.mesh_bounds(file).ok()??;
             let s = self.mesh_scale().ok()?;
             (c.map(|x| x * s), r * s)
         } else if self.kind == Kind::Plane {
