@@ -616,6 +616,51 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:7:", "a material table", "[materials.NAME]"],
         ),
         (
+            "a negative ior",
+            format!(
+                "{CAMERA}[[objects]]\nname = \"glass\"\ntype = \"point\"\npoint = [0.0, 0.0, 0.0]\nmaterial = {{ colour = [1.0, 1.0, 1.0], ior = -1.5 }}\n"
+            ),
+            vec!["bad.toml:6:", "`glass`", "`ior`", "about 1.5 for glass"],
+        ),
+        (
+            "a negative absorption",
+            format!(
+                "{CAMERA}[[objects]]\nname = \"glass\"\ntype = \"point\"\npoint = [0.0, 0.0, 0.0]\nmaterial = {{ colour = [1.0, 1.0, 1.0], ior = 1.5, absorption = [0.1, -1.0, 0.0] }}\n"
+            ),
+            vec!["bad.toml:6:", "`glass`", "`absorption`", "≥ 0"],
+        ),
+        (
+            "a negative ks in a named material",
+            format!("{CAMERA}[materials.chalk]\ncolour = [1.0, 1.0, 1.0]\nks = -1.0\n"),
+            vec!["bad.toml:6:", "material `chalk`", "`ks`: must be finite and ≥ 0"],
+        ),
+        (
+            "no time samples",
+            format!("{CAMERA}shutter = [0.0, 0.5]\ntime_samples = 0\n"),
+            vec!["bad.toml:7:", "camera", "`time_samples`", "1 or more instants"],
+        ),
+        (
+            "a NaN in a motion key",
+            with_object(
+                "type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, nan]]\n",
+            ),
+            vec!["bad.toml:11:", "`motion`", "NaN"],
+        ),
+        (
+            "a motion key of seven numbers",
+            format!("{CAMERA}motion = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]]\n"),
+            vec!["bad.toml:6:", "`motion`", "expected 8 numbers, found 7"],
+        ),
+        (
+            "more shadow rays a hit than the limit",
+            format!("{CAMERA}{}", "[[lights]]\nposition = [0.0, 0.0, 5.0]\nsphere = 0.5\nsamples = 4096\n".repeat(17)),
+            vec![
+                "bad.toml:",
+                "light 17",
+                "69632 shadow rays a hit (lights and their samples) exceed the limit of 65536",
+            ],
+        ),
+        (
             "a label too long",
             with_object(&format!("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nlabel = \"{}\"\n", "x".repeat(65))),
             vec!["bad.toml:11:", "`label`: 65 characters exceed the limit of 64"],

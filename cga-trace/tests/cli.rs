@@ -69,6 +69,29 @@ fn user_errors_are_one_line_and_come_before_any_rendering() {
     let stderr = String::from_utf8_lossy(&out2.stderr);
     assert_eq!((out2.status.code(), stderr.lines().count()), (Some(2), 1), "{stderr}");
     assert!(stderr.contains("four numbers"), "{stderr}");
+    // A missing argument is named, with what it goes with.
+    for (args, says) in [(&[][..], "<SCENE>"), (&[p, "--frame-range", "0..2"], "--frames <N>")] {
+        let out = render(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!((out.status.code(), stderr.lines().count()), (Some(2), 1), "{stderr}");
+        assert!(stderr.contains("not provided: ") && stderr.contains(says), "{args:?}: {stderr}");
+    }
+    // A template is named as one: the scene draws only its instances.
+    #[cfg(feature = "evolved")]
+    {
+        let templated = dir.join("templated.toml");
+        let fig3b = std::fs::read_to_string(scene("fig3b.toml")).unwrap();
+        let text = fig3b.replacen("name = \"surface\"", "name = \"surface\"\ntemplate = true", 1)
+            + "\n[[objects]]\ntype = \"instance\"\nof = \"surface\"\nname = \"copy\"\n";
+        std::fs::write(&templated, text).unwrap();
+        let t = templated.to_str().unwrap();
+        let mesh = Command::new(env!("CARGO_BIN_EXE_cga-trace"))
+            .args(["mesh", t, "--object", "surface", "-o", dir.join("m.obj").to_str().unwrap()])
+            .output()
+            .unwrap();
+        let e = error_line(&mesh);
+        assert!(e.contains("`surface` is a template") && e.contains("name one of them"), "{e}");
+    }
     // The scene file's size is bounded: an endless file is refused, not read forever.
     #[cfg(unix)]
     {

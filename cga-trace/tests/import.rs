@@ -207,3 +207,101 @@ fn bad_mesh_files_are_named_with_their_reason() {
         assert!(e.contains(says) && e.contains(&format!("scene.toml:{line}:")) && e.contains("`file`"), "{file}: {e}");
     }
 }
+
+/// The cube as a binary little-endian PLY: vertices with normals, an element the reader
+/// does not keep between them and the faces, and quads.
+fn binary_cube_ply() -> Vec<u8> {
+    let header = "ply\nformat binary_little_endian 1.0\ncomment made by the test\n\
+        element vertex 8\nproperty float x\nproperty float y\nproperty float z\n\
+        property float nx\nproperty float ny\nproperty float nz\nproperty uchar red\n\
+        element edge 2\nproperty int vertex1\nproperty int vertex2\n\
+        element face 6\nproperty list uchar int vertex_indices\nend_header\n";
+    let mut bytes = header.as_bytes().to_vec();
+    let corners = [[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]];
+    for c in corners {
+        for x in c.iter().chain(&c) {
+            bytes.extend((*x as f32).to_le_bytes());
+        }
+        bytes.push(200);
+    }
+    for edge in [[0i32, 1], [1, 2]] {
+        edge.iter().for_each(|i| bytes.extend(i.to_le_bytes()));
+    }
+    for face in [[0i32, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]] {
+        bytes.push(4);
+        face.iter().for_each(|i| bytes.extend(i.to_le_bytes()));
+    }
+    bytes
+}
+
+#[test]
+fn a_binary_ply_is_read_an_element_at_a_time() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("cube.ply"), binary_cube_ply()).unwrap();
+    let mesh = cga_trace::import::TriangleMesh::load(&dir.path().join("cube.ply")).unwrap();
+    assert_eq!((mesh.positions.len(), mesh.triangles.len()), (8, 12));
+    assert_eq!(mesh.normals.as_ref().unwrap()[6], [1.0, 1.0, 1.0]);
+    assert!(mesh.is_closed());
+    std::fs::write(dir.path().join("cube.obj"), CUBE_OBJ).unwrap();
+    let material = "material = { colour = [0.8, 0.4, 0.2], ks = 0.5, q = 30.0 }";
+    let ply = parse(&format!("{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"cube.ply\"\n{material}\n"), dir.path());
+    let obj = parse(&format!("{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"cube.obj\"\n{material}\n"), dir.path());
+    let (mean, _) = difference(&render(&ply), &render(&obj));
+    // The PLY's normals point out of the corners (smooth shading): only shading differs.
+    assert!(mean < 0.1, "mean {mean}");
+}
+
+#[test]
+fn a_ply_header_that_promises_too_much_is_refused_before_reading() {
+    let dir = tempfile::tempdir().unwrap();
+    let header = |vertices: u64, faces: u64| {
+        format!(
+            "ply\nformat ascii 1.0\nelement vertex {vertices}\nproperty float x\nproperty float y\nproperty float z\n\
+             element face {faces}\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
+        )
+    };
+    for (vertices, faces, says) in [
+        (4_000_000_000, 1, "vertices, more than the limit"),
+        (3, 2_000_000, "faces, more than the limit"),
+        (3_000_000, 1, "the file ends at vertex 5 of 3000000"),
+        (3, 5, "the file ends at face 2 of 5"),
+    ] {
+        std::fs::write(dir.path().join("bomb.ply"), header(vertices, faces)).unwrap();
+        let text = format!(
+            "{CAMERA}[[objects]]\ntype = \"mesh\"\nfile = \"bomb.ply\"\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
+        );
+        let path = dir.path().join("scene.toml");
+        let e = Scene::parse(&text, path.to_str().unwrap()).unwrap_err().to_string();
+        assert!(e.contains("scene.toml:") && e.contains("bomb.ply") && e.contains(says), "{e}");
+    }
+}
+
+#[test]
+fn a_scenes_files_are_read_once_and_placed_at_every_time() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("cube.obj"), CUBE_OBJ).unwrap();
+    let grid = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/maps/grid.png");
+    std::fs::copy(grid, dir.path().join("grid.png")).unwrap();
+    let text = format!(
+        "{CAMERA}[environment]\nimage = \"grid.png\"\n[[objects]]\nname = \"cube\"\ntype = \"mesh\"\nfile = \"cube.obj\"\n\
+         motion = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0]]\n\
+         material = {{ colour = [1.0, 1.0, 1.0] }}\n"
+    );
+    let path = dir.path().join("scene.toml");
+    std::fs::write(&path, text).unwrap();
+    let mut source = cga_trace::scene::Source::load(&path).unwrap();
+    let first = source.scene(None, 0.0).unwrap();
+    // Gone from the disk: the source has them.
+    for name in ["cube.obj", "grid.png", "scene.toml"] {
+        std::fs::remove_file(dir.path().join(name)).unwrap();
+    }
+    let last = source.scene(None, 1.0).unwrap();
+    let roles: Vec<&str> = last.inputs.iter().map(|i| i.role).collect();
+    assert_eq!(roles, ["scene", "mesh", "environment image"]);
+    let centre = |s: &Scene| {
+        let (c, _) = s.objects[0].shape.bounds().unwrap();
+        s.frame.world_point(c)
+    };
+    let (a, b) = (centre(&first), centre(&last));
+    assert!((b[0] - a[0] - 2.0).abs() < 1e-9 && (b[1] - a[1]).abs() < 1e-9, "{a:?} → {b:?}");
+}

@@ -233,3 +233,159 @@ fn counts_the_command_line_sets_are_bounded_before_anything_is_allocated() {
         assert!(String::from_utf8_lossy(&out.stderr).contains("threads beyond the cores"), "{out:?}");
     }
 }
+
+/// A folder with a scene that reads a file of every role: an included file, a texture, an
+/// environment image and a mesh (beside a swept surface, for `mesh`).
+fn every_role(test: &str) -> PathBuf {
+    let dir = scratch(test);
+    let scenes = shipped("");
+    for (from, to) in [
+        ("parts/studio.toml", "parts/studio.toml"),
+        ("maps/grid.png", "maps/grid.png"),
+        ("maps/sky.png", "maps/sky.png"),
+        ("meshes/vase.obj", "meshes/vase.obj"),
+    ] {
+        std::fs::create_dir_all(dir.join(to).parent().unwrap()).unwrap();
+        std::fs::copy(scenes.join(from), dir.join(to)).unwrap();
+    }
+    let surface = std::fs::read_to_string(shipped("fig3b.toml")).unwrap();
+    let scene = format!(
+        "include = [\"parts/studio.toml\"]\n{surface}\n[environment]\nimage = \"maps/sky.png\"\n\n\
+         [[objects]]\nname = \"ball\"\ntype = \"sphere\"\ncentre = [3.0, 0.0, 0.0]\nradius = 0.5\n\
+         material = {{ colour = [1.0, 1.0, 1.0], texture = {{ image = \"maps/grid.png\" }} }}\n\n\
+         [[objects]]\nname = \"vase\"\ntype = \"mesh\"\nfile = \"meshes/vase.obj\"\nscale = 0.1\n\
+         material = {{ colour = [1.0, 1.0, 1.0] }}\n"
+    );
+    std::fs::write(dir.join("scene.toml"), scene).unwrap();
+    dir
+}
+
+#[test]
+fn no_input_of_any_role_can_be_an_output() {
+    let dir = every_role("roles");
+    fn render(out: &str) -> Vec<&str> {
+        vec!["render", "scene.toml", "-o", out, "--width", "16", "--height", "12"]
+    }
+    fn mesh(out: &str) -> Vec<&str> {
+        vec!["mesh", "scene.toml", "--object", "surface", "-o", out, "--rings", "4"]
+    }
+    // Sanity: the scene renders and meshes with outputs elsewhere.
+    for args in [render("fine.png"), mesh("fine.obj")] {
+        let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(&dir).args(&args).output().unwrap();
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let roles = [
+        ("parts/studio.toml", "the included file `"),
+        ("maps/grid.png", "the texture `"),
+        ("maps/sky.png", "the environment image `"),
+        ("meshes/vase.obj", "the mesh `"),
+    ];
+    for (k, (input, role)) in roles.into_iter().enumerate() {
+        // The input itself, however spelt: refused (by its role, or as no image or mesh).
+        for name in [input.to_string(), format!("./{input}"), format!("parts/../{input}")] {
+            fails_and_keeps(&dir, &render(&name), "");
+            fails_and_keeps(&dir, &mesh(&name), "");
+        }
+        let extension = Path::new(input).extension().unwrap().to_str().unwrap();
+        if matches!(extension, "png" | "obj") {
+            let args = if extension == "png" { render(input) } else { mesh(input) };
+            fails_and_keeps(&dir, &args, role);
+        }
+        // Links to it under an image's and a mesh's name: refused by its role.
+        #[cfg(unix)]
+        for kind in ["png", "obj"] {
+            let (sym, hard) = (format!("sym{k}.{kind}"), format!("hard{k}.{kind}"));
+            std::os::unix::fs::symlink(input, dir.join(&sym)).unwrap();
+            std::fs::hard_link(dir.join(input), dir.join(&hard)).unwrap();
+            for name in [&sym, &hard] {
+                let args = if kind == "png" { render(name) } else { mesh(name) };
+                fails_and_keeps(&dir, &args, role);
+            }
+        }
+        // The scale beside a false-colour image, a link to the input.
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(input, dir.join(format!("x{k}.png.scale.json"))).unwrap();
+            let out = format!("x{k}.png");
+            let mut args = render(&out);
+            args.extend(["--aov", "gaussian"]);
+            fails_and_keeps(&dir, &args, role);
+        }
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn frames_are_never_written_over_each_other() {
+    let dir = scratch("frames");
+    std::fs::copy(shipped("motion.toml"), dir.join("scene.toml")).unwrap();
+    fn frames(out: &str) -> Vec<&str> {
+        vec!["render", "scene.toml", "-o", out, "--frames", "3", "--width", "8", "--height", "6"]
+    }
+    // A link from one frame to another, existing or not yet written, and a hard link.
+    std::os::unix::fs::symlink("a_0001.png", dir.join("a_0000.png")).unwrap();
+    fails_and_keeps(&dir, &frames("a.png"), "are the same file");
+    std::fs::write(dir.join("b_0002.png"), b"frame 2 of another run").unwrap();
+    std::os::unix::fs::symlink("b_0002.png", dir.join("b_0000.png")).unwrap();
+    fails_and_keeps(&dir, &frames("b.png"), "are the same file");
+    std::fs::write(dir.join("c_0000.png"), b"frame 0").unwrap();
+    std::fs::hard_link(dir.join("c_0000.png"), dir.join("c_0001.png")).unwrap();
+    fails_and_keeps(&dir, &frames("c.png"), "are the same file");
+    // Also when only part of the animation is rendered here.
+    let mut some = frames("b.png");
+    some.extend(["--frame-range", "0..1"]);
+    fails_and_keeps(&dir, &some, "are the same file");
+    // Links elsewhere are written through.
+    std::fs::create_dir(dir.join("out")).unwrap();
+    std::os::unix::fs::symlink("out/d_0001.png", dir.join("d_0001.png")).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(&dir).args(frames("d.png")).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(dir.join("out/d_0001.png").is_file() && dir.join("d_0002.png").is_file());
+}
+
+/// Runs `args` in `dir` and gives its output, or fails if it takes more than `seconds`.
+#[cfg(unix)]
+fn within(dir: &Path, args: &[&str], seconds: u64) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cga-trace"))
+        .current_dir(dir)
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed().as_secs() > seconds {
+            child.kill().unwrap();
+            panic!("{args:?} still running after {seconds} s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+#[cfg(unix)]
+#[test]
+fn a_pipe_or_device_named_by_a_scene_is_refused_at_once() {
+    let dir = every_role("pipes");
+    assert!(Command::new("mkfifo").arg(dir.join("pipe")).status().unwrap().success());
+    let scene = std::fs::read_to_string(dir.join("scene.toml")).unwrap();
+    for (input, says) in [
+        ("parts/studio.toml", "include `pipe`"),
+        ("maps/grid.png", "`image`"),
+        ("maps/sky.png", "`image`"),
+        ("meshes/vase.obj", "`file`"),
+    ] {
+        for (name, kind) in [("pipe", "a named pipe"), ("/dev/zero", "a device"), ("parts", "a directory")] {
+            let text = scene.replace(input, name);
+            std::fs::write(dir.join("named.toml"), text).unwrap();
+            let out = within(&dir, &["render", "named.toml", "-o", "out.png", "--width", "8", "--height", "6"], 30);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(1), "{input} as {name}: {stderr}");
+            assert!(stderr.contains("named.toml:") && stderr.contains(kind), "{input} as {name}: {stderr}");
+            if name == "pipe" {
+                assert!(stderr.contains(says), "{input} as {name}: {stderr}");
+            }
+        }
+    }
+}

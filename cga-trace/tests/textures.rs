@@ -158,3 +158,42 @@ fn an_environment_map_is_seen_at_its_longitude() {
     let got = pixel(&render(&s), 0, 0);
     assert!(close(got, want, 1e-12), "{got:?} vs {want:?}");
 }
+
+#[test]
+fn one_image_under_many_names_is_read_once() {
+    let maps = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let ball = |k: usize, name: &str| {
+        format!(
+            "[[objects]]\ntype = \"sphere\"\ncentre = [{k}.0, 0.0, 0.0]\nradius = 0.4\n\
+             material = {{ colour = [1.0, 1.0, 1.0], texture = {{ image = \"{name}\" }} }}\n"
+        )
+    };
+    let names = ["maps/grid.png", "./maps/grid.png", "maps/../maps/grid.png", "../scenes/maps/grid.png"];
+    let objects: String = names.iter().enumerate().map(|(k, n)| ball(k, n)).collect();
+    let text = format!(
+        "[camera]\nposition = [1.5, -8.0, 0.0]\nlook_at = [1.5, 0.0, 0.0]\nwidth = 8\nheight = 8\n\
+         [environment]\nimage = \"maps/grid.png\"\n{objects}"
+    );
+    let scene = Scene::parse(&text, maps.join("scene.toml").to_str().unwrap()).unwrap();
+    let roles: Vec<&str> = scene.inputs.iter().map(|i| i.role).collect();
+    assert_eq!(roles, ["scene", "environment image", "texture"], "{:?}", scene.inputs);
+    let pictures: Vec<_> = scene
+        .objects
+        .iter()
+        .map(|o| match &o.texture.as_ref().unwrap().pattern {
+            cga_trace::texture::Pattern::Image(p) => p.clone(),
+            _ => unreachable!("an image"),
+        })
+        .collect();
+    assert!(pictures.iter().all(|p| std::sync::Arc::ptr_eq(p, &pictures[0])), "one decoded picture");
+}
+
+#[test]
+fn an_image_past_the_scenes_pixel_budget_is_refused_before_decoding() {
+    let grid = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/maps/grid.png");
+    let size = Picture::load(&grid).map(|p| u64::from(p.width) * u64::from(p.height)).unwrap();
+    let open = || std::fs::File::open(&grid).unwrap();
+    assert!(Picture::read(open(), &grid, size).is_ok());
+    let e = Picture::read(open(), &grid, size - 1).unwrap_err().to_string();
+    assert!(e.contains("grid.png") && e.contains("limit of 134217728 pixels in all"), "{e}");
+}

@@ -33,6 +33,8 @@ pub(crate) struct Assets {
     pixels: Cell<u64>,
     /// Every file read, with its role, in the order read.
     inputs: RefCell<Vec<Input>>,
+    /// The roles each file has been read in.
+    roles: RefCell<std::collections::BTreeSet<(Identity, &'static str)>>,
 }
 
 /// Files read so far: each file's identity by the name the scene gives it, and the file read.
@@ -65,6 +67,7 @@ impl Assets {
             shape: Default::default(),
             pixels: Cell::new(0),
             inputs: Default::default(),
+            roles: Default::default(),
         }
     }
 
@@ -187,10 +190,13 @@ impl Assets {
                 }
                 let read = Arc::new(load(opened, size, &path).map_err(at)?);
                 cache.read.borrow_mut().insert(identity.clone(), read.clone());
-                self.inputs.borrow_mut().push(Input { role, path });
                 read
             }
         };
+        // One file in two roles (a texture and the environment) is both.
+        if self.roles.borrow_mut().insert((identity.clone(), role)) {
+            self.inputs.borrow_mut().push(Input { role, path });
+        }
         cache.names.borrow_mut().insert(file.get_ref().clone(), identity);
         Ok(read)
     }
