@@ -67,7 +67,9 @@ impl<B: Backend> Renderer<'_, B> {
         let settings = &self.scene.settings;
         let mut total = [0.0; 3];
         let mut stack: SmallVec<[Pending<B::Carrier>; 16]> = SmallVec::new();
-        let first = Pending { ray: *ray, weight: [1.0; 3], depth, inside: None };
+        // A camera ray starts in the medium that holds the camera.
+        let inside = if depth == 0 { self.camera_medium } else { None };
+        let first = Pending { ray: *ray, weight: [1.0; 3], depth, inside };
         self.split(&first, hit, k, &mut stack, cast);
         while let Some(p) = stack.pop() {
             let Some((hit, j)) = self.hit(&p.ray, 0.0, f64::INFINITY) else {
@@ -119,9 +121,15 @@ impl<B: Backend> Renderer<'_, B> {
         let leaving = here.is_some() && p.inside == here;
         let outside = p.inside.filter(|&m| Some(m) != here).map_or(1.0, |m| objects[m].material.ior);
         let (n1, n2) = if leaving { (ior, 1.0) } else { (outside, ior) };
-        let (f, refracted) = fresnel(p.ray.dir, hit.normal, n1, n2);
+        // Light bends at the surface itself: a mesh's blended normal only shades.
+        let normal = match objects[k].shape.facet() {
+            Some(f) if dot(f, p.ray.dir) > 0.0 => scale(f, -1.0),
+            Some(f) => f,
+            None => hit.normal,
+        };
+        let (f, refracted) = fresnel(p.ray.dir, normal, n1, n2);
         let error = self.errors[k];
-        let (origin, r) = mirror(p.ray.dir, p.ray.origin, hit.point, hit.normal, error);
+        let (origin, r) = mirror(p.ray.dir, p.ray.origin, hit.point, normal, error);
         cast.reflection += 1;
         let depth = p.depth + 1;
         push(stack, Pending { ray: B::ray(origin, r), weight: p.weight.map(|w| w * f), depth, inside: p.inside });
@@ -131,7 +139,7 @@ impl<B: Backend> Renderer<'_, B> {
             (Some(_), true) => (t, None),
             (Some(m), false) => (t, Some(m)),
         };
-        let start = leaving_origin(hit.point, hit.normal, dot(hit.normal, t), offset(hit.point, p.ray.origin, error));
+        let start = leaving_origin(hit.point, normal, dot(normal, t), offset(hit.point, p.ray.origin, error));
         cast.reflection += 1;
         push(stack, Pending { ray: B::ray(start, t), weight: p.weight.map(|w| w * (1.0 - f)), depth, inside });
     }
@@ -146,6 +154,44 @@ pub(super) fn media(objects: &[Object]) -> Vec<Option<usize>> {
         None => (!o.shape.flat()).then_some(k),
     };
     objects.iter().enumerate().map(medium).collect()
+}
+
+/// The dielectric solid holding `point`, if any: the medium (as [`media`] names it) whose
+/// surfaces a ray from `point` crosses an odd number of times, decided by the geometry alone
+/// (no normal is read), by two of three rays in directions off every axis (a ray through a
+/// mesh's edge or a tangent can miscount; three cannot all). Dielectrics do not overlap, so
+/// at most one holds it.
+pub(super) fn medium_at(objects: &[Object], medium: &[Option<usize>], errors: &[f64], point: E3) -> Option<usize> {
+    const DIRECTIONS: [E3; 3] = [
+        [0.267_261_2, 0.534_522_5, 0.801_783_7],
+        [-0.801_783_7, 0.267_261_2, 0.534_522_5],
+        [0.534_522_5, -0.801_783_7, -0.267_261_2],
+    ];
+    // Crossings counted per shape at most (a bound on the time a pathological shape takes).
+    const MOST: usize = 64;
+    let mut votes: HashMap<usize, u32> = HashMap::new();
+    for dir in DIRECTIONS {
+        let Some(ray) = Ray::new(point, dir) else { continue };
+        let mut odd: HashMap<usize, bool> = HashMap::new();
+        for (k, object) in objects.iter().enumerate() {
+            let Some(m) = medium[k].filter(|_| object.material.dielectric()) else { continue };
+            let mut t = 0.0;
+            let mut crossings = 0;
+            while let Some(c) = object.shape.intersect(&ray, t, f64::INFINITY) {
+                crossings += 1;
+                // Past this crossing by its error (and the rounding of t), to the next one.
+                t = c.t + errors[k].max(c.t.abs() * 1e-12).max(f64::MIN_POSITIVE);
+                if crossings == MOST {
+                    break;
+                }
+            }
+            *odd.entry(m).or_default() ^= crossings % 2 == 1;
+        }
+        for (m, inside) in odd {
+            *votes.entry(m).or_default() += u32::from(inside);
+        }
+    }
+    votes.into_iter().filter(|&(_, v)| v >= 2).map(|(m, _)| m).min()
 }
 
 /// `total += w c`.

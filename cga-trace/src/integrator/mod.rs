@@ -32,6 +32,7 @@ pub(crate) use sampler::{Dimension, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
+use crate::camera::Lens;
 use crate::film::Film;
 use crate::object::Object;
 use crate::scene::Scene;
@@ -64,6 +65,10 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// or a closed mesh's first triangle); `None` for a thin sheet (flat, and no part of a
     /// closed solid), which light passes undeviated.
     pub(crate) medium: Vec<Option<usize>>,
+    /// The dielectric solid that holds the camera (and so where its rays start), if any:
+    /// its light is absorbed from the camera on ([`glass::medium_at`]). An orthographic
+    /// camera's rays start across its image plane, so none is assumed for it.
+    pub(crate) camera_medium: Option<usize>,
     /// Which objects are dielectrics: shadow rays pass them (as POV-Ray's through clear
     /// glass), caustics not being traced.
     pub(crate) clear: Vec<bool>,
@@ -101,7 +106,12 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let medium = glass::media(&scene.objects);
         let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
         let textured = scene.objects.iter().any(|o| o.texture.is_some());
-        let errors = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
+        let errors: Vec<f64> = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
+        let camera_medium = match scene.camera.lens {
+            Lens::Orthographic { .. } => None,
+            // The camera is the frame's origin.
+            _ => glass::medium_at(&scene.objects, &medium, &errors, [0.0; 3]),
+        };
         Renderer {
             scene,
             shapes,
@@ -111,6 +121,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             bvh,
             flat,
             medium,
+            camera_medium,
             clear,
             textured,
             errors,

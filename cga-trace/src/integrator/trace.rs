@@ -98,6 +98,9 @@ impl<B: Backend> Renderer<'_, B> {
         let mut active = [true; W];
         let mut deepest = [settings.background; W];
         let mut layers: [Layers; W] = core::array::from_fn(|_| Layers::new());
+        // Camera rays from inside a dielectric: what they see is absorbed on the way to it.
+        let mut absorbed = [[1.0; 3]; W];
+        let medium = self.camera_medium.filter(|_| depth == 0).map(|m| self.scene.objects[m].material.absorption);
         while active.iter().any(|&a| a) {
             // An inactive lane's range is empty: it finds nothing. (`map`, not `from_fn`,
             // here and for `errors`: LLVM leaves `from_fn` over them out of line, 7 % more
@@ -112,6 +115,12 @@ impl<B: Backend> Renderer<'_, B> {
                 });
             }
             let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
+            if let (Some(a), 0) = (medium, depth) {
+                for (l, hit) in hits.iter().enumerate() {
+                    let d = hit.map_or(0.0, |(h, _)| self.scene.frame.world_length(h.t));
+                    absorbed[l] = a.map(|a| (-a * d).exp());
+                }
+            }
             let local = self.shade(&rays, &hits, keys, cast);
             let mut bounce = [false; W];
             for l in 0..W {
@@ -143,7 +152,11 @@ impl<B: Backend> Renderer<'_, B> {
             }
             depth += 1;
         }
-        core::array::from_fn(|l| sum_layers(&layers[l], deepest[l]))
+        let seen: [[f64; 3]; W] = core::array::from_fn(|l| sum_layers(&layers[l], deepest[l]));
+        match medium {
+            None => seen,
+            Some(_) => core::array::from_fn(|l| [0, 1, 2].map(|c| seen[l][c] * absorbed[l][c])),
+        }
     }
 }
 

@@ -73,6 +73,15 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// The unit normal at a crossing of `ray`, facing the ray.
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3;
 
+    /// The unit normal of the plane the shape lies in, for a flat shape whose shading
+    /// normal may differ from it (a mesh's triangle, whose corner normals are blended):
+    /// light crossing a dielectric's surface bends at the surface itself, so refraction and
+    /// which side of a solid a ray is on read this, never the shading normal. `None` where
+    /// [`Shape::normal`] is the surface's own.
+    fn facet(&self) -> Option<E3> {
+        None
+    }
+
     /// A sphere `(centre, radius)` holding the shape, `None` when unbounded (a plane).
     fn bounds(&self) -> Option<(E3, f64)>;
 

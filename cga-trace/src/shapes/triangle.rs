@@ -94,6 +94,10 @@ impl Shape for TriangleShape {
         }
     }
 
+    fn facet(&self) -> Option<E3> {
+        self.shading.as_ref().and_then(|s| s.normals).map(|_| self.normal)
+    }
+
     fn bounds(&self) -> Option<(E3, f64)> {
         let c = scale([0, 1, 2].map(|k| self.corners.iter().map(|x| x[k]).sum()), 1.0 / 3.0);
         Some((c, self.corners.iter().map(|&x| norm(sub(x, c))).fold(0.0, f64::max)))
