@@ -256,6 +256,7 @@ impl Source {
         let mut instances: HashMap<usize, Placed> = HashMap::new();
         let mut sizes = Vec::with_capacity(count);
         let mut templates = Vec::new();
+        let mut shapes = 0;
         for k in 0..count {
             let value = value_of(k)?;
             let placed = if is_instance(&value) {
@@ -278,9 +279,16 @@ impl Source {
                 templates.extend(name_of(&value));
                 continue;
             }
+            let span = value.span();
             let base = if placed.base == k { value } else { value_of(placed.base)? };
             let extent = ObjectSpec::extent_of(&base, time, placed.outer, assets);
-            sizes.extend(extent.map_err(|e| syntax_error(joined, &e, &map_of(placed.base)))?);
+            let (extent, triangles) = extent.map_err(|e| syntax_error(joined, &e, &map_of(placed.base)))?;
+            sizes.extend(extent);
+            // Meshes' triangles (each instance's too) counted before any is built.
+            shapes += triangles;
+            if let Some(e) = limit("shapes", shapes, MAX_OBJECTS) {
+                return Err(invalid(&map_of(k), span, format!("object {}", k + 1), e));
+            }
         }
         let pixel = camera.x_max / camera.focal / f64::from(camera.width);
         let marks = Marks::for_scene(&sizes, position, pixel);
@@ -364,6 +372,10 @@ impl Source {
                 _ => j,
             };
             spec.time = time;
+            if let Some(e) = spec.mesh_triangles(assets).and_then(|n| limit("shapes", built.len() + n, MAX_OBJECTS)) {
+                let what = format!("object `{}`", spec.name_or(k).escape_debug());
+                return Err(invalid(&map_of(k), span.clone(), what, e));
+            }
             let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, assets);
             let what = format!("object `{name}`");
             // Errors at a field where that field is written; others at the object.

@@ -321,7 +321,7 @@ fn scenes_at_any_scale_with_far_lights_and_huge_counts_error_or_render_cleanly()
 #[cfg(unix)]
 #[test]
 fn outputs_never_lose_a_file_whatever_they_alias() {
-    use std::os::unix::fs::symlink;
+    use std::os::unix::fs::{MetadataExt, symlink};
     let runs: usize = std::env::var("CGA_FUZZ_CASES").ok().and_then(|n| n.parse().ok()).map_or(60, |n: usize| n / 50);
     let seed: u64 = std::env::var("CGA_FUZZ_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(12);
     let mut rng = XorShiftRng::seed_from_u64(seed ^ 0xa11a5);
@@ -330,6 +330,13 @@ fn outputs_never_lose_a_file_whatever_they_alias() {
             .unwrap()
             .replace("width = 320", "width = 8")
             .replace("height = 240", "height = 6");
+    // Inputs of every kind besides the scene: an included file, a texture, a mesh.
+    let scene = format!(
+        "include = [\"part.toml\"]\n{scene}\n[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 9.0]\nradius = 0.5\n\
+         material = {{ colour = [1.0, 1.0, 1.0], texture = {{ image = \"tex.png\" }} }}\n\
+         [[objects]]\ntype = \"mesh\"\nfile = \"part.obj\"\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
+    );
+    let texture = std::fs::read(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/maps/grid.png")).unwrap();
     let (mut failures, mut succeeded) = (Vec::new(), 0);
     for run in 0..runs {
         let dir = std::env::temp_dir().join(format!("cga-trace-fuzz-outputs-{}-{run}", std::process::id()));
@@ -340,13 +347,19 @@ fn outputs_never_lose_a_file_whatever_they_alias() {
         std::fs::write(p("broken.toml"), "[camera\n").unwrap();
         std::fs::write(p("old.png"), b"an earlier render").unwrap();
         std::fs::write(p("sub/v3.png"), b"version 3").unwrap();
+        std::fs::write(p("part.toml"), "[materials.spare]\ncolour = [1.0, 0.0, 0.0]\n").unwrap();
+        std::fs::write(p("part.obj"), "v 0 0 9\nv 1 0 9\nv 0 1 9\nf 1 2 3\n").unwrap();
+        std::fs::write(p("tex.png"), &texture).unwrap();
         let names = ["a.png", "b.exr", "c.hdr", "d.png.scale.json", "e.png", "f.obj"];
-        let targets =
-            ["scene.toml", "broken.toml", "old.png", "sub/v3.png", "missing.png", "/dev/null", "/dev/full", "sub"];
+        let inputs = ["scene.toml", "part.toml", "part.obj", "tex.png"];
+        let targets = [
+            "scene.toml", "broken.toml", "old.png", "sub/v3.png", "missing.png", "/dev/null", "/dev/full", "sub",
+            "part.toml", "part.obj", "tex.png",
+        ];
         for name in names {
             match rng.random_range(0..4) {
                 0 => symlink(targets[rng.random_range(0..targets.len())], p(name)).unwrap(),
-                1 => std::fs::hard_link(p(["scene.toml", "old.png"][rng.random_range(0..2)]), p(name)).unwrap(),
+                1 => std::fs::hard_link(p([inputs[rng.random_range(0..4)], "old.png"][rng.random_range(0..2)]), p(name)).unwrap(),
                 2 => std::fs::write(p(name), b"bystander").unwrap(),
                 _ => {}
             }
@@ -354,7 +367,7 @@ fn outputs_never_lose_a_file_whatever_they_alias() {
         let before = common::snapshot(&dir);
         let input = ["scene.toml", "scene.toml", "scene.toml", "broken.toml", "old.png", "a.png", "missing.toml"]
             [rng.random_range(0..7)];
-        let output = [names[rng.random_range(0..names.len())], "old.png", "scene.toml", "sub", "sub/v3.png"]
+        let output = [names[rng.random_range(0..names.len())], "old.png", "sub", "sub/v3.png", inputs[rng.random_range(0..4)]]
             [rng.random_range(0..5)];
         let mut args = vec!["render", input, "-o", output];
         let extra: &[&[&str]] =
@@ -374,6 +387,10 @@ fn outputs_never_lose_a_file_whatever_they_alias() {
         }
         // What changed: only the file the output names, and only on success.
         let written = std::fs::canonicalize(p(output)).ok();
+        let inode = |path: &std::path::Path| std::fs::metadata(path).ok().map(|m| (m.dev(), m.ino()));
+        if out.status.success() && inputs.iter().any(|i| inode(&p(i)).is_some_and(|n| Some(n) == inode(&p(output)))) {
+            failures.push(format!("{what}: an input was written over"));
+        }
         for (name, state) in &before {
             let now = after.iter().find(|(n, _)| n == name).map(|(_, s)| s);
             let is_target = written.as_ref().is_some_and(|w| std::fs::canonicalize(p(name)).ok().as_ref() == Some(w));
@@ -403,4 +420,195 @@ fn peak_resident_kib() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
     line.split_whitespace().nth(1)?.parse().ok()
+}
+
+/// A PNG's signature and header chunk alone, claiming `width × height` pixels.
+fn png_header(width: u32, height: u32) -> Vec<u8> {
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut crc = !0u32;
+        for &b in bytes {
+            crc ^= u32::from(b);
+            for _ in 0..8 {
+                crc = if crc & 1 == 1 { (crc >> 1) ^ 0xedb8_8320 } else { crc >> 1 };
+            }
+        }
+        !crc
+    }
+    let mut chunk = b"IHDR".to_vec();
+    chunk.extend(width.to_be_bytes());
+    chunk.extend(height.to_be_bytes());
+    chunk.extend([8, 2, 0, 0, 0]);
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    // The header, a few bytes of data and the end: a small file whose header is the bomb.
+    for (kind, data) in [(&b"IHDR"[..], &chunk[4..]), (b"IDAT", &[0x78, 0x9c, 0x03, 0x00][..]), (b"IEND", &[][..])] {
+        let mut typed = kind.to_vec();
+        typed.extend(data);
+        png.extend((data.len() as u32).to_be_bytes());
+        png.extend(&typed);
+        png.extend(crc32(&typed).to_be_bytes());
+    }
+    png
+}
+
+/// `f` on another thread, or `Err` if it has not answered within `seconds` (a blocked open
+/// would hang the test otherwise).
+fn within<T: Send + 'static>(seconds: u64, f: impl FnOnce() -> T + Send + 'static) -> Result<T, String> {
+    let (send, receive) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = send.send(catch_unwind(AssertUnwindSafe(f)));
+    });
+    match receive.recv_timeout(Duration::from_secs(seconds)) {
+        Ok(Ok(t)) => Ok(t),
+        Ok(Err(_)) => Err("panicked".into()),
+        Err(_) => Err(format!("no answer within {seconds} s")),
+    }
+}
+
+/// The families of the second hostile sweep, as a hostile user writes them against the
+/// files a scene reads and the features that read them: a pipe, a device or a directory
+/// named as an include, image or mesh; image headers and mesh headers that promise more than
+/// any limit; shutters of many instants; many instances of a large mesh; the camera inside a
+/// glass ball or box; a disk lying on a floor, the objects in either order. Each is refused
+/// by name at once or rendered without a NaN, and the last two are checked for what they
+/// show.
+#[cfg(unix)]
+#[test]
+fn hostile_files_and_features_are_refused_by_name_or_rendered_right() {
+    let cases: usize = std::env::var("CGA_FUZZ_CASES").ok().and_then(|n| n.parse().ok()).map_or(60, |n: usize| n / 50);
+    let seed: u64 = std::env::var("CGA_FUZZ_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(12);
+    let mut rng = XorShiftRng::seed_from_u64(seed ^ 0xf1f0);
+    let dir = std::env::temp_dir().join(format!("cga-trace-fuzz-hostile-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    assert!(Command::new("mkfifo").arg(dir.join("pipe")).status().unwrap().success());
+    // A grid of 100 × 100 squares: 10,201 vertices, 20,000 triangles.
+    let mut grid = String::new();
+    for j in 0..=100 {
+        for i in 0..=100 {
+            grid += &format!("v {} {} 0\n", f64::from(i) / 100.0, f64::from(j) / 100.0);
+        }
+    }
+    for j in 0..100 {
+        for i in 0..100 {
+            let k = j * 101 + i + 1;
+            grid += &format!("f {k} {} {} {}\n", k + 1, k + 102, k + 101);
+        }
+    }
+    std::fs::write(dir.join("grid.obj"), grid).unwrap();
+    let camera = "[camera]\nposition = [0.0, -6.0, 2.0]\nlook_at = [0.0, 0.0, 0.0]\nwidth = 8\nheight = 6\n";
+    let white = "material = { colour = [1.0, 1.0, 1.0] }";
+    let scene_path = dir.join("scene.toml");
+    let (mut failures, mut refused, mut rendered) = (Vec::new(), 0, 0);
+    let hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(|_| {}));
+    for case in 0..cases {
+        let family = case % 7;
+        let named = ["pipe", "/dev/zero", "/dev/null", "."][rng.random_range(0..4)];
+        let (text, says): (String, &[&str]) = match family {
+            0 => (format!("include = [\"{named}\"]\n{camera}"), &["scene.toml:1:", "include"]),
+            1 => (
+                format!("{camera}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 1.0, 1.0], texture = {{ image = \"{named}\" }} }}\n"),
+                &["`image`", "not a regular file"],
+            ),
+            2 => {
+                // Each past MAX_IMAGE_PIXELS (2²⁶): refused from the header, never allocated.
+                let (w, h) = [(65_536, 65_536), (9_000, 9_000), (1 << 20, 65), (70_000, 1_000)][rng.random_range(0..4)];
+                std::fs::write(dir.join("bomb.png"), png_header(w, h)).unwrap();
+                (format!("{camera}[environment]\nimage = \"bomb.png\"\n"), &["bomb.png", "pixels"])
+            }
+            3 => {
+                let (v, f) = [(1u64 << 40, 1u64), (3, 1 << 30), (1 << 22, 1 << 20)][rng.random_range(0..3)];
+                let ply = format!(
+                    "ply\nformat binary_little_endian 1.0\nelement vertex {v}\nproperty float x\nproperty float y\nproperty float z\nelement face {f}\nproperty list uchar int vertex_indices\nend_header\n"
+                );
+                std::fs::write(dir.join("bomb.ply"), ply).unwrap();
+                (format!("{camera}[[objects]]\ntype = \"mesh\"\nfile = \"bomb.ply\"\n{white}\n"), &["bomb.ply"])
+            }
+            4 => {
+                let n = rng.random_range(1..3000);
+                let instance = "[[objects]]\ntype = \"instance\"\nof = \"grid\"\ntransform = [{ translate = [0.0, 0.0, 0.1] }]\n";
+                let text = format!(
+                    "{camera}[[objects]]\nname = \"grid\"\ntemplate = true\ntype = \"mesh\"\nfile = \"grid.obj\"\n{white}\n{}",
+                    instance.repeat(n)
+                );
+                (text, if n * 20_000 > (1 << 20) { &["shapes exceed the limit"] } else { &[] })
+            }
+            5 => {
+                let (r, a) = (10f64.powf(rng.random_range(-3.0..1.0)), rng.random_range(0.0..5.0));
+                let glass = format!("material = {{ colour = [1.0, 1.0, 1.0], ior = 1.5, absorption = [{a:?}, {a:?}, {a:?}] }}");
+                let body = if rng.random_range(0..2) == 0 {
+                    format!("type = \"sphere\"\ncentre = [0.0, -6.0, 2.0]\nradius = {r:?}")
+                } else {
+                    format!("type = \"box\"\nmin = [{}, {}, {}]\nmax = [{}, {}, {}]", -r, -6.0 - r, 2.0 - r, r, -6.0 + r, 2.0 + r)
+                };
+                let shutter = format!("shutter = [0.0, 1.0]\ntime_samples = {}\nmotion = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]]\n", rng.random_range(1..4097));
+                (format!("{camera}{shutter}[render]\nspp = 2\n[[objects]]\n{body}\n{glass}\n"), &[])
+            }
+            _ => {
+                // Within about 30° of facing the camera, so that the disk covers the middle.
+                let n = [rng.random_range(-0.5..0.5), -3.0 + rng.random_range(-0.5..0.5), 1.0 + rng.random_range(-0.5..0.5)];
+                let n = cga_core::euclid::unit(n).unwrap();
+                let plane = format!("[[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = {n:?}\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n");
+                let disk = format!("[[objects]]\ntype = \"disk\"\ncentre = [0.0, 0.0, 0.0]\nnormal = {n:?}\nradius = 2.0\nmaterial = {{ colour = [0.0, 0.0, 1.0] }}\n");
+                let order = if rng.random_range(0..2) == 0 { format!("{plane}{disk}") } else { format!("{disk}{plane}") };
+                (format!("{camera}[[lights]]\nposition = [0.0, -6.0, 4.0]\n{order}"), &[])
+            }
+        };
+        std::fs::write(&scene_path, &text).unwrap();
+        let path = scene_path.clone();
+        let started = Instant::now();
+        let outcome = within(60, move || {
+            let scene = Scene::load(&path).map_err(|e| e.to_string())?;
+            let film = match scene.shutter {
+                None => Renderer::new(&scene).render(Aov::Shaded, &|| {}),
+                Some(shutter) => {
+                    let mut source = cga_trace::scene::Source::load(&path).unwrap();
+                    shutter
+                        .expose(0.0, scene.settings.spp, |t, (first, step)| {
+                            let at = source.scene(None, t)?;
+                            Ok::<_, cga_trace::SceneError>(Renderer::new(&at).sample_subset(first, step).render(Aov::Shaded, &|| {}))
+                        })
+                        .map_err(|e| e.to_string())?
+                }
+            };
+            Ok::<_, String>(film)
+        });
+        let what = format!("case {case} (family {family}, {named})");
+        if std::env::var("CGA_FUZZ_TIMES").is_ok() {
+            println!("{what}: {:?}", started.elapsed());
+        }
+        match outcome {
+            Err(why) => failures.push(format!("{what}: {why}")),
+            Ok(Err(e)) => {
+                refused += 1;
+                let located = e.starts_with(&scene_path.display().to_string()) && !e.chars().any(char::is_control);
+                if !located || !says.iter().all(|s| e.contains(s)) || says.is_empty() {
+                    failures.push(format!("{what}: `{e}` does not say {says:?}"));
+                }
+            }
+            Ok(Ok(film)) => {
+                rendered += 1;
+                if film.pixels.iter().flatten().any(|x| x.is_nan()) {
+                    failures.push(format!("{what}: NaN in the picture"));
+                }
+                if !says.is_empty() {
+                    failures.push(format!("{what}: rendered, but should say {says:?}"));
+                }
+                // The disk on the floor shows, whichever comes first: the middle is blue.
+                let middle = film.pixels[3 * 8 + 4];
+                if family == 6 && !(middle[2] > 2.0 * middle[0]) {
+                    failures.push(format!("{what}: the disk on the floor is hidden: {middle:?}"));
+                }
+                // Seen from inside the glass the sky is not black.
+                if family == 5 && film.pixels.iter().all(|p| p.iter().sum::<f64>() == 0.0) {
+                    failures.push(format!("{what}: black from inside the glass"));
+                }
+            }
+        }
+    }
+    std::panic::set_hook(hook);
+    let _ = std::fs::remove_dir_all(&dir);
+    println!("{cases} hostile cases: {refused} refused by name, {rendered} rendered, {} failures", failures.len());
+    assert!(failures.is_empty(), "{}", failures.join("\n----\n"));
+    assert!(refused > 0 && rendered > 0, "both outcomes are exercised");
 }

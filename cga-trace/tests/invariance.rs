@@ -76,6 +76,7 @@ fn check<B: Backend>(width: u32, height: u32) {
             "motion.toml",
             "textures.toml",
             "assembly.toml",
+            "contact.toml",
         ],
         width,
         height,

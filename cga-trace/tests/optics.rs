@@ -291,3 +291,33 @@ fn a_camera_inside_a_closed_glass_mesh_sees_what_it_sees_inside_the_box() {
     let mean = |f: &Film| f.pixels.iter().map(|p| p[0] + p[1] + p[2]).sum::<f64>() / f.pixels.len() as f64;
     assert!(mean(&b) > 0.5 * mean(&sky), "{} against the open sky's {}", mean(&b), mean(&sky));
 }
+
+/// The shipped scene `name` with its objects written in the reverse order.
+fn reversed(text: &str) -> String {
+    let mut parts = text.split("[[objects]]");
+    let head = parts.next().unwrap().to_string();
+    let objects: Vec<&str> = parts.collect();
+    head + &objects.iter().rev().map(|o| format!("[[objects]]{o}\n")).collect::<String>()
+}
+
+#[test]
+fn touching_surfaces_are_decided_by_the_surfaces_not_their_order() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/contact.toml")).unwrap();
+    let small = |t: &str| t.replace("width = 320\nheight = 240", "width = 160\nheight = 120");
+    let (scene, back) = (parse(&small(&text)), parse(&small(&reversed(&text))));
+    let (a, b) = (render(&scene), render(&back));
+    assert!(a.pixels == b.pixels, "the same picture in either order");
+    // Every back end agrees on which surface shows.
+    let window = Window::full(160, 120);
+    let plain = Renderer::<cga_trace::backend::Plain>::with_backend(&back).render_window(Aov::Shaded, window, &|| {});
+    let off = plain.pixels.iter().zip(&a.pixels).filter(|(p, q)| (0..3).any(|k| (p[k] - q[k]).abs() > 1.0 / 64.0)).count();
+    assert!(off <= 2, "{off} pixels differ on plain vectors");
+    // The disk on the floor shows, in its own colour, at its centre.
+    let (u, v, _) = cga_trace::figure::project(&scene.camera, scene.frame.point([2.2, 0.5, 0.0])).unwrap();
+    let p = a.pixels[v as usize * 160 + u as usize];
+    assert!(p[2] > 2.0 * p[0] && p[2] > 2.0 * p[1], "the decal's pixel {p:?}");
+    // Nothing under the glass box is left black (a ray leaving the box's bottom face below
+    // the floor would see the empty background there).
+    let dark = a.pixels.iter().filter(|p| p.iter().sum::<f64>() < 0.02).count();
+    assert_eq!(dark, 0, "black pixels");
+}

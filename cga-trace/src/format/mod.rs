@@ -843,13 +843,14 @@ impl ObjectSpec {
     }
 
     /// [`ObjectSpec::extent`] of an object as parsed, read from its placement fields alone
+    /// (what else it holds is checked when it is built), and the triangles its mesh file adds
     /// (what else it holds is checked when it is built).
     pub(crate) fn extent_of(
         value: &Spanned<toml::de::DeValue<'_>>,
         time: f64,
         outer: Option<Motor>,
         assets: &Assets,
-    ) -> Result<Option<(E3, f64)>, toml::de::Error> {
+    ) -> Result<(Option<(E3, f64)>, usize), toml::de::Error> {
         use serde::de::IntoDeserializer;
         const READ: [&str; 28] = [
             "type",
@@ -881,7 +882,7 @@ impl ObjectSpec {
             "motor",
             "transform",
         ];
-        let toml::de::DeValue::Table(table) = value.get_ref() else { return Ok(None) };
+        let toml::de::DeValue::Table(table) = value.get_ref() else { return Ok((None, 0)) };
         let mut placement = toml::de::DeTable::new();
         for (key, v) in table.iter().filter(|(k, _)| READ.contains(&k.get_ref().as_ref())) {
             placement.insert(key.clone(), v.clone());
@@ -889,7 +890,7 @@ impl ObjectSpec {
         let table = Spanned::new(value.span(), toml::de::DeValue::Table(placement));
         let mut spec = ObjectSpec::deserialize(table.into_deserializer())?;
         (spec.time, spec.outer) = (time, outer);
-        Ok(spec.extent(assets))
+        Ok((spec.extent(assets), spec.mesh_triangles(assets).unwrap_or(0)))
     }
 
     /// The geometry fields given, with their spans.
@@ -1102,6 +1103,20 @@ impl ObjectSpec {
     }
 
     /// Whether the object is a mesh whose triangles close a solid.
+    /// The object's name, or `object N` (1-based `index`) where it has none.
+    pub(crate) fn name_or(&self, index: usize) -> String {
+        self.name.clone().unwrap_or_else(|| format!("object {}", index + 1))
+    }
+
+    /// The triangles a mesh object will add to the scene, known from its file before any is
+    /// placed (so that instances past the limit of shapes are refused before they are built).
+    pub(crate) fn mesh_triangles(&self, assets: &Assets) -> Option<usize> {
+        match (self.kind, &self.file) {
+            (Kind::Mesh, Some(file)) => assets.mesh(file).ok().map(|m| m.triangles.len()),
+            _ => None,
+        }
+    }
+
     fn is_closed_mesh(&self, assets: &Assets) -> Result<bool, Invalid> {
         match (self.kind, &self.file) {
             (Kind::Mesh, Some(file)) => assets.mesh_is_closed(file),
@@ -1264,7 +1279,7 @@ pub(crate) fn build_object(
     marks: &Marks,
     assets: &Assets,
 ) -> (Result<Built, Invalid>, String) {
-    let name = spec.name.clone().unwrap_or_else(|| format!("object {}", index + 1));
+    let name = spec.name_or(index);
     let shown = name.escape_debug().to_string();
     let built = assets.resolve(&spec.material).and_then(|(material, texture)| {
         let (shapes, anchor) = spec.shapes(method, frame, marks, assets)?;

@@ -77,6 +77,14 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
     /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
     pub(crate) errors: Vec<f64>,
+    /// The largest of `errors`.
+    pub(crate) largest_error: f64,
+    /// Which of two surfaces met in one place (within their crossing errors) shows: lower
+    /// wins. An opaque surface before a dielectric (a ray inside a glass box resting on a
+    /// floor meets the floor, not the box's face with nothing under it), then the smaller
+    /// bounding sphere (a disk lying on a floor shows, as a decal does); last, the object
+    /// declared first.
+    pub(crate) tie: Vec<(bool, f64, usize)>,
     /// The samples of each pixel taken, `(first, step)`: `first, first + step, …` below the
     /// scene's `spp` ([`Renderer::sample_subset`]).
     pub(crate) subset: (u32, u32),
@@ -107,6 +115,14 @@ impl<'a, B: Backend> Renderer<'a, B> {
         let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
         let textured = scene.objects.iter().any(|o| o.texture.is_some());
         let errors: Vec<f64> = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
+        let largest_error = errors.iter().copied().fold(0.0, f64::max);
+        let tie = scene
+            .objects
+            .iter()
+            .zip(&all)
+            .enumerate()
+            .map(|(k, (o, b))| (o.material.dielectric(), b.map_or(f64::INFINITY, |(_, r)| r), k))
+            .collect();
         let camera_medium = match scene.camera.lens {
             Lens::Orthographic { .. } => None,
             // The camera is the frame's origin.
@@ -125,6 +141,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
             clear,
             textured,
             errors,
+            largest_error,
+            tie,
             subset: (0, 1),
             counted: Default::default(),
         }

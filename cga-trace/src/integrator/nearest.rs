@@ -46,10 +46,13 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 let ray = rays.ray(l);
                 bvh.traverse(ray.origin, ray.dir, t_min, t_max[l], |k, t_max| {
                     let c = B::intersect(&self.shapes[k], ray, self.t_min(k, t_min), t_max);
-                    Some(c.map_or(t_max, |c| {
-                        *best = Some((c, k));
-                        c.t
-                    }))
+                    Some(match c {
+                        Some(c) if self.wins(c.t, k, best) => {
+                            *best = Some((c, k));
+                            self.reach(c.t, k)
+                        }
+                        _ => t_max,
+                    })
                 });
             }
             return best;
@@ -59,13 +62,36 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 continue;
             }
             for (l, c) in rays.cross(&self.shapes[k], &[self.t_min(k, t_min); W], &t_max).into_iter().enumerate() {
-                if let Some(c) = c {
-                    t_max[l] = c.t;
+                if let Some(c) = c.filter(|c| self.wins(c.t, k, &best[l])) {
+                    t_max[l] = self.reach(c.t, k);
                     best[l] = Some((c, k));
                 }
             }
         }
         best
+    }
+
+    /// Whether a crossing of object `k` at `t` takes the place of `best`: it is nearer by
+    /// more than the two crossings' errors, or within them (two surfaces in one place, such
+    /// as a disk on a floor or a glass box resting on one) and [`Renderer::tie`] prefers it.
+    /// So which surface shows at a contact is decided by the surfaces, never by the order
+    /// they are declared in.
+    #[inline(always)]
+    fn wins(&self, t: f64, k: usize, best: &Option<(Crossing, usize)>) -> bool {
+        match best {
+            None => true,
+            Some((b, j)) => {
+                let tolerance = self.errors[k] + self.errors[*j];
+                t < b.t - tolerance || (t <= b.t + tolerance && self.tie[k] < self.tie[*j])
+            }
+        }
+    }
+
+    /// How far past the best crossing `t` (of object `k`) other objects are still met: far
+    /// enough for any crossing within both errors of it to be weighed by [`Renderer::wins`].
+    #[inline(always)]
+    fn reach(&self, t: f64, k: usize) -> f64 {
+        t + self.errors[k] + self.largest_error
     }
 
     /// Which rays are blocked before their `t_max` by an object other than the lane's
