@@ -120,7 +120,8 @@ mod tests {
         let readme = include_str!("../../README.md");
         let table = readme.split("### Limits").nth(1).and_then(|s| s.split("\n## ").next()).expect("a Limits section");
         let here = include_str!("limits.rs");
-        let names = here.lines().filter_map(|l| l.strip_prefix("pub const ")).map(|l| l.split(':').next().unwrap_or(""));
+        let names =
+            here.lines().filter_map(|l| l.strip_prefix("pub const ")).map(|l| l.split(':').next().unwrap_or(""));
         let beside = ["MAX_KEYS", "MAX_LABEL_CHARS", "MAX_FIGURE_OBJECTS", "MAX_EXPOSURE"];
         let missing: Vec<&str> = names.chain(beside).filter(|n| !table.contains(&format!("`{n}`"))).collect();
         assert!(missing.is_empty(), "limits without a row in README.md's table: {missing:?}");

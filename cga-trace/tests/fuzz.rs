@@ -353,13 +353,25 @@ fn outputs_never_lose_a_file_whatever_they_alias() {
         let names = ["a.png", "b.exr", "c.hdr", "d.png.scale.json", "e.png", "f.obj"];
         let inputs = ["scene.toml", "part.toml", "part.obj", "tex.png"];
         let targets = [
-            "scene.toml", "broken.toml", "old.png", "sub/v3.png", "missing.png", "/dev/null", "/dev/full", "sub",
-            "part.toml", "part.obj", "tex.png",
+            "scene.toml",
+            "broken.toml",
+            "old.png",
+            "sub/v3.png",
+            "missing.png",
+            "/dev/null",
+            "/dev/full",
+            "sub",
+            "part.toml",
+            "part.obj",
+            "tex.png",
         ];
         for name in names {
             match rng.random_range(0..4) {
                 0 => symlink(targets[rng.random_range(0..targets.len())], p(name)).unwrap(),
-                1 => std::fs::hard_link(p([inputs[rng.random_range(0..4)], "old.png"][rng.random_range(0..2)]), p(name)).unwrap(),
+                1 => {
+                    std::fs::hard_link(p([inputs[rng.random_range(0..4)], "old.png"][rng.random_range(0..2)]), p(name))
+                        .unwrap()
+                }
                 2 => std::fs::write(p(name), b"bystander").unwrap(),
                 _ => {}
             }
@@ -367,8 +379,9 @@ fn outputs_never_lose_a_file_whatever_they_alias() {
         let before = common::snapshot(&dir);
         let input = ["scene.toml", "scene.toml", "scene.toml", "broken.toml", "old.png", "a.png", "missing.toml"]
             [rng.random_range(0..7)];
-        let output = [names[rng.random_range(0..names.len())], "old.png", "sub", "sub/v3.png", inputs[rng.random_range(0..4)]]
-            [rng.random_range(0..5)];
+        let output =
+            [names[rng.random_range(0..names.len())], "old.png", "sub", "sub/v3.png", inputs[rng.random_range(0..4)]]
+                [rng.random_range(0..5)];
         let mut args = vec!["render", input, "-o", output];
         let extra: &[&[&str]] =
             &[&[], &["--aov", "gaussian"], &["--spp", "0"], &["--threads", "3"], &["--bit-depth", "16"]];
@@ -507,7 +520,9 @@ fn hostile_files_and_features_are_refused_by_name_or_rendered_right() {
         let (text, says): (String, &[&str]) = match family {
             0 => (format!("include = [\"{named}\"]\n{camera}"), &["scene.toml:1:", "include"]),
             1 => (
-                format!("{camera}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 1.0, 1.0], texture = {{ image = \"{named}\" }} }}\n"),
+                format!(
+                    "{camera}[[objects]]\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nmaterial = {{ colour = [1.0, 1.0, 1.0], texture = {{ image = \"{named}\" }} }}\n"
+                ),
                 &["`image`", "not a regular file"],
             ),
             2 => {
@@ -526,7 +541,8 @@ fn hostile_files_and_features_are_refused_by_name_or_rendered_right() {
             }
             4 => {
                 let n = rng.random_range(1..3000);
-                let instance = "[[objects]]\ntype = \"instance\"\nof = \"grid\"\ntransform = [{ translate = [0.0, 0.0, 0.1] }]\n";
+                let instance =
+                    "[[objects]]\ntype = \"instance\"\nof = \"grid\"\ntransform = [{ translate = [0.0, 0.0, 0.1] }]\n";
                 let text = format!(
                     "{camera}[[objects]]\nname = \"grid\"\ntemplate = true\ntype = \"mesh\"\nfile = \"grid.obj\"\n{white}\n{}",
                     instance.repeat(n)
@@ -535,22 +551,43 @@ fn hostile_files_and_features_are_refused_by_name_or_rendered_right() {
             }
             5 => {
                 let (r, a) = (10f64.powf(rng.random_range(-3.0..1.0)), rng.random_range(0.0..5.0));
-                let glass = format!("material = {{ colour = [1.0, 1.0, 1.0], ior = 1.5, absorption = [{a:?}, {a:?}, {a:?}] }}");
+                let glass =
+                    format!("material = {{ colour = [1.0, 1.0, 1.0], ior = 1.5, absorption = [{a:?}, {a:?}, {a:?}] }}");
                 let body = if rng.random_range(0..2) == 0 {
                     format!("type = \"sphere\"\ncentre = [0.0, -6.0, 2.0]\nradius = {r:?}")
                 } else {
-                    format!("type = \"box\"\nmin = [{}, {}, {}]\nmax = [{}, {}, {}]", -r, -6.0 - r, 2.0 - r, r, -6.0 + r, 2.0 + r)
+                    format!(
+                        "type = \"box\"\nmin = [{}, {}, {}]\nmax = [{}, {}, {}]",
+                        -r,
+                        -6.0 - r,
+                        2.0 - r,
+                        r,
+                        -6.0 + r,
+                        2.0 + r
+                    )
                 };
-                let shutter = format!("shutter = [0.0, 1.0]\ntime_samples = {}\nmotion = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]]\n", rng.random_range(1..4097));
+                let shutter = format!(
+                    "shutter = [0.0, 1.0]\ntime_samples = {}\nmotion = [[1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]]\n",
+                    rng.random_range(1..4097)
+                );
                 (format!("{camera}{shutter}[render]\nspp = 2\n[[objects]]\n{body}\n{glass}\n"), &[])
             }
             _ => {
                 // Within about 30° of facing the camera, so that the disk covers the middle.
-                let n = [rng.random_range(-0.5..0.5), -3.0 + rng.random_range(-0.5..0.5), 1.0 + rng.random_range(-0.5..0.5)];
+                let n = [
+                    rng.random_range(-0.5..0.5),
+                    -3.0 + rng.random_range(-0.5..0.5),
+                    1.0 + rng.random_range(-0.5..0.5),
+                ];
                 let n = cga_core::euclid::unit(n).unwrap();
-                let plane = format!("[[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = {n:?}\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n");
-                let disk = format!("[[objects]]\ntype = \"disk\"\ncentre = [0.0, 0.0, 0.0]\nnormal = {n:?}\nradius = 2.0\nmaterial = {{ colour = [0.0, 0.0, 1.0] }}\n");
-                let order = if rng.random_range(0..2) == 0 { format!("{plane}{disk}") } else { format!("{disk}{plane}") };
+                let plane = format!(
+                    "[[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = {n:?}\nmaterial = {{ colour = [1.0, 1.0, 1.0] }}\n"
+                );
+                let disk = format!(
+                    "[[objects]]\ntype = \"disk\"\ncentre = [0.0, 0.0, 0.0]\nnormal = {n:?}\nradius = 2.0\nmaterial = {{ colour = [0.0, 0.0, 1.0] }}\n"
+                );
+                let order =
+                    if rng.random_range(0..2) == 0 { format!("{plane}{disk}") } else { format!("{disk}{plane}") };
                 (format!("{camera}[[lights]]\nposition = [0.0, -6.0, 4.0]\n{order}"), &[])
             }
         };
@@ -566,7 +603,9 @@ fn hostile_files_and_features_are_refused_by_name_or_rendered_right() {
                     shutter
                         .expose(0.0, scene.settings.spp, |t, (first, step)| {
                             let at = source.scene(None, t)?;
-                            Ok::<_, cga_trace::SceneError>(Renderer::new(&at).sample_subset(first, step).render(Aov::Shaded, &|| {}))
+                            Ok::<_, cga_trace::SceneError>(
+                                Renderer::new(&at).sample_subset(first, step).render(Aov::Shaded, &|| {}),
+                            )
                         })
                         .map_err(|e| e.to_string())?
                 }

@@ -310,7 +310,8 @@ fn touching_surfaces_are_decided_by_the_surfaces_not_their_order() {
     // Every back end agrees on which surface shows.
     let window = Window::full(160, 120);
     let plain = Renderer::<cga_trace::backend::Plain>::with_backend(&back).render_window(Aov::Shaded, window, &|| {});
-    let off = plain.pixels.iter().zip(&a.pixels).filter(|(p, q)| (0..3).any(|k| (p[k] - q[k]).abs() > 1.0 / 64.0)).count();
+    let off =
+        plain.pixels.iter().zip(&a.pixels).filter(|(p, q)| (0..3).any(|k| (p[k] - q[k]).abs() > 1.0 / 64.0)).count();
     assert!(off <= 2, "{off} pixels differ on plain vectors");
     // The disk on the floor shows, in its own colour, at its centre.
     let (u, v, _) = cga_trace::figure::project(&scene.camera, scene.frame.point([2.2, 0.5, 0.0])).unwrap();
@@ -320,4 +321,42 @@ fn touching_surfaces_are_decided_by_the_surfaces_not_their_order() {
     // the floor would see the empty background there).
     let dark = a.pixels.iter().filter(|p| p.iter().sum::<f64>() < 0.02).count();
     assert_eq!(dark, 0, "black pixels");
+}
+
+#[test]
+fn a_light_standing_on_a_surface_is_lit_the_same_on_every_back_end() {
+    // A point light on the floor: shadow rays to it end on the floor's plane. Rounding must
+    // not decide whether the floor blocks them (speckle on the box's lit face).
+    let text = "[camera]\nposition = [0.0, -8.0, 4.0]\nlook_at = [0.0, 0.0, 0.0]\nfov = 60.0\nwidth = 96\nheight = 72\n\
+        [[lights]]\nposition = [0.0, 0.0, 0.0]\n\
+        [[objects]]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nmaterial = { colour = [0.8, 0.8, 0.8] }\n\
+        [[objects]]\ntype = \"box\"\nmin = [-1.0, 1.0, 0.0]\nmax = [0.0, 2.0, 1.0]\nmaterial = { colour = [0.8, 0.2, 0.2] }\n\
+        [[objects]]\ntype = \"sphere\"\ncentre = [1.5, 0.5, 0.0]\nradius = 0.5\nmaterial = { colour = [0.2, 0.8, 0.2] }\n";
+    let scene = parse(text);
+    let window = Window::full(96, 72);
+    let own = render(&scene);
+    let plain =
+        Renderer::<cga_trace::backend::Plain>::with_backend(&scene).render_window(Aov::Shaded, window.clone(), &|| {});
+    let dense = Renderer::<cga_trace::backend::Dense>::with_backend(&scene).render_window(Aov::Shaded, window, &|| {});
+    for other in [&plain, &dense] {
+        let off = other
+            .pixels
+            .iter()
+            .zip(&own.pixels)
+            .filter(|(p, q)| (0..3).any(|k| (p[k] - q[k]).abs() > 1.0 / 16.0))
+            .count();
+        assert_eq!(off, 0, "pixels that differ between back ends");
+    }
+    // No speckle on the box's face (its pixels red, as are their neighbours): no pixel there
+    // differs from both its left and right neighbours by more than 1/16 the same way.
+    let pixel = |i: usize, j: usize| own.pixels[j * 96 + i];
+    let on_box = |i: usize, j: usize| (i - 1..=i + 1).all(|x| pixel(x, j)[0] > 2.0 * pixel(x, j)[1]);
+    let dot = |i: usize, j: usize| {
+        let (l, c, r) = (pixel(i - 1, j)[0], pixel(i, j)[0], pixel(i + 1, j)[0]);
+        (c - l).abs() > 1.0 / 16.0 && (c - r).abs() > 1.0 / 16.0 && (c - l).signum() == (c - r).signum()
+    };
+    let face: Vec<(usize, usize)> =
+        (0..72).flat_map(|j| (1..95).map(move |i| (i, j))).filter(|&(i, j)| on_box(i, j)).collect();
+    let dots: Vec<_> = face.iter().filter(|&&(i, j)| dot(i, j)).collect();
+    assert!(face.len() > 50 && dots.is_empty(), "{} face pixels, dots at {dots:?}", face.len());
 }

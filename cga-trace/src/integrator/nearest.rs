@@ -94,7 +94,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
         t + self.errors[k] + self.largest_error
     }
 
-    /// Which rays are blocked before their `t_max` by an object other than the lane's
+    /// Which rays are blocked before their `t_max`, less the blocker's own crossing error (a
+    /// light standing on a surface is lit, not decided by rounding), by an object other than the lane's
     /// `skip` and the dielectrics (a lane with `t_max ≤ 0` or NaN is inactive and never blocked): stops at the
     /// first blocker (once every active lane is blocked), and computes no normals.
     #[inline(always)]
@@ -112,7 +113,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 let ray = rays.ray(l);
                 bvh.traverse(ray.origin, ray.dir, 0.0, t_max[l], |k, t| {
                     blocked[l] = Some(k) != skip[l]
-                        && B::occludes(&self.shapes[k], ray, self.t_min(k, 0.0), t)
+                        && B::occludes(&self.shapes[k], ray, self.t_min(k, 0.0), t - self.errors[k])
                         && !self.clear[k];
                     (!blocked[l]).then_some(t)
                 });
@@ -127,7 +128,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
             if !tests.iter().any(|&b| b) {
                 continue;
             }
-            let range = core::array::from_fn(|l| if tests[l] { t_max[l] } else { f64::NEG_INFINITY });
+            // A light on a surface (within its crossing error) is not blocked by it: the ray
+            // stops short of the light by the surface's own error.
+            let range = core::array::from_fn(|l| if tests[l] { t_max[l] - self.errors[k] } else { f64::NEG_INFINITY });
             if self.culled(rays, k, 0.0, &range) {
                 continue;
             }
