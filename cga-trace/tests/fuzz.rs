@@ -635,7 +635,7 @@ fn hostile_files_and_features_are_refused_by_name_or_rendered_right() {
                 }
                 // The disk on the floor shows, whichever comes first: the middle is blue.
                 let middle = film.pixels[3 * 8 + 4];
-                if family == 6 && !(middle[2] > 2.0 * middle[0]) {
+                if family == 6 && middle[2] <= 2.0 * middle[0] {
                     failures.push(format!("{what}: the disk on the floor is hidden: {middle:?}"));
                 }
                 // Seen from inside the glass the sky is not black.
