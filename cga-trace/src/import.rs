@@ -164,8 +164,19 @@ fn from_ply(source: &mut impl BufRead, size: u64) -> Result<TriangleMesh, String
     // A header may promise more than the file holds: reserve no more than its bytes allow
     // (every vertex takes at least 3 bytes).
     let ahead = |n: usize| n.min(usize::try_from(size / 3).unwrap_or(usize::MAX));
-    let mut mesh = TriangleMesh { positions: Vec::with_capacity(ahead(vertices)), ..Default::default() };
+    let mut mesh = TriangleMesh {
+        positions: Vec::with_capacity(ahead(vertices)),
+        triangles: Vec::with_capacity(ahead(faces)),
+        ..Default::default()
+    };
+    let has = |name: &str| header.elements.get("vertex").is_some_and(|v| v.properties.contains_key(name));
     let (mut normals, mut uvs) = (Vec::new(), Vec::new());
+    if has("nx") {
+        normals.reserve(ahead(vertices));
+    }
+    if has("u") || has("s") {
+        uvs.reserve(ahead(vertices));
+    }
     let (mut have_normals, mut have_uvs) = (true, true);
     let (vertex, face, skip) = (Parser::<PlyVertex>::new(), Parser::<PlyFace>::new(), Parser::<Skip>::new());
     let mut line = String::new();
