@@ -360,3 +360,33 @@ fn a_light_standing_on_a_surface_is_lit_the_same_on_every_back_end() {
     let dots: Vec<_> = face.iter().filter(|&&(i, j)| dot(i, j)).collect();
     assert!(face.len() > 50 && dots.is_empty(), "{} face pixels, dots at {dots:?}", face.len());
 }
+
+#[test]
+fn an_orthographic_view_across_a_glass_box_starts_each_ray_where_it_is() {
+    // An orthographic view from the middle of a glass cube [−1, 1]³ along +y, 4 wide: rays
+    // starting inside the cube leave it at normal incidence after 1 unit of glass (and their
+    // mirror rays after 3), rays starting beside it see the sky as it is.
+    let a: f64 = 0.7;
+    let text = format!(
+        "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [0.0, 1.0, 0.0]\nprojection = \"orthographic\"\nview_width = 4.0\nwidth = 40\nheight = 30\n\
+         [render]\nmax_depth = 4\n{SKY}[[objects]]\ntype = \"box\"\nmin = [-1.0, -1.0, -1.0]\nmax = [1.0, 1.0, 1.0]\n\
+         material = {{ colour = [1.0, 1.0, 1.0], ka = 0.0, kd = 0.0, ks = 0.0, ior = 1.5, absorption = [{a:?}, {a:?}, {a:?}] }}\n"
+    );
+    let film = render(&parse(&text));
+    let horizon = [0.9, 0.9, 0.9];
+    let f: f64 = 0.04;
+    let inside = (1.0 - f) * (-a).exp() + f * (1.0 - f) * (-3.0 * a).exp();
+    for (k, p) in film.pixels.iter().enumerate() {
+        let (i, j) = (k % 40, k / 40);
+        // The pixel's ray starts at (x, 0, z) on the view's plane.
+        let (x, z) = (-2.0 + 4.0 * (i as f64 + 0.5) / 40.0, -1.5 + 3.0 * (j as f64 + 0.5) / 30.0);
+        let want = if x.abs() < 1.0 && z.abs() < 1.0 { inside } else { 1.0 };
+        for c in 0..3 {
+            assert!(
+                (p[c] - want * horizon[c]).abs() < 1e-9,
+                "pixel ({i}, {j}) at x {x:.2}, z {z:.2}: {p:?}, want {}",
+                want * horizon[c]
+            );
+        }
+    }
+}

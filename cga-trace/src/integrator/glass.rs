@@ -17,7 +17,7 @@ use crate::backend::Backend;
 use crate::object::Object;
 use crate::ray::{Ray, leaving_origin, mirror, offset};
 use crate::shapes::ShadingPoint;
-use cga_core::euclid::{E3, add, dot, scale};
+use cga_core::euclid::{E3, add, dot, norm, scale};
 use smallvec::SmallVec;
 use std::collections::HashMap;
 
@@ -53,22 +53,43 @@ pub fn fresnel(d: E3, n: E3, n1: f64, n2: f64) -> (f64, Option<E3>) {
 }
 
 impl<B: Backend> Renderer<'_, B> {
+    /// The medium a camera ray starting at `origin` starts in: the camera's, changed at every
+    /// dielectric surface between the camera (the frame's origin) and `origin` (a point of
+    /// a thin lens, or of an orthographic view's plane); a pinhole's rays start at the camera.
+    pub(super) fn origin_medium(&self, origin: E3) -> Option<usize> {
+        let d = norm(origin);
+        if !self.dielectrics || d == 0.0 {
+            return self.camera_medium;
+        }
+        let ray = B::ray([0.0; 3], scale(origin, 1.0 / d));
+        let mut inside = self.camera_medium;
+        let mut t = 0.0;
+        // Crossings counted at most (dielectrics do not overlap: one toggles in or out).
+        for _ in 0..64 {
+            let Some((c, k)) = self.crossing(&ray, t, d) else { break };
+            if let Some(m) = self.medium[k].filter(|_| self.clear[k]) {
+                inside = if inside == Some(m) { None } else { Some(m) };
+            }
+            t = c.t + self.errors[k].max(c.t.abs() * 1e-12).max(f64::MIN_POSITIVE);
+        }
+        inside
+    }
+
     /// The light a ray brings from its hit `hit` on dielectric `k`, `depth` bounces made,
-    /// beyond the hit's own shading: the reflected and refracted rays' colours, weighted.
+    /// inside the medium `inside` (`None`: outside every one), beyond the hit's own shading:
+    /// the reflected and refracted rays' colours, weighted.
     pub(super) fn through_dielectric(
         &self,
         ray: &Ray<B::Carrier>,
         hit: &ShadingPoint,
         k: usize,
-        depth: u32,
+        (depth, inside): (u32, Option<usize>),
         key: &SampleKey,
         cast: &mut RayCounts,
     ) -> [f64; 3] {
         let settings = &self.scene.settings;
         let mut total = [0.0; 3];
         let mut stack: SmallVec<[Pending<B::Carrier>; 16]> = SmallVec::new();
-        // A camera ray starts in the medium that holds the camera.
-        let inside = if depth == 0 { self.camera_medium } else { None };
         let first = Pending { ray: *ray, weight: [1.0; 3], depth, inside };
         self.split(&first, hit, k, &mut stack, cast);
         while let Some(p) = stack.pop() {

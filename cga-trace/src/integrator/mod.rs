@@ -32,7 +32,6 @@ pub(crate) use sampler::{Dimension, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Bvh;
-use crate::camera::Lens;
 use crate::film::Film;
 use crate::object::Object;
 use crate::scene::Scene;
@@ -65,10 +64,12 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// or a closed mesh's first triangle); `None` for a thin sheet (flat, and no part of a
     /// closed solid), which light passes undeviated.
     pub(crate) medium: Vec<Option<usize>>,
-    /// The dielectric solid that holds the camera (and so where its rays start), if any:
-    /// its light is absorbed from the camera on ([`glass::medium_at`]). An orthographic
-    /// camera's rays start across its image plane, so none is assumed for it.
+    /// The dielectric solid that holds the camera, if any ([`glass::medium_at`]): a pinhole's
+    /// rays start in it; a lens sample's or an orthographic view's, wherever the surfaces
+    /// between the camera and their origin put them ([`Renderer::origin_medium`]).
     pub(crate) camera_medium: Option<usize>,
+    /// Whether any object is a dielectric (only then can a camera ray start inside one).
+    pub(crate) dielectrics: bool,
     /// Which objects are dielectrics: shadow rays pass them (as POV-Ray's through clear
     /// glass), caustics not being traced.
     pub(crate) clear: Vec<bool>,
@@ -123,11 +124,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
             .enumerate()
             .map(|(k, (o, b))| (o.material.dielectric(), b.map_or(f64::INFINITY, |(_, r)| r), k))
             .collect();
-        let camera_medium = match scene.camera.lens {
-            Lens::Orthographic { .. } => None,
-            // The camera is the frame's origin.
-            _ => glass::medium_at(&scene.objects, &medium, &errors, [0.0; 3]),
-        };
+        // The camera is the frame's origin.
+        let camera_medium = glass::medium_at(&scene.objects, &medium, &errors, [0.0; 3]);
+        let dielectrics = scene.objects.iter().any(|o| o.material.dielectric());
         Renderer {
             scene,
             shapes,
@@ -138,6 +137,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             flat,
             medium,
             camera_medium,
+            dielectrics,
             clear,
             textured,
             errors,

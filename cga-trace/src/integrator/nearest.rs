@@ -12,7 +12,7 @@ use crate::shapes::{Crossing, ShadingPoint};
 impl<'a, B: Backend> Renderer<'a, B> {
     /// The nearest crossing with `t_min < t < t_max` over all objects (each beyond its own
     /// [crossing error](Renderer::t_min)), and the object's index.
-    fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Crossing, usize)> {
+    pub(super) fn crossing(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(Crossing, usize)> {
         let [best] = self.crossings(ray, t_min, [t_max]);
         best
     }

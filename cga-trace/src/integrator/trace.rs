@@ -100,7 +100,11 @@ impl<B: Backend> Renderer<'_, B> {
         let mut layers: [Layers; W] = core::array::from_fn(|_| Layers::new());
         // Camera rays from inside a dielectric: what they see is absorbed on the way to it.
         let mut absorbed = [[1.0; 3]; W];
-        let medium = self.camera_medium.filter(|_| depth == 0).map(|m| self.scene.objects[m].material.absorption);
+        let start: [Option<usize>; W] = match depth {
+            0 if self.dielectrics => core::array::from_fn(|l| self.origin_medium(rays.ray(l).origin)),
+            _ => [None; W],
+        };
+        let inside = start.iter().any(Option::is_some);
         while active.iter().any(|&a| a) {
             // An inactive lane's range is empty: it finds nothing. (`map`, not `from_fn`,
             // here and for `errors`: LLVM leaves `from_fn` over them out of line, 7 % more
@@ -115,10 +119,11 @@ impl<B: Backend> Renderer<'_, B> {
                 });
             }
             let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
-            if let (Some(a), 0) = (medium, depth) {
+            if inside && depth == 0 {
                 for (l, hit) in hits.iter().enumerate() {
+                    let Some(m) = start[l] else { continue };
                     let d = hit.map_or(0.0, |(h, _)| self.scene.frame.world_length(h.t));
-                    absorbed[l] = a.map(|a| (-a * d).exp());
+                    absorbed[l] = self.scene.objects[m].material.absorption.map(|a| (-a * d).exp());
                 }
             }
             let local = self.shade(&rays, &hits, keys, cast);
@@ -134,7 +139,8 @@ impl<B: Backend> Renderer<'_, B> {
                 let material = &self.scene.objects[k].material;
                 if material.dielectric() && depth < settings.max_depth {
                     // Its rays branch: followed one at a time (glass.rs).
-                    let rest = self.through_dielectric(rays.ray(l), &hit, k, depth, &keys[l], cast);
+                    let medium = if depth == 0 { start[l] } else { None };
+                    let rest = self.through_dielectric(rays.ray(l), &hit, k, (depth, medium), &keys[l], cast);
                     (deepest[l], active[l]) = ([0, 1, 2].map(|c| local[l][c] + rest[c]), false);
                     continue;
                 }
@@ -153,9 +159,9 @@ impl<B: Backend> Renderer<'_, B> {
             depth += 1;
         }
         let seen: [[f64; 3]; W] = core::array::from_fn(|l| sum_layers(&layers[l], deepest[l]));
-        match medium {
-            None => seen,
-            Some(_) => core::array::from_fn(|l| [0, 1, 2].map(|c| seen[l][c] * absorbed[l][c])),
+        match inside {
+            false => seen,
+            true => core::array::from_fn(|l| [0, 1, 2].map(|c| seen[l][c] * absorbed[l][c])),
         }
     }
 }
