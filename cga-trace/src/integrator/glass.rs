@@ -17,7 +17,7 @@ use crate::backend::Backend;
 use crate::object::Object;
 use crate::ray::{Ray, leaving_origin, mirror, offset};
 use crate::shapes::ShadingPoint;
-use cga_core::euclid::{E3, add, dot, norm, scale};
+use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use smallvec::SmallVec;
 use std::collections::HashMap;
 
@@ -54,14 +54,15 @@ pub fn fresnel(d: E3, n: E3, n1: f64, n2: f64) -> (f64, Option<E3>) {
 
 impl<B: Backend> Renderer<'_, B> {
     /// The medium a camera ray starting at `origin` starts in: the camera's, changed at every
-    /// dielectric surface between the camera (the frame's origin) and `origin` (a point of
+    /// dielectric surface between the camera and `origin` (a point of
     /// a thin lens, or of an orthographic view's plane); a pinhole's rays start at the camera.
     pub(super) fn origin_medium(&self, origin: E3) -> Option<usize> {
-        let d = norm(origin);
+        let camera = self.scene.camera.position();
+        let d = norm(sub(origin, camera));
         if !self.dielectrics || d == 0.0 {
             return self.camera_medium;
         }
-        let ray = B::ray([0.0; 3], scale(origin, 1.0 / d));
+        let ray = B::ray(camera, scale(sub(origin, camera), 1.0 / d));
         let mut inside = self.camera_medium;
         let mut t = 0.0;
         // Crossings counted at most (dielectrics do not overlap: one toggles in or out).

@@ -124,8 +124,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             .enumerate()
             .map(|(k, (o, b))| (o.material.dielectric(), b.map_or(f64::INFINITY, |(_, r)| r), k))
             .collect();
-        // The camera is the frame's origin.
-        let camera_medium = glass::medium_at(&scene.objects, &medium, &errors, [0.0; 3]);
+        let camera_medium = glass::medium_at(&scene.objects, &medium, &errors, scene.camera.position());
         let dielectrics = scene.objects.iter().any(|o| o.material.dielectric());
         Renderer {
             scene,
