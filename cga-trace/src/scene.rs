@@ -372,10 +372,6 @@ impl Source {
                 _ => j,
             };
             spec.time = time;
-            if let Some(e) = spec.mesh_triangles(assets).and_then(|n| limit("shapes", built.len() + n, MAX_OBJECTS)) {
-                let what = format!("object `{}`", spec.name_or(k).escape_debug());
-                return Err(invalid(&map_of(k), span.clone(), what, e));
-            }
             let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, assets);
             let what = format!("object `{name}`");
             // Errors at a field where that field is written; others at the object.
