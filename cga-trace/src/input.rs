@@ -38,7 +38,8 @@ impl Identity {
         Ok(Identity::from_metadata(path, &metadata))
     }
 
-    fn from_metadata(path: &Path, metadata: &fs::Metadata) -> Identity {
+    /// The identity of the file `path` names, from its metadata (links followed).
+    pub fn from_metadata(path: &Path, metadata: &fs::Metadata) -> Identity {
         #[cfg(unix)]
         {
             use std::os::unix::fs::MetadataExt;

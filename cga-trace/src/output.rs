@@ -282,17 +282,7 @@ fn resolve(path: &Path) -> io::Result<PathBuf> {
 /// names: the same device and inode (canonical paths where there are none). Neither is
 /// opened (opening a pipe could block).
 fn same_file(a: &Path, ma: &fs::Metadata, b: &Path) -> bool {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::MetadataExt;
-        let _ = a;
-        fs::metadata(b).is_ok_and(|mb| (ma.dev(), ma.ino()) == (mb.dev(), mb.ino()))
-    }
-    #[cfg(not(unix))]
-    {
-        let _ = ma;
-        matches!((fs::canonicalize(a), fs::canonicalize(b)), (Ok(x), Ok(y)) if x == y)
-    }
+    Identity::of(b).is_ok_and(|other| Identity::from_metadata(a, ma) == other)
 }
 
 /// Whether the renaming that puts the output in place will be allowed: in a sticky directory
