@@ -4,7 +4,7 @@ arithmetic (mpmath).
 
 Writes tests/data/far_objects.json: four families with the SAME per-case keys and multivector
 layout as the clifford golden files the tests read, so that the same Rust comparisons run over
-both (tests/tests/conformal.rs, tests/tests/versors.rs):
+both (tests/tests/geometry/conformal.rs, tests/tests/geometry/versors.rs):
 
   objects      as tests/golden/objects.json: four points; the normalised line (a, b), circle
                (a, b, c), sphere (a, b, c, d), plane (a, b, c) through them; circle_euc

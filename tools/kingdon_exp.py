@@ -13,7 +13,7 @@ seeds and inputs from random.Random(SEED), SEED = 20261202:
   the same reason), and ideal lines with coefficients uniform in [-2, 2] (e01, e02, e03
   only; their exponential is a translation).
 Coefficients are listed in canonical order (grade, then vector index increasing), read from
-kingdon by bitmask, with kingdon's blade names (e13, e012, …): tests/tests/exp_log.rs carries
+kingdon by bitmask, with kingdon's blade names (e13, e012, …): tests/tests/algebra/exp_log.rs carries
 pga's over to its spellings (e31, e021, e032) with their signs.
 
 Run (as made):

@@ -4,7 +4,7 @@
 Writes tests/data/kingdon_g91.json: random vectors a, b, bivectors B and trivectors T (every
 blade, coefficients uniform in [-1, 1] from random.Random(SEED), SEED = 20261202), a rotor
 R, the product of two unit vectors of e1..e9, and kingdon's a b, a B, B ∧ a, a ⌋ T and
-R a R~. Each value is listed on its type's blades only, in the canonical order of `tests/tests/dimension.rs`
+R a R~. Each value is listed on its type's blades only, in the canonical order of `tests/tests/algebra/dimension.rs`
 (grade, then vector indices increasing; e1..e9 square to +1, the tenth, kingdon's `eA` and
 our `ea`, to −1). kingdon's coefficients are read by bitmask, so no blade name is translated.
 

@@ -7,7 +7,7 @@ outer product, left and right contractions, regressive product (`a & b`), dual a
 join of two points and the meet of two planes given by Euclidean parameters. Coefficients are
 listed in canonical order (grade, then basis order, e0 first): s, e0, e1, e2, e3, e01, e02,
 e03, e12, e13, e23, e012, e013, e023, e123, e0123, kingdon's own blade names. `cga_algebras::pga`
-spells three of them as bivector.net does (e31, e021, e032), and `tests/tests/pga.rs` carries
+spells three of them as bivector.net does (e31, e021, e032), and `tests/tests/algebra/pga.rs` carries
 the data over with those blades' signs. kingdon takes the pseudoscalar as e0123 and the dual
 as the right complement (`e0.dual() = e123`).
 

@@ -12,7 +12,7 @@
 //! - [`g91`]: G(9,1), the ten-dimensional algebra of the tests of dimension.
 //!
 //! Each is checked product by product against its dense type and against kingdon's golden
-//! vectors (`tests/tests/pga.rs`, `tests/tests/algebras.rs`, `tests/tests/dimension.rs`).
+//! vectors (`tests/tests/algebra/pga.rs`, `tests/tests/algebra/algebras.rs`, `tests/tests/algebra/dimension.rs`).
 
 pub mod cga2;
 pub mod g91;

@@ -88,7 +88,7 @@ pub struct Curvature<T: Real = f64> {
     /// `ε (1 + r²/|x_α|²) EG/(EG − F²)` — large where the parametrisation degenerates: near
     /// the points every circle of a pencil passes through (there `x_α → 0`), or where `x_α`
     /// turns along the circle. Measured errors stay within `1e-9 + 10³ condition` (the
-    /// largest, 432 times it, on a sphere; `tests/tests/curvature.rs`).
+    /// largest, 432 times it, on a sphere; `tests/tests/geometry/curvature.rs`).
     pub condition: f64,
 }
 

@@ -305,10 +305,10 @@ impl<X> Pair<X> {
     /// Why: a round's null-basis coefficients grow like `ρ²` (as `|c|²/r` against `1/r`), and
     /// the projector's square `−X X̃` cancels them back to size 1. The sizes alone do not
     /// matter: a circle of radius 1e-8 at the origin beside a unit one interpolates to
-    /// rounding. Measured (docs/STABILITY.md, `cargo test --test precision -- --ignored
+    /// rounding. Measured (docs/STABILITY.md, `cargo test --test geometry precision:: -- --ignored
     /// --nocapture`): through this crate's constructors the normal's error stays 10× below
     /// the estimate and C_α's centre and radius 300× below; from correctly rounded blades
-    /// (50-digit references, `tests/tests/far_reference.rs`) within it.
+    /// (50-digit references, `tests/tests/geometry/far_reference.rs`) within it.
     pub fn condition<T: Real>(&self) -> f64
     where
         X: Interpolable<T>,

@@ -45,7 +45,7 @@ impl<T: Real> RoundMeet<Bivector<T>, T> {
     ///
     /// Rounding: the null-basis coefficients of a sphere of centre `c` grow like `|c|²/r`,
     /// and `P²` computed from them carries an error of about `3 ε (1 + ρ)²`, `ρ = |c| / r`
-    /// (measured in `tests/tests/precision.rs` over distances 1 … 1e6 and radii 1e-4 … 1e4). So
+    /// (measured in `tests/tests/geometry/precision.rs` over distances 1 … 1e6 and radii 1e-4 … 1e4). So
     /// the classification agrees with the Euclidean one (`d < r` two points, `d > r` none)
     /// everywhere outside the band `|d − r| ≤ (32 + 4 (1 + ρ)²) ε r`. Build objects near the
     /// origin of their coordinates (a renderer's camera-relative frame, or the object's own)
@@ -148,7 +148,7 @@ impl<T: Real> Line<T> {
     /// centre at which the line crosses the circle's plane and `θ` its angle with that
     /// plane: a number no translation or scaling changes. `Tangent` when its size is at most
     /// `64 ε` of the operands' norms, so the rim band is `|x − r| ≤ 32 ε r / sin²θ` plus
-    /// rounding, `≈ 4 (1 + ρ)² ε r / sin²θ` (ρ = |c|/r, measured in `tests/tests/precision.rs`).
+    /// rounding, `≈ 4 (1 + ρ)² ε r / sin²θ` (ρ = |c|/r, measured in `tests/tests/geometry/precision.rs`).
     /// A line in the circle's plane (`|sin θ| ≤ 64 ε`, where the square vanishes
     /// identically) is classified as it meets the circle's sphere there: two points, a
     /// touch, or none.

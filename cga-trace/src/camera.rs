@@ -7,7 +7,7 @@
 //! lens whose rays leave a point of the lens disk and pass through the pinhole ray's point on
 //! the plane of focus (depth of field).
 
-use crate::backend::{lane, lanes3};
+use crate::lanes::{lane, lanes3};
 use crate::limits::{EXTENT_OVER_FOCAL, MAX_PIXELS, MAX_SIDE};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, cross, scale, sub, unit};

@@ -2,7 +2,7 @@
 //! colour map (viridis, from the `colorous` crate), a colour bar along the bottom of the
 //! image, and the scale — quantity, unit, the values at the bar's ends — for a file beside it.
 
-use crate::film::Film;
+use crate::film::{Film, srgb_to_linear};
 use crate::integrator::Aov;
 
 /// What the colours of a false-colour image mean.
@@ -71,10 +71,4 @@ pub fn false_colour(film: &Film, aov: Aov) -> Option<(Film, Scale)> {
         }
     }
     Some((out, Scale { quantity, unit, map: "viridis", low, high, pixels: values.len() }))
-}
-
-/// An 8-bit sRGB channel as a linear value (the sRGB transfer curve inverted).
-pub fn srgb_to_linear(v: u8) -> f64 {
-    let v = f64::from(v) / 255.0;
-    if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
 }

@@ -1,8 +1,8 @@
 //! The film: linear RGB pixels, `(0, 0)` bottom-left, written as an 8- or 16-bit PNG (with
 //! the sRGB transfer curve, or clipped linear values) or as linear floating point in
-//! OpenEXR or Radiance HDR, the format chosen by the file's extension.
+//! OpenEXR or Radiance HDR, the format chosen by the file's extension; the encodings, tone maps
+//! and the sRGB curve both ways.
 
-use crate::settings::Encoding;
 use image::{ImageBuffer, ImageFormat, Rgb};
 use rayon::prelude::*;
 use std::io::{Seek, Write};
@@ -98,7 +98,7 @@ impl Film {
 
     /// The film as a PNG shows it: each linear value times `2^exposure`, then tone-mapped
     /// (still linear; the encoding comes after).
-    pub fn developed(&self, exposure: f64, tone_map: crate::settings::ToneMap) -> Film {
+    pub fn developed(&self, exposure: f64, tone_map: ToneMap) -> Film {
         let gain = exposure.exp2();
         let pixels = self.pixels.iter().map(|p| p.map(|v| tone_map.apply(v * gain))).collect();
         Film { width: self.width, height: self.height, pixels }
@@ -138,6 +138,49 @@ impl Film {
         }
         Ok(())
     }
+}
+
+/// How the output PNG encodes linear values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
+pub enum Encoding {
+    /// The sRGB transfer curve (the default).
+    #[default]
+    Srgb,
+    /// Clipped linear values, as the original renderer writes them.
+    Linear,
+}
+
+/// How a PNG's linear values are brought into [0, 1] before encoding (EXR and HDR keep them
+/// as rendered).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
+pub enum ToneMap {
+    /// Clipped at 1 (the default; what the reference images use).
+    #[default]
+    None,
+    /// The filmic curve of ACES (Narkowicz's fit, `x (2.51 x + 0.03) / (x (2.43 x + 0.59) +
+    /// 0.14)`): highlights roll off to white instead of clipping.
+    Filmic,
+}
+
+impl ToneMap {
+    /// One linear channel, tone-mapped (the filmic curve is 0 at 0, increasing, and ≤ 1).
+    pub fn apply(self, v: f64) -> f64 {
+        match self {
+            ToneMap::None => v,
+            ToneMap::Filmic => {
+                let x = v.max(0.0);
+                (x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14)).min(1.0)
+            }
+        }
+    }
+}
+
+/// An 8-bit sRGB channel as a linear value (the sRGB transfer curve inverted).
+pub fn srgb_to_linear(v: u8) -> f64 {
+    let v = f64::from(v) / 255.0;
+    if v <= 0.040_45 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
 }
 
 /// The 8-bit level of a linear value: `encode` scaled to 255 and rounded.
@@ -185,6 +228,21 @@ pub fn encode(v: f64, encoding: Encoding) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_filmic_curve_rolls_highlights_off_without_reordering_values() {
+        let f = |v| ToneMap::Filmic.apply(v);
+        assert_eq!(f(0.0), 0.0);
+        assert_eq!(f(-1.0), 0.0);
+        // An overflowing value is as bright as can be, NaN as dark (as the encoding treats them).
+        assert_eq!((f(f64::INFINITY), f(f64::NAN)), (1.0, 0.0));
+        let values: Vec<f64> = (0..=400).map(|k| f(f64::from(k) * 0.05)).collect();
+        assert!(values.windows(2).all(|w| w[0] <= w[1]), "increasing");
+        assert!(values.iter().all(|&v| (0.0..=1.0).contains(&v)));
+        // Mid grey stays near mid grey; 2 (a clipped highlight) is still below white.
+        assert!((f(0.18) - 0.18).abs() < 0.1 && f(2.0) < 0.95, "{} {}", f(0.18), f(2.0));
+        assert_eq!(ToneMap::None.apply(3.0), 3.0);
+    }
 
     #[test]
     fn srgb_levels_from_thresholds_are_encode_s() {

@@ -101,7 +101,7 @@ pub enum Invalid {
     NotA(&'static str, &'static str),
     /// A blade that has no picture.
     #[error(transparent)]
-    Draw(crate::figure::DrawError),
+    Draw(crate::drawing::DrawError),
     /// An image (a texture or an environment) that cannot be read.
     #[error("{0}")]
     Image(String),

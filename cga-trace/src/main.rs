@@ -1,14 +1,13 @@
 //! `cga-trace render SCENE.toml -o out.png`: render a scene file to an image.
 
 use anyhow::Context;
-use cga_trace::backend::{Backend, Dense, Plain, Sparse, holds};
 use cga_trace::film::Output;
 use cga_trace::integrator::{RayCounts, Window};
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
-use cga_trace::scene::Source;
+use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, passes, scale_path};
 use cga_trace::settings::ToneMap;
-use cga_trace::{Aov, BackendKind, Encoding, Film, Renderer, Scene};
+use cga_trace::{Aov, BackendKind, Encoding, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -20,8 +19,8 @@ use std::time::Instant;
     name = "cga-trace",
     version,
     about = "Ray-trace spheres, planes, disks, triangles and evolved circle surfaces with conformal geometric algebra",
-    after_help = "Scene files are TOML: every table and field, with examples, is in the README's \
-                  \"Scene files\" section (README.md#scene-files); cga-trace/scenes/ holds complete scenes."
+    after_help = "Scene files are TOML: every table and field, with examples, is in docs/SCENES.md#scene-files; \
+                  cga-trace/scenes/ holds complete scenes."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -31,7 +30,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Render a scene file to an image (PNG, OpenEXR or Radiance HDR, by extension).
-    #[command(after_help = "The scene format: README.md#scene-files.")]
+    #[command(after_help = "The scene format: docs/SCENES.md#scene-files.")]
     Render(Render),
     /// Export an evolved, spline or ruled surface of a scene as a triangle mesh with analytic
     /// normals and (α, angle) texture coordinates: .obj, .ply or .glb, by extension.
@@ -42,7 +41,7 @@ enum Command {
 #[cfg(feature = "evolved")]
 #[derive(clap::Args)]
 struct MeshArgs {
-    /// The scene (TOML; see README.md#scene-files).
+    /// The scene (TOML; see docs/SCENES.md#scene-files).
     scene: PathBuf,
     /// The name of the surface's object in the scene.
     #[arg(long)]
@@ -60,7 +59,7 @@ struct MeshArgs {
 
 #[derive(clap::Args)]
 struct Render {
-    /// The scene (TOML; see README.md#scene-files).
+    /// The scene (TOML; see docs/SCENES.md#scene-files).
     scene: PathBuf,
     /// The image to write: .png (8- or 16-bit, encoded), .exr or .hdr (linear floats).
     #[arg(short, long, default_value = "out.png")]
@@ -260,13 +259,6 @@ fn thread_pool(threads: Option<usize>) -> anyhow::Result<rayon::ThreadPool> {
     Ok(rayon::ThreadPoolBuilder::new().num_threads(threads.unwrap_or(0)).build()?)
 }
 
-/// The file beside a false-colour image that holds its scale: `OUTPUT.scale.json`.
-fn scale_path(output: &Path) -> PathBuf {
-    let mut beside = output.as_os_str().to_owned();
-    beside.push(".scale.json");
-    beside.into()
-}
-
 fn render_command(args: Render) -> anyhow::Result<()> {
     let pool = thread_pool(args.threads)?;
     let Some(frames) = args.frames else { return render_frame(&args, &pool, &args.output, 0.0, true, &mut None) };
@@ -287,25 +279,25 @@ fn render_command(args: Render) -> anyhow::Result<()> {
     let outputs: Vec<PathBuf> = (0..frames).map(|frame| numbered(&args.output, frame, frames)).collect();
     cga_trace::output::distinct(&outputs).context("--frames")?;
     // The scene's files are read once, for every frame.
-    let mut source = None;
+    let mut pipeline = None;
     for frame in first..end {
         let time = if frames > 1 { frame as f64 / (frames - 1) as f64 } else { 0.0 };
         let output = numbered(&args.output, frame, frames);
-        render_frame(&args, &pool, &output, time, frame == first, &mut source)
+        render_frame(&args, &pool, &output, time, frame == first, &mut pipeline)
             .with_context(|| format!("frame {frame}"))?;
     }
     Ok(())
 }
 
 /// One picture of the scene at the frame time `time`, written to `output`; the scene's files
-/// are read into `source` the first time (after the outputs are checked) and kept.
+/// are read into `pipeline` the first time (after the outputs are checked) and kept.
 fn render_frame(
     args: &Render,
     pool: &rayon::ThreadPool,
     output_path: &Path,
     time: f64,
     notes: bool,
-    source: &mut Option<Source>,
+    pipeline: &mut Option<Pipeline>,
 ) -> anyhow::Result<()> {
     // Everything that can be wrong with the command line and the outputs is found before the
     // scene is read; nothing is written over until the render has succeeded.
@@ -319,11 +311,11 @@ fn render_frame(
         None
     };
 
-    let source = match source {
-        Some(source) => source,
-        None => source.insert(Source::load(&args.scene)?),
+    let pipeline = match pipeline {
+        Some(pipeline) => pipeline,
+        None => pipeline.insert(Pipeline::load(&args.scene, view(args)).map_err(flagged)?),
     };
-    let (scene, resized) = configured(args, source, time)?;
+    let (scene, resized) = pipeline.scene_noted(time).map_err(flagged)?;
     // Only the scene knows the files it reads: none may be an output.
     image.refuse(&scene.inputs)?;
     if let Some(file) = &scale_file {
@@ -335,83 +327,43 @@ fn render_frame(
             say!("note: {note}");
         }
     }
-    let (w, h) = (scene.camera.width, scene.camera.height);
-    let window = match &args.crop {
-        Some(c) => Window::crop(w, h, *c).map_err(anyhow::Error::msg).context("--crop")?,
-        None => Window::full(w, h),
+    let options = Options {
+        time,
+        aov: args.aov,
+        backend: args.backend,
+        crop: args.crop,
+        packets: !args.no_packets,
+        avx2: !args.no_avx2,
+        labels: !args.no_labels,
+        encoding: args.encoding,
     };
-    let encoding = args.encoding.unwrap_or(scene.settings.encoding);
-    let (exposure, tone_map) = (scene.settings.exposure, scene.settings.tone_map);
-
-    let bar = indicatif::ProgressBar::new(window.rows.len() as u64).with_style(
+    let rows = match args.crop {
+        Some(c) => Window::crop(scene.camera.width, scene.camera.height, c).map_or(0, |w| w.rows.len()),
+        None => scene.camera.height as usize,
+    };
+    let bar = indicatif::ProgressBar::new((rows * passes(&scene, time)) as u64).with_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     if !std::io::stderr().is_terminal() {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
-    let (render, holds): (RenderFn, Holds) = match args.backend {
-        BackendKind::Sparse => (render::<Sparse>, holds::<Sparse>),
-        BackendKind::Dense => (render::<Dense>, holds::<Dense>),
-        BackendKind::Plain => (render::<Plain>, holds::<Plain>),
-    };
-    holds(&scene).map_err(anyhow::Error::msg).context("--backend")?;
-    let start = Instant::now();
-    let packets = Packets { on: !args.no_packets, avx2: !args.no_avx2 };
-    let (film, RayCounts { primary, shadow, reflection }) = match scene.shutter {
-        None => pool.install(|| render(&scene, args.aov, window, packets, (0, 1), &|| bar.inc(1))),
-        Some(shutter) => {
-            // Each instant places the scene anew and takes its share of the samples.
-            let instants = shutter.instants(time, scene.settings.spp).len();
-            bar.set_length(window.rows.len() as u64 * instants as u64);
-            let mut counts = RayCounts::default();
-            let film = shutter.expose(time, scene.settings.spp, |t, subset| {
-                let (at, _) = configured(args, source, t).context("the shutter")?;
-                holds(&at).map_err(anyhow::Error::msg).context("--backend")?;
-                let (film, cast) =
-                    pool.install(|| render(&at, args.aov, window.clone(), packets, subset, &|| bar.inc(1)));
-                counts.add(&cast);
-                anyhow::Ok(film)
-            })?;
-            (film, counts)
-        }
-    };
-    let seconds = start.elapsed().as_secs_f64();
+    let rendered = pool.install(|| pipeline.render(&scene, &options, &|| bar.inc(1))).map_err(flagged)?;
     bar.finish_and_clear();
-    let film = match cga_trace::colour::false_colour(&film, args.aov) {
-        Some((coloured, scale)) => {
-            if let Some(file) = scale_file.as_mut() {
-                let json = serde_json::to_string_pretty(&scale)? + "\n";
-                file.write_all(json.as_bytes()).with_context(|| format!("writing {}", beside.display()))?;
-            }
-            say!(
-                "{}: {} ({}) from {:.4e} (left of the bar) to {:.4e} (right), {} pixels -> {}",
-                scale.map,
-                scale.quantity,
-                scale.unit,
-                scale.low,
-                scale.high,
-                scale.pixels,
-                if scale_file.is_some() { beside.display().to_string() } else { "stderr".into() }
-            );
-            coloured
-        }
-        None => film,
-    };
-    // Exposure and tone map develop a shaded PNG (EXR and HDR keep the linear values); the
-    // labels go on after, in their own colours.
-    let developed = matches!(output, Output::Png8 | Output::Png16) && args.aov == Aov::Shaded;
-    let mut film = if developed && (exposure != 0.0 || tone_map != ToneMap::None) {
-        film.developed(exposure, tone_map)
-    } else {
-        film
-    };
-    if args.aov == Aov::Shaded && args.crop.is_none() && !args.no_labels {
-        cga_trace::figure::draw_labels(&mut film, &scene.camera, &scene.labels);
+    if let Some(scale) = &rendered.scale {
+        say!(
+            "{}: {} ({}) from {:.4e} (left of the bar) to {:.4e} (right), {} pixels -> {}",
+            scale.map,
+            scale.quantity,
+            scale.unit,
+            scale.low,
+            scale.high,
+            scale.pixels,
+            if scale_file.is_some() { beside.display().to_string() } else { "stderr".into() }
+        );
     }
     let writing = Instant::now();
-    pool.install(|| film.write(&mut image, output, encoding))
-        .with_context(|| format!("writing {}", output_path.display()))?;
+    pool.install(|| rendered.write(&mut image, output, scale_file.as_mut()))?;
     // The image first, then its scale: each is the old file or the new, whatever fails.
     image.commit()?;
     if let Some(file) = scale_file {
@@ -419,71 +371,47 @@ fn render_frame(
     }
     let written = writing.elapsed().as_secs_f64();
 
+    let RayCounts { primary, shadow, reflection } = rendered.counts;
     let total = primary + shadow + reflection;
+    let seconds = rendered.seconds;
     say!(
         "{} pixels, {total} rays ({primary} primary, {shadow} shadow, {reflection} reflection), {seconds:.3} s, {:.0} rays/s, written in {written:.3} s -> {}",
-        u64::from(film.width) * u64::from(film.height),
+        u64::from(rendered.film.width) * u64::from(rendered.film.height),
         total as f64 / seconds.max(1e-9),
         output_path.display()
     );
     Ok(())
 }
 
-/// The scene at the motion's time `time`, placed from its files as read, with the command line's settings, and a note
-/// where resizing it leaves pixels that are not square.
-fn configured(args: &Render, source: &mut Source, time: f64) -> anyhow::Result<(Scene, Option<String>)> {
-    // A camera without `width` and `height` takes the command line's.
-    let size = args.width.zip(args.height);
-    let mut scene = source.scene(size, time)?;
-    if let Some(degrees) = args.fov {
-        scene.set_fov(degrees).context("--fov")?;
+/// The command line's changes to the scene.
+fn view(args: &Render) -> View {
+    View {
+        width: args.width,
+        height: args.height,
+        fov: args.fov,
+        spp: args.spp,
+        max_depth: args.max_depth,
+        exposure: args.exposure,
+        tone_map: args.tone_map,
     }
-    let note = scene.resize(args.width, args.height).context("--width/--height")?;
-    if let Some(d) = args.max_depth {
-        scene.settings.max_depth = d;
-    }
-    if let Some(spp) = args.spp {
-        scene.settings.spp = spp;
-    }
-    if let Some(stops) = args.exposure {
-        scene.settings.exposure = stops;
-    }
-    if let Some(map) = args.tone_map {
-        scene.settings.tone_map = map;
-    }
-    scene.settings.check().context("--max-depth/--spp/--exposure")?;
-    Ok((scene, note))
 }
 
-/// A back end's render, as [`render`] gives it.
-type RenderFn = fn(&Scene, Aov, Window, Packets, (u32, u32), &(dyn Fn() + Sync)) -> (Film, RayCounts);
-/// A back end's [`holds`].
-type Holds = fn(&Scene) -> Result<(), String>;
-
-/// Whether rays go four at a time in packets, and whether those may run in AVX registers.
-#[derive(Clone, Copy)]
-struct Packets {
-    on: bool,
-    avx2: bool,
-}
-
-/// The image and the rays cast, on back end `B`, taking the samples `first, first + step, …`
-/// of each pixel.
-fn render<B: Backend>(
-    scene: &Scene,
-    aov: Aov,
-    window: Window,
-    packets: Packets,
-    (first, step): (u32, u32),
-    on_row: &(dyn Fn() + Sync),
-) -> (Film, RayCounts) {
-    let mut renderer = Renderer::<B>::with_backend(scene).sample_subset(first, step);
-    if !packets.on {
-        renderer = renderer.without_packets();
-    }
-    if !packets.avx2 {
-        renderer = renderer.without_avx2();
-    }
-    let film = renderer.render_window(aov, window, on_row);
-    (film, renderer.counts())
+/// A pipeline's error, naming the flag that caused it where one did.
+fn flagged(e: RenderError) -> anyhow::Error {
+    let flag = match &e {
+        RenderError::View(ViewError::Fov(_)) => "--fov",
+        RenderError::View(ViewError::Size(_)) => "--width/--height",
+        RenderError::View(ViewError::Settings(_)) => "--max-depth/--spp/--exposure",
+        RenderError::Crop(_) => "--crop",
+        RenderError::Backend(_) => "--backend",
+        _ => return e.into(),
+    };
+    let inner: anyhow::Error = match e {
+        RenderError::View(ViewError::Fov(e) | ViewError::Size(e)) => e.into(),
+        RenderError::View(ViewError::Settings(e)) => e.into(),
+        RenderError::Crop(e) => anyhow::Error::msg(e),
+        RenderError::Backend(e) => anyhow::Error::msg(e),
+        e => e.into(),
+    };
+    inner.context(flag)
 }

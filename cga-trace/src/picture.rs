@@ -2,7 +2,7 @@
 //! sRGB, OpenEXR and Radiance HDR as they are; looked up bilinearly at `(u, v)` in [0, 1]²,
 //! `u` wrapping around, `v` from the top edge down.
 
-use crate::colour::srgb_to_linear;
+use crate::film::srgb_to_linear;
 use crate::input::open_regular;
 use crate::invalid::Invalid;
 use crate::limits::{MAX_IMAGE_PIXELS, MAX_SCENE_IMAGE_PIXELS};

@@ -1,46 +1,10 @@
 //! Render settings: depth, background, ambient light, shadows, attenuation, output
 //! encoding, and how evolved surfaces are intersected.
 
+pub use crate::film::{Encoding, ToneMap};
 use crate::invalid::Invalid;
 use crate::limits::{MAX_DEPTH, MAX_SPP};
 use crate::surface::Method;
-
-/// How the output PNG encodes linear values.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
-pub enum Encoding {
-    /// The sRGB transfer curve (the default).
-    #[default]
-    Srgb,
-    /// Clipped linear values, as the original renderer writes them.
-    Linear,
-}
-
-/// How a PNG's linear values are brought into [0, 1] before encoding (EXR and HDR keep them
-/// as rendered).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
-pub enum ToneMap {
-    /// Clipped at 1 (the default; what the reference images use).
-    #[default]
-    None,
-    /// The filmic curve of ACES (Narkowicz's fit, `x (2.51 x + 0.03) / (x (2.43 x + 0.59) +
-    /// 0.14)`): highlights roll off to white instead of clipping.
-    Filmic,
-}
-
-impl ToneMap {
-    /// One linear channel, tone-mapped (the filmic curve is 0 at 0, increasing, and ≤ 1).
-    pub fn apply(self, v: f64) -> f64 {
-        match self {
-            ToneMap::None => v,
-            ToneMap::Filmic => {
-                let x = v.max(0.0);
-                (x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14)).min(1.0)
-            }
-        }
-    }
-}
 
 /// How a hit's mirror reflection adds to its own colour.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -148,25 +112,5 @@ impl Settings {
             return Err(Invalid::Value("attenuation coefficients must be ≥ 0 and not all zero"));
         }
         s.surface_method.check().map_err(Invalid::SurfaceMethod)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::ToneMap;
-
-    #[test]
-    fn the_filmic_curve_rolls_highlights_off_without_reordering_values() {
-        let f = |v| ToneMap::Filmic.apply(v);
-        assert_eq!(f(0.0), 0.0);
-        assert_eq!(f(-1.0), 0.0);
-        // An overflowing value is as bright as can be, NaN as dark (as the encoding treats them).
-        assert_eq!((f(f64::INFINITY), f(f64::NAN)), (1.0, 0.0));
-        let values: Vec<f64> = (0..=400).map(|k| f(f64::from(k) * 0.05)).collect();
-        assert!(values.windows(2).all(|w| w[0] <= w[1]), "increasing");
-        assert!(values.iter().all(|&v| (0.0..=1.0).contains(&v)));
-        // Mid grey stays near mid grey; 2 (a clipped highlight) is still below white.
-        assert!((f(0.18) - 0.18).abs() < 0.1 && f(2.0) < 0.95, "{} {}", f(0.18), f(2.0));
-        assert_eq!(ToneMap::None.apply(3.0), 3.0);
     }
 }

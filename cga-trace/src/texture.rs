@@ -3,18 +3,8 @@
 //! image — in place of its material's one colour.
 
 use crate::picture::Picture;
+pub use crate::shapes::Unit;
 use std::sync::Arc;
-
-/// What a surface's parameters are: fractions (angles over a turn, α, barycentric
-/// coordinates) or lengths (frame units, which the renderer turns into world units, so that
-/// a floor's checker has the same size at any scale).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Unit {
-    /// Dimensionless.
-    Fraction,
-    /// A length.
-    Length,
-}
 
 /// A texture: its pattern, repeated `repeat[0]` times per unit of `u` and `repeat[1]` per
 /// unit of `v`.

@@ -1,6 +1,8 @@
 //! The `approx` crate's comparison traits, on request.
 
-use super::*;
+use crate::Spec;
+use proc_macro2::TokenStream;
+use quote::quote;
 
 /// The `approx` crate's `AbsDiffEq`, `RelativeEq` and `UlpsEq` for every type and the dense
 /// one, coefficient by coefficient (what `to_array` holds), when the invocation asks for

@@ -4,6 +4,7 @@
 
 use super::Backend;
 use crate::camera::Camera;
+use crate::lanes::{array, lane};
 use crate::ray::Ray;
 use crate::shapes::Crossing;
 use cga_core::euclid::{E3, dot, sub};
@@ -65,13 +66,6 @@ impl<B: Backend> RayLanes<B, 1> for Ray<B::Carrier> {
     }
 }
 
-/// Points (or vectors), one per lane, as three coordinates in lanes.
-#[inline(always)]
-pub(crate) fn lanes3<T: Lane, const W: usize>(v: [E3; W]) -> E3<T> {
-    let at = |k: usize| T::from_fn(|l| v[l][k]);
-    [at(0), at(1), at(2)]
-}
-
 /// A crossing per lane, `None` where the lane's ray misses.
 pub type Crossings = [Option<Crossing>; 4];
 
@@ -95,25 +89,6 @@ impl<B: Backend, L: Lane> Packet<B, L> {
         let rays = core::array::from_fn(|l| B::ray(lane(&origin, l), lane(&dir, l)));
         Packet { rays, origin, dir, carrier }
     }
-}
-
-/// The four lanes of `x` as an array.
-#[inline(always)]
-pub(crate) fn array<L: Lane>(x: L) -> [f64; 4] {
-    [x.lane(0), x.lane(1), x.lane(2), x.lane(3)]
-}
-
-/// The mask's four lanes as truth values.
-#[inline(always)]
-pub(crate) fn mask_array<L: Lane>(m: L::Mask) -> [bool; 4] {
-    let at = |l: usize| L::mask_lane(m, l);
-    [at(0), at(1), at(2), at(3)]
-}
-
-/// Lane `l` of a point in lanes.
-#[inline(always)]
-pub(crate) fn lane<L: Lane>(x: &E3<L>, l: usize) -> E3 {
-    [x[0].lane(l), x[1].lane(l), x[2].lane(l)]
 }
 
 /// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where

@@ -23,6 +23,7 @@ mod sparse;
 
 use crate::camera::Camera;
 use crate::frame::RANGE;
+pub(crate) use crate::lanes::{array, lane, lanes3, mask_array};
 use crate::ray::Ray;
 use crate::scene::Scene;
 use crate::shapes::{Crossing, Shape};
@@ -30,7 +31,7 @@ use cga_core::euclid::{E3, norm};
 use cga_core::simd::Lane;
 pub use dense::{Dense, DenseShape};
 pub use lanes::{Crossings, Packet, RayLanes};
-pub(crate) use lanes::{array, crossings, inside_rim, lane, lanes3, mask_array};
+pub(crate) use lanes::{crossings, inside_rim};
 pub use plain::{Plain, PlainShape};
 pub use sparse::{Sparse, SparseShape};
 use std::sync::Arc;

@@ -7,11 +7,13 @@
 //! that file like any other, so a saved figure renders the same picture from the command
 //! line. The camera frames every bounded object unless given.
 
-use super::{DrawError, Drawing, Marks, Sizes, draw_labels};
+use super::{DrawError, Drawing, Marks, Sizes};
+use crate::Film;
+use crate::SceneError;
 use crate::film::{Output, OutputError};
 use crate::output::{OutputFile, OutputFileError};
-use crate::scene::{Scene, SceneError};
-use crate::{Aov, Film, Renderer};
+use crate::pipeline::{self, Options, RenderError, Rendered};
+use crate::scene::Scene;
 use cga_core::euclid::{E3, add, norm, scale, unit};
 use cga_core::{GeometryError, classify_storage};
 use std::fmt::Write as _;
@@ -53,6 +55,9 @@ pub enum FigureError {
     /// The scene the figure makes is refused (a size out of range).
     #[error(transparent)]
     Scene(#[from] SceneError),
+    /// Rendering or writing the picture.
+    #[error(transparent)]
+    Render(#[from] RenderError),
     /// The output file.
     #[error(transparent)]
     File(#[from] OutputFileError),
@@ -280,23 +285,24 @@ impl Figure {
         Ok(out)
     }
 
+    /// The picture rendered with `options` (any AOV, back end, crop; through the pipeline
+    /// every scene takes, [`crate::pipeline`]).
+    pub fn rendered(&self, options: &Options) -> Result<Rendered, FigureError> {
+        let scene = Scene::parse(&self.scene()?, "figure")?;
+        Ok(pipeline::render(&scene, options, &|| {})?)
+    }
+
     /// The picture, labels written in.
     pub fn film(&self) -> Result<Film, FigureError> {
-        let scene = Scene::parse(&self.scene()?, "figure")?;
-        let mut film = Renderer::new(&scene).render(Aov::Shaded, &|| {});
-        draw_labels(&mut film, &scene.camera, &scene.labels);
-        Ok(film)
+        Ok(self.rendered(&Options::default())?.image(Output::Png8))
     }
 
     /// Render to `path`: PNG, EXR or HDR by its extension, written to a temporary file and
     /// renamed on success.
     pub fn render(&self, path: impl AsRef<Path>) -> Result<(), FigureError> {
         let path = path.as_ref();
-        let output = Output::for_path(path, None)?;
-        let mut file = OutputFile::create(path, &[])?;
-        let film = self.film()?;
-        film.write(&mut file, output, crate::Encoding::Srgb)?;
-        Ok(file.commit()?)
+        Output::for_path(path, None)?;
+        Ok(self.rendered(&Options::default())?.save(path, None)?)
     }
 
     /// Write the figure as a scene file to `path` (temporary file, renamed on success).
@@ -352,5 +358,5 @@ pub fn colour(name: &str) -> Option<[f64; 3]> {
             [byte(0)?, byte(1)?, byte(2)?]
         }
     };
-    Some(srgb.map(crate::colour::srgb_to_linear))
+    Some(srgb.map(crate::film::srgb_to_linear))
 }

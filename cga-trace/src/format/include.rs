@@ -5,10 +5,10 @@
 //! column for errors. Names in `include` (and the images and meshes any file names) are
 //! relative to the scene file's folder, as POV-Ray's `#include` reads from its own.
 
+use super::error::{SceneError, line_column};
 use super::sections;
 use crate::input::{Input, open_regular};
 use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_INCLUDES};
-use crate::scene::{SceneError, line_column};
 use std::io::Read;
 use std::ops::Range;
 use std::path::{Path, PathBuf};

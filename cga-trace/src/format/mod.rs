@@ -8,23 +8,30 @@
 //! `motor` or `transform` (`transform.rs`).
 
 mod assets;
+mod blade;
 mod drawn;
-pub(crate) mod include;
-pub(crate) mod instance;
+mod error;
+mod include;
+mod instance;
+mod load;
+mod marks;
 mod numbers;
-pub(crate) mod sections;
+mod sections;
 mod specs;
 mod transform;
 
 pub(crate) use assets::Assets;
+pub use error::SceneError;
+pub use load::Source;
 pub(crate) use specs::{MaterialRef, MaterialSpec, SettingsSpec};
 
 use crate::camera::{Camera, CameraError, Lens};
+use crate::drawing::Marks;
 use crate::environment::Environment;
-use crate::figure::{Label, MAX_LABEL_CHARS, Marks, Parts};
 use crate::frame::Frame;
 use crate::invalid::Invalid;
-use crate::light::{Light, Source};
+use crate::label::{Label, MAX_LABEL_CHARS};
+use crate::light::{Light, Source as Emitter};
 use crate::limits::{MAX_LIGHT_SAMPLES, MAX_OBJECTS, MAX_SIDE, MAX_TIME_SAMPLES};
 use crate::object::Object;
 use crate::shapes::{
@@ -34,6 +41,7 @@ use crate::shutter::Shutter;
 use crate::surface::Method;
 #[cfg(feature = "evolved")]
 use crate::surface::{EvolvedSurface, RuledSurface, SplineSurface};
+use blade::BladeSpec;
 #[cfg(feature = "evolved")]
 use cga_core::Circle;
 #[cfg(feature = "evolved")]
@@ -41,7 +49,7 @@ use cga_core::Joining;
 use cga_core::euclid::E3;
 use cga_core::euclid::{norm, sub};
 use cga_core::{GeometryError, Motor, Plane, circumcircle, circumsphere};
-use drawn::BladeSpec;
+use marks::Parts;
 use numbers::{Num, Nums, V3};
 use serde::Deserialize;
 use std::ops::Range;
@@ -166,10 +174,14 @@ impl LightSpec {
             return Err(Invalid::at(if self.radius.is_some() { "radius" } else { "falloff" }, a.span(), why));
         }
         let source = match (self.position, self.direction) {
-            (Some(p), None) => Source::Point(light_position(&p, frame)?),
+            (Some(p), None) => Emitter::Point(light_position(&p, frame)?),
             (None, Some(d)) => {
                 let unit = cga_core::euclid::unit(d.get_ref().0);
-                Source::Directional(unit.ok_or(Invalid::at("direction", d.span(), GeometryError::ZeroVector.into()))?)
+                Emitter::Directional(unit.ok_or(Invalid::at(
+                    "direction",
+                    d.span(),
+                    GeometryError::ZeroVector.into(),
+                ))?)
             }
             (Some(p), Some(d)) => {
                 let position = light_position(&p, frame)?;
@@ -189,7 +201,7 @@ impl LightSpec {
                 let (cos_radius, cos_falloff) = (radius.to_radians().cos(), falloff.to_radians().cos());
                 // A hard edge where the angles agree.
                 let inverse_width = 1.0 / (cos_radius - cos_falloff).max(1e-12);
-                Source::Spot { position, axis, cos_falloff, inverse_width }
+                Emitter::Spot { position, axis, cos_falloff, inverse_width }
             }
             (None, None) => {
                 return Err(Invalid::Form(
@@ -205,7 +217,7 @@ impl LightSpec {
     /// The area light the table gives (`sphere` or `disk`), checked: a `position`, a radius
     /// `> 0` that the frame holds, a disk's non-zero `normal`, `1 ..= MAX_LIGHT_SAMPLES`
     /// samples; `None` for the other lights (which take none of these fields).
-    fn area(&self, frame: &Frame) -> Result<Option<Source>, Invalid> {
+    fn area(&self, frame: &Frame) -> Result<Option<Emitter>, Invalid> {
         let at = |field, span: Range<usize>, why| Invalid::at(field, span, Invalid::Value(why));
         let radius = match (&self.sphere, &self.disk) {
             (Some(_), Some(d)) => return Err(at("disk", d.span(), "give `sphere` or `disk`, not both")),
@@ -252,12 +264,12 @@ impl LightSpec {
         }
         let centre = light_position(p, frame)?;
         Ok(Some(match (self.sphere.is_some(), &self.normal) {
-            (true, None) => Source::Sphere { centre, radius: r, samples },
+            (true, None) => Emitter::Sphere { centre, radius: r, samples },
             (true, Some(n)) => return Err(at("normal", n.span(), "a sphere of light takes no `normal` (a disk does)")),
             (false, Some(n)) => {
                 let normal = cga_core::euclid::unit(n.get_ref().0);
                 let normal = normal.ok_or(Invalid::at("normal", n.span(), GeometryError::ZeroVector.into()))?;
-                Source::Disk { centre, normal, radius: r, samples }
+                Emitter::Disk { centre, normal, radius: r, samples }
             }
             (false, None) => return Err(at("disk", radius.span(), "a disk of light needs its `normal`")),
         }))
@@ -1084,7 +1096,12 @@ impl ObjectSpec {
             }
             Kind::Point | Kind::PointPair | Kind::Line | Kind::Circle | Kind::PlanePatch | Kind::Blade => {
                 let drawing = self.drawing(&marks.sizes)?;
-                return drawing.shapes(&place, frame.point(marks.sizes.centre), place.length(marks.view(&drawing)));
+                return marks::parts(
+                    &drawing,
+                    &place,
+                    frame.point(marks.sizes.centre),
+                    place.length(marks.view(&drawing)),
+                );
             }
         };
         Ok((vec![shape], None))
@@ -1351,7 +1368,7 @@ fn evolved(
 fn circle(spec: &CircleSpec, place: &Placement) -> Result<(E3, E3, f64), Invalid> {
     let (c, n, r) = match (spec.blade, spec.centre, spec.normal, spec.radius, &spec.points) {
         (Some(b), None, None, None, None) => {
-            let c = Circle::from_dense(&drawn::circle_blade(b.0))
+            let c = Circle::from_dense(&blade::circle_blade(b.0))
                 .try_normalise()
                 .ok_or(Invalid::Value("the blade is zero or null"))?;
             c.centre_normal_radius()?
@@ -1378,4 +1395,57 @@ fn circle(spec: &CircleSpec, place: &Placement) -> Result<(E3, E3, f64), Invalid
         None => (c, n),
     };
     Ok((place.point(c)?, place.direction(n), place.length(r)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Kind;
+
+    /// The scene-format guide (`docs/SCENES.md`) names every object kind and every field each
+    /// kind takes: a kind or field added without its documentation fails here.
+    #[test]
+    fn the_guide_documents_every_kind_and_its_fields() {
+        let guide = include_str!("../../../docs/SCENES.md");
+        let kinds = [
+            Kind::Sphere,
+            Kind::Plane,
+            Kind::Disk,
+            Kind::Torus,
+            Kind::Cylinder,
+            Kind::Cone,
+            Kind::Box,
+            Kind::Triangle,
+            Kind::Mesh,
+            Kind::Instance,
+            Kind::Evolved,
+            Kind::Spline,
+            Kind::Ruled,
+            Kind::Point,
+            Kind::PointPair,
+            Kind::Line,
+            Kind::Circle,
+            Kind::PlanePatch,
+            Kind::Blade,
+        ];
+        let mut missing = Vec::new();
+        for kind in kinds {
+            // The name as files write it: kebab-case, as serde reads it.
+            let name = format!("{kind:?}").chars().fold(String::new(), |mut s, c| {
+                if c.is_uppercase() && !s.is_empty() {
+                    s.push('-');
+                }
+                s.push(c.to_ascii_lowercase());
+                s
+            });
+            if !guide.contains(&format!("\"{name}\"")) && !guide.contains(&format!("`{name}`")) {
+                missing.push(name.clone());
+            }
+            for field in kind.takes().0 {
+                if !guide.contains(&format!("{field} =")) && !guide.contains(&format!("`{field}`")) {
+                    missing.push(format!("{name}.{field}"));
+                }
+            }
+        }
+        assert!(missing.is_empty(), "kinds and fields docs/SCENES.md does not name: {missing:?}");
+    }
 }

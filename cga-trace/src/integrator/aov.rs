@@ -1,9 +1,6 @@
-//! What an image shows: the shaded colour or, per first hit, a normal, α or curvature.
+//! What an image shows: the shaded colour or, per first hit, a normal, α or curvature (the
+//! values; `trace.rs` finds them along a ray).
 
-use super::Renderer;
-use crate::backend::Backend;
-use crate::ray::Ray;
-use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::euclid::{E3, dot};
 
 /// What an image shows.
@@ -39,7 +36,7 @@ impl Aov {
 
     /// The scalar this AOV shows at a hit of curvature `k` seen along `dir`, in world units
     /// (`scale`: the frame's unit in world lengths).
-    fn value(self, k: &cga_core::Curvature, dir: E3, scale: f64) -> f64 {
+    pub(super) fn value(self, k: &cga_core::Curvature, dir: E3, scale: f64) -> f64 {
         // Curvatures positive where the surface bulges towards the viewer (a sphere seen from
         // outside), whichever way the surface's own normal `ν` points: with `ν` towards the
         // viewer a sphere has `H = −1/R` (`x_αα · ν < 0`), so the value is `−H` then.
@@ -51,32 +48,6 @@ impl Aov {
             Aov::K1 => a.max(b),
             Aov::K2 => a.min(b),
             _ => k.circle_angle().to_degrees(),
-        }
-    }
-}
-
-impl<B: Backend> Renderer<'_, B> {
-    /// What AOV `aov` shows along `ray`.
-    pub(super) fn aov(&self, ray: &Ray<B::Carrier>, aov: Aov) -> [f64; 3] {
-        match aov {
-            Aov::Shaded => self.trace(ray, 0),
-            Aov::Normal => {
-                self.nearest(ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
-            }
-            Aov::Alpha => match self.nearest(ray, 0.0, f64::INFINITY) {
-                Some((ShadingPoint { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
-                _ => [0.0; 3],
-            },
-            // (value, 1) where the surface has a curvature, (0, 0) elsewhere: averaged over
-            // samples, value / weight is the mean over the samples that had one.
-            _ => match self.nearest(ray, 0.0, f64::INFINITY) {
-                Some((hit, object)) => {
-                    let crossing = Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
-                    let scale = self.scene.frame.scale;
-                    object.shape.curvature(&crossing).map_or([0.0; 3], |k| [aov.value(&k, ray.dir, scale), 1.0, 0.0])
-                }
-                None => [0.0; 3],
-            },
         }
     }
 }

@@ -14,12 +14,10 @@
 
 use super::{RayCounts, Renderer, SampleKey};
 use crate::backend::Backend;
-use crate::object::Object;
 use crate::ray::{Ray, leaving_origin, mirror, offset};
 use crate::shapes::ShadingPoint;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use smallvec::SmallVec;
-use std::collections::HashMap;
 
 /// The weight below which a branch of a dielectric's tree of rays is dropped: 1/256, under
 /// half a level of an 8-bit picture.
@@ -165,55 +163,6 @@ impl<B: Backend> Renderer<'_, B> {
         cast.reflection += 1;
         push(stack, Pending { ray: B::ray(start, t), weight: p.weight.map(|w| w * (1.0 - f)), depth, inside });
     }
-}
-
-/// Each object's medium (see [`Renderer::medium`]): its solid's first object, or `None` for
-/// a thin sheet.
-pub(super) fn media(objects: &[Object]) -> Vec<Option<usize>> {
-    let mut first: HashMap<usize, usize> = HashMap::new();
-    let medium = |(k, o): (usize, &Object)| match o.solid {
-        Some(s) => Some(*first.entry(s).or_insert(k)),
-        None => (!o.shape.flat()).then_some(k),
-    };
-    objects.iter().enumerate().map(medium).collect()
-}
-
-/// The dielectric solid holding `point`, if any: the medium (as [`media`] names it) whose
-/// surfaces a ray from `point` crosses an odd number of times, decided by the geometry alone
-/// (no normal is read), by two of three rays in directions off every axis (a ray through a
-/// mesh's edge or a tangent can miscount; three cannot all). Dielectrics do not overlap, so
-/// at most one holds it.
-pub(super) fn medium_at(objects: &[Object], medium: &[Option<usize>], errors: &[f64], point: E3) -> Option<usize> {
-    const DIRECTIONS: [E3; 3] = [
-        [0.267_261_2, 0.534_522_5, 0.801_783_7],
-        [-0.801_783_7, 0.267_261_2, 0.534_522_5],
-        [0.534_522_5, -0.801_783_7, -0.267_261_2],
-    ];
-    // Crossings counted per shape at most (a bound on the time a pathological shape takes).
-    const MOST: usize = 64;
-    let mut votes: HashMap<usize, u32> = HashMap::new();
-    for dir in DIRECTIONS {
-        let Some(ray) = Ray::new(point, dir) else { continue };
-        let mut odd: HashMap<usize, bool> = HashMap::new();
-        for (k, object) in objects.iter().enumerate() {
-            let Some(m) = medium[k].filter(|_| object.material.dielectric()) else { continue };
-            let mut t = 0.0;
-            let mut crossings = 0;
-            while let Some(c) = object.shape.intersect(&ray, t, f64::INFINITY) {
-                crossings += 1;
-                // Past this crossing by its error (and the rounding of t), to the next one.
-                t = c.t + errors[k].max(c.t.abs() * 1e-12).max(f64::MIN_POSITIVE);
-                if crossings == MOST {
-                    break;
-                }
-            }
-            *odd.entry(m).or_default() ^= crossings % 2 == 1;
-        }
-        for (m, inside) in odd {
-            *votes.entry(m).or_default() += u32::from(inside);
-        }
-    }
-    votes.into_iter().filter(|&(_, v)| v >= 2).map(|(m, _)| m).min()
 }
 
 /// `total += w c`.

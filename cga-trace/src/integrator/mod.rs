@@ -19,6 +19,7 @@ mod aov;
 mod avx;
 mod counts;
 mod glass;
+mod media;
 mod nearest;
 mod sampler;
 mod shade;
@@ -64,7 +65,7 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// or a closed mesh's first triangle); `None` for a thin sheet (flat, and no part of a
     /// closed solid), which light passes undeviated.
     pub(crate) medium: Vec<Option<usize>>,
-    /// The dielectric solid that holds the camera, if any ([`glass::medium_at`]): a pinhole's
+    /// The dielectric solid that holds the camera, if any ([`media::medium_at`]): a pinhole's
     /// rays start in it; a lens sample's or an orthographic view's, wherever the surfaces
     /// between the camera and their origin put them ([`Renderer::origin_medium`]).
     pub(crate) camera_medium: Option<usize>,
@@ -112,7 +113,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = B::PACKETS && bvh.is_none();
         let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
-        let medium = glass::media(&scene.objects);
+        let medium = media::media(&scene.objects);
         let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
         let textured = scene.objects.iter().any(|o| o.texture.is_some());
         let errors: Vec<f64> = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
@@ -124,7 +125,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             .enumerate()
             .map(|(k, (o, b))| (o.material.dielectric(), b.map_or(f64::INFINITY, |(_, r)| r), k))
             .collect();
-        let camera_medium = glass::medium_at(&scene.objects, &medium, &errors, scene.camera.position());
+        let camera_medium = media::medium_at(&scene.objects, &medium, &errors, scene.camera.position());
         let dielectrics = scene.objects.iter().any(|o| o.material.dielectric());
         Renderer {
             scene,

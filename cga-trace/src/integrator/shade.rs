@@ -9,7 +9,7 @@ use crate::light::{Light, Source, attenuation, blinn_phong, lights};
 use crate::material::{Material, Reflectance, shine};
 use crate::ray::{leaving_origin, offset};
 use crate::shapes::ShadingPoint;
-use crate::texture::Unit;
+use crate::shapes::Unit;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::Lane;
 use cga_core::{Real, Select};

@@ -1,12 +1,12 @@
 //! Tracing rays in lanes: the nearest hit, its normal and shading, the mirror bounces, and
-//! the sum of the layers from the deepest up.
+//! the sum of the layers from the deepest up; what each AOV shows along a ray.
 
 use super::shade::lit;
-use super::{RayCounts, Renderer, SampleKey, Window};
+use super::{Aov, RayCounts, Renderer, SampleKey, Window};
 use crate::backend::{Backend, RayLanes, lanes3};
 use crate::ray::{Ray, mirror, offset};
 use crate::settings::Reflection;
-use crate::shapes::ShadingPoint;
+use crate::shapes::{Crossing, ShadingPoint};
 use cga_core::euclid::E3;
 use cga_core::simd::Lane;
 use rayon::prelude::*;
@@ -193,4 +193,30 @@ pub(crate) fn mirrored<B: Backend, R: RayLanes<B, W>, const W: usize>(
     let n: E3<R::T> = lanes3::<R::T, W>(core::array::from_fn(|l| at(l).1));
     let (origin, r) = mirror(rays.dir(), rays.origin(), x, n, R::T::from_fn(|l| errors[l]));
     R::cast(origin, r)
+}
+
+impl<B: Backend> Renderer<'_, B> {
+    /// What AOV `aov` shows along `ray`.
+    pub(super) fn aov(&self, ray: &Ray<B::Carrier>, aov: Aov) -> [f64; 3] {
+        match aov {
+            Aov::Shaded => self.trace(ray, 0),
+            Aov::Normal => {
+                self.nearest(ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
+            }
+            Aov::Alpha => match self.nearest(ray, 0.0, f64::INFINITY) {
+                Some((ShadingPoint { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
+                _ => [0.0; 3],
+            },
+            // (value, 1) where the surface has a curvature, (0, 0) elsewhere: averaged over
+            // samples, value / weight is the mean over the samples that had one.
+            _ => match self.nearest(ray, 0.0, f64::INFINITY) {
+                Some((hit, object)) => {
+                    let crossing = Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
+                    let scale = self.scene.frame.scale;
+                    object.shape.curvature(&crossing).map_or([0.0; 3], |k| [aov.value(&k, ray.dir, scale), 1.0, 0.0])
+                }
+                None => [0.0; 3],
+            },
+        }
+    }
 }

@@ -1,10 +1,10 @@
 //! A disk: its plane met as a flat point, kept if within the rim.
 
+use super::Unit;
 use super::plane::{cross_plane, flat_normal};
 use super::{Crossing, Shape, crossing_at, flat_error, point_in_range};
 use crate::light::orthonormal;
 use crate::ray::Ray;
-use crate::texture::Unit;
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::{Disk, GeometryError};
 

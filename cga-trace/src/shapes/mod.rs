@@ -33,6 +33,17 @@ pub use torus::TorusShape;
 pub(crate) use triangle::inside_triangle;
 pub use triangle::{Shading, TriangleShape};
 
+/// What a surface's parameters are: fractions (angles over a turn, α, barycentric
+/// coordinates) or lengths (frame units, which the renderer turns into world units, so that
+/// a floor's checker has the same size at any scale).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unit {
+    /// Dimensionless.
+    Fraction,
+    /// A length.
+    Length,
+}
+
 /// Where a ray crosses an object.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Crossing {
@@ -116,7 +127,7 @@ pub trait Shape: Send + Sync + Debug + Any {
 
     /// The surface's own parameters `(u, v)` at a crossing, for textures
     /// ([`crate::texture`]), and what they measure; `None` where the shape has none.
-    fn uv(&self, _crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+    fn uv(&self, _crossing: &Crossing) -> Option<([f64; 2], Unit)> {
         None
     }
 

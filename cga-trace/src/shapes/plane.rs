@@ -1,9 +1,9 @@
 //! An infinite plane: met as the flat point `L ∨ Π`.
 
+use super::Unit;
 use super::{Crossing, Shape, crossing_at, facing, flat_error, plane_normal, point_in_range};
 use crate::light::orthonormal;
 use crate::ray::Ray;
-use crate::texture::Unit;
 use cga_core::euclid::{E3, dot, sub};
 use cga_core::{GeometryError, Plane};
 

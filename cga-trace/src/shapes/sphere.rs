@@ -1,8 +1,8 @@
 //! A sphere: met as the point pair `L ∨ S`, classified by its square.
 
+use super::Unit;
 use super::{Crossing, Shape, facing, largest, rounding};
 use crate::ray::{Ray, in_range};
-use crate::texture::Unit;
 use cga_core::euclid::{E3, dot, scale, sub, tolerance, unit};
 use cga_core::{GeometryError, InnerProduct, LeftContraction, Line, Select, Sphere, down_lanes, ei};
 
@@ -112,7 +112,7 @@ impl Shape for SphereShape {
     }
 
     /// `64 ε r (1 + ρ)²`, `ρ = |c|/r`: the meet's points carry the null basis's `ε ρ²` of
-    /// the radius (`RoundMeet::new`; measured at 3 ε (1 + ρ)² in `tests/tests/precision.rs`).
+    /// the radius (`RoundMeet::new`; measured at 3 ε (1 + ρ)² in `tests/tests/geometry/precision.rs`).
     fn crossing_error(&self) -> f64 {
         let one_plus_rho = 1.0 + largest(self.centre) / self.radius;
         rounding(self.radius * one_plus_rho * one_plus_rho)

@@ -70,10 +70,10 @@ fn blend<const N: usize>([u, v]: [f64; 2], [a, b, c]: [[f64; N]; 3]) -> [f64; N]
 impl Shape for TriangleShape {
     /// A mesh's texture coordinates, interpolated; else the barycentric coordinates `(u, v)`
     /// of the hit, `(1 − u − v) a + u b + v c` for the corners `a, b, c`.
-    fn uv(&self, c: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], super::Unit)> {
         let b = self.barycentric(c.point);
         let uv = self.shading.as_ref().and_then(|s| s.uvs).map_or(b, |uvs| blend(b, uvs));
-        Some((uv, crate::texture::Unit::Fraction))
+        Some((uv, super::Unit::Fraction))
     }
 
     #[inline]

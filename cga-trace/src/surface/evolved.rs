@@ -135,7 +135,6 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         let radius = sampled.iter().fold(0.0f64, |m, (c, r)| m.max(norm(*c) + r));
         let (centre, tight) = tight_sphere(&sampled);
         let cells = Self::cells(&circles, method)?;
-        let unsquared = Self::unsquared(&circles, method);
         Ok(EvolvedSurface {
             family: Family::of(circles),
             origin,
@@ -143,7 +142,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
             sphere: (add(centre, origin), tight),
             method,
             cells,
-            unsquared,
+            unsquared: None,
         })
     }
 
@@ -151,8 +150,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// method.
     pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
         let cells = Self::cells(&self.family.circles, method)?;
-        let unsquared = Self::unsquared(&self.family.circles, method);
-        Ok(EvolvedSurface { family: self.family.clone(), method, cells, unsquared, ..*self })
+        Ok(EvolvedSurface { family: self.family.clone(), method, cells, unsquared: None, ..*self })
     }
 
     /// The culling cells, for the methods that cull with them.
@@ -160,12 +158,11 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         method.cells().map(|count| Cells::new(circles, count)).transpose()
     }
 
-    /// The unsquared condition on the hybrid method's cells, where the family has it.
-    fn unsquared(circles: &C, method: Method) -> Option<Box<Unsquared<f64>>> {
-        match method {
-            Method::Hybrid { .. } => circles.unsquared(method.cells()?).map(Box::new),
-            _ => None,
-        }
+    /// The surface deciding most rays on the hybrid method's cells by `unsquared`, the
+    /// crossing condition unsquared (built by the families that have one: a spline's
+    /// segments), without the polynomial.
+    pub(crate) fn with_unsquared(self, unsquared: Option<Unsquared<f64>>) -> Self {
+        EvolvedSurface { unsquared: unsquared.map(Box::new), ..self }
     }
 
     /// The bounding sphere `(centre, radius)` in world coordinates.
@@ -343,7 +340,7 @@ impl<C: Circles<f64> + Send + Sync + 'static> Shape for EvolvedSurface<C> {
         self.family.circles.curvature(crossing.alpha?, sub(crossing.point, self.origin))
     }
 
-    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::shapes::Unit)> {
         let (family, origin) = (&self.family.circles, self.origin);
         let circle = family.at(crossing.alpha?).ok()?.centre_normal_radius().ok()?;
         super::swept_uv(crossing, (add(circle.0, origin), circle.1))

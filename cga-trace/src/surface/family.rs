@@ -8,7 +8,6 @@
 
 use super::bernstein::{Bernstein, Roots, Scaled};
 use super::newton::{Stop, safeguarded};
-use super::unsquared::Unsquared;
 use cga_core::euclid::{E3, dot, norm, scale, sub};
 use cga_core::{Circle, Dual, Interpolable, InterpolationError, Line, Pair, Real, ScalarQuadvector, Vector, down};
 use smallvec::SmallVec;
@@ -58,11 +57,6 @@ pub trait Circles<T: Real>: Clone + core::fmt::Debug {
     /// segment's): then it is built once over [0, 1] and restricted to each α-interval the
     /// cells leave ([`Family::roots_on`]), rather than built on each.
     const HIGH_DEGREE: bool = false;
-    /// Cells over `cells` equal α-intervals that decide most rays from the crossing condition
-    /// unsquared, without the polynomial ([`Unsquared`]), for the families that have them.
-    fn unsquared(&self, _cells: usize) -> Option<Unsquared<T>> {
-        None
-    }
 }
 
 /// What the root finder needs of a polynomial in the Bernstein basis, of any capacity.

@@ -94,12 +94,12 @@ pub enum SurfaceError {
 pub(crate) fn swept_uv(
     crossing: &crate::shapes::Crossing,
     (c, n): (cga_core::euclid::E3, cga_core::euclid::E3),
-) -> Option<([f64; 2], crate::texture::Unit)> {
+) -> Option<([f64; 2], crate::shapes::Unit)> {
     use cga_core::euclid::{dot, sub};
     let (a, b) = crate::light::orthonormal(n);
     let d = sub(crossing.point, c);
     let angle = 0.5 + dot(d, b).atan2(dot(d, a)) / std::f64::consts::TAU;
-    Some(([crossing.alpha?, angle], crate::texture::Unit::Fraction))
+    Some(([crossing.alpha?, angle], crate::shapes::Unit::Fraction))
 }
 
 /// The crossing error of a swept surface of bounding radius `radius` centred at `origin`

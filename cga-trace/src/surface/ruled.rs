@@ -316,10 +316,10 @@ impl Shape for RuledSurface {
 
     /// `(α, v)`: the ruling and the fraction of the way along it, `x = p + (lo + v (hi −
     /// lo)) u` (the form [`RuledSurface::point_and_normal`] takes).
-    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::shapes::Unit)> {
         let alpha = crossing.alpha?;
         let (p, u, (lo, hi)) = self.ruling(alpha)?;
         let s = dot(sub(sub(crossing.point, self.origin), p), u);
-        Some(([alpha, (s - lo) / (hi - lo)], crate::texture::Unit::Fraction))
+        Some(([alpha, (s - lo) / (hi - lo)], crate::shapes::Unit::Fraction))
     }
 }

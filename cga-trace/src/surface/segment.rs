@@ -25,7 +25,6 @@
 
 use super::bernstein::{Bernstein, LARGEST_DEGREE, Scaled, binomial};
 use super::family::{Circles, convolve as family_convolve};
-use super::unsquared::Unsquared;
 use cga_core::{Circle, Dual, InterpolationError, Line, Real, ScalarQuadvector, Vector};
 use smallvec::SmallVec;
 
@@ -230,10 +229,6 @@ impl<T: Real> BezierSegment<T> {
 impl<T: Real> Circles<T> for BezierSegment<T> {
     type Polynomial = Bernstein<T, CAPACITY>;
     const HIGH_DEGREE: bool = true;
-
-    fn unsquared(&self, cells: usize) -> Option<Unsquared<T>> {
-        Unsquared::new(self, cells)
-    }
 
     fn at(&self, t: T) -> Result<Circle<T>, InterpolationError> {
         circle_at(self, t)

@@ -6,6 +6,7 @@
 
 use super::evolved::{EvolvedSurface, distinct};
 use super::segment::BezierSegment;
+use super::unsquared::Unsquared;
 use super::{Method, SurfaceError, TwoCircles};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
@@ -19,6 +20,18 @@ enum Segment {
     Linear(Box<EvolvedSurface>),
     /// A quadratic or cubic Bézier segment.
     Curved(Box<EvolvedSurface<BezierSegment<f64>>>),
+}
+
+/// A Bézier segment's surface with its crossing condition unsquared on the hybrid method's
+/// cells ([`Unsquared`]), which decides most rays without the polynomial.
+fn curved(surface: EvolvedSurface<BezierSegment<f64>>) -> EvolvedSurface<BezierSegment<f64>> {
+    let unsquared = match surface.method() {
+        method @ Method::Hybrid { .. } => {
+            method.cells().and_then(|cells| Unsquared::new(&surface.circles().circles, cells))
+        }
+        _ => None,
+    };
+    surface.with_unsquared(unsquared)
 }
 
 impl Segment {
@@ -112,7 +125,11 @@ impl SplineSurface {
                         let pair = TwoCircles::new(Pair { c1: *a, c2: *b });
                         Segment::Linear(Box::new(EvolvedSurface::of(origin, pair, method)?))
                     }
-                    _ => Segment::Curved(Box::new(EvolvedSurface::of(origin, BezierSegment::new(controls), method)?)),
+                    _ => Segment::Curved(Box::new(curved(EvolvedSurface::of(
+                        origin,
+                        BezierSegment::new(controls),
+                        method,
+                    )?))),
                 })
             })
             .collect::<Result<Vec<_>, SurfaceError>>()?;
@@ -126,7 +143,7 @@ impl SplineSurface {
             .map(|s| {
                 Ok(match s {
                     Segment::Linear(s) => Segment::Linear(Box::new(s.with_method(method)?)),
-                    Segment::Curved(s) => Segment::Curved(Box::new(s.with_method(method)?)),
+                    Segment::Curved(s) => Segment::Curved(Box::new(curved(s.with_method(method)?))),
                 })
             })
             .collect::<Result<Vec<_>, SurfaceError>>()?;
@@ -212,7 +229,7 @@ impl Shape for SplineSurface {
         self.spline.curvature(crossing.alpha?, sub(crossing.point, self.origin)).ok()
     }
 
-    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::texture::Unit)> {
+    fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], crate::shapes::Unit)> {
         let (c, n, _) = self.spline.at(crossing.alpha?).ok()?.centre_normal_radius().ok()?;
         super::swept_uv(crossing, (cga_core::euclid::add(c, self.origin), n))
     }

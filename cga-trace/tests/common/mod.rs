@@ -2,8 +2,7 @@
 //! would write the moved scene, and reading the shipped ones.
 #![allow(dead_code)]
 
-#[path = "../../../tests/tests/common/dd.rs"]
-mod dd;
+use cga_tests::common::dd;
 
 use cga_core::Circle;
 use cga_core::euclid::E3;
@@ -311,8 +310,9 @@ pub fn scene_of_at(table: &Table, name: &str, width: u32, height: u32, time: f64
     let text = toml::to_string(table).unwrap();
     // Named by its path, so that the images it names are found beside it.
     let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
-    let mut scene =
-        Scene::parse_at(&text, file.to_str().unwrap(), None, time).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut scene = cga_trace::Source::parse(&text, file.to_str().unwrap())
+        .and_then(|mut source| source.scene(None, time))
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
     let c = scene.camera;
     scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap().with_lens(c.lens).unwrap();
     scene
