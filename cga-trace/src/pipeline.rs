@@ -178,6 +178,12 @@ impl Pipeline {
         Ok(Pipeline { source: Source::parse(text, file)?, view })
     }
 
+    /// The changes every later scene and picture takes, in place of the present ones (the
+    /// files stay read).
+    pub fn set_view(&mut self, view: View) {
+        self.view = view;
+    }
+
     /// The scene at the motion's time `time` with the view's changes.
     pub fn scene(&mut self, time: f64) -> Result<Scene, RenderError> {
         Ok(self.scene_noted(time)?.0)

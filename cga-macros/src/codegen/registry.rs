@@ -127,7 +127,7 @@ impl Gen<'_> {
 
         quote! {
             /// Which product a [`ProductEntry`] evaluates.
-            #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+            #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
             #[doc(hidden)]
             pub enum ProductKind {
                 /// `A B`
@@ -151,7 +151,7 @@ impl Gen<'_> {
             }
 
             /// Which linear map a [`UnaryEntry`] evaluates.
-            #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+            #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
             #[doc(hidden)]
             pub enum UnaryKind {
                 /// `Ã`

@@ -1,0 +1,61 @@
+"""Conformal geometric algebra G(4,1) from Rust: typed objects on numpy arrays, and a ray
+tracer of CGA scenes.
+
+Every class holds one value or an array of them (``Circle.from_array(a)`` with ``a`` of
+shape ``(n, 10)``); the operators ``*`` (geometric), ``^`` (outer), ``|`` (inner), ``&``
+(regressive, the meet) and ``~`` (reverse) run the generated Rust code on every row, and the
+result's class is the Rust result's type::
+
+    >>> import cga
+    >>> a, b, c = cga.up([1.0, 0, 0]), cga.up([0, 1.0, 0]), cga.up([-1.0, 0, 0])
+    >>> circle = a ^ b ^ c
+    >>> type(circle).__name__
+    'Circle'
+    >>> round(float(circle.centre_normal_radius()[2]), 12)
+    1.0
+
+Errors are ``cga.ValueError`` (a ``ValueError``) and its kinds ``ShapeError``,
+``GeometryError`` and ``SceneError``, with the Rust error's words.
+"""
+
+from ._cga import (
+    Bivector,
+    Circle,
+    Dilator,
+    Even,
+    FlatPoint,
+    Generator,
+    GeometryError,
+    Infinity,
+    Line,
+    Motor,
+    Odd,
+    Picture,
+    Plane,
+    Pseudoscalar,
+    Rotor,
+    Scalar,
+    ScalarQuadvector,
+    Scene,
+    SceneError,
+    ShapeError,
+    Sphere,
+    Translator,
+    Transversor,
+    ValueError,
+    Vector,
+    __version__,
+    down,
+    up,
+)
+
+#: A conformal point is a ``Vector``; a point pair a ``Bivector`` (cga-core's aliases).
+Point = Vector
+PointPair = Bivector
+
+__all__ = [
+    "Bivector", "Circle", "Dilator", "Even", "FlatPoint", "Generator", "GeometryError", "Infinity",
+    "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
+    "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
+    "Transversor", "ValueError", "Vector", "__version__", "down", "up",
+]

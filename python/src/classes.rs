@@ -1,0 +1,512 @@
+//! A Python class for each of cga-core's types, one value or an array of N: the algebra's
+//! operators (`*` geometric, `^` outer, `|` inner, `&` regressive, `~` reverse), scalars on
+//! either side, `+ −` within a type, the unary maps, and array access. Every product runs
+//! cga-core's generated code (its registry, `product_table`), on each row of an array in Rust
+//! with the GIL released; the result's class is the Rust result's type.
+
+use crate::errors::{GeometryError, ShapeError, ValueError};
+use crate::values::{Type, Values};
+use cga_core::{ProductEntry, ProductKind, UnaryEntry, UnaryKind, product_table, unary_table};
+use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
+use pyo3::IntoPyObjectExt;
+use pyo3::exceptions::{PyIndexError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyFloat, PyInt, PySlice};
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+/// Generated products by kind and operand types.
+type Products = HashMap<(ProductKind, &'static str, &'static str), ProductEntry<f64>>;
+
+/// Every generated product, by kind and operand types.
+fn products() -> &'static Products {
+    static TABLE: OnceLock<Products> = OnceLock::new();
+    TABLE.get_or_init(|| product_table::<f64>().into_iter().map(|e| ((e.kind, e.lhs, e.rhs), e)).collect())
+}
+
+/// Every generated unary map, by kind and operand type.
+fn unaries() -> &'static HashMap<(UnaryKind, &'static str), UnaryEntry<f64>> {
+    static TABLE: OnceLock<HashMap<(UnaryKind, &'static str), UnaryEntry<f64>>> = OnceLock::new();
+    TABLE.get_or_init(|| unary_table::<f64>().into_iter().map(|e| ((e.kind, e.input), e)).collect())
+}
+
+/// The symbol of a product in messages.
+fn symbol(kind: ProductKind) -> &'static str {
+    match kind {
+        ProductKind::Geometric => "*",
+        ProductKind::Outer => "^",
+        ProductKind::Inner => "|",
+        ProductKind::Regressive => "&",
+        ProductKind::LeftContraction => "lc",
+        ProductKind::RightContraction => "rc",
+        ProductKind::Commutator => "commutator",
+        ProductKind::ScalarProduct => "scalar_product",
+        ProductKind::Sandwich => "sandwich",
+    }
+}
+
+/// The product `kind` of `a` and `b`, row by row; `None` where the algebra has none between
+/// their types (identically zero, so not generated).
+pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyResult<Option<Values>> {
+    let Some(entry) = products().get(&(kind, a.ty.name, b.ty.name)) else { return Ok(None) };
+    let out = type_named(entry.output).ok_or_else(|| {
+        PyTypeError::new_err(format!("{} {} {}: no class for {}", a.ty.name, symbol(kind), b.ty.name, entry.output))
+    })?;
+    let eval = entry.eval;
+    Values::zip(a, b, py, out, eval).map(Some)
+}
+
+/// The unary map `kind` of `a`.
+pub fn unary(py: Python<'_>, kind: UnaryKind, a: &Values) -> PyResult<Values> {
+    let entry = unaries()
+        .get(&(kind, a.ty.name))
+        .ok_or_else(|| PyTypeError::new_err(format!("{}: no {kind:?} is generated", a.ty.name)))?;
+    let out = type_named(entry.output).ok_or_else(|| PyTypeError::new_err(format!("no class for {}", entry.output)))?;
+    let eval = entry.eval;
+    Ok(a.map(py, out, |x| eval(&x)))
+}
+
+/// `⟨A Ã⟩₀` of each value.
+pub fn norm_squared(py: Python<'_>, a: &Values) -> PyResult<Vec<f64>> {
+    let entry = unaries()
+        .get(&(UnaryKind::NormSquared, a.ty.name))
+        .ok_or_else(|| PyTypeError::new_err(format!("{}: no norm is generated", a.ty.name)))?;
+    let eval = entry.eval;
+    Ok(py.detach(|| (0..a.n).map(|i| eval(&a.storage(i))[0]).collect()))
+}
+
+/// Each value times `s` (a float, or an array of one float a value).
+fn scaled(a: &Values, s: &[f64]) -> PyResult<Values> {
+    if s.len() != 1 && s.len() != a.n {
+        return Err(ShapeError::new_err(format!("{} scalars for {} values", s.len(), a.n)));
+    }
+    let k = a.k();
+    let data = a.data.iter().enumerate().map(|(i, x)| x * s[if s.len() == 1 { 0 } else { i / k }]).collect();
+    Values::new(a.ty, data, a.n, a.single && s.len() == 1)
+}
+
+/// `other` as scalars: a Python number or a 1-D float array; `None` otherwise.
+fn scalars(other: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
+    if other.is_instance_of::<PyFloat>() || other.is_instance_of::<PyInt>() {
+        return other.extract::<f64>().ok().map(|s| vec![s]);
+    }
+    let array = other.extract::<PyArrayLikeDyn<'_, f64, AllowTypeChange>>().ok()?;
+    (array.ndim() == 1).then(|| array.as_array().iter().copied().collect())
+}
+
+/// Coefficients from an array-like of shape `(k,)` (one value) or `(n, k)`.
+pub fn read(ty: &'static Type, coefficients: &Bound<'_, PyAny>) -> PyResult<Values> {
+    let array = coefficients.extract::<PyArrayLikeDyn<'_, f64, AllowTypeChange>>().map_err(|_| {
+        ShapeError::new_err(format!(
+            "{}: coefficients must be numbers, an array of shape ({k},) or (n, {k})",
+            ty.name,
+            k = ty.blades.len()
+        ))
+    })?;
+    let k = ty.blades.len();
+    let shape = array.shape().to_vec();
+    let (n, single) = match shape.as_slice() {
+        [x] if *x == k => (1, true),
+        [n, x] if *x == k => (*n, false),
+        _ => {
+            return Err(ShapeError::new_err(format!(
+                "{}: coefficients of shape {shape:?}; a {0} has {k} ({}), so give shape ({k},) or (n, {k})",
+                ty.name,
+                ty.blades.join(", ")
+            )));
+        }
+    };
+    Values::new(ty, array.as_array().iter().copied().collect(), n, single)
+}
+
+/// `values` as a numpy array: `(k,)` for one value, `(n, k)` for an array.
+pub fn array<'py>(py: Python<'py>, values: &Values) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let shape = if values.single { vec![values.k()] } else { vec![values.n, values.k()] };
+    let flat = numpy::PyArray1::from_slice(py, &values.data);
+    flat.reshape(shape)
+}
+
+/// Row `index` (negative from the end) or a slice of an array.
+fn item(values: &Values, index: &Bound<'_, PyAny>) -> PyResult<Values> {
+    if values.single {
+        return Err(PyTypeError::new_err(format!("a single {} is not an array: it has no items", values.ty.name)));
+    }
+    let k = values.k();
+    if let Ok(slice) = index.cast::<PySlice>() {
+        let s = slice.indices(values.n as isize)?;
+        let rows: Vec<usize> = (0..s.slicelength).map(|j| (s.start + j as isize * s.step) as usize).collect();
+        let data = rows.iter().flat_map(|&i| values.row(i).iter().copied()).collect();
+        return Ok(Values { ty: values.ty, data, n: rows.len(), single: false });
+    }
+    let i: isize = index.extract()?;
+    let at = if i < 0 { i + values.n as isize } else { i };
+    if at < 0 || at >= values.n as isize {
+        return Err(PyIndexError::new_err(format!("index {i} out of range for {} {}s", values.n, values.ty.name)));
+    }
+    let _ = k;
+    Ok(Values { ty: values.ty, data: values.row(at as usize).to_vec(), n: 1, single: true })
+}
+
+/// The value `v` divided by `√|⟨v ṽ⟩₀|`, refused (by name) where that is zero or not finite.
+fn normalised(py: Python<'_>, v: &Values) -> PyResult<Values> {
+    let ns = norm_squared(py, v)?;
+    let mut data = v.data.clone();
+    let k = v.k();
+    for (i, s) in ns.iter().enumerate() {
+        let norm = s.abs().sqrt();
+        if !(norm > 0.0 && norm.is_finite()) {
+            return Err(GeometryError::new_err(format!(
+                "{} {i}: cannot normalise: ⟨A Ã⟩₀ = {s:e} (a zero or null value has no unit)",
+                v.ty.name
+            )));
+        }
+        for x in &mut data[i * k..(i + 1) * k] {
+            *x /= norm;
+        }
+    }
+    Values::new(v.ty, data, v.n, v.single)
+}
+
+/// The cga-core types that are classes, and the code each needs.
+macro_rules! classes {
+    ($($name:ident),* $(,)?) => {
+        $(
+            #[doc = concat!(
+                "cga-core's `", stringify!($name), "`: one value (coefficients of shape (k,)) or an ",
+                "array of n (shape (n, k)), with the algebra's operators."
+            )]
+            #[pyclass(module = "cga", frozen)]
+            pub struct $name(pub Values);
+
+            impl $name {
+                /// The type.
+                pub fn ty() -> &'static Type {
+                    static TYPE: Type = Type {
+                        name: stringify!($name),
+                        blades: &cga_core::$name::<f64>::BLADES,
+                        storage: &cga_core::$name::<f64>::STORAGE_INDEX,
+                    };
+                    &TYPE
+                }
+
+                /// The typed value of row `i` (for what cga-core computes on it).
+                pub fn typed(v: &Values, i: usize) -> cga_core::$name<f64> {
+                    cga_core::$name::from_storage(&v.storage(i))
+                }
+            }
+
+            #[pymethods]
+            impl $name {
+                /// A value from its coefficients (shape (k,)), or an array of n (shape (n, k)),
+                /// in the order of `blades`.
+                #[new]
+                fn new(coefficients: &Bound<'_, PyAny>) -> PyResult<Self> {
+                    Ok($name(read(Self::ty(), coefficients)?))
+                }
+
+                /// The same as the constructor: coefficients of shape (k,) or (n, k).
+                #[staticmethod]
+                fn from_array(coefficients: &Bound<'_, PyAny>) -> PyResult<Self> {
+                    Ok($name(read(Self::ty(), coefficients)?))
+                }
+
+                /// The blades' names, in coefficient order.
+                #[classattr]
+                fn blades() -> Vec<&'static str> {
+                    Self::ty().blades.to_vec()
+                }
+
+                /// The coefficients: shape (k,) for one value, (n, k) for an array.
+                #[getter(array)]
+                fn get_array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+                    array(py, &self.0)
+                }
+
+                /// Whether this holds one value (not an array).
+                #[getter]
+                fn single(&self) -> bool {
+                    self.0.single
+                }
+
+                fn __len__(&self) -> PyResult<usize> {
+                    if self.0.single {
+                        return Err(PyTypeError::new_err(format!("a single {} has no len(): it is not an array", stringify!($name))));
+                    }
+                    Ok(self.0.n)
+                }
+
+                fn __getitem__(&self, index: &Bound<'_, PyAny>) -> PyResult<Self> {
+                    Ok($name(item(&self.0, index)?))
+                }
+
+                fn __repr__(&self) -> String {
+                    let show = |i: usize| format!("{}", Self::typed(&self.0, i));
+                    if self.0.single {
+                        show(0)
+                    } else {
+                        let first: Vec<String> = (0..self.0.n.min(3)).map(show).collect();
+                        let more = if self.0.n > 3 { ", …" } else { "" };
+                        format!("{} array of {}: [{}{more}]", stringify!($name), self.0.n, first.join(", "))
+                    }
+                }
+
+                /// Exactly the same type, shape and coefficients.
+                fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+                    match values_of(other) {
+                        Some(o) => o.ty.name == self.0.ty.name && o.single == self.0.single && o.data == self.0.data,
+                        None => false,
+                    }
+                }
+
+                fn __mul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    binary(py, ProductKind::Geometric, &self.0, other, false)
+                }
+
+                fn __rmul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    binary(py, ProductKind::Geometric, &self.0, other, true)
+                }
+
+                fn __truediv__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    match scalars(other) {
+                        Some(s) => wrap(py, scaled(&self.0, &s.iter().map(|x| 1.0 / x).collect::<Vec<_>>())?),
+                        None => not_implemented(py),
+                    }
+                }
+
+                fn __xor__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    binary(py, ProductKind::Outer, &self.0, other, false)
+                }
+
+                fn __or__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    binary(py, ProductKind::Inner, &self.0, other, false)
+                }
+
+                fn __and__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    binary(py, ProductKind::Regressive, &self.0, other, false)
+                }
+
+                fn __add__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    sum(py, &self.0, other, 1.0)
+                }
+
+                fn __sub__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    sum(py, &self.0, other, -1.0)
+                }
+
+                fn __neg__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, scaled(&self.0, &[-1.0])?)
+                }
+
+                /// `~x`: the reverse.
+                fn __invert__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Reverse, &self.0)?)
+                }
+
+                /// The reverse `Ã`.
+                fn reverse(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Reverse, &self.0)?)
+                }
+
+                /// The grade involution `Â`.
+                fn involute(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Involute, &self.0)?)
+                }
+
+                /// The Clifford conjugate `Ā`.
+                fn conjugate(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Conjugate, &self.0)?)
+                }
+
+                /// The dual `A I₅⁻¹`.
+                fn dual(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Dual, &self.0)?)
+                }
+
+                /// The undual `A I₅`.
+                fn undual(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Undual, &self.0)?)
+                }
+
+                /// The part of grade `k`, `⟨A⟩ₖ`.
+                fn grade(&self, py: Python<'_>, k: usize) -> PyResult<Py<PyAny>> {
+                    wrap(py, unary(py, UnaryKind::Grade(k), &self.0)?)
+                }
+
+                /// `⟨A Ã⟩₀`: a float for one value, an array of n for an array.
+                fn norm_squared(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    floats(py, &self.0, norm_squared(py, &self.0)?)
+                }
+
+                /// `√|⟨A Ã⟩₀|`.
+                fn norm(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                    let n = norm_squared(py, &self.0)?.into_iter().map(|s| s.abs().sqrt()).collect();
+                    floats(py, &self.0, n)
+                }
+
+                /// The value over `√|⟨A Ã⟩₀|` (clifford's `.normal()`); a zero or null value is
+                /// refused (`GeometryError`).
+                fn normalise(&self, py: Python<'_>) -> PyResult<Self> {
+                    Ok($name(normalised(py, &self.0)?))
+                }
+
+                /// The geometric product (`*`).
+                fn gp(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::Geometric, &self.0, other)
+                }
+
+                /// The outer product (`^`).
+                fn wedge(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::Outer, &self.0, other)
+                }
+
+                /// The Hestenes inner product (`|`).
+                fn inner(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::Inner, &self.0, other)
+                }
+
+                /// The left contraction `A ⌋ B`.
+                fn lc(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::LeftContraction, &self.0, other)
+                }
+
+                /// The right contraction `A ⌊ B`.
+                fn rc(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::RightContraction, &self.0, other)
+                }
+
+                /// The regressive product, the meet (`&`).
+                fn vee(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::Regressive, &self.0, other)
+                }
+
+                /// `V X Ṽ` for this versor and `x`.
+                fn sandwich(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                    named(py, ProductKind::Sandwich, &self.0, x)
+                }
+            }
+        )*
+
+        /// The type named `name`, if it is a class.
+        pub fn type_named(name: &str) -> Option<&'static Type> {
+            match name {
+                $(stringify!($name) => Some($name::ty()),)*
+                _ => None,
+            }
+        }
+
+        /// `values` as an object of its type's class.
+        pub fn wrap(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
+            match values.ty.name {
+                $(stringify!($name) => Bound::new(py, $name(values))?.into_py_any(py),)*
+                other => Err(PyTypeError::new_err(format!("no class for {other}"))),
+            }
+        }
+
+        /// The values `obj` holds, if it is one of the classes.
+        pub fn values_of(obj: &Bound<'_, PyAny>) -> Option<Values> {
+            $(if let Ok(x) = obj.cast::<$name>() {
+                return Some(x.get().0.clone());
+            })*
+            None
+        }
+
+        /// Adds every class to the module.
+        pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+            $(m.add_class::<$name>()?;)*
+            Ok(())
+        }
+    };
+}
+
+classes!(
+    Scalar,
+    Infinity,
+    Vector,
+    Bivector,
+    FlatPoint,
+    Line,
+    Circle,
+    Plane,
+    Sphere,
+    Pseudoscalar,
+    ScalarQuadvector,
+    Rotor,
+    Translator,
+    Motor,
+    Dilator,
+    Transversor,
+    Generator,
+    Even,
+    Odd,
+);
+
+/// Python's `NotImplemented`, so that the other operand may answer.
+fn not_implemented(py: Python<'_>) -> PyResult<Py<PyAny>> {
+    Ok(py.NotImplemented())
+}
+
+/// `a op other` (or `other op a` when `reflected`): a product of two values, or a scaling by
+/// numbers for the geometric product.
+fn binary(
+    py: Python<'_>,
+    kind: ProductKind,
+    a: &Values,
+    other: &Bound<'_, PyAny>,
+    reflected: bool,
+) -> PyResult<Py<PyAny>> {
+    if kind == ProductKind::Geometric
+        && let Some(s) = scalars(other)
+    {
+        return wrap(py, scaled(a, &s)?);
+    }
+    let Some(b) = values_of(other) else { return not_implemented(py) };
+    let (l, r) = if reflected { (&b, a) } else { (a, &b) };
+    match product(py, kind, l, r)? {
+        Some(v) => wrap(py, v),
+        None => Err(PyTypeError::new_err(format!(
+            "{} {} {}: identically zero in this algebra, so not generated",
+            l.ty.name,
+            symbol(kind),
+            r.ty.name
+        ))),
+    }
+}
+
+/// A named product's method: as the operator, refusing what is not a value.
+fn named(py: Python<'_>, kind: ProductKind, a: &Values, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    if values_of(other).is_none() && !(kind == ProductKind::Geometric && scalars(other).is_some()) {
+        return Err(PyTypeError::new_err(format!(
+            "{} {}: expected a cga value, got {}",
+            a.ty.name,
+            symbol(kind),
+            other.get_type().name()?
+        )));
+    }
+    binary(py, kind, a, other, false)
+}
+
+/// `a + sign · b` for two values of one type.
+fn sum(py: Python<'_>, a: &Values, other: &Bound<'_, PyAny>, sign: f64) -> PyResult<Py<PyAny>> {
+    let Some(b) = values_of(other) else { return not_implemented(py) };
+    if b.ty.name != a.ty.name {
+        return Err(PyTypeError::new_err(format!(
+            "{} ± {}: add values of one type (convert one first, e.g. to Even or Odd)",
+            a.ty.name, b.ty.name
+        )));
+    }
+    let n = crate::values::broadcast(a, &b)?;
+    let k = a.k();
+    let at = |v: &Values, i: usize, j: usize| if v.n == 1 { v.data[j] } else { v.data[i * k + j] };
+    let data = (0..n * k).map(|x| at(a, x / k, x % k) + sign * at(&b, x / k, x % k)).collect();
+    wrap(py, Values::new(a.ty, data, n, a.single && b.single)?)
+}
+
+/// Per-value floats: a Python float for one value, a numpy array for an array.
+pub fn floats(py: Python<'_>, v: &Values, x: Vec<f64>) -> PyResult<Py<PyAny>> {
+    if v.single { x[0].into_py_any(py) } else { numpy::PyArray1::from_vec(py, x).into_py_any(py) }
+}
+
+/// A value error in cga's own exception.
+pub fn value_error(msg: String) -> PyErr {
+    ValueError::new_err(msg)
+}

@@ -1,0 +1,29 @@
+//! `cga._cga`, the extension module of the Python package `cga`: a class for each of
+//! cga-core's types (one value or a numpy-backed array of them, with the algebra's operators),
+//! the geometry on them, and scenes rendered through cga-trace's pipeline. Errors are Python
+//! exceptions (`cga.ValueError` and its kinds), never a crash.
+
+mod classes;
+mod errors;
+mod geometry;
+mod render;
+mod values;
+
+use pyo3::prelude::*;
+
+/// The module: classes, functions, exceptions.
+#[pymodule]
+fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    classes::register(m)?;
+    m.add_class::<render::Scene>()?;
+    m.add_class::<render::Picture>()?;
+    m.add_function(wrap_pyfunction!(geometry::up, m)?)?;
+    m.add_function(wrap_pyfunction!(geometry::down, m)?)?;
+    m.add("ValueError", py.get_type::<errors::ValueError>())?;
+    m.add("ShapeError", py.get_type::<errors::ShapeError>())?;
+    m.add("GeometryError", py.get_type::<errors::GeometryError>())?;
+    m.add("SceneError", py.get_type::<errors::SceneError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

@@ -1,0 +1,118 @@
+//! Values of one cga-core type: one, or N of them as an N × k array of coefficients (k the
+//! type's blades, in its own order), and the broadcasting of a binary map over two of them.
+
+use crate::errors::{ShapeError, ValueError};
+use pyo3::prelude::*;
+use rayon::prelude::*;
+
+/// A cga-core type as the bindings see it: its name, blades and where each sits in the
+/// 32-coefficient storage basis.
+#[derive(Debug)]
+pub struct Type {
+    /// The class name (`Line`).
+    pub name: &'static str,
+    /// Its blades' names, in its coefficient order.
+    pub blades: &'static [&'static str],
+    /// Each blade's index in the storage basis.
+    pub storage: &'static [usize],
+}
+
+/// Rows of a batch above which a map runs on rayon's threads.
+const PARALLEL_ROWS: usize = 1 << 14;
+
+/// One value, or N of them.
+#[derive(Clone, Debug)]
+pub struct Values {
+    /// Their type.
+    pub ty: &'static Type,
+    /// `n × k` coefficients, row by row.
+    pub data: Vec<f64>,
+    /// How many values.
+    pub n: usize,
+    /// Whether this is one value (shape `(k,)`) rather than an array of `n` (shape `(n, k)`).
+    pub single: bool,
+}
+
+impl Values {
+    /// Coefficients per value.
+    pub fn k(&self) -> usize {
+        self.ty.blades.len()
+    }
+
+    /// `data` (`n × k`) of type `ty`, refused where a coefficient is not finite.
+    pub fn new(ty: &'static Type, data: Vec<f64>, n: usize, single: bool) -> PyResult<Values> {
+        let k = ty.blades.len();
+        if data.len() != n * k {
+            return Err(ShapeError::new_err(format!("{}: {} coefficients for {n} values of {k}", ty.name, data.len())));
+        }
+        if let Some(i) = data.iter().position(|x| !x.is_finite()) {
+            let (row, col) = (i / k.max(1), i % k.max(1));
+            return Err(ValueError::new_err(format!(
+                "{}: coefficient {} of value {row} is {} (every coefficient must be finite)",
+                ty.name, ty.blades[col], data[i]
+            )));
+        }
+        Ok(Values { ty, data, n, single })
+    }
+
+    /// Value `i`'s coefficients.
+    pub fn row(&self, i: usize) -> &[f64] {
+        let k = self.k();
+        &self.data[i * k..(i + 1) * k]
+    }
+
+    /// Value `i` in the storage basis.
+    pub fn storage(&self, i: usize) -> [f64; 32] {
+        let mut s = [0.0; 32];
+        for (&at, &x) in self.ty.storage.iter().zip(self.row(i)) {
+            s[at] = x;
+        }
+        s
+    }
+
+    /// Values of `ty` read from storage-basis arrays (blades outside `ty` dropped).
+    pub fn from_storage(ty: &'static Type, rows: &[[f64; 32]], single: bool) -> Values {
+        let data = rows.iter().flat_map(|s| ty.storage.iter().map(move |&at| s[at])).collect();
+        Values { ty, data, n: rows.len(), single }
+    }
+
+    /// `f` on each value, in the storage basis (on threads for large batches, the GIL released).
+    pub fn map(&self, py: Python<'_>, out: &'static Type, f: impl Fn([f64; 32]) -> [f64; 32] + Sync + Send) -> Values {
+        let rows = py.detach(|| rows(self.n, |i| f(self.storage(i))));
+        Values::from_storage(out, &rows, self.single)
+    }
+
+    /// `f` on `(a_i, b_i)`, broadcasting one value against many; the result is one value only
+    /// where both are.
+    pub fn zip(
+        a: &Values,
+        b: &Values,
+        py: Python<'_>,
+        out: &'static Type,
+        f: impl Fn(&[f64; 32], &[f64; 32]) -> [f64; 32] + Sync + Send,
+    ) -> PyResult<Values> {
+        let n = broadcast(a, b)?;
+        let at = |v: &Values, i: usize| if v.n == 1 { v.storage(0) } else { v.storage(i) };
+        let rows = py.detach(|| rows(n, |i| f(&at(a, i), &at(b, i))));
+        Ok(Values::from_storage(out, &rows, a.single && b.single))
+    }
+}
+
+/// The number of results of a map over `a` and `b`: their common length, or the other's where
+/// one is a single value (or an array of one).
+pub fn broadcast(a: &Values, b: &Values) -> PyResult<usize> {
+    match (a.n, b.n) {
+        (x, y) if x == y => Ok(x),
+        (1, y) => Ok(y),
+        (x, 1) => Ok(x),
+        (x, y) => Err(ShapeError::new_err(format!(
+            "{} values and {} values: arrays of different lengths (broadcast only one against many)",
+            x, y
+        ))),
+    }
+}
+
+/// `f(0) … f(n − 1)`, on rayon's threads when `n` is large.
+fn rows<R: Send>(n: usize, f: impl Fn(usize) -> R + Sync + Send) -> Vec<R> {
+    if n >= PARALLEL_ROWS { (0..n).into_par_iter().map(f).collect() } else { (0..n).map(f).collect() }
+}

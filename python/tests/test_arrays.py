@@ -1,0 +1,67 @@
+"""Arrays of values: every operator and constructor on N rows gives, row by row, the bits of
+one value at a time, and broadcasts one value against many."""
+
+import numpy as np
+import pytest
+
+import cga
+
+RNG = np.random.default_rng(7)
+
+
+def points(n):
+    return RNG.normal(size=(n, 3))
+
+
+def test_array_products_are_one_at_a_time_bit_for_bit():
+    a, b, c = points(50), points(50), points(50)
+    circles = cga.up(a) ^ cga.up(b) ^ cga.up(c)
+    assert type(circles) is cga.Circle and len(circles) == 50 and circles.array.shape == (50, 10)
+    for i in range(50):
+        one = cga.up(a[i]) ^ cga.up(b[i]) ^ cga.up(c[i])
+        assert np.array_equal(circles[i].array, one.array)
+
+
+def test_one_against_many_broadcasts():
+    lines = cga.Line.through(points(20), points(20))
+    sphere = cga.Sphere.from_centre_radius([0, 0, 0.0], 1.0)
+    pairs = lines & sphere
+    assert len(pairs) == 20
+    for i in range(20):
+        assert np.array_equal(pairs[i].array, (lines[i] & sphere).array)
+
+
+def test_constructors_broadcast_and_match_one_at_a_time():
+    centres, radii = points(30), RNG.uniform(0.1, 2.0, size=30)
+    spheres = cga.Sphere.from_centre_radius(centres, radii)
+    c, r = spheres.centre_radius()
+    assert c.shape == (30, 3) and r.shape == (30,)
+    assert np.allclose(c, centres, atol=1e-13) and np.allclose(r, radii, rtol=1e-13)
+    assert np.array_equal(spheres[4].array, cga.Sphere.from_centre_radius(centres[4], radii[4]).array)
+
+
+def test_from_array_indexing_slicing_and_len():
+    a = RNG.normal(size=(8, 10))
+    circles = cga.Circle.from_array(a)
+    assert len(circles) == 8 and np.array_equal(circles.array, a)
+    assert np.array_equal(circles[-1].array, a[-1])
+    assert np.array_equal(circles[2:6:2].array, a[2:6:2])
+    with pytest.raises(IndexError):
+        circles[8]
+    with pytest.raises(TypeError):
+        len(circles[0])
+
+
+def test_a_large_batch_runs_in_threads_with_the_same_bits():
+    n = 40_000
+    x = points(n)
+    m = cga.Motor.from_rotor_translation(cga.Rotor.from_axis_angle([0.3, 0.4, 1.0], 0.9), [1.0, 2.0, 3.0])
+    moved = m.sandwich(cga.up(x))
+    for i in (0, 12_345, n - 1):
+        assert np.array_equal(moved[i].array, m.sandwich(cga.up(x[i])).array)
+
+
+def test_motor_moves_many_points():
+    m = cga.Motor.from_rotor_translation(cga.Rotor.from_axis_angle([0, 0, 1.0], 0.3), [1.0, 0, 0])
+    x = points(100)
+    assert np.allclose(m.move_point(x), cga.down(m.sandwich(cga.up(x))), atol=1e-12)

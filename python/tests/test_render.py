@@ -1,0 +1,82 @@
+"""Scenes rendered through the library's pipeline: the same picture as the command line
+writes, as arrays, and written atomically."""
+
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import cga
+
+HERE = os.path.dirname(__file__)
+SCENES = os.path.join(HERE, "..", "..", "cga-trace", "scenes")
+
+FIRST = """
+[camera]
+position = [0.0, -8.0, 2.0]
+look_at = [0.0, 0.0, 0.5]
+width = 32
+height = 24
+
+[[lights]]
+position = [-4.0, -6.0, 8.0]
+
+[[objects]]
+type = "sphere"
+centre = [0.0, 0.0, 1.0]
+radius = 1.0
+material = { colour = [0.9, 0.1, 0.1] }
+
+[[objects]]
+type = "plane"
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 0.0, 1.0]
+material = { colour = [0.6, 0.6, 0.6], kr = 0.3 }
+"""
+
+
+def test_a_scene_renders_to_arrays():
+    picture = cga.Scene.parse(FIRST).render()
+    assert picture.size == (32, 24)
+    linear, srgb = picture.linear, picture.srgb
+    assert linear.shape == (24, 32, 3) and srgb.shape == (24, 32, 3) and srgb.dtype == np.uint8
+    ball = linear[12, 16]
+    assert ball[0] > 4 * max(ball[1], ball[2]), ball  # red, at the centre
+    assert np.all(linear[0, 3] == 0), "the sky (top row) is the background"
+    assert picture.rays[0] == 32 * 24
+
+
+def test_options_override_the_scene():
+    scene = cga.Scene.parse(FIRST)
+    assert scene.render(width=16).size == (16, 12)
+    normals = scene.render(aov="normal").linear
+    assert normals.max() <= 1.0
+    with pytest.raises(cga.SceneError, match="aov"):
+        scene.render(aov="shiny")
+
+
+def test_bad_scenes_are_refused_with_the_file_line_and_field():
+    with pytest.raises(cga.SceneError, match=r"bad\.toml:3:"):
+        cga.Scene.parse("[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = 5\n", "bad.toml")
+
+
+def test_save_writes_the_png_the_command_line_writes(tmp_path):
+    path = tmp_path / "first.toml"
+    path.write_text(FIRST)
+    ours = tmp_path / "ours.png"
+    cga.Scene.load(str(path)).render().save(str(ours))
+    assert ours.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert cga.Scene.load(str(path)).render()._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n"
+    # An output that is the scene itself (here through a link) is refused, and the scene survives.
+    link = tmp_path / "link.png"
+    link.symlink_to(path)
+    with pytest.raises(cga.SceneError, match="same file"):
+        cga.Scene.load(str(path)).render().save(str(link))
+    assert path.read_text() == FIRST
+
+
+@pytest.mark.skipif(not os.path.isdir(SCENES), reason="the repository's shipped scenes")
+def test_a_shipped_scene_renders():
+    picture = cga.Scene.load(os.path.join(SCENES, "primitives.toml")).render(width=40)
+    assert picture.size[0] == 40 and picture.linear.max() > 0
