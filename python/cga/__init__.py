@@ -14,6 +14,10 @@ result's class is the Rust result's type::
     >>> round(float(circle.centre_normal_radius()[2]), 12)
     1.0
 
+``cga.draw([sphere, circle, line])`` draws objects as what they are (a notebook shows any
+object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scene files
+to numpy arrays.
+
 Errors are ``cga.ValueError`` (a ``ValueError``) and its kinds ``ShapeError``,
 ``GeometryError`` and ``SceneError``, with the Rust error's words.
 """
@@ -46,6 +50,7 @@ from ._cga import (
     Vector,
     __version__,
     down,
+    draw,
     up,
 )
 
@@ -57,5 +62,5 @@ __all__ = [
     "Bivector", "Circle", "Dilator", "Even", "FlatPoint", "Generator", "GeometryError", "Infinity",
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
-    "Transversor", "ValueError", "Vector", "__version__", "down", "up",
+    "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "up",
 ]

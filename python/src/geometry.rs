@@ -72,21 +72,23 @@ fn length(lens: &[usize]) -> PyResult<usize> {
     }
 }
 
-/// Values of `ty` from `f(i)` for rows `0..n`, the first failure refused by row.
+/// Values of `ty` from `f(i)` (storage-basis values) for rows `0..n`, the first failure
+/// refused by row.
 fn build<E: std::fmt::Display>(
     ty: &'static Type,
     n: usize,
     single: bool,
     f: impl Fn(usize) -> Result<[f64; 32], E>,
 ) -> PyResult<Values> {
-    let mut rows = Vec::with_capacity(n);
+    let mut data = Vec::with_capacity(n * ty.storage.len());
     for i in 0..n {
-        rows.push(f(i).map_err(|e| {
+        let s = f(i).map_err(|e| {
             let at = if single { String::new() } else { format!(" (row {i})") };
             GeometryError::new_err(format!("{}{at}: {e}", ty.name))
-        })?);
+        })?;
+        data.extend(ty.storage.iter().map(|&at| s[at]));
     }
-    Ok(Values::from_storage(ty, &rows, single))
+    Ok(Values { ty, data, n, single })
 }
 
 /// `f(i)` for each row of `v`, the first failure refused by row.

@@ -1,9 +1,11 @@
 //! `cga._cga`, the extension module of the Python package `cga`: a class for each of
 //! cga-core's types (one value or a numpy-backed array of them, with the algebra's operators),
-//! the geometry on them, and scenes rendered through cga-trace's pipeline. Errors are Python
+//! the geometry on them, pictures of objects (`draw`), and scenes rendered through cga-trace's
+//! pipeline. Errors are Python
 //! exceptions (`cga.ValueError` and its kinds), never a crash.
 
 mod classes;
+mod draw;
 mod errors;
 mod geometry;
 mod render;
@@ -19,6 +21,7 @@ fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<render::Scene>()?;
     m.add_class::<render::Picture>()?;
     m.add_function(wrap_pyfunction!(geometry::up, m)?)?;
+    m.add_function(wrap_pyfunction!(draw::draw, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::down, m)?)?;
     m.add("ValueError", py.get_type::<errors::ValueError>())?;
     m.add("ShapeError", py.get_type::<errors::ShapeError>())?;

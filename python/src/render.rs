@@ -111,7 +111,7 @@ impl Scene {
             let scene = pipeline.scene(time).map_err(|e| e.to_string())?;
             pipeline.render(&scene, &options, &|| {}).map_err(|e| e.to_string())
         });
-        Ok(Picture { rendered: rendered.map_err(scene_error)? })
+        Ok(Picture::new(rendered.map_err(scene_error)?))
     }
 }
 
@@ -122,6 +122,18 @@ pub struct Picture {
 }
 
 impl Picture {
+    /// A picture of a rendering.
+    pub fn new(rendered: Rendered) -> Picture {
+        Picture { rendered }
+    }
+
+    /// The picture as PNG bytes (8-bit, developed and labelled).
+    pub fn png(&self) -> Result<Vec<u8>, cga_trace::film::OutputError> {
+        let mut bytes = std::io::Cursor::new(Vec::new());
+        self.rendered.image(Output::Png8).write(&mut bytes, Output::Png8, self.rendered.encoding)?;
+        Ok(bytes.into_inner())
+    }
+
     /// The film's rows top to bottom as an (H, W, 3) array.
     fn rows<'py>(&self, py: Python<'py>, film: &cga_trace::Film) -> PyResult<Py<PyAny>> {
         let (w, h) = (film.width as usize, film.height as usize);

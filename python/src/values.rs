@@ -70,16 +70,10 @@ impl Values {
         s
     }
 
-    /// Values of `ty` read from storage-basis arrays (blades outside `ty` dropped).
-    pub fn from_storage(ty: &'static Type, rows: &[[f64; 32]], single: bool) -> Values {
-        let data = rows.iter().flat_map(|s| ty.storage.iter().map(move |&at| s[at])).collect();
-        Values { ty, data, n: rows.len(), single }
-    }
-
     /// `f` on each value, in the storage basis (on threads for large batches, the GIL released).
     pub fn map(&self, py: Python<'_>, out: &'static Type, f: impl Fn([f64; 32]) -> [f64; 32] + Sync + Send) -> Values {
-        let rows = py.detach(|| rows(self.n, |i| f(self.storage(i))));
-        Values::from_storage(out, &rows, self.single)
+        let data = py.detach(|| fill(out, self.n, |i| f(self.storage(i))));
+        Values { ty: out, data, n: self.n, single: self.single }
     }
 
     /// `f` on `(a_i, b_i)`, broadcasting one value against many; the result is one value only
@@ -93,8 +87,8 @@ impl Values {
     ) -> PyResult<Values> {
         let n = broadcast(a, b)?;
         let at = |v: &Values, i: usize| if v.n == 1 { v.storage(0) } else { v.storage(i) };
-        let rows = py.detach(|| rows(n, |i| f(&at(a, i), &at(b, i))));
-        Ok(Values::from_storage(out, &rows, a.single && b.single))
+        let data = py.detach(|| fill(out, n, |i| f(&at(a, i), &at(b, i))));
+        Ok(Values { ty: out, data, n, single: a.single && b.single })
     }
 }
 
@@ -112,7 +106,21 @@ pub fn broadcast(a: &Values, b: &Values) -> PyResult<usize> {
     }
 }
 
-/// `f(0) … f(n − 1)`, on rayon's threads when `n` is large.
-fn rows<R: Send>(n: usize, f: impl Fn(usize) -> R + Sync + Send) -> Vec<R> {
-    if n >= PARALLEL_ROWS { (0..n).into_par_iter().map(f).collect() } else { (0..n).map(f).collect() }
+/// The coefficients of `out` in `f(0) … f(n − 1)` (storage-basis values), row by row, each
+/// written in place (no storage-basis array is kept); on rayon's threads when `n` is large.
+fn fill(out: &'static Type, n: usize, f: impl Fn(usize) -> [f64; 32] + Sync + Send) -> Vec<f64> {
+    let k = out.blades.len();
+    let mut data = vec![0.0; n * k];
+    let write = |(i, row): (usize, &mut [f64])| {
+        let s = f(i);
+        for (x, &at) in row.iter_mut().zip(out.storage) {
+            *x = s[at];
+        }
+    };
+    if n >= PARALLEL_ROWS {
+        data.par_chunks_mut(k).enumerate().for_each(write);
+    } else {
+        data.chunks_mut(k).enumerate().for_each(write);
+    }
+    data
 }

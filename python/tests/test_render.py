@@ -80,3 +80,19 @@ def test_save_writes_the_png_the_command_line_writes(tmp_path):
 def test_a_shipped_scene_renders():
     picture = cga.Scene.load(os.path.join(SCENES, "primitives.toml")).render(width=40)
     assert picture.size[0] == 40 and picture.linear.max() > 0
+
+
+def test_objects_draw_as_pictures():
+    sphere = cga.Sphere.from_centre_radius([0, 0, 0.0], 1.0)
+    circle = cga.Circle.from_centre_normal_radius([0, 0, 1.5], [0, 0, 1.0], 0.8)
+    line = cga.Line.through([-2.0, 0, 0], [2.0, 0, 0])
+    picture = cga.draw([sphere, circle, line], labels=["S", None, "L"], width=64, height=48)
+    srgb = picture.srgb
+    assert srgb.shape == (48, 64, 3) and srgb.max() > 0
+    # Every object kind shows in a notebook; a versor has no picture (its text shows instead).
+    assert circle._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert cga.Rotor.from_axis_angle([0, 0, 1.0], 0.5)._repr_png_() is None
+    with pytest.raises(TypeError):
+        cga.draw([sphere, "not a blade"])
+    with pytest.raises(cga.SceneError, match="colour"):
+        cga.draw([sphere], colours=["no such colour"])
