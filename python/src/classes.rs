@@ -382,7 +382,7 @@ macro_rules! classes {
                 /// The value drawn (a notebook shows it): PNG bytes, or `None` where it has no
                 /// picture (a versor, a zero blade).
                 fn _repr_png_<'py>(&self, py: Python<'py>) -> Option<Bound<'py, pyo3::types::PyBytes>> {
-                    crate::draw::png(py, &self.0).map(|b| pyo3::types::PyBytes::new(py, &b))
+                    crate::figure::png(py, &self.0).map(|b| pyo3::types::PyBytes::new(py, &b))
                 }
 
                 /// `V X Ṽ` for this versor and `x`.

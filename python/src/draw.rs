@@ -1,38 +1,14 @@
-//! Pictures of CGA objects, as pyganja draws them: `cga.draw([sphere, circle, line], …)` and
-//! every object's `_repr_png_` in a notebook, through cga-trace's `Figure` (each blade drawn
-//! as what it is: a point as a ball, a circle as a torus tube, an imaginary round dashed).
+//! `cga.draw([sphere, circle, line], …)`: CGA objects drawn as what they are, as pyganja
+//! draws them, into a picture.
 
 use crate::classes::values_of;
 use crate::errors::SceneError;
+use crate::figure::{PALETTE, add};
 use crate::render::Picture;
-use crate::values::Values;
-use cga_trace::figure::{Drawable, Figure};
+use cga_trace::figure::Figure;
 use cga_trace::pipeline::Options;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-
-/// Colours given to objects in turn when none is named.
-const PALETTE: [&str; 8] = ["red", "blue", "green", "orange", "purple", "cyan", "magenta", "yellow"];
-
-/// One value's null-basis coefficients, as a figure draws them.
-struct Stored([f64; 32]);
-
-impl Drawable for Stored {
-    fn coefficients(&self) -> [f64; 32] {
-        self.0
-    }
-}
-
-/// `figure` with every row of `values` added in `colour`, the first labelled `label`.
-fn add(mut figure: Figure, values: &Values, colour: &str, label: Option<&str>) -> Figure {
-    for i in 0..values.n {
-        figure = figure.add(&Stored(values.storage(i)), colour);
-        if let (0, Some(text)) = (i, label) {
-            figure = figure.label(text);
-        }
-    }
-    figure
-}
 
 /// The picture of `objects` (values or arrays of them), each in its colour (a name such as
 /// "red" or "#rrggbb"; the palette in turn where none is given) and with its label, framed by
@@ -68,12 +44,4 @@ pub fn draw(
     let rendered =
         py.detach(|| figure.rendered(&Options::default())).map_err(|e| SceneError::new_err(e.to_string()))?;
     Ok(Picture::new(rendered))
-}
-
-/// One value (or array) drawn alone at 320 × 240 as PNG bytes; `None` where it has no picture
-/// (a versor, a zero blade), so that a notebook shows its text instead.
-pub fn png(py: Python<'_>, values: &Values) -> Option<Vec<u8>> {
-    let figure = add(Figure::new().resolution(320, 240), values, PALETTE[0], None);
-    let rendered = py.detach(|| figure.rendered(&Options::default())).ok()?;
-    Picture::new(rendered).png().ok()
 }

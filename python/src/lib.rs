@@ -7,6 +7,7 @@
 mod classes;
 mod draw;
 mod errors;
+mod figure;
 mod geometry;
 mod render;
 mod values;
