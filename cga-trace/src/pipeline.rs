@@ -24,6 +24,7 @@ use crate::invalid::Invalid;
 use crate::label::{Label, draw_labels};
 use crate::output::{OutputFile, OutputFileError};
 use crate::scene::Scene;
+use std::borrow::Cow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -331,17 +332,18 @@ impl Rendered {
 
     /// The picture as `output` stores it: a shaded PNG developed (`2^exposure`, then the tone
     /// map; EXR and HDR keep the linear values, other AOVs are as rendered), then the labels
-    /// written in, in their own colours.
-    pub fn image(&self, output: Output) -> Film {
+    /// written in, in their own colours. Borrowed as rendered where nothing changes it (no copy
+    /// of the film).
+    pub fn image(&self, output: Output) -> Cow<'_, Film> {
         let png = matches!(output, Output::Png8 | Output::Png16);
         let mut film = match self.develop {
             Some((exposure, tone_map)) if png && (exposure != 0.0 || tone_map != ToneMap::None) => {
-                self.film.developed(exposure, tone_map)
+                Cow::Owned(self.film.developed(exposure, tone_map))
             }
-            _ => self.film.clone(),
+            _ => Cow::Borrowed(&self.film),
         };
-        if let Some((labels, camera)) = &self.labels {
-            draw_labels(&mut film, camera, labels);
+        if let Some((labels, camera)) = self.labels.as_ref().filter(|(labels, _)| !labels.is_empty()) {
+            draw_labels(film.to_mut(), camera, labels);
         }
         film
     }

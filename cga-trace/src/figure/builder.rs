@@ -294,7 +294,7 @@ impl Figure {
 
     /// The picture, labels written in.
     pub fn film(&self) -> Result<Film, FigureError> {
-        Ok(self.rendered(&Options::default())?.image(Output::Png8))
+        Ok(self.rendered(&Options::default())?.image(Output::Png8).into_owned())
     }
 
     /// Render to `path`: PNG, EXR or HDR by its extension, written to a temporary file and
