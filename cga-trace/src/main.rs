@@ -2,10 +2,10 @@
 
 use anyhow::Context;
 use cga_trace::film::Output;
-use cga_trace::integrator::{RayCounts, Window};
+use cga_trace::integrator::RayCounts;
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
-use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, passes, scale_path};
+use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, passes, scale_path, window};
 use cga_trace::settings::ToneMap;
 use cga_trace::{Aov, BackendKind, Encoding, Scene};
 use clap::{Parser, Subcommand};
@@ -337,10 +337,7 @@ fn render_frame(
         labels: !args.no_labels,
         encoding: args.encoding,
     };
-    let rows = match args.crop {
-        Some(c) => Window::crop(scene.camera.width, scene.camera.height, c).map_or(0, |w| w.rows.len()),
-        None => scene.camera.height as usize,
-    };
+    let rows = window(&scene, &options).map_err(flagged)?.rows.len();
     let bar = indicatif::ProgressBar::new((rows * passes(&scene, time)) as u64).with_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
@@ -398,20 +395,13 @@ fn view(args: &Render) -> View {
 
 /// A pipeline's error, naming the flag that caused it where one did.
 fn flagged(e: RenderError) -> anyhow::Error {
-    let flag = match &e {
-        RenderError::View(ViewError::Fov(_)) => "--fov",
-        RenderError::View(ViewError::Size(_)) => "--width/--height",
-        RenderError::View(ViewError::Settings(_)) => "--max-depth/--spp/--exposure",
-        RenderError::Crop(_) => "--crop",
-        RenderError::Backend(_) => "--backend",
-        _ => return e.into(),
-    };
-    let inner: anyhow::Error = match e {
-        RenderError::View(ViewError::Fov(e) | ViewError::Size(e)) => e.into(),
-        RenderError::View(ViewError::Settings(e)) => e.into(),
-        RenderError::Crop(e) => anyhow::Error::msg(e),
-        RenderError::Backend(e) => anyhow::Error::msg(e),
-        e => e.into(),
+    let (flag, inner): (&str, anyhow::Error) = match e {
+        RenderError::View(ViewError::Fov(e)) => ("--fov", e.into()),
+        RenderError::View(ViewError::Size(e)) => ("--width/--height", e.into()),
+        RenderError::View(ViewError::Settings(e)) => ("--max-depth/--spp/--exposure", e.into()),
+        RenderError::Crop(e) => ("--crop", anyhow::Error::msg(e)),
+        RenderError::Backend(e) => ("--backend", anyhow::Error::msg(e)),
+        e => return e.into(),
     };
     inner.context(flag)
 }

@@ -244,7 +244,7 @@ pub fn render(scene: &Scene, options: &Options, on_row: &(dyn Fn() + Sync)) -> R
 }
 
 /// The window `options` crops the scene's image to, or the whole image.
-fn window(scene: &Scene, options: &Options) -> Result<Window, RenderError> {
+pub fn window(scene: &Scene, options: &Options) -> Result<Window, RenderError> {
     let (w, h) = (scene.camera.width, scene.camera.height);
     match options.crop {
         Some(c) => Window::crop(w, h, c).map_err(RenderError::Crop),

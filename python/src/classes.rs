@@ -4,7 +4,7 @@
 //! cga-core's generated code (its registry, `product_table`), on each row of an array in Rust
 //! with the GIL released; the result's class is the Rust result's type.
 
-use crate::errors::{GeometryError, ShapeError, ValueError};
+use crate::errors::{GeometryError, ShapeError};
 use crate::values::{Type, Values};
 use cga_core::{ProductEntry, ProductKind, UnaryEntry, UnaryKind, product_table, unary_table};
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
@@ -131,7 +131,6 @@ fn item(values: &Values, index: &Bound<'_, PyAny>) -> PyResult<Values> {
     if values.single {
         return Err(PyTypeError::new_err(format!("a single {} is not an array: it has no items", values.ty.name)));
     }
-    let k = values.k();
     if let Ok(slice) = index.cast::<PySlice>() {
         let s = slice.indices(values.n as isize)?;
         let rows: Vec<usize> = (0..s.slicelength).map(|j| (s.start + j as isize * s.step) as usize).collect();
@@ -143,7 +142,6 @@ fn item(values: &Values, index: &Bound<'_, PyAny>) -> PyResult<Values> {
     if at < 0 || at >= values.n as isize {
         return Err(PyIndexError::new_err(format!("index {i} out of range for {} {}s", values.n, values.ty.name)));
     }
-    let _ = k;
     Ok(Values { ty: values.ty, data: values.row(at as usize).to_vec(), n: 1, single: true })
 }
 
@@ -408,10 +406,10 @@ macro_rules! classes {
             }
         }
 
-        /// The values `obj` holds, if it is one of the classes.
-        pub fn values_of(obj: &Bound<'_, PyAny>) -> Option<Values> {
+        /// The values `obj` holds, if it is one of the classes (borrowed: no copy per operation).
+        pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
             $(if let Ok(x) = obj.cast::<$name>() {
-                return Some(x.get().0.clone());
+                return Some(&x.get().0);
             })*
             None
         }
@@ -466,7 +464,7 @@ fn binary(
         return wrap(py, scaled(a, &s)?);
     }
     let Some(b) = values_of(other) else { return not_implemented(py) };
-    let (l, r) = if reflected { (&b, a) } else { (a, &b) };
+    let (l, r) = if reflected { (b, a) } else { (a, b) };
     match product(py, kind, l, r)? {
         Some(v) => wrap(py, v),
         None => Err(PyTypeError::new_err(format!(
@@ -500,19 +498,14 @@ fn sum(py: Python<'_>, a: &Values, other: &Bound<'_, PyAny>, sign: f64) -> PyRes
             a.ty.name, b.ty.name
         )));
     }
-    let n = crate::values::broadcast(a, &b)?;
+    let n = crate::values::broadcast(a, b)?;
     let k = a.k();
     let at = |v: &Values, i: usize, j: usize| if v.n == 1 { v.data[j] } else { v.data[i * k + j] };
-    let data = (0..n * k).map(|x| at(a, x / k, x % k) + sign * at(&b, x / k, x % k)).collect();
+    let data = (0..n * k).map(|x| at(a, x / k, x % k) + sign * at(b, x / k, x % k)).collect();
     wrap(py, Values::new(a.ty, data, n, a.single && b.single)?)
 }
 
 /// Per-value floats: a Python float for one value, a numpy array for an array.
 pub fn floats(py: Python<'_>, v: &Values, x: Vec<f64>) -> PyResult<Py<PyAny>> {
     if v.single { x[0].into_py_any(py) } else { numpy::PyArray1::from_vec(py, x).into_py_any(py) }
-}
-
-/// A value error in cga's own exception.
-pub fn value_error(msg: String) -> PyErr {
-    ValueError::new_err(msg)
 }

@@ -39,7 +39,7 @@ pub fn draw(
         let colour =
             colours.as_ref().and_then(|c| c.get(k).cloned()).unwrap_or_else(|| PALETTE[k % PALETTE.len()].into());
         let label = labels.as_ref().and_then(|l| l.get(k).cloned().flatten());
-        figure = add(figure, &values, &colour, label.as_deref());
+        figure = add(figure, values, &colour, label.as_deref());
     }
     let rendered =
         py.detach(|| figure.rendered(&Options::default())).map_err(|e| SceneError::new_err(e.to_string()))?;

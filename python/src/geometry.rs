@@ -5,7 +5,7 @@
 //! refused by name and row (`GeometryError`).
 
 use crate::classes::{Circle, Line, Motor, Plane, Rotor, Sphere, Translator, Vector, floats, values_of};
-use crate::errors::{GeometryError, ShapeError};
+use crate::errors::{GeometryError, ShapeError, ValueError};
 use crate::values::{Type, Values};
 use cga_core::euclid::E3;
 use numpy::{AllowTypeChange, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
@@ -58,7 +58,7 @@ fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<f64>> {
 /// Refuses NaN and ±∞, naming the argument.
 fn finite(name: &str, x: &[f64]) -> PyResult<()> {
     match x.iter().find(|v| !v.is_finite()) {
-        Some(v) => Err(crate::classes::value_error(format!("{name}: {v} (every number must be finite)"))),
+        Some(v) => Err(ValueError::new_err(format!("{name}: {v} (every number must be finite)"))),
         None => Ok(()),
     }
 }
@@ -104,7 +104,7 @@ fn e3s(py: Python<'_>, single: bool, rows: Vec<E3>) -> PyResult<Py<PyAny>> {
 }
 
 /// The values of `obj` (a class of the bindings), for functions that take any.
-fn values(obj: &Bound<'_, PyAny>) -> PyResult<Values> {
+fn values<'a>(obj: &'a Bound<'_, PyAny>) -> PyResult<&'a Values> {
     values_of(obj).ok_or_else(|| {
         PyTypeError::new_err(format!(
             "expected a cga value, got {}",
@@ -129,7 +129,7 @@ pub fn down(py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     if v.ty.name != "Vector" {
         return Err(PyTypeError::new_err(format!("down takes a Vector (a conformal point), not a {}", v.ty.name)));
     }
-    let out = each(&v, |i| cga_core::down(Vector::typed(&v, i)))?;
+    let out = each(v, |i| cga_core::down(Vector::typed(v, i)))?;
     e3s(py, v.single, out)
 }
 

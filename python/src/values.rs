@@ -86,8 +86,10 @@ impl Values {
         f: impl Fn(&[f64; 32], &[f64; 32]) -> [f64; 32] + Sync + Send,
     ) -> PyResult<Values> {
         let n = broadcast(a, b)?;
-        let at = |v: &Values, i: usize| if v.n == 1 { v.storage(0) } else { v.storage(i) };
-        let data = py.detach(|| fill(out, n, |i| f(&at(a, i), &at(b, i))));
+        // A value broadcast against many is put in the storage basis once.
+        let (one_a, one_b) = ((a.n == 1).then(|| a.storage(0)), (b.n == 1).then(|| b.storage(0)));
+        let at = |v: &Values, one: &Option<[f64; 32]>, i: usize| one.unwrap_or_else(|| v.storage(i));
+        let data = py.detach(|| fill(out, n, |i| f(&at(a, &one_a, i), &at(b, &one_b, i))));
         Ok(Values { ty: out, data, n, single: a.single && b.single })
     }
 }
