@@ -4,6 +4,7 @@
 //! within `(t_min, t_max)`, nearer child first, and `t_max` shrinks as hits are found.
 
 use cga_core::euclid::E3;
+use std::sync::Arc;
 
 /// A box and what it holds: `count > 0` for a leaf (`items[first .. first + count]`),
 /// otherwise children at `index + 1` and `second`.
@@ -30,9 +31,14 @@ const LEAF: usize = 4;
 impl Bvh {
     /// The hierarchy over objects with these bounding spheres (`None`: unbounded).
     pub fn new(bounds: &[Option<(E3, f64)>]) -> Self {
+        Bvh::over(bounds.iter().copied().enumerate())
+    }
+
+    /// The hierarchy over the objects `(k, bounds)` given (a part of a scene's).
+    fn over(bounds: impl Iterator<Item = (usize, Option<(E3, f64)>)>) -> Self {
         let mut items: Vec<(u32, E3, E3)> = Vec::new();
         let mut unbounded = Vec::new();
-        for (k, b) in bounds.iter().enumerate() {
+        for (k, b) in bounds {
             match b {
                 Some((c, r)) => items.push((k as u32, c.map(|x| x - r), c.map(|x| x + r))),
                 None => unbounded.push(k as u32),
@@ -79,7 +85,7 @@ impl Bvh {
 
     /// Calls `visit(k, t_max)` for every object `k` the ray may hit in `(t_min, t_max)`;
     /// `visit` returns the new `t_max` (a nearer hit) or `None` to stop at once (a blocker
-    /// found). Unbounded objects come first.
+    /// found). Unbounded objects come first. Returns the last `t_max`, or `None` if stopped.
     pub fn traverse(
         &self,
         origin: E3,
@@ -87,19 +93,16 @@ impl Bvh {
         t_min: f64,
         mut t_max: f64,
         mut visit: impl FnMut(usize, f64) -> Option<f64>,
-    ) {
+    ) -> Option<f64> {
         for &k in &self.unbounded {
-            match visit(k as usize, t_max) {
-                Some(t) => t_max = t,
-                None => return,
-            }
+            t_max = visit(k as usize, t_max)?;
         }
         if self.nodes.is_empty() {
-            return;
+            return Some(t_max);
         }
         let inv = dir.map(|d| 1.0 / d);
         if slab(&self.nodes[0], origin, inv, t_min, t_max).is_none() {
-            return;
+            return Some(t_max);
         }
         let mut stack = [0u32; 64];
         let mut top = 1;
@@ -108,10 +111,7 @@ impl Bvh {
             let node = &self.nodes[stack[top] as usize];
             if node.count > 0 {
                 for &k in &self.items[node.first as usize..(node.first + node.count) as usize] {
-                    match visit(k as usize, t_max) {
-                        Some(t) => t_max = t,
-                        None => return,
-                    }
+                    t_max = visit(k as usize, t_max)?;
                 }
                 continue;
             }
@@ -133,6 +133,62 @@ impl Bvh {
                 }
             }
         }
+        Some(t_max)
+    }
+}
+
+/// A scene's hierarchy in two layers visited as one: over the objects that stay in place
+/// (shared, built once for all of a shutter's instants: [`Kept`]) and over those that move
+/// (built for each instant).
+#[derive(Clone, Debug)]
+pub struct Layers {
+    still: Arc<Bvh>,
+    moving: Option<Bvh>,
+}
+
+impl Layers {
+    /// [`Bvh::traverse`] through the objects that stay, then, with the `t_max` they leave,
+    /// those that move.
+    pub fn traverse(
+        &self,
+        origin: E3,
+        dir: E3,
+        t_min: f64,
+        t_max: f64,
+        mut visit: impl FnMut(usize, f64) -> Option<f64>,
+    ) -> Option<f64> {
+        let t_max = self.still.traverse(origin, dir, t_min, t_max, &mut visit)?;
+        match &self.moving {
+            Some(moving) => moving.traverse(origin, dir, t_min, t_max, visit),
+            None => Some(t_max),
+        }
+    }
+}
+
+/// The hierarchy over a scene's objects that stay in place, kept from one picture of it to
+/// the next (a shutter's instants, an animation's frames): built again only where their
+/// bounds differ from the last picture's.
+#[derive(Debug, Default)]
+pub struct Kept {
+    bounds: Vec<(usize, Option<(E3, f64)>)>,
+    still: Option<Arc<Bvh>>,
+}
+
+impl Kept {
+    /// The two layers over objects with these `bounds`, `moving[k]` saying which move.
+    pub fn layers(&mut self, bounds: &[Option<(E3, f64)>], moving: &[bool]) -> Layers {
+        let still_bounds: Vec<_> = bounds.iter().copied().enumerate().filter(|&(k, _)| !moving[k]).collect();
+        let still = match &self.still {
+            Some(still) if self.bounds == still_bounds => still.clone(),
+            _ => {
+                let still = Arc::new(Bvh::over(still_bounds.iter().copied()));
+                (self.bounds, self.still) = (still_bounds, Some(still.clone()));
+                still
+            }
+        };
+        let moved = moving.iter().any(|&m| m);
+        let moving = moved.then(|| Bvh::over(bounds.iter().copied().enumerate().filter(|&(k, _)| moving[k])));
+        Layers { still, moving }
     }
 }
 
@@ -180,5 +236,40 @@ mod tests {
             }
             assert!(seen.len() < 200, "{} visited: the hierarchy culls nothing", seen.len());
         }
+    }
+
+    #[test]
+    fn two_layers_visit_every_object_the_ray_can_hit_and_the_still_one_is_kept() {
+        let grid = |shift: f64| -> Vec<Option<(E3, f64)>> {
+            (0..200)
+                .map(|k| Some(([(k % 10) as f64 * 3.0 + shift * (k % 2) as f64, (k / 10) as f64 * 3.0, 0.0], 1.0)))
+                .collect()
+        };
+        // The odd objects move.
+        let moving: Vec<bool> = (0..200).map(|k| k % 2 == 1).collect();
+        let mut kept = Kept::default();
+        let first = kept.layers(&grid(0.0), &moving);
+        let later = kept.layers(&grid(0.5), &moving);
+        assert!(Arc::ptr_eq(&first.still, &later.still), "the still layer is built again");
+        let bounds = grid(0.5);
+        for (o, d) in [([-5.0, 0.1, 0.0], [1.0, 0.0, 0.0]), ([-5.0, -5.0, 0.0], [0.7, 0.7, 0.0])] {
+            let mut seen = Vec::new();
+            later.traverse(o, d, 0.0, f64::INFINITY, |k, t| {
+                seen.push(k);
+                Some(t)
+            });
+            // Every sphere the line passes within its radius of is visited, whichever layer.
+            for (k, (c, r)) in bounds.iter().flatten().enumerate() {
+                let oc = [c[0] - o[0], c[1] - o[1], c[2] - o[2]];
+                let t = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
+                let miss2 = oc.iter().map(|x| x * x).sum::<f64>() - t * t / (d[0] * d[0] + d[1] * d[1]);
+                assert!(miss2 > r * r || seen.contains(&k), "object {k} not visited");
+            }
+            assert!(seen.len() < 100, "{} visited: the layers cull nothing", seen.len());
+        }
+        // A still object that is elsewhere: the still layer is built again.
+        let mut moved = grid(0.5);
+        moved[0] = Some(([100.0, 0.0, 0.0], 1.0));
+        assert!(!Arc::ptr_eq(&later.still, &kept.layers(&moved, &moving).still));
     }
 }

@@ -21,4 +21,7 @@ pub struct Object {
     /// glass mesh's triangles): a ray that crosses any of them enters or leaves the whole.
     /// `None`: the shape is a solid of its own, or, if flat, a thin sheet.
     pub solid: Option<usize>,
+    /// Whether it moves over the frame times (a `motion`): only objects that move are placed
+    /// anew at each of a shutter's instants; the rest, and their hierarchy, are kept.
+    pub moving: bool,
 }

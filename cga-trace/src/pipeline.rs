@@ -19,7 +19,7 @@ use crate::colour::{Scale, false_colour};
 use crate::film::{Encoding, Film, Output, OutputError, ToneMap};
 use crate::format::{SceneError, Source};
 use crate::input::Input;
-use crate::integrator::{Aov, RayCounts, Renderer, Window};
+use crate::integrator::{Aov, Kept, RayCounts, Renderer, Window};
 use crate::invalid::Invalid;
 use crate::label::{Label, draw_labels};
 use crate::output::{OutputFile, OutputFileError};
@@ -165,18 +165,20 @@ pub enum RenderError {
 pub struct Pipeline {
     source: Source,
     view: View,
+    /// The hierarchy over the objects that stay, kept between instants.
+    kept: Kept,
 }
 
 impl Pipeline {
     /// The scene file `path` (and the files it reads).
     pub fn load(path: &Path, view: View) -> Result<Pipeline, RenderError> {
-        Ok(Pipeline { source: Source::load(path)?, view })
+        Ok(Pipeline { source: Source::load(path)?, view, kept: Kept::default() })
     }
 
     /// A scene given as text; `file` names it in errors, and its folder is where the files
     /// it names are read from.
     pub fn parse(text: &str, file: &str, view: View) -> Result<Pipeline, RenderError> {
-        Ok(Pipeline { source: Source::parse(text, file)?, view })
+        Ok(Pipeline { source: Source::parse(text, file)?, view, kept: Kept::default() })
     }
 
     /// The changes every later scene and picture takes, in place of the present ones (the
@@ -199,8 +201,9 @@ impl Pipeline {
     }
 
     /// The picture of `scene` (this pipeline's, at `options.time`): through its shutter
-    /// where it has one, each instant the scene placed anew and taking its share of every
-    /// pixel's samples; `on_row` is called as each row of each instant is done.
+    /// where it has one, each instant taking its share of every pixel's samples with the
+    /// objects that move placed anew (those that stay, and their hierarchy, are kept from
+    /// the instant before); `on_row` is called as each row of each instant is done.
     pub fn render(
         &mut self,
         scene: &Scene,
@@ -210,12 +213,12 @@ impl Pipeline {
         let window = window(scene, options)?;
         let start = std::time::Instant::now();
         let (film, counts) = match scene.shutter {
-            None => render_on(scene, options, window, (0, 1), on_row)?,
+            None => render_on(scene, options, window, (0, 1), on_row, &mut self.kept)?,
             Some(shutter) => {
                 let mut counts = RayCounts::default();
                 let film = shutter.expose(options.time, scene.settings.spp, |t, subset| {
                     let at = self.scene(t).map_err(|e| RenderError::Instant { time: t, source: Box::new(e) })?;
-                    let (film, cast) = render_on(&at, options, window.clone(), subset, on_row)?;
+                    let (film, cast) = render_on(&at, options, window.clone(), subset, on_row, &mut self.kept)?;
                     counts.add(&cast);
                     Ok::<_, RenderError>(film)
                 })?;
@@ -239,7 +242,7 @@ pub fn render(scene: &Scene, options: &Options, on_row: &(dyn Fn() + Sync)) -> R
     }
     let window = window(scene, options)?;
     let start = std::time::Instant::now();
-    let (film, counts) = render_on(scene, options, window, (0, 1), on_row)?;
+    let (film, counts) = render_on(scene, options, window, (0, 1), on_row, &mut Kept::default())?;
     Ok(Rendered::new(scene, options, film, counts, start.elapsed().as_secs_f64()))
 }
 
@@ -253,18 +256,19 @@ pub fn window(scene: &Scene, options: &Options) -> Result<Window, RenderError> {
 }
 
 /// The film and the rays cast on the options' back end, taking the samples `first, first +
-/// step, …` of each pixel.
+/// step, …` of each pixel, the hierarchy over objects that stay taken from `kept`.
 fn render_on(
     scene: &Scene,
     options: &Options,
     window: Window,
     subset: (u32, u32),
     on_row: &(dyn Fn() + Sync),
+    kept: &mut Kept,
 ) -> Result<(Film, RayCounts), RenderError> {
     match options.backend {
-        BackendKind::Sparse => render_with::<Sparse>(scene, options, window, subset, on_row),
-        BackendKind::Dense => render_with::<Dense>(scene, options, window, subset, on_row),
-        BackendKind::Plain => render_with::<Plain>(scene, options, window, subset, on_row),
+        BackendKind::Sparse => render_with::<Sparse>(scene, options, window, subset, on_row, kept),
+        BackendKind::Dense => render_with::<Dense>(scene, options, window, subset, on_row, kept),
+        BackendKind::Plain => render_with::<Plain>(scene, options, window, subset, on_row, kept),
     }
 }
 
@@ -275,9 +279,10 @@ fn render_with<B: Backend>(
     window: Window,
     (first, step): (u32, u32),
     on_row: &(dyn Fn() + Sync),
+    kept: &mut Kept,
 ) -> Result<(Film, RayCounts), RenderError> {
     holds::<B>(scene).map_err(RenderError::Backend)?;
-    let mut renderer = Renderer::<B>::with_backend(scene).sample_subset(first, step);
+    let mut renderer = Renderer::<B>::keeping(scene, kept).sample_subset(first, step);
     if !options.packets {
         renderer = renderer.without_packets();
     }

@@ -78,6 +78,12 @@ pub(crate) fn is_template(value: &Spanned<DeValue<'_>>) -> bool {
     matches!(field(value, "template"), Some(DeValue::Boolean(true)))
 }
 
+/// Whether an object's table moves over the frame times (`motion`): only then does it
+/// differ between a shutter's instants.
+pub(crate) fn moves(value: &Spanned<DeValue<'_>>) -> bool {
+    field(value, "motion").is_some()
+}
+
 /// An object's `name`, if it gives one.
 pub(crate) fn name_of(value: &Spanned<DeValue<'_>>) -> Option<String> {
     match field(value, "name") {

@@ -3,16 +3,20 @@
 
 use super::error::{SceneError, line_column_bytes, printable};
 use super::include::{self, Joined};
-use super::instance::{InstanceSpec, is_instance, is_template, name_of};
+use super::instance::{InstanceSpec, is_instance, is_template, moves, name_of};
 use super::{Assets, ObjectSpec, SceneFile, build_object, sections};
 use crate::drawing::Marks;
 use crate::frame::Frame;
 use crate::invalid::Invalid;
+use crate::label::Label;
 use crate::light::Light;
 use crate::limits::{MAX_DOCUMENT_TOKENS, MAX_FILE_BYTES, MAX_LIGHTS, MAX_MATERIALS, MAX_OBJECTS, MAX_SHADOW_RAYS};
+use crate::object::Object;
 use crate::scene::Scene;
 use crate::settings::Settings;
+use crate::surface::Method;
 use cga_core::Motor;
+use cga_core::euclid::E3;
 use serde::Deserialize;
 use serde::de::IntoDeserializer;
 use std::collections::HashMap;
@@ -48,6 +52,34 @@ pub struct Source {
     assets: Assets,
     /// The scene file's name, for errors.
     file: String,
+    /// Each object that does not move, as last built: a shutter's instants and an
+    /// animation's frames place only the objects that move.
+    still: HashMap<usize, Still>,
+}
+
+/// An object without `motion` (nor any along its instances' chain), kept between the times
+/// a [`Source`] is placed at: its extent, and the object as built in a frame with marks.
+#[derive(Default)]
+struct Still {
+    extent: Option<(Option<(E3, f64)>, usize)>,
+    built: Option<(Placing, Vec<Object>, Option<Label>)>,
+}
+
+/// What an object's build depends on besides its own table: the frame it is given in, the
+/// surfaces' method and, for a drawing, the marks (sized by the whole scene, moving
+/// objects included).
+#[derive(Clone, Copy, PartialEq)]
+struct Placing {
+    frame: ([u64; 3], u64),
+    method: Method,
+    marks: Option<Marks>,
+}
+
+impl Placing {
+    /// This placing for an object that draws (`true`: the marks count) or not.
+    fn of(self, draws: bool) -> Placing {
+        Placing { marks: self.marks.filter(|_| draws), ..self }
+    }
 }
 
 impl Source {
@@ -74,7 +106,7 @@ impl Source {
     pub fn parse(text: &str, file: &str) -> Result<Source, SceneError> {
         let joined = include::join(text, file)?;
         let folder = Path::new(file).parent().unwrap_or(Path::new(""));
-        Ok(Source { joined, assets: crate::format::Assets::new(folder), file: file.into() })
+        Ok(Source { joined, assets: crate::format::Assets::new(folder), file: file.into(), still: HashMap::new() })
     }
 
     /// The scene at the frame time `time` in [0, 1] (clamped; NaN is the start), with `size`
@@ -82,7 +114,7 @@ impl Source {
     /// `motion` placed by their keyframes' screw motion at that time. Images and meshes are
     /// read the first time they are needed and kept for every later time.
     pub fn scene(&mut self, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
-        let (joined, assets, file) = (&self.joined, &mut self.assets, self.file.as_str());
+        let (joined, assets, file, still) = (&self.joined, &mut self.assets, self.file.as_str(), &mut self.still);
         // NaN is no time: the start.
         let time = if time.is_nan() { 0.0 } else { time.clamp(0.0, 1.0) };
         let text = joined.text.as_str();
@@ -173,11 +205,12 @@ impl Source {
                     let why = format!("no object named `{}` before this one", spec.of.get_ref().escape_debug());
                     located(Invalid::at("of", spec.of.span(), Invalid::Range(why)))
                 })?;
-                let placed = of.under(spec.motor(time).map_err(located)?, spec.material.is_some().then_some(k));
+                let motor = spec.motor(time).map_err(located)?;
+                let placed = of.under(motor, spec.material.is_some().then_some(k), moves(&value));
                 instances.insert(k, placed);
                 placed
             } else {
-                Placed { base: k, outer: None, material: None }
+                Placed { base: k, outer: None, material: None, moving: moves(&value) }
             };
             if let Some(name) = name_of(&value) {
                 named.insert(name, placed);
@@ -187,9 +220,20 @@ impl Source {
                 continue;
             }
             let span = value.span();
-            let base = if placed.base == k { value } else { value_of(placed.base)? };
-            let extent = ObjectSpec::extent_of(&base, time, placed.outer, assets);
-            let (extent, triangles) = extent.map_err(|e| syntax_error(joined, &e, &map_of(placed.base)))?;
+            let kept = still.get(&k).and_then(|s| s.extent).filter(|_| !placed.moving);
+            let (extent, triangles) = match kept {
+                Some(kept) => kept,
+                None => {
+                    let base = if placed.base == k { value } else { value_of(placed.base)? };
+                    let extent = ObjectSpec::extent_of(&base, time, placed.outer, assets);
+                    extent.map_err(|e| syntax_error(joined, &e, &map_of(placed.base)))?
+                }
+            };
+            if placed.moving {
+                still.remove(&k);
+            } else {
+                still.entry(k).or_default().extent = Some((extent, triangles));
+            }
             sizes.extend(extent);
             // Meshes' triangles (each instance's too) counted before any is built.
             shapes += triangles;
@@ -230,15 +274,29 @@ impl Source {
                 return Err(invalid(&rest, span, format!("light {}", k + 1), reason));
             }
         }
-        let mut built = Vec::with_capacity(count);
+        let mut built = Vec::with_capacity(shapes.max(count));
         let mut labels = Vec::new();
+        let placing = Placing {
+            frame: (frame.origin.map(f64::to_bits), frame.scale.to_bits()),
+            method: settings.surface_method,
+            marks: Some(marks),
+        };
         for k in 0..count {
+            // An object that does not move, built in this frame already: as it was.
+            if let Some(Still { built: Some((at, objects, label)), .. }) = still.get(&k)
+                && *at == placing.of(at.marks.is_some())
+            {
+                built.extend(objects.iter().cloned());
+                labels.extend(label.clone());
+                continue;
+            }
             let value = value_of(k)?;
             if is_template(&value) {
                 continue;
             }
             // An instance is built from the object it copies, whose fields its errors name,
             // but for those the instance gives.
+            let moving = instances.get(&k).map_or(moves(&value), |p| p.moving);
             let (j, span, dress) = match instances.get(&k) {
                 Some(&placed) => {
                     let (instance, span) = instance_spec(&value, &map_of(k), joined)?;
@@ -279,6 +337,7 @@ impl Source {
                 _ => j,
             };
             spec.time = time;
+            let draws = spec.draws();
             let (object, name) = build_object(spec, k, settings.surface_method, &frame, &marks, assets);
             let what = format!("object `{name}`");
             // Errors at a field where that field is written; others at the object.
@@ -286,10 +345,15 @@ impl Source {
                 Some(_) => invalid(&map_of(owner(&reason)), span.clone(), what.clone(), reason),
                 None => invalid(&map_of(k), span.clone(), what.clone(), reason),
             };
-            let (objects, label) = object.map_err(at)?;
+            let (mut objects, label) = object.map_err(at)?;
             // A drawing or a mesh is several shapes: all count against the limit.
             if let Some(e) = limit("shapes", built.len() + objects.len(), MAX_OBJECTS) {
                 return Err(at(e));
+            }
+            if moving {
+                objects.iter_mut().for_each(|o| o.moving = true);
+            } else {
+                still.entry(k).or_default().built = Some((placing.of(draws), objects.clone(), label.clone()));
             }
             built.extend(objects);
             labels.extend(label);
@@ -313,23 +377,25 @@ impl Source {
 }
 
 /// Where an object comes from: the object copied (`base`, itself if not an instance), the
-/// motor its instances put it under, and the instance whose material it wears, if any.
+/// motor its instances put it under, the instance whose material it wears, if any, and
+/// whether it moves (a `motion` anywhere along the chain).
 #[derive(Clone, Copy)]
 struct Placed {
     base: usize,
     outer: Option<Motor>,
     material: Option<usize>,
+    moving: bool,
 }
 
 impl Placed {
     /// This placement under a further instance's `motor` (applied after), wearing the
-    /// material of instance `material` where given.
-    fn under(&self, motor: Option<Motor>, material: Option<usize>) -> Placed {
+    /// material of instance `material` where given; `moving` where the instance moves.
+    fn under(&self, motor: Option<Motor>, material: Option<usize>, moving: bool) -> Placed {
         let outer = match (motor, self.outer) {
             (Some(m), Some(o)) => Some(m * o),
             (m, o) => m.or(o),
         };
-        Placed { base: self.base, outer, material: material.or(self.material) }
+        Placed { base: self.base, outer, material: material.or(self.material), moving: moving || self.moving }
     }
 }
 

@@ -1303,7 +1303,8 @@ pub(crate) fn build_object(
         let label = spec.label(&shapes, anchor, material.colour)?;
         // A closed glass mesh is one solid: light enters at one triangle and leaves at another.
         let solid = (material.dielectric() && spec.is_closed_mesh(assets)?).then_some(index);
-        let object = |shape| Object { name: name.clone(), shape, material, texture: texture.clone(), solid };
+        let object =
+            |shape| Object { name: name.clone(), shape, material, texture: texture.clone(), solid, moving: false };
         let objects = shapes.into_iter().map(object).collect();
         Ok((objects, label))
     });

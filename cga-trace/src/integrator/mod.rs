@@ -32,7 +32,8 @@ pub use sampler::sample_offset;
 pub(crate) use sampler::{Dimension, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
-use crate::bvh::Bvh;
+pub use crate::bvh::Kept;
+use crate::bvh::Layers;
 use crate::film::Film;
 use crate::object::Object;
 use crate::scene::Scene;
@@ -41,7 +42,7 @@ use rayon::prelude::*;
 use std::ops::Range;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
-/// Scenes with at least this many bounded objects are traversed through a [`Bvh`]; fewer
+/// Scenes with at least this many bounded objects are traversed through a [`Bvh`](crate::bvh::Bvh); fewer
 /// are tested one by one (cheaper than any traversal).
 const BVH_FROM: usize = 8;
 
@@ -58,7 +59,7 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
     pub(crate) bounds: Vec<Option<(E3, f64)>>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
-    pub(crate) bvh: Option<Bvh>,
+    pub(crate) bvh: Option<Layers>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
     pub(crate) flat: Vec<bool>,
     /// For each object, the solid it bounds as a dielectric, named by its first object (itself,
@@ -105,9 +106,17 @@ impl<'a> Renderer<'a> {
 impl<'a, B: Backend> Renderer<'a, B> {
     /// A renderer for `scene` on back end `B`: every object prepared once.
     pub fn with_backend(scene: &'a Scene) -> Self {
+        Renderer::keeping(scene, &mut Kept::default())
+    }
+
+    /// [`Renderer::with_backend`], its hierarchy over the objects that do not move taken
+    /// from `kept` where they are where they were at its last use (one scene at another
+    /// instant), and left there for the next.
+    pub fn keeping(scene: &'a Scene, kept: &mut Kept) -> Self {
         let shapes: Vec<_> = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
         let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
-        let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| Bvh::new(&all));
+        let moving: Vec<bool> = scene.objects.iter().map(|o| o.moving).collect();
+        let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| kept.layers(&all, &moving));
         let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
         let bounds = scene.objects.iter().zip(&all).map(cull).collect();
         // Packets test every object: for scenes with a hierarchy, single rays through it.
