@@ -52,8 +52,36 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
     let out = type_named(entry.output).ok_or_else(|| {
         PyTypeError::new_err(format!("{} {} {}: no class for {}", a.ty.name, symbol(kind), b.ty.name, entry.output))
     })?;
+    let n = crate::values::broadcast(a, b)?;
+    if let Some(data) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out)) {
+        return Ok(Some(Values { ty: out, data, n, single: a.single && b.single }));
+    }
     let eval = entry.eval;
     Values::zip(a, b, py, out, eval).map(Some)
+}
+
+/// The products computed on lanes, as `(kind, left class, right class)` (for the tests that
+/// compare them with [`registry_product`]).
+#[pyfunction(name = "_kernels")]
+pub fn kernels() -> Vec<(String, &'static str, &'static str)> {
+    crate::kernels::KERNELS.iter().map(|(kind, a, b)| (format!("{kind:?}"), *a, *b)).collect()
+}
+
+/// The product `kind` (a [`ProductKind`] name) of `a` and `b` through the registry's
+/// storage-basis path alone, never the lanes: the reference the kernels are tested against.
+#[pyfunction(name = "_registry_product")]
+pub fn registry_product(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    let kind = crate::kernels::KERNELS
+        .iter()
+        .map(|k| k.0)
+        .find(|k| format!("{k:?}") == kind)
+        .ok_or_else(|| PyTypeError::new_err(format!("no kernel of kind {kind}")))?;
+    let (Some(a), Some(b)) = (values_of(a), values_of(b)) else {
+        return Err(PyTypeError::new_err("_registry_product takes two cga values"));
+    };
+    let entry = products().get(&(kind, a.ty.name, b.ty.name)).ok_or_else(|| PyTypeError::new_err("not generated"))?;
+    let out = type_named(entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
+    wrap(py, Values::zip(a, b, py, out, entry.eval)?)
 }
 
 /// The unary map `kind` of `a`.

@@ -9,6 +9,7 @@ mod draw;
 mod errors;
 mod figure;
 mod geometry;
+mod kernels;
 mod render;
 mod values;
 
@@ -24,6 +25,8 @@ fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(geometry::up, m)?)?;
     m.add_function(wrap_pyfunction!(draw::draw, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::down, m)?)?;
+    m.add_function(wrap_pyfunction!(classes::kernels, m)?)?;
+    m.add_function(wrap_pyfunction!(classes::registry_product, m)?)?;
     m.add("ValueError", py.get_type::<errors::ValueError>())?;
     m.add("ShapeError", py.get_type::<errors::ShapeError>())?;
     m.add("GeometryError", py.get_type::<errors::GeometryError>())?;

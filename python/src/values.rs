@@ -4,6 +4,7 @@
 use crate::errors::{ShapeError, ValueError};
 use pyo3::prelude::*;
 use rayon::prelude::*;
+use std::sync::Mutex;
 
 /// A cga-core type as the bindings see it: its name, blades and where each sits in the
 /// 32-coefficient storage basis.
@@ -108,11 +109,64 @@ pub fn broadcast(a: &Values, b: &Values) -> PyResult<usize> {
     }
 }
 
+/// Bytes from which an array is asked for huge pages, as numpy asks for its own, and is
+/// kept for reuse when freed.
+const LARGE: usize = 4 << 20;
+
+/// Freed large arrays, kept for the next results: fresh memory costs a page fault and the
+/// kernel's zeroing of each page, which for a batch of products takes longer than the
+/// products. At most [`KEPT`] of them, [`KEPT_BYTES`] in all.
+static FREED: Mutex<Vec<Vec<f64>>> = Mutex::new(Vec::new());
+const KEPT: usize = 4;
+const KEPT_BYTES: usize = 256 << 20;
+
+/// An array of `len` coefficients for results that overwrite every one: a freed array of
+/// about that size where one is kept (its old values until then), else a new one; a large
+/// new one is asked for transparent huge pages (Linux's `madvise`), so that its first
+/// writes fault in 2 MiB at a time rather than 4 KiB.
+pub fn scratch(len: usize) -> Vec<f64> {
+    if len * size_of::<f64>() >= LARGE {
+        let mut freed = FREED.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(i) = freed.iter().position(|v| v.capacity() >= len && v.capacity() <= 2 * len) {
+            let mut v = freed.swap_remove(i);
+            v.resize(len, 0.0);
+            v.truncate(len);
+            return v;
+        }
+    }
+    // Zeroed by the allocator: fresh pages from the system are zero already, untouched
+    // until the results are written, so the advice below still applies to them.
+    let v = vec![0.0; len];
+    #[cfg(target_os = "linux")]
+    if len * size_of::<f64>() >= LARGE {
+        let start = v.as_ptr() as usize;
+        let (first, end) = (start.next_multiple_of(4096), start + len * size_of::<f64>());
+        // SAFETY: the range lies within the vector's own allocation (page-aligned inward),
+        // and MADV_HUGEPAGE only advises the kernel: it changes no contents or mapping.
+        unsafe { libc::madvise(first as *mut libc::c_void, end - first, libc::MADV_HUGEPAGE) };
+    }
+    v
+}
+
+impl Drop for Values {
+    /// A large array is kept for the next results ([`scratch`]), the oldest let go.
+    fn drop(&mut self) {
+        let bytes = |v: &Vec<f64>| v.capacity() * size_of::<f64>();
+        if (LARGE..=KEPT_BYTES).contains(&bytes(&self.data)) {
+            let mut freed = FREED.lock().unwrap_or_else(|e| e.into_inner());
+            while freed.len() >= KEPT || freed.iter().map(bytes).sum::<usize>() + bytes(&self.data) > KEPT_BYTES {
+                freed.remove(0);
+            }
+            freed.push(std::mem::take(&mut self.data));
+        }
+    }
+}
+
 /// The coefficients of `out` in `f(0) … f(n − 1)` (storage-basis values), row by row, each
 /// written in place (no storage-basis array is kept); on rayon's threads when `n` is large.
 fn fill(out: &'static Type, n: usize, f: impl Fn(usize) -> [f64; 32] + Sync + Send) -> Vec<f64> {
     let k = out.blades.len();
-    let mut data = vec![0.0; n * k];
+    let mut data = scratch(n * k);
     let write = |(i, row): (usize, &mut [f64])| {
         let s = f(i);
         for (x, &at) in row.iter_mut().zip(out.storage) {

@@ -1,0 +1,186 @@
+//! The products users batch most, on SIMD lanes: each is compiled as a cga-core
+//! [`Kernel`] (four or eight rows at once, the CPU's widest level chosen at run time, the
+//! same bits as one row at a time) in three forms — both operands arrays, or one of them a
+//! single value put in every lane — and run on rayon's threads in blocks for large arrays.
+//! The arrays' rows are read in place as the typed values they are (a generated type is
+//! `repr(C)`, its coefficients in field order). Every other product goes through the
+//! registry's storage-basis path ([`crate::classes`]).
+
+use crate::values::{Type, Values};
+use cga_core::ProductKind;
+use cga_core::simd::{Kernel, Lane, Lanes, Over, run, splat};
+use rayon::prelude::*;
+use std::marker::PhantomData;
+
+/// A product of an `A` and a `B` giving an `O`, on any lanes.
+trait Product {
+    type A: Lanes + Send + Sync;
+    type B: Lanes + Send + Sync;
+    type O: Lanes + Send + Sync;
+    fn op<L: Lane>(a: Over<Self::A, L>, b: Over<Self::B, L>) -> Over<Self::O, L>;
+}
+
+/// Both operands vary.
+struct Rows<P>(PhantomData<fn() -> P>);
+
+impl<P: Product> Kernel for Rows<P> {
+    type Input = (P::A, P::B);
+    type Output = P::O;
+    #[inline(always)]
+    fn apply<L: Lane>(&self, (a, b): Over<(P::A, P::B), L>) -> Over<P::O, L> {
+        P::op::<L>(a, b)
+    }
+}
+
+/// One left operand for every row.
+struct FixedLeft<P: Product>(P::A);
+
+impl<P: Product> Kernel for FixedLeft<P> {
+    type Input = P::B;
+    type Output = P::O;
+    #[inline(always)]
+    fn apply<L: Lane>(&self, b: Over<P::B, L>) -> Over<P::O, L> {
+        P::op::<L>(splat::<P::A, L>(self.0), b)
+    }
+}
+
+/// One right operand for every row.
+struct FixedRight<P: Product>(P::B);
+
+impl<P: Product> Kernel for FixedRight<P> {
+    type Input = P::A;
+    type Output = P::O;
+    #[inline(always)]
+    fn apply<L: Lane>(&self, a: Over<P::A, L>) -> Over<P::O, L> {
+        P::op::<L>(a, splat::<P::B, L>(self.0))
+    }
+}
+
+/// Rows of `k` coefficients read as values of `X`.
+fn typed<X>(data: &[f64], k: usize) -> &[X] {
+    assert!(size_of::<X>() == k * size_of::<f64>() && align_of::<X>() == align_of::<f64>() && k > 0);
+    // SAFETY: a generated type is `repr(C)` with `k` coefficients of f64 (size and alignment
+    // checked above), so `k` consecutive f64 are one value of it.
+    unsafe { std::slice::from_raw_parts(data.as_ptr().cast::<X>(), data.len() / k) }
+}
+
+/// [`typed`], writable.
+fn typed_mut<X>(data: &mut [f64], k: usize) -> &mut [X] {
+    assert!(size_of::<X>() == k * size_of::<f64>() && align_of::<X>() == align_of::<f64>() && k > 0);
+    // SAFETY: as in `typed`; the borrow is exclusive.
+    unsafe { std::slice::from_raw_parts_mut(data.as_mut_ptr().cast::<X>(), data.len() / k) }
+}
+
+/// Rows a thread takes at a time, and the array length from which threads are used.
+const BLOCK: usize = 8192;
+/// Rows paired at a time (their buffer stays in the core's cache).
+const PAIRS: usize = 512;
+const THREADED: usize = 1 << 15;
+
+/// `kernel` over `input` into `out`, in blocks on threads for large arrays.
+fn run_blocks<K: Kernel + Sync>(kernel: &K, input: &[K::Input], out: &mut [K::Output])
+where
+    K::Input: Send + Sync,
+    K::Output: Send + Sync,
+{
+    if input.len() < THREADED {
+        run(kernel, input, out).expect("equal lengths");
+    } else {
+        out.par_chunks_mut(BLOCK).zip(input.par_chunks(BLOCK)).for_each(|(o, i)| {
+            run(kernel, i, o).expect("equal lengths");
+        });
+    }
+}
+
+/// `P` on `a` and `b` (one of them broadcast where a single value), `n` rows of `k`
+/// coefficients into `out`. Two arrays are paired a block at a time, in a buffer each
+/// thread reuses (no array of pairs as large as the inputs).
+fn product<P: Product>(a: &Values, b: &Values, n: usize, k: usize, out: &mut [f64]) {
+    let (xs, ys) = (typed::<P::A>(&a.data, a.k()), typed::<P::B>(&b.data, b.k()));
+    let out = typed_mut::<P::O>(out, k);
+    match (xs.len(), ys.len()) {
+        (1, m) if m == n && n > 1 => run_blocks(&FixedLeft::<P>(xs[0]), ys, out),
+        (m, 1) if m == n => run_blocks(&FixedRight::<P>(ys[0]), xs, out),
+        _ => {
+            let kernel = Rows::<P>(PhantomData);
+            let block = |pairs: &mut Vec<(P::A, P::B)>, (c, o): (usize, &mut [P::O])| {
+                for (j, o) in o.chunks_mut(PAIRS).enumerate() {
+                    let first = c * BLOCK + j * PAIRS;
+                    pairs.clear();
+                    pairs.extend(
+                        xs[first..first + o.len()].iter().copied().zip(ys[first..first + o.len()].iter().copied()),
+                    );
+                    run(&kernel, pairs, o).expect("equal lengths");
+                }
+            };
+            if n < THREADED {
+                let mut pairs = Vec::with_capacity(PAIRS);
+                out.chunks_mut(BLOCK).enumerate().for_each(|c| block(&mut pairs, c));
+            } else {
+                out.par_chunks_mut(BLOCK).enumerate().for_each_init(|| Vec::with_capacity(PAIRS), block);
+            }
+        }
+    }
+}
+
+/// The kernels: `Name: Kind(A, B) -> O, |a, b| op` for each.
+macro_rules! kernels {
+    ($($name:ident: $kind:ident($a:ident, $b:ident) -> $o:ident, |$x:ident, $y:ident| $op:expr;)*) => {
+        $(
+            struct $name;
+            impl Product for $name {
+                type A = cga_core::$a<f64>;
+                type B = cga_core::$b<f64>;
+                type O = cga_core::$o<f64>;
+                #[inline(always)]
+                fn op<L: Lane>($x: cga_core::$a<L>, $y: cga_core::$b<L>) -> cga_core::$o<L> {
+                    $op
+                }
+            }
+        )*
+
+        /// The products with a kernel: kind, left and right operand types.
+        pub const KERNELS: &[(ProductKind, &str, &str)] = &[$((ProductKind::$kind, stringify!($a), stringify!($b))),*];
+
+        /// The product `kind` of `a` and `b` on lanes (`n` rows of `out`'s coefficients),
+        /// where it is one of the kernels.
+        pub fn lanes(kind: ProductKind, a: &Values, b: &Values, n: usize, out: &Type) -> Option<Vec<f64>> {
+            let k = out.blades.len();
+            match (kind, a.ty.name, b.ty.name) {
+                $((ProductKind::$kind, stringify!($a), stringify!($b)) if out.name == stringify!($o) => {
+                    let mut data = crate::values::scratch(n * k);
+                    product::<$name>(a, b, n, k, &mut data);
+                    Some(data)
+                })*
+                _ => None,
+            }
+        }
+    };
+}
+
+use cga_core::Sandwich;
+
+kernels! {
+    MotorVector: Sandwich(Motor, Vector) -> Vector, |m, x| m.sandwich(x);
+    MotorBivector: Sandwich(Motor, Bivector) -> Bivector, |m, x| m.sandwich(x);
+    MotorLine: Sandwich(Motor, Line) -> Line, |m, x| m.sandwich(x);
+    MotorCircle: Sandwich(Motor, Circle) -> Circle, |m, x| m.sandwich(x);
+    MotorSphere: Sandwich(Motor, Sphere) -> Sphere, |m, x| m.sandwich(x);
+    MotorPlane: Sandwich(Motor, Plane) -> Plane, |m, x| m.sandwich(x);
+    RotorVector: Sandwich(Rotor, Vector) -> Vector, |m, x| m.sandwich(x);
+    RotorLine: Sandwich(Rotor, Line) -> Line, |m, x| m.sandwich(x);
+    RotorCircle: Sandwich(Rotor, Circle) -> Circle, |m, x| m.sandwich(x);
+    TranslatorVector: Sandwich(Translator, Vector) -> Vector, |m, x| m.sandwich(x);
+    TranslatorLine: Sandwich(Translator, Line) -> Line, |m, x| m.sandwich(x);
+    TranslatorCircle: Sandwich(Translator, Circle) -> Circle, |m, x| m.sandwich(x);
+    MotorMotor: Geometric(Motor, Motor) -> Motor, |a, b| a * b;
+    VectorVector: Outer(Vector, Vector) -> Bivector, |a, b| a ^ b;
+    BivectorVector: Outer(Bivector, Vector) -> Circle, |a, b| a ^ b;
+    CircleVector: Outer(Circle, Vector) -> Sphere, |a, b| a ^ b;
+    LineSphere: Regressive(Line, Sphere) -> Bivector, |a, b| a & b;
+    LinePlane: Regressive(Line, Plane) -> FlatPoint, |a, b| a & b;
+    CircleSphere: Regressive(Circle, Sphere) -> Bivector, |a, b| a & b;
+    CirclePlane: Regressive(Circle, Plane) -> Bivector, |a, b| a & b;
+    SphereSphere: Regressive(Sphere, Sphere) -> Circle, |a, b| a & b;
+    PlanePlane: Regressive(Plane, Plane) -> Line, |a, b| a & b;
+}
