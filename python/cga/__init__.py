@@ -18,6 +18,9 @@ result's class is the Rust result's type::
 object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scene files
 to numpy arrays.
 
+``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
+convert values and arrays to and from those libraries' multivectors (:mod:`cga.interop`).
+
 Errors are ``cga.ValueError`` (a ``ValueError``) and its kinds ``ShapeError``,
 ``GeometryError`` and ``SceneError``, with the Rust error's words.
 """
@@ -62,5 +65,19 @@ __all__ = [
     "Bivector", "Circle", "Dilator", "Even", "FlatPoint", "Generator", "GeometryError", "Infinity",
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
-    "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "up",
+    "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "from_clifford", "from_kingdon",
+    "interop", "to_clifford", "to_kingdon", "up",
 ]
+
+
+_INTEROP = ("interop", "from_clifford", "from_kingdon", "to_clifford", "to_kingdon")
+
+
+def __getattr__(name):
+    # cga.interop needs numpy, whose import takes longer than the rest of ours: on first use.
+    if name in _INTEROP:
+        import importlib
+
+        interop = importlib.import_module(".interop", __name__)
+        return interop if name == "interop" else getattr(interop, name)
+    raise AttributeError(f"module 'cga' has no attribute {name!r}")

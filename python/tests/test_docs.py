@@ -5,6 +5,8 @@ import doctest
 import os
 import re
 
+import pytest
+
 import cga
 
 HERE = os.path.dirname(__file__)
@@ -12,8 +14,9 @@ ROOT = os.path.join(HERE, "..", "..")
 
 
 def test_the_module_doctests_pass():
-    result = doctest.testmod(cga, verbose=False)
-    assert result.attempted > 0 and result.failed == 0
+    for module in (cga, cga.interop):
+        result = doctest.testmod(module, verbose=False)
+        assert result.attempted > 0 and result.failed == 0, module.__name__
 
 
 def test_the_readme_quickstart_runs(tmp_path, monkeypatch):
@@ -25,3 +28,17 @@ def test_the_readme_quickstart_runs(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     exec(compile(block.replace('"cga-trace/scenes/primitives.toml"', repr(scene)), "README.md", "exec"), {})
     assert (tmp_path / "primitives.png").exists()
+
+
+def test_the_spelling_page_runs():
+    # docs/PYTHON_SPELLINGS.md: its examples, with clifford and kingdon beside us.
+    path = os.path.join(ROOT, "docs", "PYTHON_SPELLINGS.md")
+    if not os.path.exists(path):
+        return  # an installed package without the repository beside it
+    pytest.importorskip("clifford")
+    pytest.importorskip("kingdon")
+    blocks = re.findall(r"```python\n(.*?)```", open(path).read(), re.S)
+    test = doctest.DocTestParser().get_doctest("\n\n".join(blocks), {}, "PYTHON_SPELLINGS.md", path, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.IGNORE_EXCEPTION_DETAIL)
+    runner.run(test)
+    assert runner.tries > 5 and runner.failures == 0
