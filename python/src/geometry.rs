@@ -14,19 +14,19 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
 /// Rows of an argument: points `(3,)`/`(n, 3)` or numbers (a float or `(n,)`).
-struct Rows<T> {
-    rows: Vec<T>,
-    single: bool,
+pub(crate) struct Rows<T> {
+    pub(crate) rows: Vec<T>,
+    pub(crate) single: bool,
 }
 
 impl<T: Copy> Rows<T> {
-    fn at(&self, i: usize) -> T {
+    pub(crate) fn at(&self, i: usize) -> T {
         if self.rows.len() == 1 { self.rows[0] } else { self.rows[i] }
     }
 }
 
 /// Points: shape `(3,)` or `(n, 3)`, finite.
-fn points(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<E3>> {
+pub(crate) fn points(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<E3>> {
     let array = obj
         .extract::<PyArrayLikeDyn<'_, f64, AllowTypeChange>>()
         .map_err(|_| ShapeError::new_err(format!("{name}: expected a point [x, y, z] or an array of shape (n, 3)")))?;
@@ -41,7 +41,7 @@ fn points(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<E3>> {
 }
 
 /// Numbers: a float or shape `(n,)`, finite.
-fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<f64>> {
+pub(crate) fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<f64>> {
     let array = obj
         .extract::<PyArrayLikeDyn<'_, f64, AllowTypeChange>>()
         .map_err(|_| ShapeError::new_err(format!("{name}: expected a number or an array of shape (n,)")))?;
@@ -64,7 +64,7 @@ fn finite(name: &str, x: &[f64]) -> PyResult<()> {
 }
 
 /// The common length of arguments of `lens` rows (1 broadcasts).
-fn length(lens: &[usize]) -> PyResult<usize> {
+pub(crate) fn length(lens: &[usize]) -> PyResult<usize> {
     let n = lens.iter().copied().max().unwrap_or(1);
     match lens.iter().find(|&&l| l != 1 && l != n) {
         Some(l) => Err(ShapeError::new_err(format!("arrays of {l} and {n} rows: broadcast only one against many"))),
@@ -74,7 +74,7 @@ fn length(lens: &[usize]) -> PyResult<usize> {
 
 /// Values of `ty` from `f(i)` (storage-basis values) for rows `0..n`, the first failure
 /// refused by row.
-fn build<E: std::fmt::Display>(
+pub(crate) fn build<E: std::fmt::Display>(
     ty: &'static Type,
     n: usize,
     single: bool,

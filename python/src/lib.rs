@@ -11,6 +11,7 @@ mod figure;
 mod geometry;
 mod kernels;
 mod render;
+mod toolkit;
 mod values;
 
 use pyo3::prelude::*;

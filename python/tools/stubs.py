@@ -90,6 +90,39 @@ OWN = {
 ''',
 }
 
+CLASSIFIED = ["Vector", "Bivector", "FlatPoint", "Line", "Circle", "Plane", "Sphere", "Infinity", "Pseudoscalar",
+              "Scalar"]
+CLASSIFY = '''    def classify(self) -> Union[dict[str, Any], list[dict[str, Any]]]: ...
+'''
+
+# Reflected classes and their images under inversion.
+REFLECTED = {"Vector": "Vector", "Bivector": "Bivector", "Line": "Circle", "Circle": "Circle", "Plane": "Sphere",
+             "Sphere": "Sphere"}
+REFLECT = '''    def reflect_in(self, plane: "Plane") -> "{name}": ...
+    def invert_in(self, sphere: "Sphere") -> "{inverted}": ...
+    def reflect_in_line(self, line: "Line") -> "{name}": ...
+    def reflect_in_point(self, c: ArrayLike) -> "{name}": ...
+'''
+
+MEASURED = {
+    "Line": '''    def distance_to(self, x: ArrayLike) -> Floats: ...
+    def closest_points(self, other: "Line") -> tuple[NDArray[np.float64], NDArray[np.float64], Floats]: ...
+    def angle_to(self, other: "Line") -> Floats: ...
+''',
+    "Plane": '''    def signed_distance(self, x: ArrayLike) -> Floats: ...
+    def angle_to(self, other: "Plane") -> Floats: ...
+''',
+    "Sphere": '''    def signed_distance(self, x: ArrayLike) -> Floats: ...
+''',
+}
+
+VERSOR = '''    def log(self) -> "Generator": ...
+    @staticmethod
+    def exp(b: "Generator") -> "{name}": ...
+    @staticmethod
+    def interpolate(a: "{name}", b: "{name}", t: ArrayLike) -> "{name}": ...
+'''
+
 HEAD = '''# Type stubs of cga._cga, written by python/tools/stubs.py.
 from typing import Any, Optional, Union
 
@@ -157,6 +190,11 @@ def main() -> None:
     out = out.replace("from typing import", "from builtins import ValueError as builtins_ValueError\nfrom typing import")
     for name in CLASSES:
         out += f"\nclass {name}:\n" + COMMON.replace("{name}", name) + OWN.get(name, "")
+        out += CLASSIFY if name in CLASSIFIED else ""
+        if name in REFLECTED:
+            out += REFLECT.replace("{name}", name).replace("{inverted}", REFLECTED[name])
+        out += MEASURED.get(name, "")
+        out += VERSOR.replace("{name}", name) if name in ("Motor", "Rotor") else ""
     path = os.path.join(os.path.dirname(__file__), "..", "cga", "_cga.pyi")
     with open(path, "w") as f:
         f.write(out)

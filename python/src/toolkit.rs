@@ -1,0 +1,315 @@
+//! cga-core's toolkit on the classes, row by row (one value or arrays, broadcast one against
+//! many): what a blade is (`classify`), reflections and inversions, distances and angles
+//! with Euclidean answers, and the versors' logarithm, exponential and interpolation. A row
+//! that has no answer is refused by name and row (`GeometryError`).
+
+use crate::classes::{
+    Bivector, Circle, FlatPoint, Generator, Infinity, Line, Motor, Plane, Pseudoscalar, Rotor, Scalar, Sphere, Vector,
+    values_of, wrap,
+};
+use crate::errors::GeometryError;
+use crate::geometry::{Rows, build, length, numbers as params, points};
+use crate::values::{Type, Values};
+use cga_core::classify::{Kind, Reality};
+use cga_core::euclid::E3;
+use cga_core::{Reflect, classify_storage};
+use pyo3::IntoPyObjectExt;
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// The common number of rows of two values (one broadcasts), and whether the answer is one.
+fn rows(a: &Values, b: &Values) -> PyResult<(usize, bool)> {
+    Ok((crate::values::broadcast(a, b)?, a.single && b.single))
+}
+
+/// Row `i` of `v`, broadcasting a single value.
+fn at(v: &Values, i: usize) -> usize {
+    row(v.n, i)
+}
+
+/// Row `i` of `n` rows, broadcasting one.
+fn row(n: usize, i: usize) -> usize {
+    if n == 1 { 0 } else { i }
+}
+
+/// The values of `obj` if it is of class `ty`.
+fn of<'a>(obj: &'a Bound<'_, PyAny>, ty: &'static Type, what: &str) -> PyResult<&'a Values> {
+    values_of(obj)
+        .filter(|v| v.ty.name == ty.name)
+        .ok_or_else(|| PyTypeError::new_err(format!("{what}: expected a {}", ty.name)))
+}
+
+/// Numbers `f(i)` for rows `0..n`: a float for one, an array of n for many.
+fn numbers<E: std::fmt::Display>(
+    py: Python<'_>,
+    what: &str,
+    n: usize,
+    single: bool,
+    f: impl Fn(usize) -> Result<f64, E>,
+) -> PyResult<Py<PyAny>> {
+    let out: Vec<f64> = (0..n)
+        .map(|i| f(i).map_err(|e| GeometryError::new_err(format!("{what} (row {i}): {e}"))))
+        .collect::<PyResult<_>>()?;
+    if single { out[0].into_py_any(py) } else { numpy::PyArray1::from_vec(py, out).into_py_any(py) }
+}
+
+/// A Euclidean triple as a numpy array.
+fn e3(py: Python<'_>, x: E3) -> PyResult<Py<PyAny>> {
+    numpy::PyArray1::from_vec(py, x.to_vec()).into_py_any(py)
+}
+
+/// What row `i` of `v` is, as a dict: `kind` (`"zero"`, `"round"`, `"flat point"`, `"line"`,
+/// `"plane"`, `"direction"`) and its Euclidean parameters.
+fn kind(py: Python<'_>, v: &Values, i: usize) -> PyResult<Py<PyAny>> {
+    let d = PyDict::new(py);
+    let k =
+        classify_storage(&v.storage(i)).map_err(|e| GeometryError::new_err(format!("{} (row {i}): {e}", v.ty.name)))?;
+    match k {
+        Kind::Zero => d.set_item("kind", "zero")?,
+        Kind::Round { grade, reality, centre, radius_squared, direction } => {
+            d.set_item("kind", "round")?;
+            d.set_item("grade", grade)?;
+            let reality = match reality {
+                Reality::Real => "real",
+                Reality::Imaginary => "imaginary",
+                Reality::Tangent => "tangent",
+            };
+            d.set_item("reality", reality)?;
+            d.set_item("centre", e3(py, centre)?)?;
+            d.set_item("radius_squared", radius_squared)?;
+            d.set_item("direction", e3(py, direction)?)?;
+        }
+        Kind::FlatPoint(x) => {
+            d.set_item("kind", "flat point")?;
+            d.set_item("point", e3(py, x)?)?;
+        }
+        Kind::Line { point, direction } => {
+            d.set_item("kind", "line")?;
+            d.set_item("point", e3(py, point)?)?;
+            d.set_item("direction", e3(py, direction)?)?;
+        }
+        Kind::Plane { grade, normal, offset } => {
+            d.set_item("kind", "plane")?;
+            d.set_item("grade", grade)?;
+            d.set_item("normal", e3(py, normal)?)?;
+            d.set_item("offset", offset)?;
+        }
+        Kind::Direction { grade, direction } => {
+            d.set_item("kind", "direction")?;
+            d.set_item("grade", grade)?;
+            d.set_item("direction", e3(py, direction)?)?;
+        }
+    }
+    d.into_py_any(py)
+}
+
+/// What each value is (cga-core's `classify`), a dict for one value and a list of them for
+/// an array; refused where a value is no blade.
+fn classify(py: Python<'_>, v: &Values) -> PyResult<Py<PyAny>> {
+    if v.single {
+        return kind(py, v, 0);
+    }
+    let all: Vec<Py<PyAny>> = (0..v.n).map(|i| kind(py, v, i)).collect::<PyResult<_>>()?;
+    all.into_py_any(py)
+}
+
+/// Reflections and inversions of the classes cga-core reflects.
+macro_rules! reflect {
+    ($($class:ident => $inverted:ident),*) => {$(
+        #[pymethods]
+        impl $class {
+            /// The mirror image in `plane` (`(−1)^k π X π`, the same class).
+            fn reflect_in(&self, py: Python<'_>, plane: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                let (v, p) = (&self.0, of(plane, Plane::ty(), "plane")?);
+                let (n, single) = rows(v, p)?;
+                let out = build(Self::ty(), n, single, |i| {
+                    Self::typed(v, at(v, i)).reflect_in(&Plane::typed(p, at(p, i))).map(|x| x.to_storage())
+                })?;
+                wrap(py, out)
+            }
+
+            /// The image under inversion in `sphere` (`(−1)^k σ X σ⁻¹`): a line or plane not
+            /// through the centre becomes a circle or sphere.
+            fn invert_in(&self, py: Python<'_>, sphere: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                let (v, s) = (&self.0, of(sphere, Sphere::ty(), "sphere")?);
+                let (n, single) = rows(v, s)?;
+                let out = build($inverted::ty(), n, single, |i| {
+                    let image: cga_core::$inverted<f64> = Self::typed(v, at(v, i)).invert_in(&Sphere::typed(s, at(s, i)))?;
+                    Ok::<_, cga_core::GeometryError>(image.to_storage())
+                })?;
+                wrap(py, out)
+            }
+
+            /// The half turn about `line` (the reflection in a line, orientation kept).
+            fn reflect_in_line(&self, py: Python<'_>, line: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                let (v, l) = (&self.0, of(line, Line::ty(), "line")?);
+                let (n, single) = rows(v, l)?;
+                let out = build(Self::ty(), n, single, |i| {
+                    Self::typed(v, at(v, i)).reflect_in_line(&Line::typed(l, at(l, i))).map(|x| x.to_storage())
+                })?;
+                wrap(py, out)
+            }
+
+            /// The point reflection `x ↦ 2c − x` through `c` ((3,) or (n, 3)).
+            fn reflect_in_point(&self, py: Python<'_>, c: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                let v = &self.0;
+                let Rows { rows: cs, single: one } = points("c", c)?;
+                let n = length(&[v.n, cs.len()])?;
+                let out = build(Self::ty(), n, v.single && one, |i| {
+                    Ok::<_, String>(Self::typed(v, at(v, i)).reflect_in_point(cs[row(cs.len(), i)]).to_storage())
+                })?;
+                wrap(py, out)
+            }
+        }
+    )*};
+}
+
+reflect!(Vector => Vector, Bivector => Bivector, Line => Circle, Circle => Circle, Plane => Sphere, Sphere => Sphere);
+
+#[pymethods]
+impl Line {
+    /// `|(x − p) × d|`: the distance of points `x` from the line(s).
+    fn distance_to(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let v = &self.0;
+        let Rows { rows: xs, single: one } = points("x", x)?;
+        let n = length(&[v.n, xs.len()])?;
+        numbers(py, "Line", n, v.single && one, |i| Self::typed(v, at(v, i)).distance_to(xs[row(xs.len(), i)]))
+    }
+
+    /// `(on_self, on_other, distance)`: the closest points of two lines and their distance
+    /// (for parallel lines, one closest pair of many).
+    fn closest_points(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<(Py<PyAny>, Py<PyAny>, Py<PyAny>)> {
+        let (v, w) = (&self.0, of(other, Line::ty(), "other")?);
+        let (n, single) = rows(v, w)?;
+        let all: Vec<_> = (0..n)
+            .map(|i| {
+                Self::typed(v, at(v, i))
+                    .closest_points(&Self::typed(w, at(w, i)))
+                    .map_err(|e| GeometryError::new_err(format!("Line (row {i}): {e}")))
+            })
+            .collect::<PyResult<_>>()?;
+        let pts = |f: fn(&cga_core::Closest<f64>) -> E3| -> PyResult<Py<PyAny>> {
+            let flat: Vec<f64> = all.iter().flat_map(f).collect();
+            let a = numpy::PyArray1::from_vec(py, flat);
+            use numpy::PyArrayMethods;
+            if single { a.reshape([3])?.into_py_any(py) } else { a.reshape([n, 3])?.into_py_any(py) }
+        };
+        let d = numbers(py, "Line", n, single, |i| Ok::<_, String>(all[i].distance))?;
+        Ok((pts(|c| c.on_self)?, pts(|c| c.on_other)?, d))
+    }
+
+    /// The angle between the lines' directions, in `[0, π]`.
+    fn angle_to(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let (v, w) = (&self.0, of(other, Line::ty(), "other")?);
+        let (n, single) = rows(v, w)?;
+        numbers(py, "Line", n, single, |i| Self::typed(v, at(v, i)).angle_to(&Self::typed(w, at(w, i))))
+    }
+}
+
+#[pymethods]
+impl Plane {
+    /// `n·x − δ`: signed distances of points `x`, positive on the normal's side.
+    fn signed_distance(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let v = &self.0;
+        let Rows { rows: xs, single: one } = points("x", x)?;
+        let n = length(&[v.n, xs.len()])?;
+        numbers(py, "Plane", n, v.single && one, |i| Self::typed(v, at(v, i)).signed_distance(xs[row(xs.len(), i)]))
+    }
+
+    /// The angle between the planes' normals, in `[0, π]`.
+    fn angle_to(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let (v, w) = (&self.0, of(other, Plane::ty(), "other")?);
+        let (n, single) = rows(v, w)?;
+        numbers(py, "Plane", n, single, |i| Self::typed(v, at(v, i)).angle_to(&Self::typed(w, at(w, i))))
+    }
+}
+
+#[pymethods]
+impl Sphere {
+    /// `|x − c| − r`: signed distances of points `x`, negative inside.
+    fn signed_distance(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let v = &self.0;
+        let Rows { rows: xs, single: one } = points("x", x)?;
+        let n = length(&[v.n, xs.len()])?;
+        numbers(py, "Sphere", n, v.single && one, |i| Self::typed(v, at(v, i)).signed_distance(xs[row(xs.len(), i)]))
+    }
+}
+
+/// Logarithm, exponential and interpolation of a versor class.
+macro_rules! versor {
+    ($($class:ident),*) => {$(
+        #[pymethods]
+        impl $class {
+            /// The generator `B` with `exp(B)` this versor (the principal logarithm).
+            fn log(&self) -> PyResult<Generator> {
+                let v = &self.0;
+                Ok(Generator(build(Generator::ty(), v.n, v.single, |i| {
+                    Self::typed(v, i).log().map(|b| b.to_storage())
+                })?))
+            }
+
+            /// `exp(B)` of generators (a `Generator`, one or an array).
+            #[staticmethod]
+            fn exp(b: &Generator) -> PyResult<Self> {
+                let v = &b.0;
+                Ok($class(build(Self::ty(), v.n, v.single, |i| {
+                    exp_of::<cga_core::$class<f64>>(Generator::typed(v, i))
+                })?))
+            }
+
+            /// `V(t)`: the screw (or rotation) from `a` at `t = 0` to `b` at `t = 1`, at
+            /// constant velocity; `t` a number or an array of n.
+            #[staticmethod]
+            fn interpolate(a: &Self, b: &Self, t: &Bound<'_, PyAny>) -> PyResult<Self> {
+                let (va, vb) = (&a.0, &b.0);
+                let Rows { rows: ts, single: one } = params("t", t)?;
+                let n = length(&[va.n, vb.n, ts.len()])?;
+                Ok($class(build(Self::ty(), n, va.single && vb.single && one, |i| {
+                    let (x, y) = (Self::typed(va, at(va, i)), Self::typed(vb, at(vb, i)));
+                    cga_core::$class::interpolate(&x, &y, ts[row(ts.len(), i)]).map(|x| x.to_storage())
+                })?))
+            }
+        }
+    )*};
+}
+
+/// `exp(B)` for a motor (any generator) or a rotor (a generator without translation part).
+trait Exp: Sized {
+    fn exp_of(b: cga_core::Generator<f64>) -> Result<[f64; 32], String>;
+}
+
+impl Exp for cga_core::Motor<f64> {
+    fn exp_of(b: cga_core::Generator<f64>) -> Result<[f64; 32], String> {
+        Ok(cga_core::Motor::exp(b).to_storage())
+    }
+}
+
+impl Exp for cga_core::Rotor<f64> {
+    fn exp_of(b: cga_core::Generator<f64>) -> Result<[f64; 32], String> {
+        cga_core::Rotor::exp(b).map(|r| r.to_storage()).map_err(|e| e.to_string())
+    }
+}
+
+/// `classify()` on every class.
+macro_rules! classify {
+    ($($class:ident),*) => {$(
+        #[pymethods]
+        impl $class {
+            /// What the value is, with its Euclidean parameters (cga-core's `classify`): a
+            /// dict with `kind` (`"zero"`, `"round"`, `"flat point"`, `"line"`, `"plane"`,
+            /// `"direction"`) and the parameters of that kind; a list of them for an array.
+            fn classify(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+                classify(py, &self.0)
+            }
+        }
+    )*};
+}
+
+classify!(Vector, Bivector, FlatPoint, Line, Circle, Plane, Sphere, Infinity, Pseudoscalar, Scalar);
+
+fn exp_of<X: Exp>(b: cga_core::Generator<f64>) -> Result<[f64; 32], String> {
+    X::exp_of(b)
+}
+
+versor!(Motor, Rotor);
