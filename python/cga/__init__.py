@@ -15,8 +15,8 @@ result's class is the Rust result's type::
     1.0
 
 ``cga.draw([sphere, circle, line])`` draws objects as what they are (a notebook shows any
-object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scene files
-to numpy arrays.
+object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scenes, read
+from files or built in code (:mod:`cga.scene`), to numpy arrays.
 
 ``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
 convert values and arrays to and from those libraries' multivectors (:mod:`cga.interop`).
@@ -43,7 +43,6 @@ from ._cga import (
     Rotor,
     Scalar,
     ScalarQuadvector,
-    Scene,
     SceneError,
     ShapeError,
     Sphere,
@@ -56,6 +55,8 @@ from ._cga import (
     draw,
     up,
 )
+
+from .scene import Scene
 
 #: A conformal point is a ``Vector``; a point pair a ``Bivector`` (cga-core's aliases).
 Point = Vector

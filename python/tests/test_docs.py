@@ -27,7 +27,7 @@ def test_the_readme_quickstart_runs(tmp_path, monkeypatch):
         return  # an installed package without the repository beside it
     monkeypatch.chdir(tmp_path)
     exec(compile(block.replace('"cga-trace/scenes/primitives.toml"', repr(scene)), "README.md", "exec"), {})
-    assert (tmp_path / "primitives.png").exists()
+    assert (tmp_path / "primitives.png").exists() and (tmp_path / "row.png").exists()
 
 
 def test_the_spelling_page_runs():
