@@ -175,20 +175,31 @@ pub struct Kept {
 }
 
 impl Kept {
-    /// The two layers over objects with these `bounds`, `moving[k]` saying which move.
-    pub fn layers(&mut self, bounds: &[Option<(E3, f64)>], moving: &[bool]) -> Layers {
-        let still_bounds: Vec<_> = bounds.iter().copied().enumerate().filter(|&(k, _)| !moving[k]).collect();
+    /// The two layers over objects with these `bounds`, `moving[k]` saying which move;
+    /// `same` where the caller knows the objects that do not move are as at the last call
+    /// (their bounds are then not compared).
+    pub fn layers(&mut self, bounds: &[Option<(E3, f64)>], moving: &[bool], same: bool) -> Layers {
         let still = match &self.still {
+            Some(still) if same => still.clone(),
+            _ => self.still_layer(bounds, moving),
+        };
+        let moved = moving.iter().any(|&m| m);
+        let moving = moved.then(|| Bvh::over(bounds.iter().copied().enumerate().filter(|&(k, _)| moving[k])));
+        Layers { still, moving }
+    }
+
+    /// The layer over the objects that do not move: the last one where their bounds are as
+    /// then, else built anew.
+    fn still_layer(&mut self, bounds: &[Option<(E3, f64)>], moving: &[bool]) -> Arc<Bvh> {
+        let still_bounds: Vec<_> = bounds.iter().copied().enumerate().filter(|&(k, _)| !moving[k]).collect();
+        match &self.still {
             Some(still) if self.bounds == still_bounds => still.clone(),
             _ => {
                 let still = Arc::new(Bvh::over(still_bounds.iter().copied()));
                 (self.bounds, self.still) = (still_bounds, Some(still.clone()));
                 still
             }
-        };
-        let moved = moving.iter().any(|&m| m);
-        let moving = moved.then(|| Bvh::over(bounds.iter().copied().enumerate().filter(|&(k, _)| moving[k])));
-        Layers { still, moving }
+        }
     }
 }
 
@@ -248,8 +259,8 @@ mod tests {
         // The odd objects move.
         let moving: Vec<bool> = (0..200).map(|k| k % 2 == 1).collect();
         let mut kept = Kept::default();
-        let first = kept.layers(&grid(0.0), &moving);
-        let later = kept.layers(&grid(0.5), &moving);
+        let first = kept.layers(&grid(0.0), &moving, false);
+        let later = kept.layers(&grid(0.5), &moving, false);
         assert!(Arc::ptr_eq(&first.still, &later.still), "the still layer is built again");
         let bounds = grid(0.5);
         for (o, d) in [([-5.0, 0.1, 0.0], [1.0, 0.0, 0.0]), ([-5.0, -5.0, 0.0], [0.7, 0.7, 0.0])] {
@@ -270,6 +281,6 @@ mod tests {
         // A still object that is elsewhere: the still layer is built again.
         let mut moved = grid(0.5);
         moved[0] = Some(([100.0, 0.0, 0.0], 1.0));
-        assert!(!Arc::ptr_eq(&later.still, &kept.layers(&moved, &moving).still));
+        assert!(!Arc::ptr_eq(&later.still, &kept.layers(&moved, &moving, false).still));
     }
 }

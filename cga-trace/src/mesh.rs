@@ -367,7 +367,7 @@ impl Scene {
     }
 
     fn object(&self, name: &str) -> Result<&crate::object::Object, MeshError> {
-        match self.objects.iter().find(|o| o.name == name) {
+        match self.objects.iter().find(|o| &*o.name == name) {
             Some(object) => Ok(object),
             None if self.templates.iter().any(|t| t == name) => Err(MeshError::Template(name.into())),
             None => Err(MeshError::NoObject(name.into())),

@@ -10,7 +10,7 @@ use std::sync::Arc;
 #[derive(Clone, Debug)]
 pub struct Object {
     /// Its name in the scene file (or `object N`).
-    pub name: String,
+    pub name: std::sync::Arc<str>,
     /// Geometry.
     pub shape: Arc<dyn Shape>,
     /// Material.

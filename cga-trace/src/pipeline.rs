@@ -13,7 +13,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use crate::backend::{Backend, BackendKind, Dense, Plain, Sparse, holds};
+use crate::backend::{Backend, BackendKind, Dense, Plain, Sparse};
 use crate::camera::{Camera, CameraError};
 use crate::colour::{Scale, false_colour};
 use crate::film::{Encoding, Film, Output, OutputError, ToneMap};
@@ -165,20 +165,22 @@ pub enum RenderError {
 pub struct Pipeline {
     source: Source,
     view: View,
-    /// The hierarchy over the objects that stay, kept between instants.
+    /// What renderers prepared of the objects, kept between instants and frames.
     kept: Kept,
+    /// Pictures rendered so far (what is prepared is kept from the second on).
+    pictures: usize,
 }
 
 impl Pipeline {
     /// The scene file `path` (and the files it reads).
     pub fn load(path: &Path, view: View) -> Result<Pipeline, RenderError> {
-        Ok(Pipeline { source: Source::load(path)?, view, kept: Kept::default() })
+        Ok(Pipeline { source: Source::load(path)?, view, kept: Kept::default(), pictures: 0 })
     }
 
     /// A scene given as text; `file` names it in errors, and its folder is where the files
     /// it names are read from.
     pub fn parse(text: &str, file: &str, view: View) -> Result<Pipeline, RenderError> {
-        Ok(Pipeline { source: Source::parse(text, file)?, view, kept: Kept::default() })
+        Ok(Pipeline { source: Source::parse(text, file)?, view, kept: Kept::default(), pictures: 0 })
     }
 
     /// The changes every later scene and picture takes, in place of the present ones (the
@@ -213,18 +215,19 @@ impl Pipeline {
         let window = window(scene, options)?;
         let start = std::time::Instant::now();
         let (film, counts) = match scene.shutter {
-            None => render_on(scene, options, window, (0, 1), on_row, &mut self.kept)?,
+            None => render_on(scene, options, window, (0, 1), on_row, (self.pictures > 0).then_some(&mut self.kept))?,
             Some(shutter) => {
                 let mut counts = RayCounts::default();
                 let film = shutter.expose(options.time, scene.settings.spp, |t, subset| {
                     let at = self.scene(t).map_err(|e| RenderError::Instant { time: t, source: Box::new(e) })?;
-                    let (film, cast) = render_on(&at, options, window.clone(), subset, on_row, &mut self.kept)?;
+                    let (film, cast) = render_on(&at, options, window.clone(), subset, on_row, Some(&mut self.kept))?;
                     counts.add(&cast);
                     Ok::<_, RenderError>(film)
                 })?;
                 (film, counts)
             }
         };
+        self.pictures += 1;
         Ok(Rendered::new(scene, options, film, counts, start.elapsed().as_secs_f64()))
     }
 }
@@ -242,7 +245,7 @@ pub fn render(scene: &Scene, options: &Options, on_row: &(dyn Fn() + Sync)) -> R
     }
     let window = window(scene, options)?;
     let start = std::time::Instant::now();
-    let (film, counts) = render_on(scene, options, window, (0, 1), on_row, &mut Kept::default())?;
+    let (film, counts) = render_on(scene, options, window, (0, 1), on_row, None)?;
     Ok(Rendered::new(scene, options, film, counts, start.elapsed().as_secs_f64()))
 }
 
@@ -256,14 +259,15 @@ pub fn window(scene: &Scene, options: &Options) -> Result<Window, RenderError> {
 }
 
 /// The film and the rays cast on the options' back end, taking the samples `first, first +
-/// step, …` of each pixel, the hierarchy over objects that stay taken from `kept`.
+/// step, …` of each pixel; what was prepared of the objects for the last picture taken from
+/// `kept` (and left there) where given.
 fn render_on(
     scene: &Scene,
     options: &Options,
     window: Window,
     subset: (u32, u32),
     on_row: &(dyn Fn() + Sync),
-    kept: &mut Kept,
+    kept: Option<&mut Kept>,
 ) -> Result<(Film, RayCounts), RenderError> {
     match options.backend {
         BackendKind::Sparse => render_with::<Sparse>(scene, options, window, subset, on_row, kept),
@@ -279,10 +283,15 @@ fn render_with<B: Backend>(
     window: Window,
     (first, step): (u32, u32),
     on_row: &(dyn Fn() + Sync),
-    kept: &mut Kept,
+    kept: Option<&mut Kept>,
 ) -> Result<(Film, RayCounts), RenderError> {
-    holds::<B>(scene).map_err(RenderError::Backend)?;
-    let mut renderer = Renderer::<B>::keeping(scene, kept).sample_subset(first, step);
+    // What is prepared is kept for the next picture only where something moves.
+    let mut renderer = match kept.filter(|_| scene.objects.iter().any(|o| o.moving)) {
+        Some(kept) => Renderer::<B>::keeping(scene, kept),
+        None => Renderer::<B>::with_backend(scene),
+    }
+    .sample_subset(first, step);
+    renderer.holds().map_err(RenderError::Backend)?;
     if !options.packets {
         renderer = renderer.without_packets();
     }

@@ -41,7 +41,7 @@ pub trait Backend: Send + Sync + 'static {
     /// What a ray carries to meet objects with.
     type Carrier: Copy + Send + Sync;
     /// A scene object, prepared once.
-    type Shape: Send + Sync;
+    type Shape: Clone + Send + Sync + 'static;
     /// Name, for reports.
     const NAME: &'static str;
     /// The ray from `origin` along the unit direction `dir` (the integrator's secondary rays,
@@ -113,7 +113,12 @@ pub trait Backend: Send + Sync + 'static {
 /// says how far the objects' sizes (frame units: the larger of the distance from the camera
 /// and the extent) spread from the frame's unit, where they are beyond it.
 pub fn holds<B: Backend>(scene: &Scene) -> Result<(), String> {
-    let sizes = scene.objects.iter().filter_map(|o| o.shape.bounds()).map(|(c, r)| norm(c).max(r));
+    holds_bounds::<B>(scene.objects.iter().filter_map(|o| o.shape.bounds()))
+}
+
+/// [`holds`] for objects of these bounding spheres.
+pub fn holds_bounds<B: Backend>(bounds: impl Iterator<Item = (E3, f64)>) -> Result<(), String> {
+    let sizes = bounds.map(|(c, r)| norm(c).max(r));
     let (lo, hi) = sizes.fold((f64::INFINITY, 0.0f64), |(lo, hi), s| (lo.min(s), hi.max(s)));
     let limit = 2f64.powi(B::SPAN);
     if hi <= limit && (hi == 0.0 || lo >= 1.0 / limit) {

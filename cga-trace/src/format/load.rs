@@ -55,6 +55,9 @@ pub struct Source {
     /// Each object that does not move, as last built: a shutter's instants and an
     /// animation's frames place only the objects that move.
     still: HashMap<usize, Still>,
+    /// How many times the scene has been placed: what stands is kept from the second time
+    /// (a scene placed once, as for one still picture, keeps nothing).
+    placed: usize,
 }
 
 /// An object without `motion` (nor any along its instances' chain), kept between the times
@@ -106,7 +109,13 @@ impl Source {
     pub fn parse(text: &str, file: &str) -> Result<Source, SceneError> {
         let joined = include::join(text, file)?;
         let folder = Path::new(file).parent().unwrap_or(Path::new(""));
-        Ok(Source { joined, assets: crate::format::Assets::new(folder), file: file.into(), still: HashMap::new() })
+        Ok(Source {
+            joined,
+            assets: crate::format::Assets::new(folder),
+            file: file.into(),
+            still: HashMap::new(),
+            placed: 0,
+        })
     }
 
     /// The scene at the frame time `time` in [0, 1] (clamped; NaN is the start), with `size`
@@ -115,6 +124,8 @@ impl Source {
     /// read the first time they are needed and kept for every later time.
     pub fn scene(&mut self, size: Option<(u32, u32)>, time: f64) -> Result<Scene, SceneError> {
         let (joined, assets, file, still) = (&self.joined, &mut self.assets, self.file.as_str(), &mut self.still);
+        let again = self.placed > 0;
+        self.placed += 1;
         // NaN is no time: the start.
         let time = if time.is_nan() { 0.0 } else { time.clamp(0.0, 1.0) };
         let text = joined.text.as_str();
@@ -196,6 +207,9 @@ impl Source {
         let mut sizes = Vec::with_capacity(count);
         let mut templates = Vec::new();
         let mut shapes = 0;
+        // Whether anything moves: only then is the scene placed again at other times with
+        // the same objects, and what stands worth keeping.
+        let mut anything_moves = false;
         for k in 0..count {
             let value = value_of(k)?;
             let placed = if is_instance(&value) {
@@ -229,6 +243,7 @@ impl Source {
                     extent.map_err(|e| syntax_error(joined, &e, &map_of(placed.base)))?
                 }
             };
+            anything_moves |= placed.moving;
             if placed.moving {
                 still.remove(&k);
             } else {
@@ -352,7 +367,7 @@ impl Source {
             }
             if moving {
                 objects.iter_mut().for_each(|o| o.moving = true);
-            } else {
+            } else if anything_moves && again {
                 still.entry(k).or_default().built = Some((placing.of(draws), objects.clone(), label.clone()));
             }
             built.extend(objects);

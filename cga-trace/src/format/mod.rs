@@ -1303,6 +1303,7 @@ pub(crate) fn build_object(
         let label = spec.label(&shapes, anchor, material.colour)?;
         // A closed glass mesh is one solid: light enters at one triangle and leaves at another.
         let solid = (material.dielectric() && spec.is_closed_mesh(assets)?).then_some(index);
+        let name: std::sync::Arc<str> = name.as_str().into();
         let object =
             |shape| Object { name: name.clone(), shape, material, texture: texture.clone(), solid, moving: false };
         let objects = shapes.into_iter().map(object).collect();

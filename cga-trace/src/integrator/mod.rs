@@ -21,6 +21,7 @@ mod counts;
 mod glass;
 mod media;
 mod nearest;
+mod prepared;
 mod sampler;
 mod shade;
 mod trace;
@@ -28,17 +29,17 @@ mod trace;
 pub use aov::Aov;
 pub use counts::RayCounts;
 pub use glass::{CUTOFF, fresnel};
+pub use prepared::Kept;
 pub use sampler::sample_offset;
 pub(crate) use sampler::{Dimension, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
-pub use crate::bvh::Kept;
 use crate::bvh::Layers;
 use crate::film::Film;
-use crate::object::Object;
 use crate::scene::Scene;
 use cga_core::euclid::E3;
 use rayon::prelude::*;
+use std::borrow::Cow;
 use std::ops::Range;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
 
@@ -50,22 +51,24 @@ const BVH_FROM: usize = 8;
 pub struct Renderer<'a, B: Backend = Sparse> {
     pub(crate) scene: &'a Scene,
     /// The objects in `B`'s form, in scene order.
-    pub(crate) shapes: Vec<B::Shape>,
+    pub(crate) shapes: Cow<'a, [B::Shape]>,
     /// Whether rays go four at a time through packets: where `B` has them, unless switched
     /// off or the scene has a hierarchy.
     pub(crate) packets: bool,
     /// Whether packets may run in AVX registers where the CPU has AVX2 ([`Renderer::pixels4`]).
     pub(crate) avx2: bool,
+    /// Bounding spheres of the objects (`None`: unbounded).
+    pub(crate) all: Cow<'a, [Option<(E3, f64)>]>,
     /// Bounding spheres of the objects worth culling ([`Shape::cull`](crate::shapes::Shape::cull)).
-    pub(crate) bounds: Vec<Option<(E3, f64)>>,
+    pub(crate) bounds: Cow<'a, [Option<(E3, f64)>]>,
     /// For scenes of many objects, a hierarchy over all bounded ones.
     pub(crate) bvh: Option<Layers>,
     /// Which objects are [flat](crate::shapes::Shape::flat): their own shadow rays skip them.
-    pub(crate) flat: Vec<bool>,
+    pub(crate) flat: Cow<'a, [bool]>,
     /// For each object, the solid it bounds as a dielectric, named by its first object (itself,
     /// or a closed mesh's first triangle); `None` for a thin sheet (flat, and no part of a
     /// closed solid), which light passes undeviated.
-    pub(crate) medium: Vec<Option<usize>>,
+    pub(crate) medium: Cow<'a, [Option<usize>]>,
     /// The dielectric solid that holds the camera, if any ([`media::medium_at`]): a pinhole's
     /// rays start in it; a lens sample's or an orthographic view's, wherever the surfaces
     /// between the camera and their origin put them ([`Renderer::origin_medium`]).
@@ -74,12 +77,12 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     pub(crate) dielectrics: bool,
     /// Which objects are dielectrics: shadow rays pass them (as POV-Ray's through clear
     /// glass), caustics not being traced.
-    pub(crate) clear: Vec<bool>,
+    pub(crate) clear: Cow<'a, [bool]>,
     /// Whether any object has a texture (shading then looks each hit's up).
     pub(crate) textured: bool,
     /// Each object's [crossing error](crate::shapes::Shape::crossing_error): no ray counts a
     /// crossing nearer than it, and secondary rays start off the surface by a multiple of it.
-    pub(crate) errors: Vec<f64>,
+    pub(crate) errors: Cow<'a, [f64]>,
     /// The largest of `errors`.
     pub(crate) largest_error: f64,
     /// Which of two surfaces met in one place (within their crossing errors) shows: lower
@@ -87,7 +90,7 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// floor meets the floor, not the box's face with nothing under it), then the smaller
     /// bounding sphere (a disk lying on a floor shows, as a decal does); last, the object
     /// declared first.
-    pub(crate) tie: Vec<(bool, f64, usize)>,
+    pub(crate) tie: Cow<'a, [(bool, f64, usize)]>,
     /// The samples of each pixel taken, `(first, step)`: `first, first + step, …` below the
     /// scene's `spp` ([`Renderer::sample_subset`]).
     pub(crate) subset: (u32, u32),
@@ -106,39 +109,38 @@ impl<'a> Renderer<'a> {
 impl<'a, B: Backend> Renderer<'a, B> {
     /// A renderer for `scene` on back end `B`: every object prepared once.
     pub fn with_backend(scene: &'a Scene) -> Self {
-        Renderer::keeping(scene, &mut Kept::default())
+        let parts = prepared::Prepared::<B>::parts_of(&scene.objects);
+        Renderer::from_parts(scene, parts, &mut crate::bvh::Kept::default())
     }
 
-    /// [`Renderer::with_backend`], its hierarchy over the objects that do not move taken
-    /// from `kept` where they are where they were at its last use (one scene at another
-    /// instant), and left there for the next.
-    pub fn keeping(scene: &'a Scene, kept: &mut Kept) -> Self {
-        let shapes: Vec<_> = scene.objects.iter().map(|o| B::prepare(&o.shape)).collect();
-        let all: Vec<_> = scene.objects.iter().map(|o| o.shape.bounds()).collect();
-        let moving: Vec<bool> = scene.objects.iter().map(|o| o.moving).collect();
-        let bvh = (all.iter().flatten().count() >= BVH_FROM).then(|| kept.layers(&all, &moving));
-        let cull = |(o, b): (&Object, &Option<(E3, f64)>)| b.filter(|_| o.shape.cull());
-        let bounds = scene.objects.iter().zip(&all).map(cull).collect();
+    /// [`Renderer::with_backend`], taking from `kept` what was prepared for the last picture
+    /// of the scene (the same scene at another instant) for every object that is the same,
+    /// and the hierarchy over the objects that do not move where they have not; left there
+    /// for the next.
+    pub fn keeping(scene: &'a Scene, kept: &'a mut Kept) -> Self {
+        let (parts, hierarchy) = kept.prepared::<B>(&scene.objects);
+        Renderer::from_parts(scene, parts, hierarchy)
+    }
+
+    /// A renderer of `scene` from its objects as prepared, its hierarchy from `hierarchy`.
+    fn from_parts(scene: &'a Scene, p: prepared::Parts<'a, B>, hierarchy: &mut crate::bvh::Kept) -> Self {
+        let bounded = p.all.iter().flatten().count();
+        let bvh = (bounded >= BVH_FROM).then(|| hierarchy.layers(&p.all, &p.moving, !p.still_changed));
         // Packets test every object: for scenes with a hierarchy, single rays through it.
         let packets = B::PACKETS && bvh.is_none();
-        let flat = scene.objects.iter().map(|o| o.shape.flat()).collect();
-        let medium = media::media(&scene.objects);
-        let clear = scene.objects.iter().map(|o| o.material.dielectric()).collect();
         let textured = scene.objects.iter().any(|o| o.texture.is_some());
-        let errors: Vec<f64> = scene.objects.iter().map(|o| B::crossing_error(o.shape.as_ref())).collect();
-        let largest_error = errors.iter().copied().fold(0.0, f64::max);
-        let tie = scene
-            .objects
-            .iter()
-            .zip(&all)
-            .enumerate()
-            .map(|(k, (o, b))| (o.material.dielectric(), b.map_or(f64::INFINITY, |(_, r)| r), k))
-            .collect();
-        let camera_medium = media::medium_at(&scene.objects, &medium, &errors, scene.camera.position());
-        let dielectrics = scene.objects.iter().any(|o| o.material.dielectric());
+        let largest_error = p.errors.iter().copied().fold(0.0, f64::max);
+        let dielectrics = p.clear.iter().any(|&c| c);
+        let camera_medium = if dielectrics {
+            media::medium_at(&scene.objects, &p.medium, &p.errors, scene.camera.position())
+        } else {
+            None
+        };
+        let prepared::Parts { shapes, all, cull: bounds, flat, clear, errors, tie, medium, .. } = p;
         Renderer {
             scene,
             shapes,
+            all,
             packets,
             avx2: true,
             bounds,
@@ -155,6 +157,11 @@ impl<'a, B: Backend> Renderer<'a, B> {
             subset: (0, 1),
             counted: Default::default(),
         }
+    }
+
+    /// Whether back end `B` renders every object as it is ([`crate::backend::holds`]).
+    pub fn holds(&self) -> Result<(), String> {
+        crate::backend::holds_bounds::<B>(self.all.iter().flatten().copied())
     }
 
     /// The rays cast so far, by kind.

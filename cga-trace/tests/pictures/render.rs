@@ -173,7 +173,7 @@ fn combined_scene_matches_the_original_renderer() {
     let renderer = Renderer::new(&scene);
     let seen = |x: u32, y: u32| {
         let ray = scene.camera.ray(f64::from(x) + 0.5, f64::from(scene.camera.height - 1 - y) + 0.5).unwrap();
-        renderer.nearest(&ray, 0.0, f64::INFINITY).map_or("background".to_string(), |(_, o)| o.name.clone())
+        renderer.nearest(&ray, 0.0, f64::INFINITY).map_or("background".to_string(), |(_, o)| o.name.to_string())
     };
     let off = |x: u32, y: u32| (0..3).map(|c| got.get_pixel(x, y)[c].abs_diff(want.get_pixel(x, y)[c])).max().unwrap();
     let mut table = std::collections::BTreeMap::new();

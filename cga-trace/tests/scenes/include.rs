@@ -30,7 +30,7 @@ fn included_files_give_the_scene_written_as_one() {
     let split = load(d, "split.toml").unwrap();
     // Objects in reading order: each included file's (in the order listed, their own
     // includes first), then the including file's own.
-    let names = |s: &Scene| s.objects.iter().map(|o| o.name.clone()).collect::<Vec<_>>();
+    let names = |s: &Scene| s.objects.iter().map(|o| o.name.to_string()).collect::<Vec<_>>();
     assert_eq!(names(&split), vec!["floor".to_string(), "ball".into()]);
     write(d, "one.toml", &format!("{CAMERA}{MATERIALS}{LIGHTS}{FLOOR}{BALL}"));
     let one = load(d, "one.toml").unwrap();
@@ -49,7 +49,7 @@ fn a_scene_instances_the_templates_of_the_files_it_includes() {
     let copy = "[[objects]]\ntype = \"instance\"\nof = \"ball\"\nname = \"copy\"\ntransform = [{ translate = [2.0, 0.0, 0.0] }]\n";
     write(d, "scene.toml", &format!("include = [\"parts.toml\"]\n{CAMERA}{LIGHTS}{copy}"));
     let scene = load(d, "scene.toml").unwrap();
-    assert_eq!(scene.objects.iter().map(|o| o.name.as_str()).collect::<Vec<_>>(), ["copy"]);
+    assert_eq!(scene.objects.iter().map(|o| &*o.name).collect::<Vec<_>>(), ["copy"]);
 }
 
 #[test]

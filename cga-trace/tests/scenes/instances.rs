@@ -79,7 +79,7 @@ fn an_instances_material_and_name_replace_the_objects() {
     );
     let scene = parse(&text).unwrap();
     let (original, copy) = (&scene.objects[1], &scene.objects[2]);
-    assert_eq!((original.name.as_str(), copy.name.as_str()), ("ball", "gold ball"));
+    assert_eq!((&*original.name, &*copy.name), ("ball", "gold ball"));
     assert_eq!((original.material.colour, copy.material.colour), ([1.0, 0.0, 0.0], [0.9, 0.7, 0.2]));
 }
 

@@ -203,7 +203,7 @@ fn ruled_meshes_read_back_on_their_rulings() {
         let mut bytes = Vec::new();
         mesh.write_ply(&mut bytes).unwrap();
         let back = read_ply(&bytes);
-        let surface = scene.objects.iter().find(|o| o.name == name).unwrap();
+        let surface = scene.objects.iter().find(|o| &*o.name == name).unwrap();
         let ruled = surface.shape.downcast_ref::<cga_trace::surface::RuledSurface>().unwrap();
         let (mut off, mut angle, mut singular) = (0.0f64, 0.0f64, 0);
         for ((x, n), uv) in back.positions.iter().zip(&back.normals).zip(&back.uvs) {

@@ -24,7 +24,7 @@ fn surfaces() -> Vec<(&'static str, RuledSurface)> {
     let scene = Scene::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/ruled.toml")).unwrap();
     let mut out: Vec<(&str, RuledSurface)> = Vec::new();
     for (name, object) in [("band (point pairs)", "band"), ("sheet (lines)", "sheet")] {
-        let shape = &scene.objects.iter().find(|o| o.name == object).unwrap().shape;
+        let shape = &scene.objects.iter().find(|o| &*o.name == object).unwrap().shape;
         out.push((name, shape.downcast_ref::<RuledSurface>().unwrap().clone()));
     }
     out.push((
