@@ -22,8 +22,9 @@ import re
 from . import _cga
 
 #: The object kinds of the scene format, each a method of :class:`Scene`.
-KINDS = ["sphere", "plane", "disk", "torus", "cylinder", "cone", "box", "triangle", "mesh", "evolved", "spline",
-         "ruled", "instance", "point", "point-pair", "line", "circle", "plane-patch", "blade"]
+# The format's own registry: each kind and the fields it takes beyond the common ones.
+FIELDS = dict(_cga._object_kinds())
+KINDS = list(FIELDS)
 
 _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
@@ -194,7 +195,8 @@ def _kind_method(kind):
         return self._add(kind, f"scene.{name}(…)", fields)
 
     method.__name__ = name
-    method.__doc__ = f"A ``{kind}`` object (docs/SCENES.md gives its fields)."
+    own = ", ".join(f"``{f}``" for f in FIELDS[kind])
+    method.__doc__ = f"A ``{kind}`` object: {own}, and any object's fields (docs/SCENES.md)."
     return method
 
 

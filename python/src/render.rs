@@ -201,3 +201,14 @@ impl Picture {
         format!("Picture {w}×{h} ({:.3} s)", self.rendered.seconds)
     }
 }
+
+/// The scene format's object kinds as files write them, each with the fields it takes beyond
+/// those every object takes (`type`, `name`, `label`, `material`, `motor`, `transform`,
+/// `motion`, `template`): the registry the loader reads them by.
+#[pyfunction]
+pub(crate) fn _object_kinds() -> Vec<(&'static str, Vec<&'static str>)> {
+    let common = cga_trace::format::COMMON.len();
+    let fields =
+        |kind| cga_trace::format::fields(kind).unwrap_or_default().iter().skip(common).map(|f| f.name).collect();
+    cga_trace::format::kinds().into_iter().map(|kind| (kind, fields(kind))).collect()
+}

@@ -5,9 +5,10 @@
 //! only where the instance gives its own, as a label names one thing. An object with
 //! `template = true` is only instanced, never drawn itself.
 
+use super::MaterialRef;
 use super::numbers::Nums;
+use super::objects::ObjectSpec;
 use super::transform::{Step, motion_at, world_motor};
-use super::{MaterialRef, ObjectSpec};
 use crate::invalid::Invalid;
 use cga_core::Motor;
 use serde::Deserialize;
@@ -50,11 +51,12 @@ impl InstanceSpec {
         material: Option<Spanned<MaterialRef>>,
     ) -> ObjectSpec {
         original.outer = outer;
-        original.template = None;
-        original.name = Some(self.name.unwrap_or_else(|| format!("{} (instance)", self.of.get_ref())));
-        original.label = self.label;
+        let common = &mut original.common;
+        common.template = None;
+        common.name = Some(self.name.unwrap_or_else(|| format!("{} (instance)", self.of.get_ref())));
+        common.label = self.label;
         if let Some(m) = material {
-            original.material = m;
+            common.material = m;
         }
         original
     }

@@ -4,7 +4,8 @@
 use super::error::{SceneError, line_column_bytes, printable};
 use super::include::{self, Joined};
 use super::instance::{InstanceSpec, is_instance, is_template, moves, name_of};
-use super::{Assets, ObjectSpec, SceneFile, build_object, sections};
+use super::objects::{ObjectSpec, build_object};
+use super::{Assets, SceneFile, sections};
 use crate::drawing::Marks;
 use crate::frame::Frame;
 use crate::invalid::Invalid;
@@ -337,8 +338,7 @@ impl Source {
                 None => (k, value.span(), None),
             };
             let base = if j == k { value } else { value_of(j)? };
-            let mut spec =
-                ObjectSpec::deserialize(base.into_deserializer()).map_err(|e| syntax_error(joined, &e, &map_of(j)))?;
+            let mut spec = ObjectSpec::read(base).map_err(|e| syntax_error(joined, &e, &map_of(j)))?;
             // Where a field's span counts from: the object copied, or the instance giving it
             // (a copy carries only its own instance's label).
             let mut material_from = j;

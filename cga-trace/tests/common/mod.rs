@@ -8,6 +8,7 @@ use cga_core::Circle;
 use cga_core::euclid::E3;
 use cga_trace::Scene;
 use cga_trace::camera::Camera;
+use cga_trace::format::Role;
 use toml::{Table, Value};
 
 /// `x ↦ s x + t` for a scene file: points move, lengths scale, directions stay, and the
@@ -177,67 +178,49 @@ impl Similarity {
                     *r = Value::Float(r.as_float().expect("a number") / self.scale);
                 }
             }
-            for key in object.get_mut("motion").and_then(Value::as_array_mut).into_iter().flatten() {
-                self.motor(key);
-            }
-            for key in ["centre", "point", "min", "max"] {
-                if let Some(v) = object.get_mut(key) {
-                    self.point(v);
-                }
-            }
+            // Each field as the format declares its role.
             let kind = object.get("type").and_then(Value::as_str).unwrap_or("").to_string();
-            if kind == "mesh" || kind == "instance" {
-                self.conjugate_steps(object, kind == "mesh");
-            } else {
-                // Rotations about a point of the object move with it.
-                for step in object.get_mut("transform").and_then(Value::as_array_mut).into_iter().flatten() {
-                    assert!(
-                        step.get("translate").is_none(),
-                        "shipped objects move by rotations about their own points"
-                    );
-                    if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
-                        self.point(about);
+            let fields = cga_trace::format::fields(&kind).unwrap_or_else(|| panic!("no object kind `{kind}`"));
+            let mesh = fields.iter().any(|f| f.role == Role::Scale);
+            if mesh || kind == "instance" {
+                self.conjugate_steps(object, mesh);
+            }
+            for (key, value) in object.iter_mut() {
+                let role = fields.iter().find(|f| f.name == key.as_str()).map(|f| f.role);
+                match role.unwrap_or_else(|| panic!("`{key}` is no field of a {kind}")) {
+                    Role::Point => self.point(value),
+                    Role::Points => value.as_array_mut().expect("points").iter_mut().for_each(|p| self.point(p)),
+                    Role::Length => self.length(value),
+                    Role::Circle => self.circle(value.as_table_mut().expect("a circle table")),
+                    Role::Circles => value
+                        .as_array_mut()
+                        .expect("circles")
+                        .iter_mut()
+                        .for_each(|c| self.circle(c.as_table_mut().expect("a circle"))),
+                    Role::Line => self.point(value.get_mut("point").expect("point")),
+                    Role::Bound => {
+                        self.point(value.get_mut("centre").expect("centre"));
+                        self.length(value.get_mut("radius").expect("radius"));
                     }
-                }
-            }
-            for key in ["radius", "tube", "r1", "r2", "size"] {
-                if let Some(v) = object.get_mut(key) {
-                    self.length(v);
-                }
-            }
-            if let Some(blade) = object.get_mut("blade").filter(|b| b.is_table()) {
-                self.blade(blade);
-            }
-            if let Some(Value::Array(corners)) = object.get_mut("corners") {
-                corners.iter_mut().for_each(|c| self.point(c));
-            }
-            for key in ["c1", "c2"] {
-                if let Some(c) = object.get_mut(key).and_then(Value::as_table_mut) {
-                    self.circle(c);
-                }
-            }
-            // Spline surfaces' circles; ruled surfaces' point pairs, lines and bound.
-            if let Some(Value::Array(circles)) = object.get_mut("circles") {
-                circles.iter_mut().filter_map(Value::as_table_mut).for_each(|c| self.circle(c));
-            }
-            // A point pair or a list of points; a cylinder's or cone's `p1`, `p2` are one point.
-            for key in ["p1", "p2", "points"] {
-                match object.get_mut(key) {
-                    Some(Value::Array(points)) if points.first().is_some_and(Value::is_array) => {
-                        points.iter_mut().for_each(|p| self.point(p))
+                    // A circle's ten orthonormal coefficients are read as centre and radius.
+                    Role::Blade if value.is_table() => self.blade(value),
+                    Role::Motor => self.motor(value),
+                    Role::Motion => value.as_array_mut().expect("motors").iter_mut().for_each(|m| self.motor(m)),
+                    // Rotations about a point of the object move with it (a mesh's and an
+                    // instance's steps are conjugated above).
+                    Role::Transform if !mesh && kind != "instance" => {
+                        for step in value.as_array_mut().expect("steps") {
+                            assert!(
+                                step.get("translate").is_none(),
+                                "shipped objects move by rotations about their own points"
+                            );
+                            if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
+                                self.point(about);
+                            }
+                        }
                     }
-                    Some(point) => self.point(point),
-                    None => {}
+                    _ => {}
                 }
-            }
-            for key in ["l1", "l2"] {
-                if let Some(line) = object.get_mut(key).and_then(Value::as_table_mut) {
-                    self.point(line.get_mut("point").expect("point"));
-                }
-            }
-            if let Some(bound) = object.get_mut("bound").and_then(Value::as_table_mut) {
-                self.point(bound.get_mut("centre").expect("centre"));
-                self.length(bound.get_mut("radius").expect("radius"));
             }
         }
     }
