@@ -1,6 +1,6 @@
 //! An `[[objects]]` table: the fields every object takes ([`COMMON`]: `type`, `name`,
 //! `label`, `material` and how it moves) and its kind's own, each kind in its own file
-//! ([`kind::Kind`], listed in `registry.rs`); read, placed by its motor and built.
+//! (`kind::Kind`, listed in `registry.rs`); read, placed by its motor and built.
 //!
 //! The table is one flat TOML table (not a serde-tagged enum, which would lose the position of
 //! every value inside it): its `type` picks the kind, which reads the fields that are its
