@@ -18,6 +18,8 @@ result's class is the Rust result's type::
 object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scenes, read
 from files or built in code (:mod:`cga.scene`), to numpy arrays.
 
+``cga.random`` draws random objects of every class (:mod:`cga.random`).
+
 ``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
 convert values and arrays to and from those libraries' multivectors (:mod:`cga.interop`).
 
@@ -67,7 +69,7 @@ __all__ = [
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
     "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "from_clifford", "from_kingdon",
-    "interop", "to_clifford", "to_kingdon", "up",
+    "interop", "random", "to_clifford", "to_kingdon", "up",
 ]
 
 
@@ -75,10 +77,13 @@ _INTEROP = ("interop", "from_clifford", "from_kingdon", "to_clifford", "to_kingd
 
 
 def __getattr__(name):
-    # cga.interop needs numpy, whose import takes longer than the rest of ours: on first use.
-    if name in _INTEROP:
-        import importlib
+    # cga.interop and cga.random need numpy, whose import takes longer than the rest of ours:
+    # on first use.
+    import importlib
 
+    if name in _INTEROP:
         interop = importlib.import_module(".interop", __name__)
         return interop if name == "interop" else getattr(interop, name)
+    if name == "random":
+        return importlib.import_module(".random", __name__)
     raise AttributeError(f"module 'cga' has no attribute {name!r}")

@@ -313,3 +313,75 @@ fn exp_of<X: Exp>(b: cga_core::Generator<f64>) -> Result<[f64; 32], String> {
 }
 
 versor!(Motor, Rotor);
+
+/// Points as a numpy array: (3,) for one, (n, 3) for many.
+fn points_out(py: Python<'_>, all: Vec<E3>, single: bool) -> PyResult<Py<PyAny>> {
+    use numpy::PyArrayMethods;
+    let n = all.len();
+    let a = numpy::PyArray1::from_vec(py, all.into_iter().flatten().collect());
+    if single { a.reshape([3])?.into_py_any(py) } else { a.reshape([n, 3])?.into_py_any(py) }
+}
+
+/// Projections of points onto the classes that have a nearest point (cga-core's `Nearest`).
+macro_rules! nearest {
+    ($($class:ident),*) => {$(
+        #[pymethods]
+        impl $class {
+            /// The points of the object nearest `x` ((3,) or (n, 3)): the orthogonal projection
+            /// onto a flat, the radial one onto a round, the nearer point of a pair; refused by
+            /// row where it is not unique (a sphere's centre, a circle's axis).
+            fn project(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+                use cga_core::Nearest;
+                let v = &self.0;
+                let Rows { rows: xs, single: one } = points("x", x)?;
+                let n = length(&[v.n, xs.len()])?;
+                let all = (0..n)
+                    .map(|i| {
+                        Self::typed(v, at(v, i))
+                            .nearest_point(xs[row(xs.len(), i)])
+                            .map_err(|e| GeometryError::new_err(format!("{} (row {i}): {e}", v.ty.name)))
+                    })
+                    .collect::<PyResult<Vec<E3>>>()?;
+                points_out(py, all, v.single && one)
+            }
+        }
+    )*};
+}
+
+nearest!(Line, Plane, Sphere, Circle, Bivector);
+
+#[pymethods]
+impl Line {
+    /// The line's orthogonal projection onto `plane` (a line in the plane); refused for a
+    /// line along the plane's normal, whose projection is a point.
+    fn project_onto_plane(&self, plane: &Bound<'_, PyAny>) -> PyResult<Line> {
+        let (v, p) = (&self.0, of(plane, Plane::ty(), "plane")?);
+        let (n, single) = rows(v, p)?;
+        Ok(Line(build(Line::ty(), n, single, |i| {
+            Self::typed(v, at(v, i)).project_onto_plane(&Plane::typed(p, at(p, i))).map(|l| l.to_storage())
+        })?))
+    }
+}
+
+#[pymethods]
+impl Motor {
+    /// The C¹ spline of rigid motions through `poses` (a Motor array of n ≥ 2) at `u` in
+    /// `[0, n − 1]` (pose k at u = k), a number or an array: cubic Bézier segments of screw
+    /// interpolations whose velocities at the poses are Catmull–Rom's (cga-core's
+    /// `MotorSpline`).
+    #[staticmethod]
+    fn spline(poses: &Self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let v = &poses.0;
+        let all: Vec<cga_core::Motor<f64>> = (0..v.n).map(|i| Self::typed(v, i)).collect();
+        let spline =
+            cga_core::MotorSpline::new(&all).map_err(|e| GeometryError::new_err(format!("Motor.spline: {e}")))?;
+        let Rows { rows: us, single } = params("u", u)?;
+        let last = (v.n - 1) as f64;
+        if let Some(bad) = us.iter().find(|u| !(0.0..=last).contains(*u)) {
+            return Err(crate::errors::ValueError::new_err(format!(
+                "Motor.spline: u = {bad} is outside [0, {last}] (pose k at u = k)"
+            )));
+        }
+        Ok(Motor(build(Self::ty(), us.len(), single, |i| spline.at(us[i]).map(|m| m.to_storage()))?))
+    }
+}

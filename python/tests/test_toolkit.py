@@ -79,3 +79,80 @@ def test_what_has_no_answer_is_refused_by_name():
         cga.Motor.interpolate(cga.Motor([1.0, 0, 0, 0, 0, 0, 0, 0]), cga.Motor([1.0, 0, 0, 0, 0, 0, 0, 0]), float("nan"))
     with pytest.raises(cga.ShapeError):
         cga.Line.through([0, 0, 0.0], [1.0, 0, 0]).distance_to([1.0, 2.0])
+
+
+def test_projections_are_euclids_nearest_points():
+    x = RNG.normal(size=(30, 3)) * 3
+    c, r = np.array([0.5, -1.0, 2.0]), 1.3
+    d = x - c
+    sphere = cga.Sphere.from_centre_radius(c, r)
+    assert np.allclose(sphere.project(x), c + r * d / np.linalg.norm(d, axis=1, keepdims=True), atol=1e-12)
+    n = np.array([1.0, 2.0, 2.0]) / 3
+    plane = cga.Plane.from_point_normal(2 * n, n)
+    assert np.allclose(plane.project(x), x - (x @ n - 2.0)[:, None] * n, atol=1e-12)
+    p, u = np.array([1.0, 0, 0]), np.array([0, 0.6, 0.8])
+    line = cga.Line.from_point_direction(p, u)
+    assert np.allclose(line.project(x), p + ((x - p) @ u)[:, None] * u, atol=1e-12)
+    circle = cga.Circle.from_centre_normal_radius(c, n, r)
+    in_plane = d - (d @ n)[:, None] * n
+    assert np.allclose(circle.project(x), c + r * in_plane / np.linalg.norm(in_plane, axis=1, keepdims=True), atol=1e-12)
+    a, b = np.array([1.0, 1, 1]), np.array([-1.0, 0, 2])
+    pair = cga.up(a) ^ cga.up(b)
+    nearer = np.where((np.linalg.norm(x - a, axis=1) <= np.linalg.norm(x - b, axis=1))[:, None], a, b)
+    assert np.allclose(pair.project(x), nearer, atol=1e-9)
+    # Arrays row for row, and one point onto many objects.
+    spheres = cga.Sphere.from_centre_radius(x[:5], 0.5)
+    assert np.allclose(spheres.project([0, 0, 0.0]), np.array([spheres[i].project([0, 0, 0.0]) for i in range(5)]))
+    with pytest.raises(cga.GeometryError, match="row 0"):
+        sphere.project([c])
+
+
+def test_a_line_projects_onto_a_plane_and_along_its_normal_is_refused():
+    plane = cga.Plane.from_point_normal([0, 0, 1.0], [0, 0, 1.0])
+    line = cga.Line.from_point_direction([1.0, 2.0, 5.0], [1.0, 0, 1.0])
+    shadow = line.project_onto_plane(plane)
+    assert np.allclose(shadow.point()[2], 1.0, atol=1e-12)
+    d = shadow.direction()
+    assert np.allclose(np.cross(d, [1.0, 0, 0]), 0, atol=1e-12)
+    with pytest.raises(cga.GeometryError):
+        cga.Line.from_point_direction([0, 0, 0.0], [0, 0, 1.0]).project_onto_plane(plane)
+
+
+def test_a_motor_spline_passes_through_its_poses_smoothly():
+    poses = cga.random.motors(5, seed=3)
+    at_knots = cga.Motor.spline(poses, np.arange(5.0))
+    x = RNG.normal(size=3)
+    for k in range(5):
+        assert np.allclose(at_knots[k].move_point(x), poses[k].move_point(x), atol=1e-9)
+    # C¹: the point's velocity just before and after an inner pose agree.
+    h = 1e-6
+    path = lambda u: cga.Motor.spline(poses, u).move_point(x)
+    for k in (1, 2, 3):
+        before = (path(k) - path(k - h)) / h
+        after = (path(k + h) - path(k)) / h
+        assert np.allclose(before, after, rtol=1e-3, atol=1e-3)
+    with pytest.raises(cga.ValueError, match="outside"):
+        cga.Motor.spline(poses, 4.5)
+    with pytest.raises(cga.GeometryError):
+        cga.Motor.spline(poses[0:1], 0.0)
+
+
+def test_random_objects_are_proper_reproducible_and_checked():
+    import cga.random as rnd
+
+    for make, cls in [(rnd.spheres, cga.Sphere), (rnd.planes, cga.Plane), (rnd.lines, cga.Line),
+                      (rnd.circles, cga.Circle), (rnd.point_pairs, cga.Bivector), (rnd.rotors, cga.Rotor),
+                      (rnd.translators, cga.Translator), (rnd.motors, cga.Motor), (rnd.vectors, cga.Vector)]:
+        many = make(50, seed=7)
+        assert type(many) is cls and len(many) == 50
+        assert np.array_equal(many.array, make(50, seed=7).array)
+        assert make(seed=1).single
+    assert rnd.points(4, seed=2).shape == (4, 3) and rnd.points(seed=2).shape == (3,)
+    radii = rnd.spheres(200, seed=4, scale=2.0).centre_radius()[1]
+    assert ((radii >= 0.2) & (radii <= 2.0)).all()
+    m = rnd.motors(100, seed=5)
+    assert np.allclose((m * ~m).array[:, 0], 1.0, atol=1e-12)
+    kinds = {k["kind"] for k in rnd.point_pairs(20, seed=6).classify()}
+    assert kinds == {"round"}
+    with pytest.raises(cga.ValueError, match="count"):
+        rnd.spheres(0)
