@@ -4,7 +4,8 @@ operations, interleaved rounds, medians of wall time (the Python call included):
 
 - 1e6 conformal points moved by one motor (`M X M̃`),
 - 1e5 line–sphere meets (the regressive product),
-- 1e5 circles through three points (`A ∧ B ∧ C`).
+- 1e5 circles through three points (`A ∧ B ∧ C`): ours as `cga.wedge(A, B, C)` (the chain
+  taken a block of rows at a time) and as `A ^ B ^ C` (the operators one by one).
 
 Each library gets its idiomatic batch form: ours an array object (one call, rows in Rust),
 kingdon a multivector whose coefficients are numpy arrays with its operators compiled by
@@ -68,6 +69,10 @@ def ours_meet(s):
 
 
 def ours_circle(s):
+    return cga.wedge(s["p"], s["q"], s["r"])
+
+
+def ours_circle_steps(s):
     return s["p"] ^ s["q"] ^ s["r"]
 
 
@@ -192,6 +197,7 @@ def main():
         ("1e6 points by one motor", ours_motor, {"kingdon": kingdon_motor, "clifford": clifford_motor}),
         ("1e5 line–sphere meets", ours_meet, {"kingdon": kingdon_meet, "clifford": clifford_meet}),
         ("1e5 circles through three points", ours_circle, {"kingdon": kingdon_circle, "clifford": clifford_circle}),
+        ("1e5 circles, ours as `p ^ q ^ r`", ours_circle_steps, {"kingdon": kingdon_circle, "clifford": clifford_circle}),
     ]
     # Answers, read back in Euclidean terms.
     moved = cga.down(ours_motor(ours))
@@ -222,6 +228,8 @@ def main():
     ei_mv = L.MultiVector(np.eye(32)[idx["e4"]] + np.eye(32)[idx["e5"]])
     r_c = np.array([np.sqrt(abs((L.MultiVector(v) | L.MultiVector(v))[()] / ((L.MultiVector(v) ^ ei_mv) | (L.MultiVector(v) ^ ei_mv))[()])) for v in cc[:2000]])
     agree["1e5 circles through three points"] = (digits(r_ours, r_k), digits(r_ours[:2000], r_c))
+    r_steps = ours_circle_steps(ours).centre_normal_radius()[2]
+    agree["1e5 circles, ours as `p ^ q ^ r`"] = (digits(r_steps, r_k), digits(r_steps[:2000], r_c))
 
     times = {name: {lib: [] for lib in ["ours", "kingdon", "clifford"]} for name, _, _ in rows}
     for _ in range(ROUNDS):

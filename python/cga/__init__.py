@@ -4,7 +4,8 @@ tracer of CGA scenes.
 Every class holds one value or an array of them (``Circle.from_array(a)`` with ``a`` of
 shape ``(n, 10)``); the operators ``*`` (geometric), ``^`` (outer), ``|`` (inner), ``&``
 (regressive, the meet) and ``~`` (reverse) run the generated Rust code on every row, and the
-result's class is the Rust result's type::
+result's class is the Rust result's type (``cga.wedge(a, b, c)`` is ``a ^ b ^ c`` taken a block of
+rows at a time, with the same numbers)::
 
     >>> import cga
     >>> a, b, c = cga.up([1.0, 0, 0]), cga.up([0, 1.0, 0]), cga.up([-1.0, 0, 0])
@@ -56,6 +57,7 @@ from ._cga import (
     down,
     draw,
     up,
+    wedge,
 )
 
 from .scene import Scene
@@ -69,7 +71,7 @@ __all__ = [
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
     "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "from_clifford", "from_kingdon",
-    "interop", "random", "to_clifford", "to_kingdon", "up",
+    "interop", "random", "to_clifford", "to_kingdon", "up", "wedge",
 ]
 
 

@@ -60,6 +60,42 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
     Values::zip(a, b, py, out, eval).map(Some)
 }
 
+/// `values[0] ^ values[1] ^ …`, left to right: the chain of `^`, row for row the same
+/// numbers. Where every step has a kernel it runs a block of rows at a time, its
+/// intermediates in the core's cache (for arrays about half the memory traffic of the steps
+/// one by one); otherwise it is the operators one by one.
+#[pyfunction]
+#[pyo3(signature = (*values))]
+pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>> {
+    let Some((first, rest)) = values.split_first() else {
+        return Err(crate::errors::ValueError::new_err("wedge: give at least one value"));
+    };
+    let all: Vec<&Values> = values
+        .iter()
+        .map(|v| values_of(v).ok_or_else(|| PyTypeError::new_err("wedge: expected values of cga's classes")))
+        .collect::<PyResult<_>>()?;
+    let n = crate::geometry::length(&all.iter().map(|v| v.n).collect::<Vec<_>>())?;
+    let mut types = vec![all[0].ty];
+    for v in &all[1..] {
+        let last = types[types.len() - 1].name;
+        match products().get(&(ProductKind::Outer, last, v.ty.name)).and_then(|e| type_named(e.output)) {
+            Some(t) => types.push(t),
+            None => break,
+        }
+    }
+    if types.len() == all.len()
+        && let Some(data) = py.detach(|| crate::kernels::chain(ProductKind::Outer, &all, &types, n))
+    {
+        let single = all.iter().all(|v| v.single);
+        return wrap(py, Values { ty: types[types.len() - 1], data, n, single });
+    }
+    let mut acc = first.clone();
+    for v in rest {
+        acc = acc.bitxor(v)?;
+    }
+    Ok(acc.unbind())
+}
+
 /// The products computed on lanes, as `(kind, left class, right class)` (for the tests that
 /// compare them with [`registry_product`]).
 #[pyfunction(name = "_kernels")]

@@ -96,7 +96,12 @@ where
 /// coefficients into `out`. Two arrays are paired a block at a time, in a buffer each
 /// thread reuses (no array of pairs as large as the inputs).
 fn product<P: Product>(a: &Values, b: &Values, n: usize, k: usize, out: &mut [f64]) {
-    let (xs, ys) = (typed::<P::A>(&a.data, a.k()), typed::<P::B>(&b.data, b.k()));
+    product_of::<P>((&a.data, a.k()), (&b.data, b.k()), n, k, out);
+}
+
+/// [`product`] on rows of coefficients: `a` and `b` as (data, coefficients a row).
+fn product_of<P: Product>(a: (&[f64], usize), b: (&[f64], usize), n: usize, k: usize, out: &mut [f64]) {
+    let (xs, ys) = (typed::<P::A>(a.0, a.1), typed::<P::B>(b.0, b.1));
     let out = typed_mut::<P::O>(out, k);
     match (xs.len(), ys.len()) {
         (1, m) if m == n && n > 1 => run_blocks(&FixedLeft::<P>(xs[0]), ys, out),
@@ -142,6 +147,25 @@ macro_rules! kernels {
         /// The products with a kernel: kind, left and right operand types.
         pub const KERNELS: &[(ProductKind, &str, &str)] = &[$((ProductKind::$kind, stringify!($a), stringify!($b))),*];
 
+        /// The product `kind` of rows `a` (of type `ta`) and `b` (of `tb`), one of them
+        /// broadcast where a single row, into `out` (`n` rows of `to`'s coefficients); `false`
+        /// where it is not one of the kernels.
+        pub fn lanes_into(
+            kind: ProductKind,
+            (ta, a): (&Type, &[f64]),
+            (tb, b): (&Type, &[f64]),
+            (to, out): (&Type, &mut [f64]),
+        ) -> bool {
+            let (k, n) = (to.blades.len(), out.len() / to.blades.len().max(1));
+            match (kind, ta.name, tb.name) {
+                $((ProductKind::$kind, stringify!($a), stringify!($b)) if to.name == stringify!($o) => {
+                    product_of::<$name>((a, ta.blades.len()), (b, tb.blades.len()), n, k, out);
+                    true
+                })*
+                _ => false,
+            }
+        }
+
         /// The product `kind` of `a` and `b` on lanes (`n` rows of `out`'s coefficients),
         /// where it is one of the kernels.
         pub fn lanes(kind: ProductKind, a: &Values, b: &Values, n: usize, out: &Type) -> Option<Vec<f64>> {
@@ -183,4 +207,54 @@ kernels! {
     CirclePlane: Regressive(Circle, Plane) -> Bivector, |a, b| a & b;
     SphereSphere: Regressive(Sphere, Sphere) -> Circle, |a, b| a & b;
     PlanePlane: Regressive(Plane, Plane) -> Line, |a, b| a & b;
+}
+
+/// Rows a block of a chain takes: its intermediates (at most 32 coefficients a row) stay
+/// within a core's cache.
+const CHAIN_BLOCK: usize = 1024;
+
+/// The rows of `v` in the block `first .. first + len` (a single value's one row for any).
+fn block_rows(v: &Values, first: usize, len: usize) -> &[f64] {
+    if v.n == 1 { &v.data } else { &v.data[first * v.k()..(first + len) * v.k()] }
+}
+
+/// A chain of products `((v₀ ∘ v₁) ∘ v₂) ∘ …` of one kind on lanes, every step a kernel
+/// (`types[i]` the type of step i's result, `types[0]` the first operand's), `n` rows into a
+/// new array, a block of rows at a time: each block's intermediates stay in buffers in the
+/// core's cache, so the operands are read and the result written once, and every row gets
+/// the numbers of the chain taken step by step. `None` where a step has no kernel.
+pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: usize) -> Option<Vec<f64>> {
+    let steps = values.len().checked_sub(1).filter(|&s| s > 0)?;
+    let known = (1..=steps).all(|i| KERNELS.contains(&(kind, types[i - 1].name, values[i].ty.name)));
+    if !known || values.iter().any(|v| v.n != 1 && v.n != n) {
+        return None;
+    }
+    let k = types[steps].blades.len();
+    let mut out = crate::values::scratch(n * k);
+    let block = |bufs: &mut [Vec<f64>; 2], (c, o): (usize, &mut [f64])| {
+        let (first, len) = (c * CHAIN_BLOCK, o.len() / k);
+        // Rows of step i's result: one while every operand so far is a single value.
+        let width = |i: usize| if values[..=i].iter().all(|v| v.n == 1) { 1 } else { len };
+        for i in 1..=steps {
+            let b = (values[i].ty, block_rows(values[i], first, len));
+            let (done, previous) = bufs.split_at_mut(1);
+            let (into, from) = if i % 2 == 1 { (&mut done[0], &previous[0]) } else { (&mut previous[0], &done[0]) };
+            let a = (types[i - 1], if i == 1 { block_rows(values[0], first, len) } else { &from[..] });
+            let known = if i == steps {
+                lanes_into(kind, a, b, (types[i], &mut *o))
+            } else {
+                into.clear();
+                into.resize(width(i) * types[i].blades.len(), 0.0);
+                lanes_into(kind, a, b, (types[i], into))
+            };
+            debug_assert!(known, "every step has a kernel");
+        }
+    };
+    if n < THREADED {
+        let mut bufs = [Vec::new(), Vec::new()];
+        out.chunks_mut(CHAIN_BLOCK * k).enumerate().for_each(|c| block(&mut bufs, c));
+    } else {
+        out.par_chunks_mut(CHAIN_BLOCK * k).enumerate().for_each_init(|| [Vec::new(), Vec::new()], block);
+    }
+    Some(out)
 }

@@ -27,6 +27,7 @@ fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(draw::draw, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::down, m)?)?;
     m.add_function(wrap_pyfunction!(classes::kernels, m)?)?;
+    m.add_function(wrap_pyfunction!(classes::wedge, m)?)?;
     m.add_function(wrap_pyfunction!(classes::registry_product, m)?)?;
     m.add_function(wrap_pyfunction!(render::_object_kinds, m)?)?;
     m.add("ValueError", py.get_type::<errors::ValueError>())?;

@@ -90,3 +90,28 @@ def test_every_lane_kernel_gives_the_registrys_bits(n):
             got, want = op(x, y), _cga._registry_product(kind, x, y)
             assert type(got) is type(want), (kind, left, right)
             assert np.array_equal(got.array, want.array), (kind, left, right, n)
+
+
+def test_wedge_is_the_chain_of_outer_products_bit_for_bit():
+    rng = np.random.default_rng(11)
+    for n in (1, 7, 5000, 100_000):
+        p, q, r, s = (cga.up(rng.normal(size=(n, 3))) for _ in range(4))
+        assert np.array_equal(cga.wedge(p, q, r).array, (p ^ q ^ r).array)
+        assert np.array_equal(cga.wedge(p, q, r, s).array, (p ^ q ^ r ^ s).array)
+        assert type(cga.wedge(p, q, r, s)) is cga.Sphere
+    # One value against arrays, at any place in the chain.
+    one, many = cga.up([1.0, 2.0, 3.0]), cga.up(rng.normal(size=(3000, 3)))
+    other = cga.up(rng.normal(size=(3000, 3)))
+    assert np.array_equal(cga.wedge(one, many, other).array, (one ^ many ^ other).array)
+    assert np.array_equal(cga.wedge(one, cga.up([0, 1.0, 0]), many).array, (one ^ cga.up([0, 1.0, 0]) ^ many).array)
+    assert cga.wedge(one, cga.up([0, 1.0, 0]), cga.up([0, 0, 1.0])).single
+    # Steps without a kernel are the operators one by one.
+    line = cga.Line.through([0, 0, 0.0], [1.0, 0, 0])
+    assert np.array_equal(cga.wedge(line, many).array, (line ^ many).array)
+    assert cga.wedge(one) is one or np.array_equal(cga.wedge(one).array, one.array)
+    with pytest.raises(cga.ValueError):
+        cga.wedge()
+    with pytest.raises(TypeError):
+        cga.wedge(one, 3.0)
+    with pytest.raises(cga.ShapeError):
+        cga.wedge(cga.up(rng.normal(size=(3, 3))), cga.up(rng.normal(size=(4, 3))), one)
