@@ -7,7 +7,7 @@
 //! documents e4² = +1, e5² = −1 while its products use the opposite metric, so its
 //! coefficients are not comparable one to one.
 //!
-//! `cargo bench --bench peers`, then `python3 benches/report.py`.
+//! `cargo bench --bench peers --features peers`, then `python3 benches/report.py`.
 
 use cga_benches::kernels::{CircleCircle, MeetSphere, MotorMotor, MotorOnPoint, RotorRotor, ThreePoints};
 use cga_core::simd::{Kernel, Lanes, run_packed};

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Print the benchmarks as markdown tables, from criterion's saved estimates.
 
-Run after `cargo bench --bench products`, `--bench render` and/or `--bench peers`:
+Run after `cargo bench --bench products`, `--bench render` and/or `--bench peers --features peers`:
 python3 benches/report.py
 Products: criterion medians per batch divided by the batch size (256), ns per op.
 Render: median ms per frame (one thread), rays/s, and the back ends' ratios.
@@ -90,7 +90,7 @@ PEERS = ["line_meet_sphere", "circle_from_3_points", "motor_on_point", "circle_t
 
 
 def peers_table():
-    """`cargo bench --bench peers`: ns per operation, ours against clifford and hisab."""
+    """`cargo bench --bench peers --features peers`: ns per operation, ours against clifford and hisab."""
     rows = []
     for op in PEERS:
         t = {lib: median_ns(f"peers_{op}", lib) or median_ns(f"peers/{op}", lib)
