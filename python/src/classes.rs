@@ -74,7 +74,7 @@ pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny
         .iter()
         .map(|v| values_of(v).ok_or_else(|| PyTypeError::new_err("wedge: expected values of cga's classes")))
         .collect::<PyResult<_>>()?;
-    let n = crate::geometry::length(&all.iter().map(|v| v.n).collect::<Vec<_>>())?;
+    let n = crate::values::length(&all.iter().map(|v| v.n).collect::<Vec<_>>())?;
     let mut types = vec![all[0].ty];
     for v in &all[1..] {
         let last = types[types.len() - 1].name;

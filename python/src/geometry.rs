@@ -6,7 +6,7 @@
 
 use crate::classes::{Circle, Line, Motor, Plane, Rotor, Sphere, Translator, Vector, floats, values_of};
 use crate::errors::{GeometryError, ShapeError, ValueError};
-use crate::values::{Type, Values};
+use crate::values::{Type, Values, length};
 use cga_core::euclid::E3;
 use numpy::{AllowTypeChange, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::IntoPyObjectExt;
@@ -60,15 +60,6 @@ fn finite(name: &str, x: &[f64]) -> PyResult<()> {
     match x.iter().find(|v| !v.is_finite()) {
         Some(v) => Err(ValueError::new_err(format!("{name}: {v} (every number must be finite)"))),
         None => Ok(()),
-    }
-}
-
-/// The common length of arguments of `lens` rows (1 broadcasts).
-pub(crate) fn length(lens: &[usize]) -> PyResult<usize> {
-    let n = lens.iter().copied().max().unwrap_or(1);
-    match lens.iter().find(|&&l| l != 1 && l != n) {
-        Some(l) => Err(ShapeError::new_err(format!("arrays of {l} and {n} rows: broadcast only one against many"))),
-        None => Ok(n),
     }
 }
 

@@ -8,7 +8,8 @@ use crate::classes::{
     values_of, wrap,
 };
 use crate::errors::GeometryError;
-use crate::geometry::{Rows, build, length, numbers as params, points};
+use crate::geometry::{Rows, build, numbers as params, points};
+use crate::values::length;
 use crate::values::{Type, Values};
 use cga_core::classify::{Kind, Reality};
 use cga_core::euclid::E3;

@@ -180,3 +180,12 @@ fn fill(out: &'static Type, n: usize, f: impl Fn(usize) -> [f64; 32] + Sync + Se
     }
     data
 }
+
+/// The common length of arguments of `lens` rows (1 broadcasts).
+pub(crate) fn length(lens: &[usize]) -> PyResult<usize> {
+    let n = lens.iter().copied().max().unwrap_or(1);
+    match lens.iter().find(|&&l| l != 1 && l != n) {
+        Some(l) => Err(ShapeError::new_err(format!("arrays of {l} and {n} rows: broadcast only one against many"))),
+        None => Ok(n),
+    }
+}
