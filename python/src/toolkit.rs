@@ -190,12 +190,7 @@ impl Line {
                     .map_err(|e| GeometryError::new_err(format!("Line (row {i}): {e}")))
             })
             .collect::<PyResult<_>>()?;
-        let pts = |f: fn(&cga_core::Closest<f64>) -> E3| -> PyResult<Py<PyAny>> {
-            let flat: Vec<f64> = all.iter().flat_map(f).collect();
-            let a = numpy::PyArray1::from_vec(py, flat);
-            use numpy::PyArrayMethods;
-            if single { a.reshape([3])?.into_py_any(py) } else { a.reshape([n, 3])?.into_py_any(py) }
-        };
+        let pts = |f: fn(&cga_core::Closest<f64>) -> E3| points_out(py, all.iter().map(f).collect(), single);
         let d = numbers(py, "Line", n, single, |i| Ok::<_, String>(all[i].distance))?;
         Ok((pts(|c| c.on_self)?, pts(|c| c.on_other)?, d))
     }
