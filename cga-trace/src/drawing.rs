@@ -109,6 +109,17 @@ impl Sizes {
     pub fn for_extent(centre: E3, radius: f64) -> Sizes {
         Sizes { size: radius / 40.0, tube: radius / 150.0, patch: radius / 2.0, arrow: radius / 4.0, centre, radius }
     }
+
+    /// These sizes with an object's own `size` (a ball's radius and a patch's) and `tube`
+    /// where it gives them.
+    pub fn with(self, size: Option<f64>, tube: Option<f64>) -> Sizes {
+        Sizes {
+            size: size.unwrap_or(self.size),
+            tube: tube.unwrap_or(self.tube),
+            patch: size.unwrap_or(self.patch),
+            ..self
+        }
+    }
 }
 
 /// A blade as it is drawn, in world coordinates.
@@ -247,6 +258,16 @@ impl Drawing {
                 Drawing::Arrow { at: sizes.centre, direction: scale(direction, sizes.arrow), tube }
             }
         })
+    }
+
+    /// Where the drawing of a blade of `kind` is, for sizing the scene: [`Drawing::extent`],
+    /// but an arrow has a place only as a tangent (a round of zero radius at its point), not
+    /// as a direction (drawn wherever the scene's centre is).
+    pub fn place(&self, kind: &Kind<f64>) -> Option<(E3, f64)> {
+        match *self {
+            Drawing::Arrow { at, .. } => matches!(kind, Kind::Round { .. }).then_some((at, 0.0)),
+            _ => Some(self.extent()),
+        }
     }
 
     /// A point of the drawing and how far it reaches from it (world units; a line or plane

@@ -111,6 +111,7 @@ impl Backend for Dense {
     type Carrier = Multivector;
     type Shape = DenseShape;
     const NAME: &'static str = "dense";
+    const KIND: super::BackendKind = super::BackendKind::Dense;
     /// In the orthonormal basis a point's `eo` and `½|x|² ei` share the `e4`, `e5`
     /// coefficients (`½(|x|² ∓ 1)`), so objects of frame size `s` keep only `ε s²` (large)
     /// or `ε / s²` (small) of their geometry: 2²⁰ either way keeps it to about 2e-4.

@@ -44,6 +44,8 @@ pub trait Backend: Send + Sync + 'static {
     type Shape: Clone + Send + Sync + 'static;
     /// Name, for reports.
     const NAME: &'static str;
+    /// Which of the [`BackendKind`]s it is.
+    const KIND: BackendKind;
     /// The ray from `origin` along the unit direction `dir` (the integrator's secondary rays,
     /// whose directions are unit by construction: not normalised again).
     fn ray(origin: E3, dir: E3) -> Ray<Self::Carrier>;

@@ -62,6 +62,7 @@ impl Backend for Plain {
     type Carrier = ();
     type Shape = PlainShape;
     const NAME: &'static str = "plain";
+    const KIND: super::BackendKind = super::BackendKind::Plain;
     const PACKETS: bool = true;
 
     fn ray(origin: E3, dir: E3) -> Ray<()> {

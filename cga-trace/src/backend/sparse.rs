@@ -50,6 +50,7 @@ impl Backend for Sparse {
     type Carrier = Line;
     type Shape = SparseShape;
     const NAME: &'static str = "sparse";
+    const KIND: super::BackendKind = super::BackendKind::Sparse;
     const PACKETS: bool = true;
 
     fn ray(origin: E3, dir: E3) -> Ray {

@@ -2,22 +2,29 @@
 //! drawn as what they are, e.g.
 //! `Figure::new().add(&circle, "red").add(&line, "blue").render("fig.png")`.
 //!
-//! A figure is a scene file: [`Figure::scene`] writes one (each object a `type = "blade"`
-//! table of its coefficients, printed so that they read back to the bit), and rendering reads
-//! that file like any other, so a saved figure renders the same picture from the command
-//! line. The camera frames every bounded object unless given.
+//! [`Figure::build`] makes the scene from the objects directly; [`Figure::scene`] writes it as
+//! a scene file (each object a `type = "blade"` table of its coefficients, printed so that
+//! they read back to the bit) that renders the same picture from the command line. The
+//! camera frames every bounded object unless given.
 
 use super::{DrawError, Drawing, Marks, Sizes};
 use crate::Film;
-use crate::SceneError;
 use crate::film::{Output, OutputError};
+use crate::format::{CameraSpec, Placement, draw, label};
+use crate::frame::Frame;
+use crate::invalid::Invalid;
+use crate::light::{Light, Source as Emitter};
+use crate::limits::MAX_OBJECTS;
+use crate::material::Material;
 use crate::output::{OutputFile, OutputFileError};
 use crate::pipeline::{self, Options, RenderError, Rendered};
-use crate::scene::Scene;
-use cga_core::euclid::{E3, add, norm, scale, unit};
-use cga_core::{GeometryError, classify_storage};
+use crate::scene::{Object, Scene};
+use crate::settings::Settings;
+use cga_core::euclid::{E3, add, cross, norm, scale, sub, unit};
+use cga_core::{GeometryError, Kind, classify_storage};
 use std::fmt::Write as _;
 use std::path::Path;
+use std::sync::Arc;
 
 /// Objects in a figure.
 pub const MAX_FIGURE_OBJECTS: usize = 4096;
@@ -52,9 +59,18 @@ pub enum FigureError {
     /// More objects than [`MAX_FIGURE_OBJECTS`].
     #[error("{0} objects exceed the figure's limit of {MAX_FIGURE_OBJECTS}")]
     TooMany(usize),
-    /// The scene the figure makes is refused (a size out of range).
-    #[error(transparent)]
-    Scene(#[from] SceneError),
+    /// The camera, given or framing the objects, that the figure cannot have (a position
+    /// not finite, objects too far apart for one frame).
+    #[error("camera: {0}")]
+    Camera(#[source] Invalid),
+    /// An object whose shapes or label cannot be built.
+    #[error("object {index}: {reason}")]
+    Object {
+        /// 1-based position of the object.
+        index: usize,
+        /// Why.
+        reason: Invalid,
+    },
     /// Rendering or writing the picture.
     #[error(transparent)]
     Render(#[from] RenderError),
@@ -115,6 +131,24 @@ struct Item {
     size: Option<f64>,
     tube: Option<f64>,
 }
+
+impl Item {
+    /// Its colour (checked known by [`Figure::drawings`]) with a softer highlight than the
+    /// default's: `k_s = 0.4`, `q = 40`.
+    fn material(&self) -> Material {
+        let rgb = colour(&self.colour).unwrap_or([1.0; 3]);
+        Material { ks: 0.4, q: 40.0, ..Material::new(rgb) }
+    }
+}
+
+/// The field of view of a figure's camera, degrees.
+const FOV: f64 = 40.0;
+
+/// A figure's ambient light.
+const AMBIENT: f64 = 0.3;
+
+/// A figure's lights: directional, a key light from above and a dim fill.
+const LIGHTS: [(E3, [f64; 3]); 2] = [([-0.3, 0.5, -1.0], [0.85, 0.85, 0.85]), ([0.6, 0.2, 0.3], [0.25, 0.25, 0.3])];
 
 /// A picture of CGA objects, built by chaining [`Figure::add`] and friends.
 #[derive(Clone, Debug)]
@@ -195,12 +229,12 @@ impl Figure {
         self
     }
 
-    /// What each object is drawn as, with default marks: checked, located errors.
-    fn drawings(&self) -> Result<Vec<Drawing>, FigureError> {
+    /// Each object's classification and what it is drawn as with marks of no size (where it
+    /// is, for framing and sizing the scene): checked, located errors.
+    fn drawings(&self) -> Result<Vec<(Kind<f64>, Drawing)>, FigureError> {
         if self.items.len() > MAX_FIGURE_OBJECTS {
             return Err(FigureError::TooMany(self.items.len()));
         }
-        let marks = Sizes::ZERO;
         let mut drawings = Vec::with_capacity(self.items.len());
         for (k, item) in self.items.iter().enumerate() {
             let blade = |reason: BladeError| FigureError::Blade { index: k + 1, reason };
@@ -209,56 +243,144 @@ impl Figure {
                 return Err(FigureError::Size { index: k + 1, value });
             }
             let kind = classify_storage(&item.blade).map_err(|e| blade(e.into()))?;
-            drawings.push(Drawing::of(kind, &marks, item.segment).map_err(|e| blade(e.into()))?);
+            let drawing = Drawing::of(kind, &Sizes::ZERO, item.segment).map_err(|e| blade(e.into()))?;
+            drawings.push((kind, drawing));
         }
         Ok(drawings)
     }
 
-    /// The figure as a scene file (TOML): the camera (given, or framing the bounded objects
-    /// from above and in front, at a 40° field of view), two lights, and each object as a
-    /// `type = "blade"` table.
-    pub fn scene(&self) -> Result<String, FigureError> {
-        let drawings = self.drawings()?;
-        let extents: Vec<(E3, f64)> = drawings
-            .iter()
-            .zip(&self.items)
-            .filter(|(_, item)| !matches!(classify_storage(&item.blade), Ok(cga_core::Kind::Direction { .. })))
-            .map(|(d, _)| d.extent())
-            .collect();
-        let fov: f64 = 40.0;
+    /// Where the camera is, what it looks at and which way is up: as given, or framing the
+    /// objects' `places` (the bounded ones) from above and in front at [`FOV`].
+    fn view(&self, places: &[(E3, f64)]) -> (E3, E3, E3) {
         let (position, look_at) = self.camera.unwrap_or_else(|| {
-            let marks = Marks::for_scene(&extents, [0.0; 3], 1.0);
+            let marks = Marks::for_scene(places, [0.0; 3], 1.0);
             let (centre, radius) = (marks.sizes.centre, marks.sizes.radius);
             // Far enough that the bounding sphere fits the narrower side's field of view.
             let aspect = f64::from(self.height.min(self.width)) / f64::from(self.width.max(1));
-            let half = (fov.to_radians() / 2.0).tan() * aspect;
+            let half = (FOV.to_radians() / 2.0).tan() * aspect;
             let distance = 1.15 * radius * (1.0 + half * half).sqrt() / half;
             let from = unit([0.45, -1.0, 0.6]).unwrap_or([0.0, -1.0, 0.0]);
             (add(centre, scale(from, distance)), centre)
         });
-        let view = unit(cga_core::euclid::sub(look_at, position)).unwrap_or([0.0, 1.0, 0.0]);
-        let up =
-            if norm(cga_core::euclid::cross(view, [0.0, 0.0, 1.0])) < 1e-6 { [0.0, 1.0, 0.0] } else { [0.0, 0.0, 1.0] };
+        let view = unit(sub(look_at, position)).unwrap_or([0.0, 1.0, 0.0]);
+        let up = if norm(cross(view, [0.0, 0.0, 1.0])) < 1e-6 { [0.0, 1.0, 0.0] } else { [0.0, 0.0, 1.0] };
+        (position, look_at, up)
+    }
+
+    /// Where each object is: a direction has no place. With `own`, each drawn with its own
+    /// `size` and `tube` (the extent that sizes the frame and the marks; the camera frames
+    /// the objects drawn with none).
+    fn places(&self, drawings: &[(Kind<f64>, Drawing)], own: bool) -> Vec<(E3, f64)> {
+        let sized = |item: &Item, kind: &Kind<f64>| {
+            Drawing::of(*kind, &Sizes::ZERO.with(item.size, item.tube), item.segment).ok()
+        };
+        drawings
+            .iter()
+            .zip(&self.items)
+            .filter_map(|((kind, drawing), item)| match own {
+                true => sized(item, kind)?.place(kind),
+                false => drawing.place(kind),
+            })
+            .collect()
+    }
+
+    /// The figure as a scene, built directly from its objects: the camera ([`Figure::view`]),
+    /// two lights, no shadows, and each object drawn as what it is with marks sized by the
+    /// scene (its own `size` and `tube` where given). [`Figure::scene`] writes the same scene
+    /// as a file.
+    pub fn build(&self) -> Result<Scene, FigureError> {
+        let drawings = self.drawings()?;
+        let (position, look_at, up) = self.view(&self.places(&drawings, false));
+        let places = self.places(&drawings, true);
+        if !position.iter().chain(&look_at).all(|x| x.is_finite()) {
+            return Err(FigureError::Camera(Invalid::Value("the camera's position and look_at must be finite")));
+        }
+        let built = CameraSpec::looking(position, look_at, up, FOV, (self.width, self.height))
+            .build(None, 0.0)
+            .map_err(FigureError::Camera)?;
+        let camera = built.camera;
+        let pixel = camera.x_max / camera.focal / f64::from(camera.width);
+        let marks = Marks::for_scene(&places, built.position, pixel);
+        let frame = Frame::around(built.position, places, pixel)
+            .map_err(|span| FigureError::Camera(Invalid::Range(span.to_string())))?;
+        let camera = camera.with_lens(built.lens.in_frame(frame.scale)).map_err(|e| FigureError::Camera(e.into()))?;
+        let lights = LIGHTS
+            .iter()
+            .map(|&(direction, colour)| Light {
+                source: Emitter::Directional(unit(direction).expect("not zero")),
+                colour,
+            })
+            .collect();
+        let place = Placement::new(None, &frame);
+        let (mut objects, mut labels) = (Vec::with_capacity(self.items.len()), Vec::new());
+        for (k, (item, (kind, _))) in self.items.iter().zip(&drawings).enumerate() {
+            let index = k + 1;
+            let drawing = Drawing::of(*kind, &marks.sizes.with(item.size, item.tube), item.segment)
+                .map_err(|e| FigureError::Blade { index, reason: e.into() })?;
+            let object = |reason| FigureError::Object { index, reason };
+            let (shapes, anchor) = draw(&drawing, &place, &frame, &marks).map_err(object)?;
+            let material = item.material();
+            if let Some(text) = &item.label {
+                labels.push(label(text, &shapes, anchor, material.colour).map_err(object)?);
+            }
+            let name: Arc<str> = format!("object {index}").into();
+            objects.extend(shapes.into_iter().map(|shape| Object {
+                name: name.clone(),
+                shape,
+                material,
+                texture: None,
+                solid: None,
+                moving: false,
+            }));
+        }
+        if objects.len() > MAX_OBJECTS {
+            let found = objects.len() as u64;
+            return Err(FigureError::Object {
+                index: self.items.len(),
+                reason: Invalid::Limit { what: "shapes", found, limit: MAX_OBJECTS as u64 },
+            });
+        }
+        let settings =
+            Settings { background: self.background, ambient: AMBIENT, shadows: false, ..Settings::default() };
+        Ok(Scene {
+            frame,
+            camera,
+            objects,
+            lights,
+            settings,
+            labels,
+            pinned: false,
+            shutter: None,
+            environment: None,
+            inputs: Vec::new(),
+            templates: Vec::new(),
+        })
+    }
+
+    /// The figure as a scene file (TOML) that reads back to the scene [`Figure::build`] gives:
+    /// the camera, the lights and each object as a `type = "blade"` table of its
+    /// coefficients, printed so that they read back to the bit.
+    pub fn scene(&self) -> Result<String, FigureError> {
+        let drawings = self.drawings()?;
+        let (position, look_at, up) = self.view(&self.places(&drawings, false));
         let v = |x: E3| format!("[{:?}, {:?}, {:?}]", x[0], x[1], x[2]);
         let mut out = String::from("# A figure of CGA objects (cga_trace::figure::Figure).\n\n");
         let _ = write!(
             out,
-            "[camera]\nposition = {}\nlook_at = {}\nup = {}\nfov = {fov:?}\nwidth = {}\nheight = {}\n\n\
-             [render]\nbackground = {}\nambient = 0.3\nshadows = false\n\n\
-             [[lights]]\ndirection = {}\ncolour = [0.85, 0.85, 0.85]\n\n\
-             [[lights]]\ndirection = {}\ncolour = [0.25, 0.25, 0.3]\n",
+            "[camera]\nposition = {}\nlook_at = {}\nup = {}\nfov = {FOV:?}\nwidth = {}\nheight = {}\n\n\
+             [render]\nbackground = {}\nambient = {AMBIENT:?}\nshadows = false\n",
             v(position),
             v(look_at),
             v(up),
             self.width,
             self.height,
             v(self.background),
-            v([-0.3, 0.5, -1.0]),
-            v([0.6, 0.2, 0.3]),
         );
+        for (direction, colour) in LIGHTS {
+            let _ = write!(out, "\n[[lights]]\ndirection = {}\ncolour = {}\n", v(direction), v(colour));
+        }
         let names = super::null_basis_names();
         for item in &self.items {
-            let rgb = colour(&item.colour).unwrap_or([1.0; 3]);
             let _ = write!(out, "\n[[objects]]\ntype = \"blade\"\n");
             if let Some(label) = &item.label {
                 let _ = writeln!(out, "label = {}", toml_string(label));
@@ -280,7 +402,8 @@ impl Figure {
                 .map(|(c, name)| format!("{name} = {c:?}"))
                 .collect();
             let _ = writeln!(out, "blade = {{ {} }}", terms.join(", "));
-            let _ = writeln!(out, "material = {{ colour = {}, ks = 0.4, q = 40.0 }}", v(rgb));
+            let m = item.material();
+            let _ = writeln!(out, "material = {{ colour = {}, ks = {:?}, q = {:?} }}", v(m.colour), m.ks, m.q);
         }
         Ok(out)
     }
@@ -288,8 +411,7 @@ impl Figure {
     /// The picture rendered with `options` (any AOV, back end, crop; through the pipeline
     /// every scene takes, [`crate::pipeline`]).
     pub fn rendered(&self, options: &Options) -> Result<Rendered, FigureError> {
-        let scene = Scene::parse(&self.scene()?, "figure")?;
-        Ok(pipeline::render(&scene, options, &|| {})?)
+        Ok(pipeline::render(&self.build()?, options, &|| {})?)
     }
 
     /// The picture, labels written in.

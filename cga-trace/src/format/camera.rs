@@ -15,7 +15,7 @@ use toml::Spanned;
 
 /// The camera: a pose (`position`, `look_at`, `up`, or a `motor`), focal length, image-plane
 /// extents (or a horizontal field of view) and pixel size.
-#[derive(Deserialize)]
+#[derive(Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct CameraSpec {
     position: Option<V3>,
@@ -62,6 +62,21 @@ pub(crate) enum Projection {
 }
 
 impl CameraSpec {
+    /// A pinhole camera at `position` looking at `look_at`, `up` upward, with a horizontal
+    /// field of view of `fov` degrees and `width × height` pixels (as a scene built in code
+    /// gives it, with no file to point into).
+    pub(crate) fn looking(position: E3, look_at: E3, up: E3, fov: f64, (width, height): (u32, u32)) -> CameraSpec {
+        CameraSpec {
+            position: Some(Nums(position)),
+            look_at: Some(Nums(look_at)),
+            up: Some(Nums(up)),
+            fov: Some(Spanned::new(0..0, Num(fov))),
+            width: Some(Spanned::new(0..0, width)),
+            height: Some(Spanned::new(0..0, height)),
+            ..CameraSpec::default()
+        }
+    }
+
     /// The camera in its own frame (it only turns there), checked; where it is in the world;
     /// and whether the file gives both image-plane extents (pixels then need not be square).
     /// The position is read from the pose's coefficients, never through a conformal point,

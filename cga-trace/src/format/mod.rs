@@ -31,7 +31,12 @@ pub use objects::{COMMON, Field, Role, fields, kinds};
 pub(crate) use specs::{MaterialRef, MaterialSpec, SettingsSpec};
 pub use transform::MAX_KEYS;
 
-use camera::CameraSpec;
+// What a scene built in code (`Figure`) shares with a file's: the camera, a drawing's
+// shapes and label, placed in the frame.
+pub(crate) use camera::CameraSpec;
+pub(crate) use objects::{drawn::draw, label};
+pub(crate) use transform::Placement;
+
 use environment::EnvironmentSpec;
 use light::LightSpec;
 use serde::Deserialize;

@@ -285,17 +285,10 @@ fn include(table: &mut Table) {
 
 /// The scene a table describes, rendered at `width × height`.
 pub fn scene_of(table: &Table, name: &str, width: u32, height: u32) -> Scene {
-    scene_of_at(table, name, width, height, 0.0)
-}
-
-/// [`scene_of`] at the motion's time `time`.
-pub fn scene_of_at(table: &Table, name: &str, width: u32, height: u32, time: f64) -> Scene {
     let text = toml::to_string(table).unwrap();
     // Named by its path, so that the images it names are found beside it.
     let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
-    let mut scene = cga_trace::Source::parse(&text, file.to_str().unwrap())
-        .and_then(|mut source| source.scene(None, time))
-        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut scene = Scene::parse(&text, file.to_str().unwrap()).unwrap_or_else(|e| panic!("{name}: {e}"));
     let c = scene.camera;
     scene.camera = Camera::new(c.pose, c.focal, c.x_max, c.y_max, width, height).unwrap().with_lens(c.lens).unwrap();
     scene

@@ -169,21 +169,20 @@ fn example() -> Figure {
 #[test]
 fn a_figure_frames_its_objects_and_renders_the_scene_it_writes() {
     let figure = example();
-    let text = figure.scene().unwrap();
-    let scene = Scene::parse(&text, "figure.toml").unwrap();
+    let scene = figure.build().unwrap();
     // The camera frames every bounded object: their centres project into the picture.
     for x in [[1e4, 2e4, 0.0], [1e4 + 3.0, 2e4, 1.0], [1e4 - 3.0, 2e4 + 1.0, 0.5]] {
         let (u, v, _) = project(&scene.camera, scene.frame.point(x)).expect("in front");
         assert!((0.0..160.0).contains(&u) && (0.0..120.0).contains(&v), "{x:?} at ({u}, {v})");
     }
     assert_eq!(scene.labels.len(), 2);
-    // The picture is the scene file's, labels written in.
+    // The picture is the scene's, labels written in.
     let mut film = Renderer::new(&scene).render(Aov::Shaded, &|| {});
     let bare = film.clone();
     cga_trace::figure::draw_labels(&mut film, &scene.camera, &scene.labels);
     assert_eq!(figure.film().unwrap(), film);
     assert_ne!(bare, film, "the labels are drawn");
-    // Written to disk and read back, the same.
+    // Written to disk and read back, the same picture.
     let dir = tempfile::tempdir().unwrap();
     figure.write_scene(dir.path().join("f.toml")).unwrap();
     let loaded = Scene::load(&dir.path().join("f.toml")).unwrap();
@@ -191,6 +190,57 @@ fn a_figure_frames_its_objects_and_renders_the_scene_it_writes() {
     figure.render(dir.path().join("f.png")).unwrap();
     let png = image::open(dir.path().join("f.png")).unwrap().to_rgb8();
     assert_eq!(png.dimensions(), (160, 120));
+}
+
+/// The scene a figure builds and the one its file reads back to are the same: every kind of
+/// blade it draws (with its own size, tube and segment), labels, and a camera given or
+/// framing, far from the origin as near it; the same objects, lights, labels and picture.
+#[test]
+fn a_figure_builds_the_scene_its_file_reads_back_to() {
+    let at = |x: E3, shift: f64| add(x, [shift, -2.0 * shift, 0.5 * shift]);
+    for shift in [0.0, 3e5] {
+        let pair = up(at([1.0, 0.0, 0.0], shift)) ^ up(at([2.0, 1.0, 0.0], shift));
+        let tangent = cga_core::Bivector { e3o: -1.0, ..cga_core::Bivector::zero() };
+        let direction = cga_core::Bivector { e3i: 1.0, ..cga_core::Bivector::zero() };
+        let plane = Plane::new(at([0.0, 0.0, -1.0], shift), [0.0, 0.3, 1.0]).unwrap();
+        let flat = FlatPoint::from_storage(&(up(at([0.0, 2.0, 1.0], shift)) ^ ei::<f64>()).to_storage());
+        let [x, y, z] = at([0.0, -3.0, 0.0], shift);
+        let imaginary = Vector { e1: x, e2: y, e3: z, eo: 1.0, ei: 0.5 * (x * x + y * y + z * z + 0.49) };
+        let circle = Circle::from_centre_normal_radius(at([0.0; 3], shift), [0.0, 0.3, 1.0], 2.0).unwrap();
+        let figure = Figure::new()
+            .add(&circle, "red")
+            .label("C")
+            .tube(0.05)
+            .add(&Line::new(at([0.0, 0.0, -1.0], shift), [1.0, 0.2, 0.0]).unwrap(), "blue")
+            .label("L")
+            .add(&up(at([3.0, 0.0, 1.0], shift)), "#ffcc00")
+            .size(0.2)
+            .add(&pair, "green")
+            .segment()
+            .add(&Sphere::from_centre_radius(at([-3.0, 1.0, 0.5], shift), 0.8).unwrap(), "sky")
+            .add(&imaginary, "purple")
+            .add(&plane, "grey")
+            .size(3.0)
+            .label("P")
+            .add(&flat, "orange")
+            .add(&tangent, "white")
+            .add(&direction, "pink")
+            .resolution(96, 72);
+        for figure in [figure.clone(), figure.camera(at([0.0, -12.0, 6.0], shift), at([0.0; 3], shift))] {
+            let built = figure.build().unwrap();
+            let read = Scene::parse(&figure.scene().unwrap(), "figure.toml").unwrap();
+            assert_eq!(built.objects.len(), read.objects.len());
+            assert_eq!(format!("{:?}", built.labels), format!("{:?}", read.labels));
+            assert_eq!(format!("{:?}", built.lights), format!("{:?}", read.lights));
+            assert_eq!(format!("{:?}", built.camera), format!("{:?}", read.camera));
+            assert_eq!(format!("{:?}", built.frame), format!("{:?}", read.frame));
+            for (b, r) in built.objects.iter().zip(&read.objects) {
+                assert_eq!((&b.name, b.material, b.shape.bounds()), (&r.name, r.material, r.shape.bounds()));
+            }
+            let shaded = |scene: &Scene| Renderer::new(scene).render(Aov::Shaded, &|| {});
+            assert_eq!(shaded(&built), shaded(&read), "shift {shift}");
+        }
+    }
 }
 
 #[test]

@@ -10,47 +10,38 @@ use crate::common;
 
 use cga_core::euclid::E3;
 use cga_trace::backend::{Backend, Dense, Plain, Sparse};
-use cga_trace::{Aov, Renderer, Scene};
-use common::{Similarity, floats, scene_of, scene_of_at, table, triple};
+use cga_trace::{Aov, Options, Pipeline, Renderer, Scene, View};
+use common::{Similarity, floats, scene_of, table, triple};
 use toml::{Table, Value};
 
 /// Shipped scenes' samples per pixel at most (the soft shadows, lenses and shutters keep
 /// their stratification; a debug build renders them in seconds).
 const MAX_SPP: u32 = 4;
 
-fn load(name: &str, similarity: Option<&Similarity>, width: u32, height: u32) -> Scene {
-    load_at(name, similarity, width, height, 0.0)
-}
-
-fn load_at(name: &str, similarity: Option<&Similarity>, width: u32, height: u32, time: f64) -> Scene {
-    let mut t = table(name);
-    if let Some(s) = similarity {
-        s.apply(&mut t);
-    }
-    let mut scene = scene_of_at(&t, name, width, height, time);
-    scene.settings.spp = scene.settings.spp.min(MAX_SPP);
-    scene
-}
-
 fn picture<B: Backend>(scene: &Scene) -> Vec<u8> {
     let film = Renderer::<B>::with_backend(scene).render(Aov::Shaded, &|| {});
     film.to_rgb8(scene.settings.encoding).into_raw()
 }
 
-/// A shipped scene's picture, moved by `similarity`, through the shutter where the scene has
-/// one.
+/// A shipped scene's picture, moved by `similarity`, at `width × height` and at most
+/// [`MAX_SPP`] samples, through the library's pipeline (and the scene's shutter where it
+/// has one).
 fn shipped<B: Backend>(name: &str, similarity: Option<&Similarity>, width: u32, height: u32) -> Vec<u8> {
-    let scene = load(name, similarity, width, height);
-    let film = match scene.shutter {
-        None => return picture::<B>(&scene),
-        Some(shutter) => shutter
-            .expose(0.0, scene.settings.spp, |t, (first, step)| {
-                let at = load_at(name, similarity, width, height, t);
-                Ok::<_, ()>(Renderer::<B>::with_backend(&at).sample_subset(first, step).render(Aov::Shaded, &|| {}))
-            })
-            .unwrap(),
-    };
-    film.to_rgb8(scene.settings.encoding).into_raw()
+    let mut t = table(name);
+    if let Some(s) = similarity {
+        s.apply(&mut t);
+    }
+    // Named by its path, so that the images it names are found beside it.
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name);
+    let view = View { width: Some(width), height: Some(height), ..View::default() };
+    let text = toml::to_string(&t).unwrap();
+    let mut pipeline = Pipeline::parse(&text, file.to_str().unwrap(), view).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let spp = pipeline.scene(0.0).unwrap().settings.spp.min(MAX_SPP);
+    pipeline.set_view(View { spp: Some(spp), ..view });
+    let scene = pipeline.scene(0.0).unwrap();
+    let options = Options { backend: B::KIND, ..Options::default() };
+    let rendered = pipeline.render(&scene, &options, &|| {}).unwrap_or_else(|e| panic!("{name}: {e}"));
+    rendered.film.to_rgb8(scene.settings.encoding).into_raw()
 }
 
 /// `(mean |Δ| in levels, fraction of pixels with a channel off by more than 8 levels)`.

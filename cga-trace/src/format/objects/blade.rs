@@ -28,14 +28,8 @@ impl Draws for Blade {
         Drawing::of(kind, &sizes, flag(&self.segment, false)).map_err(|e| on(e.into()))
     }
 
-    /// An arrow has a place only as a tangent (a round of zero radius), not as a direction.
     fn place(&self, drawing: Drawing) -> Option<(E3, f64)> {
-        match drawing {
-            Drawing::Arrow { at, .. } => {
-                let kind = self.blade.as_ref().and_then(|b| b.get_ref().kind().ok());
-                matches!(kind, Some(cga_core::Kind::Round { .. })).then_some((at, 0.0))
-            }
-            d => Some(d.extent()),
-        }
+        let kind = self.blade.as_ref().and_then(|b| b.get_ref().kind().ok())?;
+        drawing.place(&kind)
     }
 }

@@ -4,10 +4,12 @@
 //! scene.
 
 use super::kind::{At, Fields, Geometry};
-use crate::drawing::{Drawing, Sizes};
+use crate::drawing::{Drawing, Marks, Sizes};
 use crate::format::Assets;
 use crate::format::marks::{self, Parts};
 use crate::format::numbers::Num;
+use crate::format::transform::Placement;
+use crate::frame::Frame;
 use crate::invalid::Invalid;
 use cga_core::euclid::E3;
 use serde::de::{DeserializeOwned, IntoDeserializer};
@@ -53,14 +55,20 @@ impl<T: Draws> Geometry for Drawn<T> {
 
     /// Its marks, sized for the scene; a line kept within [`Marks::view`](crate::drawing::Marks::view).
     fn build(&self, at: &At) -> Result<Parts, Invalid> {
-        let drawing = self.0.drawing(&at.marks.sizes)?;
-        let centre = at.frame.point(at.marks.sizes.centre);
-        marks::parts(&drawing, &at.place, centre, at.place.length(at.marks.view(&drawing)))
+        draw(&self.0.drawing(&at.marks.sizes)?, &at.place, at.frame, at.marks)
     }
 
     fn draws(&self) -> bool {
         true
     }
+}
+
+/// A drawing's shapes placed in `frame` by `place`, a line kept within
+/// [`Marks::view`](crate::drawing::Marks::view) of the camera about its point nearest the
+/// scene's centre.
+pub(crate) fn draw(drawing: &Drawing, place: &Placement, frame: &Frame, marks: &Marks) -> Result<Parts, Invalid> {
+    let centre = frame.point(marks.sizes.centre);
+    marks::parts(drawing, place, centre, place.length(marks.view(drawing)))
 }
 
 /// `defaults` with a drawing's own `size` (a ball's radius, a patch's) and `tube` where it
@@ -70,18 +78,13 @@ pub(crate) fn sized(
     tube: &Option<Spanned<Num>>,
     defaults: &Sizes,
 ) -> Result<Sizes, Invalid> {
-    let length = |field: &'static str, x: &Option<Spanned<Num>>, default: f64| match x {
+    let length = |field: &'static str, x: &Option<Spanned<Num>>| match x {
         // Numbers are finite where they are read.
         Some(l) if l.get_ref().0 <= 0.0 => Err(Invalid::at(field, l.span(), Invalid::Value("a size must be positive"))),
-        Some(l) => Ok(l.get_ref().0),
-        None => Ok(default),
+        Some(l) => Ok(Some(l.get_ref().0)),
+        None => Ok(None),
     };
-    Ok(Sizes {
-        size: length("size", size, defaults.size)?,
-        tube: length("tube", tube, defaults.tube)?,
-        patch: length("size", size, defaults.patch)?,
-        ..*defaults
-    })
+    Ok(defaults.with(length("size", size)?, length("tube", tube)?))
 }
 
 /// A unit direction, or the zero-vector error.

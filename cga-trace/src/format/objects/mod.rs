@@ -14,7 +14,7 @@ mod cone;
 mod cuboid;
 mod cylinder;
 mod disk;
-mod drawn;
+pub(crate) mod drawn;
 mod evolved;
 pub(crate) mod kind;
 mod line;
@@ -258,9 +258,7 @@ impl ObjectSpec {
         }
     }
 
-    /// The object's label, beside `anchor` if given, else the sphere holding its `shapes`;
-    /// refused for an unbounded object (a plane: label a `plane-patch`) or past
-    /// [`MAX_LABEL_CHARS`].
+    /// The object's label ([`label`]), its errors at its `label` field.
     fn label(
         &self,
         shapes: &[Arc<dyn Shape>],
@@ -268,23 +266,35 @@ impl ObjectSpec {
         colour: [f64; 3],
     ) -> Result<Option<Label>, Invalid> {
         let Some(text) = &self.common.label else { return Ok(None) };
-        let at = |reason| Invalid::at("label", text.span(), reason);
-        let chars = text.get_ref().chars().count();
-        if chars > MAX_LABEL_CHARS {
-            return Err(at(Invalid::Limit { what: "characters", found: chars as u64, limit: MAX_LABEL_CHARS as u64 }));
-        }
-        if let Some((at, reach)) = anchor {
-            return Ok(Some(Label { text: text.get_ref().clone(), at, reach, colour }));
-        }
-        let bounds: Option<Vec<(E3, f64)>> = shapes.iter().map(|s| s.bounds()).collect();
-        let Some(bounds) = bounds else {
-            return Err(at(Invalid::Value("an unbounded object has nowhere to put a label: label a `plane-patch`")));
-        };
-        let n = bounds.len() as f64;
-        let centre = [0, 1, 2].map(|k| bounds.iter().map(|b| b.0[k]).sum::<f64>() / n);
-        let reach = bounds.iter().map(|(c, r)| norm(sub(*c, centre)) + r).fold(0.0, f64::max);
-        Ok(Some(Label { text: text.get_ref().clone(), at: centre, reach, colour }))
+        label(text.get_ref(), shapes, anchor, colour).map(Some).map_err(|e| Invalid::at("label", text.span(), e))
     }
+}
+
+/// An object's label `text`, beside `anchor` if given, else the sphere holding its `shapes`;
+/// refused for an unbounded object (a plane: label a `plane-patch`) or past
+/// [`MAX_LABEL_CHARS`].
+pub(crate) fn label(
+    text: &str,
+    shapes: &[Arc<dyn Shape>],
+    anchor: Option<(E3, f64)>,
+    colour: [f64; 3],
+) -> Result<Label, Invalid> {
+    let chars = text.chars().count();
+    if chars > MAX_LABEL_CHARS {
+        return Err(Invalid::Limit { what: "characters", found: chars as u64, limit: MAX_LABEL_CHARS as u64 });
+    }
+    let text = text.to_string();
+    if let Some((at, reach)) = anchor {
+        return Ok(Label { text, at, reach, colour });
+    }
+    let bounds: Option<Vec<(E3, f64)>> = shapes.iter().map(|s| s.bounds()).collect();
+    let Some(bounds) = bounds else {
+        return Err(Invalid::Value("an unbounded object has nowhere to put a label: label a `plane-patch`"));
+    };
+    let n = bounds.len() as f64;
+    let centre = [0, 1, 2].map(|k| bounds.iter().map(|b| b.0[k]).sum::<f64>() / n);
+    let reach = bounds.iter().map(|(c, r)| norm(sub(*c, centre)) + r).fold(0.0, f64::max);
+    Ok(Label { text, at: centre, reach, colour })
 }
 
 use super::marks::Parts;
