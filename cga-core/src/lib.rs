@@ -109,6 +109,7 @@ mod display;
 mod dual;
 pub mod euclid;
 pub mod evolved;
+pub mod fit;
 pub mod flat;
 pub mod interpolate;
 pub mod intersect;
@@ -126,6 +127,7 @@ pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
+pub use fit::{fit_circle, fit_line, fit_plane, fit_sphere};
 pub use flat::{AsFlat, Flat};
 pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
 pub use intersect::Meet;

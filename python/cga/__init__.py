@@ -19,7 +19,8 @@ rows at a time, with the same numbers)::
 object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scenes, read
 from files or built in code (:mod:`cga.scene`), to numpy arrays.
 
-``cga.random`` draws random objects of every class (:mod:`cga.random`).
+``cga.random`` draws random objects of every class (:mod:`cga.random`); ``cga.fit_sphere``,
+``fit_circle``, ``fit_plane`` and ``fit_line`` fit objects to points by least squares.
 
 ``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
 convert values and arrays to and from those libraries' multivectors (:mod:`cga.interop`).
@@ -66,11 +67,19 @@ from .scene import Scene
 Point = Vector
 PointPair = Bivector
 
+#: Objects fitted to points by least squares, as clifford.tools.g3c names them: points of
+#: shape (n, 3) or a ``Vector`` of them give one object, (m, n, 3) give m.
+fit_sphere = Sphere.fit
+fit_circle = Circle.fit
+fit_plane = Plane.fit
+fit_line = Line.fit
+
 __all__ = [
     "Bivector", "Circle", "Dilator", "Even", "FlatPoint", "Generator", "GeometryError", "Infinity",
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
-    "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "from_clifford", "from_kingdon",
+    "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "fit_circle", "fit_line",
+    "fit_plane", "fit_sphere", "from_clifford", "from_kingdon",
     "interop", "random", "to_clifford", "to_kingdon", "up", "wedge",
 ]
 

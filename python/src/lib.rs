@@ -8,6 +8,7 @@ mod classes;
 mod draw;
 mod errors;
 mod figure;
+mod fit;
 mod geometry;
 mod kernels;
 mod render;

@@ -156,3 +156,69 @@ def test_random_objects_are_proper_reproducible_and_checked():
     assert kinds == {"round"}
     with pytest.raises(cga.ValueError, match="count"):
         rnd.spheres(0)
+
+
+def _on_sphere(c, r, n):
+    d = RNG.normal(size=(n, 3))
+    return np.asarray(c) + r * d / np.linalg.norm(d, axis=1)[:, None]
+
+
+def test_fits_give_back_the_object_the_points_lie_on_far_from_the_origin():
+    c, r = np.array([1e5, -2e5, 3e4]), 0.75
+    sphere = cga.fit_sphere(_on_sphere(c, r, 30))
+    centre, radius = sphere.centre_radius()
+    # The points' rounding, ε ρ r, and what a sphere read back from its blade carries, ε ρ² r.
+    rho = np.linalg.norm(c) / r
+    tol = 64 * 2.2e-16 * rho * (1 + rho) * r
+    assert np.linalg.norm(centre - c) < tol and abs(radius - r) < tol
+    # Points in a plane through c: the circle, and its plane.
+    n = np.array([0.0, 0.6, 0.8])
+    u = np.cross(n, [1.0, 0, 0])
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    t = RNG.uniform(0, 2 * np.pi, 9)
+    ring = c + r * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+    cc, cn, cr = cga.fit_circle(ring).centre_normal_radius()
+    assert np.linalg.norm(cc - c) < tol and abs(cr - r) < tol and np.allclose(cn, n, atol=1e-9)
+    pn, offset = cga.fit_plane(ring).normal_offset()
+    # The points' own rounding, ε |c|, tilts a plane of their spread r by up to about ε ρ.
+    assert np.allclose(pn, n, atol=64 * 2.2e-16 * rho) and abs(offset - n @ c) < 1e-9 * np.linalg.norm(c)
+    line = cga.fit_line(c + np.outer(RNG.uniform(-1, 1, 6), u))
+    assert line.distance_to(c) < 1e-9 and abs(abs(line.direction() @ u) - 1) < 1e-12
+
+
+def test_noisy_points_fit_as_clifford_fits_them():
+    """clifford.tools.g3c's fit_sphere (Dorst's eigenvector fit) and ours (the algebraic
+    least-squares fit) agree within the noise. (On exact points clifford's can return another
+    sphere: it takes the smallest *positive* eigenvalue, and the right one is zero up to
+    rounding, of either sign; exact points are checked against Euclid above.)"""
+    fitting = pytest.importorskip("clifford.tools.g3c.object_fitting")
+    from clifford.g3c import e1, e2, e3, up
+
+    for noise in (1e-6, 1e-3):
+        points = _on_sphere([0.5, -1.0, 2.0], 1.5, 40) + RNG.normal(scale=noise, size=(40, 3))
+        theirs = fitting.fit_sphere([up(x * e1 + y * e2 + z * e3) for x, y, z in points])
+        kind = cga.from_clifford(theirs).classify()
+        centre, radius = cga.fit_sphere(points).centre_radius()
+        tol = 1e-10 + 10 * noise
+        assert kind["kind"] == "round" and kind["grade"] == 4
+        assert np.linalg.norm(centre - kind["centre"]) < tol and abs(radius - kind["radius_squared"] ** 0.5) < tol
+
+
+def test_fits_take_sets_of_points_and_conformal_points_and_refuse_what_holds_no_object():
+    sets = np.stack([_on_sphere(RNG.normal(size=3), 1 + k, 12) for k in range(5)])
+    many = cga.Sphere.fit(sets)
+    assert len(many) == 5
+    for k in range(5):
+        assert np.array_equal(many[k].array, cga.fit_sphere(sets[k]).array)
+    assert np.array_equal(cga.fit_sphere(cga.up(sets[0])).array, cga.fit_sphere(sets[0]).array)
+    collinear = np.outer(np.arange(5.0), [1.0, 2.0, 3.0])
+    with pytest.raises(cga.GeometryError, match="collinear"):
+        cga.fit_circle(collinear)
+    square = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 0]], dtype=float)
+    with pytest.raises(cga.GeometryError, match="row 1"):
+        cga.Plane.fit(np.stack([square, collinear]))
+    with pytest.raises(cga.ShapeError):
+        cga.fit_sphere(np.zeros((4, 2)))
+    with pytest.raises(cga.ValueError, match="finite"):
+        cga.fit_line([[0, 0, 0], [1, np.nan, 0]])

@@ -129,6 +129,12 @@ VERSOR = '''    def log(self) -> "Generator": ...
     def interpolate(a: "{name}", b: "{name}", t: ArrayLike) -> "{name}": ...
 '''
 
+# Classes fitted to points (cga-core's `fit_*`).
+FITTED = ["Sphere", "Circle", "Plane", "Line"]
+FIT = '''    @staticmethod
+    def fit(points: Union[ArrayLike, "Vector"]) -> "{name}": ...
+'''
+
 SPLINE = '''    @staticmethod
     def spline(poses: "Motor", u: ArrayLike) -> "Motor": ...
 '''
@@ -208,6 +214,7 @@ def main() -> None:
         out += MEASURED.get(name, "")
         out += VERSOR.replace("{name}", name) if name in ("Motor", "Rotor") else ""
         out += SPLINE if name == "Motor" else ""
+        out += FIT.replace("{name}", name) if name in FITTED else ""
     path = os.path.join(os.path.dirname(__file__), "..", "cga", "_cga.pyi")
     with open(path, "w") as f:
         f.write(out)

@@ -6,6 +6,7 @@
 mod conformal;
 mod curvature;
 mod far_reference;
+mod fit;
 mod interpolation;
 mod meets;
 mod operations;
