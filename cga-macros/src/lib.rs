@@ -644,6 +644,54 @@ mod tests {
         assert!(expanded > 40 && rejected > 100, "expanded {expanded}, rejected {rejected}");
     }
 
+    /// The macro's errors for the `ui/fail` inputs, checked in process (no compiler run): each
+    /// input the macro itself refuses gives the message and the line and column its
+    /// `.stderr` file holds (the file rustc's output is checked against by `cargo test -p
+    /// cga-macros --test ui -- --ignored`, which also runs the inputs whose errors come from
+    /// the compiler: a product or sandwich the algebra does not have).
+    #[test]
+    fn ui_inputs_give_their_messages_where_their_stderr_files_say() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("ui/fail");
+        let mut checked = 0;
+        let mut names: Vec<_> = std::fs::read_dir(&dir).expect("ui/fail").flatten().map(|e| e.path()).collect();
+        names.sort();
+        for path in names.iter().filter(|p| p.extension().is_some_and(|e| e == "rs")) {
+            let expected = std::fs::read_to_string(path.with_extension("stderr")).expect("a .stderr file");
+            // Only the macro's own errors: the compiler's (`error[E…]`) need a compiler.
+            let Some(message) = expected.lines().next().and_then(|l| l.strip_prefix("error: ")) else { continue };
+            let name = path.file_name().unwrap().to_string_lossy().to_string();
+            let at = expected.lines().nth(1).and_then(|l| l.split(&format!("{name}:")).nth(1)).expect("a location");
+            let (line, column) = at.split_once(':').expect("line:column");
+            let source = std::fs::read_to_string(path).expect("input");
+            let file = syn::parse_file(&source).expect("the input parses as Rust");
+            let tokens = file
+                .items
+                .iter()
+                .find_map(|item| match item {
+                    syn::Item::Macro(m) => Some(m.mac.tokens.clone()),
+                    _ => None,
+                })
+                .expect("an algebra! invocation");
+            let error = match syn::parse2::<super::parse::Input>(tokens).and_then(super::resolve) {
+                Ok(_) => panic!("{name}: the macro accepts it"),
+                Err(e) => e,
+            };
+            assert_eq!(error.to_string(), message, "{name}");
+            let start = error.span().start();
+            // A span of the whole invocation (a field that is missing) is where the macro is
+            // called: line 1 of the input, which has no place in process.
+            if (line, column) != ("1", "1") {
+                assert_eq!(
+                    (start.line.to_string(), (start.column + 1).to_string()),
+                    (line.into(), column.into()),
+                    "{name}"
+                );
+            }
+            checked += 1;
+        }
+        assert_eq!(checked, 16, "the ui/fail inputs the macro refuses itself");
+    }
+
     /// Expands cga-core's own invocation and writes it, formatted, to
     /// `cga-core-expanded.rs` in the target directory (`$CARGO_TARGET_DIR` or `target/`): the
     /// generated code as a user would read it. Its size is the one benches/README.md states.

@@ -1,6 +1,6 @@
-//! Arithmetic in a fresh crate's algebra (G(3,0), orthonormal): scalars on either side with
-//! `scalars = [f64]`, `one()`, inverses, checked conversions, `cast`, `normalise`'s errors,
-//! the scalar and commutator products.
+// Arithmetic in a fresh crate's algebra (G(3,0), orthonormal): scalars on either side with
+// `scalars = [f64]`, `one()`, inverses, checked conversions, `cast`, `normalise`'s errors,
+// the scalar and commutator products.
 
 cga_macros::algebra! {
     scalar = cga_core::Real;

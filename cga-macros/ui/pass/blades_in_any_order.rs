@@ -1,5 +1,5 @@
-//! Blades declared with their labels in any order, each field the coefficient of the blade
-//! as spelled: `eio = −eoi` (one swap), `e312 = e123` (two), `e31 = −e13`.
+// Blades declared with their labels in any order, each field the coefficient of the blade
+// as spelled: `eio = −eoi` (one swap), `e312 = e123` (two), `e31 = −e13`.
 
 mod cga {
     cga_macros::algebra! {

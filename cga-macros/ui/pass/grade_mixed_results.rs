@@ -1,6 +1,6 @@
-//! Products no declared type holds get a type named after their grades: in G(3,0) with
-//! vectors and rotors, `v r` has grades 1 and 3, so `algebra!` declares `Grades1_3`, and its
-//! products with the declared types follow (`v r r̃` is a vector again, held by `Grades1_3`).
+// Products no declared type holds get a type named after their grades: in G(3,0) with
+// vectors and rotors, `v r` has grades 1 and 3, so `algebra!` declares `Grades1_3`, and its
+// products with the declared types follow (`v r r̃` is a vector again, held by `Grades1_3`).
 
 mod vga {
     cga_macros::algebra! {

@@ -1,5 +1,5 @@
-//! Labels of several characters: CGA's `eo` and `einf`, and blades such as `eoinf`, named as
-//! the labels run together (each name reads one way only).
+// Labels of several characters: CGA's `eo` and `einf`, and blades such as `eoinf`, named as
+// the labels run together (each name reads one way only).
 
 mod cga {
     cga_macros::algebra! {

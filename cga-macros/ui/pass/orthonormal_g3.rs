@@ -1,5 +1,5 @@
-//! An algebra with no `basis`: the orthonormal e1..e3 of G(3,0), used from a fresh crate,
-//! with the `approx` comparisons.
+// An algebra with no `basis`: the orthonormal e1..e3 of G(3,0), used from a fresh crate,
+// with the `approx` comparisons.
 
 cga_macros::algebra! {
     scalar = cga_core::Real;

@@ -1,5 +1,5 @@
-//! With no type holding the scalar blade alone, a product whose result is a scalar returns
-//! the scalar type itself: `v | v` is an `f64`.
+// With no type holding the scalar blade alone, a product whose result is a scalar returns
+// the scalar type itself: `v | v` is an `f64`.
 
 mod vga {
     cga_macros::algebra! {

@@ -1,5 +1,5 @@
-//! Two invocations in one crate, each in its own module: their traits, registries and types
-//! do not clash, and both are usable side by side.
+// Two invocations in one crate, each in its own module: their traits, registries and types
+// do not clash, and both are usable side by side.
 
 mod vga {
     cga_macros::algebra! {

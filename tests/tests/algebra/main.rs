@@ -8,6 +8,7 @@ mod arithmetic;
 mod dimension;
 mod exp_log;
 mod facts;
+mod fresh;
 mod generated_vs_dense;
 mod golden_products;
 mod multiplication_counts;
