@@ -5,8 +5,8 @@
 //! with the GIL released; the result's class is the Rust result's type.
 
 use crate::errors::{GeometryError, ShapeError};
-use crate::values::{Type, Values};
-use cga_core::{ProductEntry, ProductKind, UnaryEntry, UnaryKind, product_table, unary_table};
+use crate::values::{Algebra, Type, Values};
+use cga_core::{ProductKind, UnaryKind, product_table, unary_table};
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::IntoPyObjectExt;
 use pyo3::exceptions::{PyIndexError, PyTypeError};
@@ -15,19 +15,99 @@ use pyo3::types::{PyFloat, PyInt, PySlice};
 use std::collections::HashMap;
 use std::sync::OnceLock;
 
-/// Generated products by kind and operand types.
-type Products = HashMap<(ProductKind, &'static str, &'static str), ProductEntry<f64>>;
-
-/// Every generated product, by kind and operand types.
-fn products() -> &'static Products {
-    static TABLE: OnceLock<Products> = OnceLock::new();
-    TABLE.get_or_init(|| product_table::<f64>().into_iter().map(|e| ((e.kind, e.lhs, e.rhs), e)).collect())
+/// A generated map's code on storage-basis arrays: CGA's of 32 coefficients, or PGA's of 16
+/// (held in the first 16 of 32, as the classes hold every algebra's values).
+#[derive(Clone, Copy)]
+pub enum Code<F32, F16> {
+    /// cga-core's.
+    Cga(F32),
+    /// cga-algebras' `pga`.
+    Pga(F16),
 }
 
-/// Every generated unary map, by kind and operand type.
-fn unaries() -> &'static HashMap<(UnaryKind, &'static str), UnaryEntry<f64>> {
-    static TABLE: OnceLock<HashMap<(UnaryKind, &'static str), UnaryEntry<f64>>> = OnceLock::new();
-    TABLE.get_or_init(|| unary_table::<f64>().into_iter().map(|e| ((e.kind, e.input), e)).collect())
+/// A product's code on storage arrays of `N` coefficients.
+type Binary<const N: usize> = fn(&[f64; N], &[f64; N]) -> [f64; N];
+
+/// A unary map's code on storage arrays of `N` coefficients.
+type Single<const N: usize> = fn(&[f64; N]) -> [f64; N];
+
+/// A generated product of two types: its result type and code.
+#[derive(Clone, Copy)]
+pub struct Product {
+    pub output: &'static str,
+    pub code: Code<Binary<32>, Binary<16>>,
+}
+
+/// A generated unary map of one type: its result type and code.
+#[derive(Clone, Copy)]
+pub struct Unary {
+    pub output: &'static str,
+    pub code: Code<Single<32>, Single<16>>,
+}
+
+/// The first 16 of 32 storage coefficients, and back.
+fn narrow(x: &[f64; 32]) -> [f64; 16] {
+    std::array::from_fn(|k| x[k])
+}
+
+fn widen(x: [f64; 16]) -> [f64; 32] {
+    std::array::from_fn(|k| if k < 16 { x[k] } else { 0.0 })
+}
+
+impl Product {
+    /// The product of two storage-basis values.
+    pub fn eval(&self, a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
+        match self.code {
+            Code::Cga(f) => f(a, b),
+            Code::Pga(f) => widen(f(&narrow(a), &narrow(b))),
+        }
+    }
+}
+
+impl Unary {
+    /// The map of a storage-basis value.
+    pub fn eval(&self, a: &[f64; 32]) -> [f64; 32] {
+        match self.code {
+            Code::Cga(f) => f(a),
+            Code::Pga(f) => widen(f(&narrow(a))),
+        }
+    }
+}
+
+/// Generated products by algebra, kind and operand types.
+type Products = HashMap<(Algebra, ProductKind, &'static str, &'static str), Product>;
+
+/// Every generated product of every algebra with classes, by algebra, kind and operand types.
+fn products() -> &'static Products {
+    static TABLE: OnceLock<Products> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let cga = product_table::<f64>()
+            .into_iter()
+            .map(|e| ((Algebra::Cga, e.kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Cga(e.eval) }));
+        let pga = cga_algebras::pga::product_table::<f64>().into_iter().map(|e| {
+            let kind = pga::product_kind(e.kind);
+            ((Algebra::Pga, kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Pga(e.eval) })
+        });
+        cga.chain(pga).collect()
+    })
+}
+
+/// Generated unary maps by algebra, kind and operand type.
+type Unaries = HashMap<(Algebra, UnaryKind, &'static str), Unary>;
+
+/// Every generated unary map of every algebra with classes, by algebra, kind and operand type.
+fn unaries() -> &'static Unaries {
+    static TABLE: OnceLock<Unaries> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let cga = unary_table::<f64>()
+            .into_iter()
+            .map(|e| ((Algebra::Cga, e.kind, e.input), Unary { output: e.output, code: Code::Cga(e.eval) }));
+        let pga = cga_algebras::pga::unary_table::<f64>().into_iter().map(|e| {
+            let kind = pga::unary_kind(e.kind);
+            ((Algebra::Pga, kind, e.input), Unary { output: e.output, code: Code::Pga(e.eval) })
+        });
+        cga.chain(pga).collect()
+    })
 }
 
 /// The symbol of a product in messages.
@@ -46,18 +126,37 @@ fn symbol(kind: ProductKind) -> &'static str {
 }
 
 /// The product `kind` of `a` and `b`, row by row; `None` where the algebra has none between
-/// their types (identically zero, so not generated).
+/// their types (identically zero, so not generated). Values of two algebras are refused.
 pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyResult<Option<Values>> {
-    let Some(entry) = products().get(&(kind, a.ty.name, b.ty.name)) else { return Ok(None) };
-    let out = type_named(entry.output).ok_or_else(|| {
+    let algebra = a.ty.algebra;
+    if b.ty.algebra != algebra {
+        return Err(PyTypeError::new_err(format!(
+            "{} {} {}: values of two algebras (cga's G(4,1) and cga.pga's G(3,0,1))",
+            a.ty.describe(),
+            symbol(kind),
+            b.ty.describe()
+        )));
+    }
+    if algebra == Algebra::Pga && (a.ty.name == "Multivector" || b.ty.name == "Multivector") {
+        let code = pga::dense_code(kind).ok_or_else(|| {
+            PyTypeError::new_err(format!("pga.Multivector: no {} is defined on the dense type", symbol(kind)))
+        })?;
+        return Values::zip(a, b, py, pga::Multivector::ty(), code).map(Some);
+    }
+    let Some(entry) = products().get(&(algebra, kind, a.ty.name, b.ty.name)) else { return Ok(None) };
+    let out = type_named(algebra, entry.output).ok_or_else(|| {
         PyTypeError::new_err(format!("{} {} {}: no class for {}", a.ty.name, symbol(kind), b.ty.name, entry.output))
     })?;
     let n = crate::values::broadcast(a, b)?;
-    if let Some(data) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out)) {
-        return Ok(Some(Values { ty: out, data, n, single: a.single && b.single }));
+    match entry.code {
+        Code::Cga(eval) => {
+            if let Some(data) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out)) {
+                return Ok(Some(Values { ty: out, data, n, single: a.single && b.single }));
+            }
+            Values::zip(a, b, py, out, eval).map(Some)
+        }
+        Code::Pga(eval) => Values::zip(a, b, py, out, move |x, y| widen(eval(&narrow(x), &narrow(y)))).map(Some),
     }
-    let eval = entry.eval;
-    Values::zip(a, b, py, out, eval).map(Some)
 }
 
 /// `values[0] ^ values[1] ^ …`, left to right: the chain of `^`, row for row the same
@@ -72,13 +171,18 @@ pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny
     };
     let all: Vec<&Values> = values
         .iter()
-        .map(|v| values_of(v).ok_or_else(|| PyTypeError::new_err("wedge: expected values of cga's classes")))
+        .map(|v| any_values_of(v).ok_or_else(|| PyTypeError::new_err("wedge: expected values of cga's classes")))
         .collect::<PyResult<_>>()?;
     let n = crate::values::length(&all.iter().map(|v| v.n).collect::<Vec<_>>())?;
     let mut types = vec![all[0].ty];
     for v in &all[1..] {
         let last = types[types.len() - 1].name;
-        match products().get(&(ProductKind::Outer, last, v.ty.name)).and_then(|e| type_named(e.output)) {
+        let key = (Algebra::Cga, ProductKind::Outer, last, v.ty.name);
+        match products()
+            .get(&key)
+            .filter(|_| all[0].ty.algebra == Algebra::Cga)
+            .and_then(|e| type_named(Algebra::Cga, e.output))
+        {
             Some(t) => types.push(t),
             None => break,
         }
@@ -115,28 +219,28 @@ pub fn registry_product(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bo
     let (Some(a), Some(b)) = (values_of(a), values_of(b)) else {
         return Err(PyTypeError::new_err("_registry_product takes two cga values"));
     };
-    let entry = products().get(&(kind, a.ty.name, b.ty.name)).ok_or_else(|| PyTypeError::new_err("not generated"))?;
-    let out = type_named(entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
-    wrap(py, Values::zip(a, b, py, out, entry.eval)?)
+    let key = (Algebra::Cga, kind, a.ty.name, b.ty.name);
+    let entry = products().get(&key).ok_or_else(|| PyTypeError::new_err("not generated"))?;
+    let out = type_named(Algebra::Cga, entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
+    wrap(py, Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?)
 }
 
 /// The unary map `kind` of `a`.
 pub fn unary(py: Python<'_>, kind: UnaryKind, a: &Values) -> PyResult<Values> {
     let entry = unaries()
-        .get(&(kind, a.ty.name))
+        .get(&(a.ty.algebra, kind, a.ty.name))
         .ok_or_else(|| PyTypeError::new_err(format!("{}: no {kind:?} is generated", a.ty.name)))?;
-    let out = type_named(entry.output).ok_or_else(|| PyTypeError::new_err(format!("no class for {}", entry.output)))?;
-    let eval = entry.eval;
-    Ok(a.map(py, out, |x| eval(&x)))
+    let out = type_named(a.ty.algebra, entry.output)
+        .ok_or_else(|| PyTypeError::new_err(format!("no class for {}", entry.output)))?;
+    Ok(a.map(py, out, |x| entry.eval(&x)))
 }
 
 /// `⟨A Ã⟩₀` of each value.
 pub fn norm_squared(py: Python<'_>, a: &Values) -> PyResult<Vec<f64>> {
     let entry = unaries()
-        .get(&(UnaryKind::NormSquared, a.ty.name))
+        .get(&(a.ty.algebra, UnaryKind::NormSquared, a.ty.name))
         .ok_or_else(|| PyTypeError::new_err(format!("{}: no norm is generated", a.ty.name)))?;
-    let eval = entry.eval;
-    Ok(py.detach(|| (0..a.n).map(|i| eval(&a.storage(i))[0]).collect()))
+    Ok(py.detach(|| (0..a.n).map(|i| entry.eval(&a.storage(i))[0]).collect()))
 }
 
 /// Each value times `s` (a float, or an array of one float a value).
@@ -229,33 +333,53 @@ fn normalised(py: Python<'_>, v: &Values) -> PyResult<Values> {
     Values::new(v.ty, data, v.n, v.single)
 }
 
-/// The cga-core types that are classes, and the code each needs.
+/// An algebra's types that are classes, and the code each needs: the invoking module names
+/// the algebra's crate module `algebra` (`use cga_core as algebra;`); `$algebra` names it,
+/// `$module` is the Python module of its classes, `$repr` how a value reads (`display`: the
+/// type's Euclidean `Display`; `coefficients`: its blades).
 macro_rules! classes {
-    ($($name:ident),* $(,)?) => {
+    (@typed display, $name:ident) => {
+        impl $name {
+            /// The typed value of row `i` (for what the algebra's crate computes on it).
+            pub fn typed(v: &Values, i: usize) -> algebra::$name<f64> {
+                algebra::$name::from_storage(&v.storage(i))
+            }
+        }
+    };
+    (@typed coefficients, $name:ident) => {};
+    (@repr display, $v:expr, $i:expr, $name:ident) => {
+        format!("{}", $name::typed($v, $i))
+    };
+    (@repr coefficients, $v:expr, $i:expr, $name:ident) => {
+        crate::classes::coefficients($v, $i)
+    };
+    (@basis $name:ident) => {
+        (&algebra::$name::<f64>::BLADES[..], &algebra::$name::<f64>::STORAGE_INDEX[..])
+    };
+    (@basis $name:ident dense) => {
+        (algebra_storage_blades(), &STORAGE_ORDER[..])
+    };
+    ($algebra:ident, $module:literal, $repr:ident; $($name:ident $($dense:ident)?),* $(,)?) => {
         $(
             #[doc = concat!(
-                "cga-core's `", stringify!($name), "`: one value (coefficients of shape (k,)) or an ",
+                "`", stringify!($name), "` of ", $module, ": one value (coefficients of shape (k,)) or an ",
                 "array of n (shape (n, k)), with the algebra's operators."
             )]
-            #[pyclass(module = "cga", frozen)]
+            #[pyclass(module = $module, frozen)]
             pub struct $name(pub Values);
 
             impl $name {
                 /// The type.
                 pub fn ty() -> &'static Type {
-                    static TYPE: Type = Type {
-                        name: stringify!($name),
-                        blades: &cga_core::$name::<f64>::BLADES,
-                        storage: &cga_core::$name::<f64>::STORAGE_INDEX,
-                    };
+                    static TYPE: std::sync::LazyLock<Type> = std::sync::LazyLock::new(|| {
+                        let (blades, storage) = classes!(@basis $name $($dense)?);
+                        Type { name: stringify!($name), blades, storage, algebra: crate::values::Algebra::$algebra }
+                    });
                     &TYPE
                 }
-
-                /// The typed value of row `i` (for what cga-core computes on it).
-                pub fn typed(v: &Values, i: usize) -> cga_core::$name<f64> {
-                    cga_core::$name::from_storage(&v.storage(i))
-                }
             }
+
+            classes!(@typed $repr, $name);
 
             #[pymethods]
             impl $name {
@@ -263,13 +387,13 @@ macro_rules! classes {
                 /// in the order of `blades`.
                 #[new]
                 fn new(coefficients: &Bound<'_, PyAny>) -> PyResult<Self> {
-                    Ok($name(read(Self::ty(), coefficients)?))
+                    Ok($name(crate::classes::read(Self::ty(), coefficients)?))
                 }
 
                 /// The same as the constructor: coefficients of shape (k,) or (n, k).
                 #[staticmethod]
                 fn from_array(coefficients: &Bound<'_, PyAny>) -> PyResult<Self> {
-                    Ok($name(read(Self::ty(), coefficients)?))
+                    Ok($name(crate::classes::read(Self::ty(), coefficients)?))
                 }
 
                 /// The blades' names, in coefficient order.
@@ -281,7 +405,7 @@ macro_rules! classes {
                 /// The coefficients: shape (k,) for one value, (n, k) for an array.
                 #[getter(array)]
                 fn get_array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-                    array(py, &self.0)
+                    crate::classes::array(py, &self.0)
                 }
 
                 /// Whether this holds one value (not an array).
@@ -298,11 +422,11 @@ macro_rules! classes {
                 }
 
                 fn __getitem__(&self, index: &Bound<'_, PyAny>) -> PyResult<Self> {
-                    Ok($name(item(&self.0, index)?))
+                    Ok($name(crate::classes::item(&self.0, index)?))
                 }
 
                 fn __repr__(&self) -> String {
-                    let show = |i: usize| format!("{}", Self::typed(&self.0, i));
+                    let show = |i: usize| classes!(@repr $repr, &self.0, i, $name);
                     if self.0.single {
                         show(0)
                     } else {
@@ -314,131 +438,131 @@ macro_rules! classes {
 
                 /// Exactly the same type, shape and coefficients.
                 fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-                    match values_of(other) {
+                    match crate::classes::any_values_of(other) {
                         Some(o) => o.ty.name == self.0.ty.name && o.single == self.0.single && o.data == self.0.data,
                         None => false,
                     }
                 }
 
                 fn __mul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    binary(py, ProductKind::Geometric, &self.0, other, false)
+                    crate::classes::binary(py, ProductKind::Geometric, &self.0, other, false)
                 }
 
                 fn __rmul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    binary(py, ProductKind::Geometric, &self.0, other, true)
+                    crate::classes::binary(py, ProductKind::Geometric, &self.0, other, true)
                 }
 
                 fn __truediv__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    match scalars(other) {
-                        Some(s) => wrap(py, scaled(&self.0, &s.iter().map(|x| 1.0 / x).collect::<Vec<_>>())?),
-                        None => not_implemented(py),
+                    match crate::classes::scalars(other) {
+                        Some(s) => crate::classes::wrap(py, crate::classes::scaled(&self.0, &s.iter().map(|x| 1.0 / x).collect::<Vec<_>>())?),
+                        None => crate::classes::not_implemented(py),
                     }
                 }
 
                 fn __xor__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    binary(py, ProductKind::Outer, &self.0, other, false)
+                    crate::classes::binary(py, ProductKind::Outer, &self.0, other, false)
                 }
 
                 fn __or__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    binary(py, ProductKind::Inner, &self.0, other, false)
+                    crate::classes::binary(py, ProductKind::Inner, &self.0, other, false)
                 }
 
                 fn __and__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    binary(py, ProductKind::Regressive, &self.0, other, false)
+                    crate::classes::binary(py, ProductKind::Regressive, &self.0, other, false)
                 }
 
                 fn __add__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    sum(py, &self.0, other, 1.0)
+                    crate::classes::sum(py, &self.0, other, 1.0)
                 }
 
                 fn __sub__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    sum(py, &self.0, other, -1.0)
+                    crate::classes::sum(py, &self.0, other, -1.0)
                 }
 
                 fn __neg__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, scaled(&self.0, &[-1.0])?)
+                    crate::classes::wrap(py, crate::classes::scaled(&self.0, &[-1.0])?)
                 }
 
                 /// `~x`: the reverse.
                 fn __invert__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Reverse, &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Reverse, &self.0)?)
                 }
 
                 /// The reverse `Ã`.
                 fn reverse(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Reverse, &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Reverse, &self.0)?)
                 }
 
                 /// The grade involution `Â`.
                 fn involute(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Involute, &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Involute, &self.0)?)
                 }
 
                 /// The Clifford conjugate `Ā`.
                 fn conjugate(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Conjugate, &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Conjugate, &self.0)?)
                 }
 
                 /// The dual `A I₅⁻¹`.
                 fn dual(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Dual, &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Dual, &self.0)?)
                 }
 
                 /// The undual `A I₅`.
                 fn undual(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Undual, &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Undual, &self.0)?)
                 }
 
                 /// The part of grade `k`, `⟨A⟩ₖ`.
                 fn grade(&self, py: Python<'_>, k: usize) -> PyResult<Py<PyAny>> {
-                    wrap(py, unary(py, UnaryKind::Grade(k), &self.0)?)
+                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Grade(k), &self.0)?)
                 }
 
                 /// `⟨A Ã⟩₀`: a float for one value, an array of n for an array.
                 fn norm_squared(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    floats(py, &self.0, norm_squared(py, &self.0)?)
+                    crate::classes::floats(py, &self.0, crate::classes::norm_squared(py, &self.0)?)
                 }
 
                 /// `√|⟨A Ã⟩₀|`.
                 fn norm(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    let n = norm_squared(py, &self.0)?.into_iter().map(|s| s.abs().sqrt()).collect();
-                    floats(py, &self.0, n)
+                    let n = crate::classes::norm_squared(py, &self.0)?.into_iter().map(|s| s.abs().sqrt()).collect();
+                    crate::classes::floats(py, &self.0, n)
                 }
 
                 /// The value over `√|⟨A Ã⟩₀|` (clifford's `.normal()`); a zero or null value is
                 /// refused (`GeometryError`).
                 fn normalise(&self, py: Python<'_>) -> PyResult<Self> {
-                    Ok($name(normalised(py, &self.0)?))
+                    Ok($name(crate::classes::normalised(py, &self.0)?))
                 }
 
                 /// The geometric product (`*`).
                 fn gp(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::Geometric, &self.0, other)
+                    crate::classes::named(py, ProductKind::Geometric, &self.0, other)
                 }
 
                 /// The outer product (`^`).
                 fn wedge(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::Outer, &self.0, other)
+                    crate::classes::named(py, ProductKind::Outer, &self.0, other)
                 }
 
                 /// The Hestenes inner product (`|`).
                 fn inner(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::Inner, &self.0, other)
+                    crate::classes::named(py, ProductKind::Inner, &self.0, other)
                 }
 
                 /// The left contraction `A ⌋ B`.
                 fn lc(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::LeftContraction, &self.0, other)
+                    crate::classes::named(py, ProductKind::LeftContraction, &self.0, other)
                 }
 
                 /// The right contraction `A ⌊ B`.
                 fn rc(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::RightContraction, &self.0, other)
+                    crate::classes::named(py, ProductKind::RightContraction, &self.0, other)
                 }
 
                 /// The regressive product, the meet (`&`).
                 fn vee(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::Regressive, &self.0, other)
+                    crate::classes::named(py, ProductKind::Regressive, &self.0, other)
                 }
 
                 /// The value drawn (a notebook shows it): PNG bytes, or `None` where it has no
@@ -449,29 +573,30 @@ macro_rules! classes {
 
                 /// `V X Ṽ` for this versor and `x`.
                 fn sandwich(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    named(py, ProductKind::Sandwich, &self.0, x)
+                    crate::classes::named(py, ProductKind::Sandwich, &self.0, x)
                 }
             }
         )*
 
-        /// The type named `name`, if it is a class.
-        pub fn type_named(name: &str) -> Option<&'static Type> {
+        /// The type named `name` of this algebra, if it is a class.
+        pub fn type_in(name: &str) -> Option<&'static Type> {
             match name {
                 $(stringify!($name) => Some($name::ty()),)*
                 _ => None,
             }
         }
 
-        /// `values` as an object of its type's class.
-        pub fn wrap(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
+        /// `values` (of this algebra) as an object of its type's class.
+        pub fn wrap_in(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
             match values.ty.name {
                 $(stringify!($name) => Bound::new(py, $name(values))?.into_py_any(py),)*
                 other => Err(PyTypeError::new_err(format!("no class for {other}"))),
             }
         }
 
-        /// The values `obj` holds, if it is one of the classes (borrowed: no copy per operation).
-        pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
+        /// The values `obj` holds, if it is one of this algebra's classes (borrowed: no copy
+        /// per operation).
+        pub fn values_in<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
             $(if let Ok(x) = obj.cast::<$name>() {
                 return Some(&x.get().0);
             })*
@@ -479,14 +604,17 @@ macro_rules! classes {
         }
 
         /// Adds every class to the module.
-        pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+        pub fn register_in(m: &Bound<'_, PyModule>) -> PyResult<()> {
             $(m.add_class::<$name>()?;)*
             Ok(())
         }
     };
 }
 
+use cga_core as algebra;
+
 classes!(
+    Cga, "cga", display;
     Scalar,
     Infinity,
     Vector,
@@ -508,6 +636,137 @@ classes!(
     Odd,
 );
 
+/// The type named `name` of `algebra`, if it is a class.
+pub fn type_named(algebra: Algebra, name: &str) -> Option<&'static Type> {
+    match algebra {
+        Algebra::Cga => type_in(name),
+        Algebra::Pga => pga::type_in(name),
+    }
+}
+
+/// `values` as an object of its type's class.
+pub fn wrap(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
+    match values.ty.algebra {
+        Algebra::Cga => wrap_in(py, values),
+        Algebra::Pga => pga::wrap_in(py, values),
+    }
+}
+
+/// The values `obj` holds if it is one of cga-core's classes (what the geometry, figures and
+/// scenes take).
+pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
+    values_in(obj)
+}
+
+/// The values `obj` holds if it is a class of any algebra (what the operators take).
+pub fn any_values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
+    values_in(obj).or_else(|| pga::values_in(obj))
+}
+
+/// Adds cga-core's classes to the module, and PGA's to its submodule `pga`.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    register_in(m)?;
+    let sub = PyModule::new(m.py(), "pga")?;
+    pga::register_in(&sub)?;
+    m.add_submodule(&sub)
+}
+
+/// A value's coefficients by blade: `Motor(s=1, e12=0.5)`, the zero ones left out.
+pub fn coefficients(v: &Values, i: usize) -> String {
+    let terms: Vec<String> =
+        v.ty.blades.iter().zip(v.row(i)).filter(|(_, x)| **x != 0.0).map(|(b, x)| format!("{b}={x}")).collect();
+    format!("{}({})", v.ty.name, terms.join(", "))
+}
+
+/// 3D projective geometric algebra G(3,0,1) (cga-algebras' `pga`: bivector.net's and
+/// kingdon's conventions) as classes of `cga.pga`, with the same operators and arrays.
+pub mod pga {
+    use super::*;
+    use cga_algebras::pga as algebra;
+
+    classes!(Pga, "cga.pga", coefficients; Scalar, Plane, Line, Point, Pseudoscalar, Motor, Multivector dense);
+
+    /// The storage basis in order, for the dense type: every blade as the algebra spells it.
+    const STORAGE_ORDER: [usize; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
+
+    /// The storage basis's blades by index, read from the sparse types that hold them all.
+    fn algebra_storage_blades() -> &'static [&'static str] {
+        static NAMES: std::sync::LazyLock<Vec<&'static str>> = std::sync::LazyLock::new(|| {
+            let mut names = vec![""; 16];
+            let types: [(&[&'static str], &[usize]); 5] = [
+                (&algebra::Scalar::<f64>::BLADES, &algebra::Scalar::<f64>::STORAGE_INDEX),
+                (&algebra::Plane::<f64>::BLADES, &algebra::Plane::<f64>::STORAGE_INDEX),
+                (&algebra::Line::<f64>::BLADES, &algebra::Line::<f64>::STORAGE_INDEX),
+                (&algebra::Point::<f64>::BLADES, &algebra::Point::<f64>::STORAGE_INDEX),
+                (&algebra::Pseudoscalar::<f64>::BLADES, &algebra::Pseudoscalar::<f64>::STORAGE_INDEX),
+            ];
+            for (blades, at) in types {
+                for (b, &i) in blades.iter().zip(at) {
+                    names[i] = b;
+                }
+            }
+            names
+        });
+        &NAMES
+    }
+
+    /// A product with the dense type, for which no table is generated: both operands as dense
+    /// values and the dense type's own product; `None` for the sandwich and the scalar
+    /// product, which it does not define.
+    pub fn dense_code(kind: ProductKind) -> Option<Binary<32>> {
+        use algebra::{
+            CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector as Dense, OuterProduct,
+            RegressiveProduct, RightContraction,
+        };
+        fn of(x: &[f64; 32]) -> Dense<f64> {
+            Dense::from_storage(&narrow(x))
+        }
+        fn back(x: Dense<f64>) -> [f64; 32] {
+            widen(x.to_storage())
+        }
+        Some(match kind {
+            ProductKind::Geometric => |a, b| back(of(a).gp(of(b))),
+            ProductKind::Outer => |a, b| back(of(a).wedge(of(b))),
+            ProductKind::Inner => |a, b| back(of(a).inner(of(b))),
+            ProductKind::LeftContraction => |a, b| back(of(a).lc(of(b))),
+            ProductKind::RightContraction => |a, b| back(of(a).rc(of(b))),
+            ProductKind::Regressive => |a, b| back(of(a).vee(of(b))),
+            ProductKind::Commutator => |a, b| back(of(a).commutator(of(b))),
+            ProductKind::ScalarProduct | ProductKind::Sandwich => return None,
+        })
+    }
+
+    /// PGA's product kind as the classes name it (cga-core's).
+    pub fn product_kind(k: algebra::ProductKind) -> ProductKind {
+        use algebra::ProductKind as P;
+        match k {
+            P::Geometric => ProductKind::Geometric,
+            P::Outer => ProductKind::Outer,
+            P::Inner => ProductKind::Inner,
+            P::LeftContraction => ProductKind::LeftContraction,
+            P::RightContraction => ProductKind::RightContraction,
+            P::Regressive => ProductKind::Regressive,
+            P::Commutator => ProductKind::Commutator,
+            P::ScalarProduct => ProductKind::ScalarProduct,
+            P::Sandwich => ProductKind::Sandwich,
+        }
+    }
+
+    /// PGA's unary kind as the classes name it (cga-core's).
+    pub fn unary_kind(k: algebra::UnaryKind) -> UnaryKind {
+        use algebra::UnaryKind as U;
+        match k {
+            U::Reverse => UnaryKind::Reverse,
+            U::Involute => UnaryKind::Involute,
+            U::Conjugate => UnaryKind::Conjugate,
+            U::Dual => UnaryKind::Dual,
+            U::Undual => UnaryKind::Undual,
+            U::Grade(g) => UnaryKind::Grade(g),
+            U::NormSquared => UnaryKind::NormSquared,
+        }
+    }
+}
+
 /// Python's `NotImplemented`, so that the other operand may answer.
 fn not_implemented(py: Python<'_>) -> PyResult<Py<PyAny>> {
     Ok(py.NotImplemented())
@@ -527,7 +786,7 @@ fn binary(
     {
         return wrap(py, scaled(a, &s)?);
     }
-    let Some(b) = values_of(other) else { return not_implemented(py) };
+    let Some(b) = any_values_of(other) else { return not_implemented(py) };
     let (l, r) = if reflected { (b, a) } else { (a, b) };
     match product(py, kind, l, r)? {
         Some(v) => wrap(py, v),
@@ -542,7 +801,7 @@ fn binary(
 
 /// A named product's method: as the operator, refusing what is not a value.
 fn named(py: Python<'_>, kind: ProductKind, a: &Values, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-    if values_of(other).is_none() && !(kind == ProductKind::Geometric && scalars(other).is_some()) {
+    if any_values_of(other).is_none() && !(kind == ProductKind::Geometric && scalars(other).is_some()) {
         return Err(PyTypeError::new_err(format!(
             "{} {}: expected a cga value, got {}",
             a.ty.name,
@@ -555,8 +814,8 @@ fn named(py: Python<'_>, kind: ProductKind, a: &Values, other: &Bound<'_, PyAny>
 
 /// `a + sign · b` for two values of one type.
 fn sum(py: Python<'_>, a: &Values, other: &Bound<'_, PyAny>, sign: f64) -> PyResult<Py<PyAny>> {
-    let Some(b) = values_of(other) else { return not_implemented(py) };
-    if b.ty.name != a.ty.name {
+    let Some(b) = any_values_of(other) else { return not_implemented(py) };
+    if b.ty.name != a.ty.name || b.ty.algebra != a.ty.algebra {
         return Err(PyTypeError::new_err(format!(
             "{} ± {}: add values of one type (convert one first, e.g. to Even or Odd)",
             a.ty.name, b.ty.name

@@ -6,8 +6,17 @@ use pyo3::prelude::*;
 use rayon::prelude::*;
 use std::sync::Mutex;
 
-/// A cga-core type as the bindings see it: its name, blades and where each sits in the
-/// 32-coefficient storage basis.
+/// An algebra with classes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Algebra {
+    /// cga-core's G(4,1).
+    Cga,
+    /// cga-algebras' PGA, G(3,0,1) (`cga.pga`).
+    Pga,
+}
+
+/// A generated type as the bindings see it: its name, blades, where each sits in the storage
+/// basis (of 32 coefficients; PGA's 16 are the first of them) and its algebra.
 #[derive(Debug)]
 pub struct Type {
     /// The class name (`Line`).
@@ -16,6 +25,18 @@ pub struct Type {
     pub blades: &'static [&'static str],
     /// Each blade's index in the storage basis.
     pub storage: &'static [usize],
+    /// Its algebra.
+    pub algebra: Algebra,
+}
+
+impl Type {
+    /// Its name with its algebra's where that is not cga-core's: `Line`, `pga.Line`.
+    pub fn describe(&self) -> String {
+        match self.algebra {
+            Algebra::Cga => self.name.to_string(),
+            Algebra::Pga => format!("pga.{}", self.name),
+        }
+    }
 }
 
 /// Rows of a batch above which a map runs on rayon's threads.

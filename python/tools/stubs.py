@@ -188,6 +188,16 @@ class Scene:
         labels: bool = True,
     ) -> "Picture": ...
 
+class pga:
+    """The classes of G(3,0,1), which :mod:`cga.pga` binds (with the operators of every class)."""
+    Scalar: Any
+    Plane: Any
+    Line: Any
+    Point: Any
+    Pseudoscalar: Any
+    Motor: Any
+    Multivector: Any
+
 class Picture:
     @property
     def linear(self) -> NDArray[np.float64]: ...

@@ -284,10 +284,10 @@ impl Figure {
             .collect()
     }
 
-    /// The figure as a scene, built directly from its objects: the camera ([`Figure::view`]),
-    /// two lights, no shadows, and each object drawn as what it is with marks sized by the
-    /// scene (its own `size` and `tube` where given). [`Figure::scene`] writes the same scene
-    /// as a file.
+    /// The figure as a scene, built directly from its objects: the camera (given, or framing
+    /// the objects), two lights, no shadows, and each object drawn as what it is with marks
+    /// sized by the scene (its own `size` and `tube` where given). [`Figure::scene`] writes
+    /// the same scene as a file.
     pub fn build(&self) -> Result<Scene, FigureError> {
         let drawings = self.drawings()?;
         let (position, look_at, up) = self.view(&self.places(&drawings, false));
