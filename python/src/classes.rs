@@ -439,7 +439,7 @@ macro_rules! classes {
                 /// Exactly the same type, shape and coefficients.
                 fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
                     match crate::classes::any_values_of(other) {
-                        Some(o) => o.ty.name == self.0.ty.name && o.single == self.0.single && o.data == self.0.data,
+                        Some(o) => std::ptr::eq(o.ty, self.0.ty) && o.single == self.0.single && o.data == self.0.data,
                         None => false,
                     }
                 }

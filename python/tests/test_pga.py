@@ -125,3 +125,6 @@ def test_arrays_are_row_for_row_single_values_and_algebras_do_not_mix():
     with pytest.raises(cga.ShapeError):
         pga.point([1.0, 2.0])
     assert pga.Motor.__module__ == "cga.pga" and random(pga.Point)._repr_png_() is None
+    # A CGA line and a PGA line of the same six numbers are not equal.
+    six = RNG.normal(size=6)
+    assert cga.Line(six) != pga.Line(six) and pga.Line(six) == pga.Line(six.copy())
