@@ -21,8 +21,8 @@ use std::sync::OnceLock;
 pub enum Code<F32, F16> {
     /// cga-core's.
     Cga(F32),
-    /// cga-algebras' `pga`.
-    Pga(F16),
+    /// An algebra of 16 coefficients from cga-algebras (`pga`, `sta`).
+    Small(F16),
 }
 
 /// A product's code on storage arrays of `N` coefficients.
@@ -59,7 +59,7 @@ impl Product {
     pub fn eval(&self, a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
         match self.code {
             Code::Cga(f) => f(a, b),
-            Code::Pga(f) => widen(f(&narrow(a), &narrow(b))),
+            Code::Small(f) => widen(f(&narrow(a), &narrow(b))),
         }
     }
 }
@@ -69,7 +69,7 @@ impl Unary {
     pub fn eval(&self, a: &[f64; 32]) -> [f64; 32] {
         match self.code {
             Code::Cga(f) => f(a),
-            Code::Pga(f) => widen(f(&narrow(a))),
+            Code::Small(f) => widen(f(&narrow(a))),
         }
     }
 }
@@ -84,11 +84,7 @@ fn products() -> &'static Products {
         let cga = product_table::<f64>()
             .into_iter()
             .map(|e| ((Algebra::Cga, e.kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Cga(e.eval) }));
-        let pga = cga_algebras::pga::product_table::<f64>().into_iter().map(|e| {
-            let kind = pga::product_kind(e.kind);
-            ((Algebra::Pga, kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Pga(e.eval) })
-        });
-        cga.chain(pga).collect()
+        cga.chain(pga::tables().0).chain(sta::tables().0).collect()
     })
 }
 
@@ -102,11 +98,7 @@ fn unaries() -> &'static Unaries {
         let cga = unary_table::<f64>()
             .into_iter()
             .map(|e| ((Algebra::Cga, e.kind, e.input), Unary { output: e.output, code: Code::Cga(e.eval) }));
-        let pga = cga_algebras::pga::unary_table::<f64>().into_iter().map(|e| {
-            let kind = pga::unary_kind(e.kind);
-            ((Algebra::Pga, kind, e.input), Unary { output: e.output, code: Code::Pga(e.eval) })
-        });
-        cga.chain(pga).collect()
+        cga.chain(pga::tables().1).chain(sta::tables().1).collect()
     })
 }
 
@@ -131,17 +123,21 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
     let algebra = a.ty.algebra;
     if b.ty.algebra != algebra {
         return Err(PyTypeError::new_err(format!(
-            "{} {} {}: values of two algebras (cga's G(4,1) and cga.pga's G(3,0,1))",
+            "{} {} {}: values of two algebras",
             a.ty.describe(),
             symbol(kind),
             b.ty.describe()
         )));
     }
-    if algebra == Algebra::Pga && (a.ty.name == "Multivector" || b.ty.name == "Multivector") {
-        let code = pga::dense_code(kind).ok_or_else(|| {
-            PyTypeError::new_err(format!("pga.Multivector: no {} is defined on the dense type", symbol(kind)))
+    if algebra != Algebra::Cga && (a.ty.name == "Multivector" || b.ty.name == "Multivector") {
+        let (code, dense) = match algebra {
+            Algebra::Sta => (sta::dense_code(kind), sta::Multivector::ty()),
+            _ => (pga::dense_code(kind), pga::Multivector::ty()),
+        };
+        let code = code.ok_or_else(|| {
+            PyTypeError::new_err(format!("{}: no {} is defined on the dense type", dense.describe(), symbol(kind)))
         })?;
-        return Values::zip(a, b, py, pga::Multivector::ty(), code).map(Some);
+        return Values::zip(a, b, py, dense, code).map(Some);
     }
     let Some(entry) = products().get(&(algebra, kind, a.ty.name, b.ty.name)) else { return Ok(None) };
     let out = type_named(algebra, entry.output).ok_or_else(|| {
@@ -155,7 +151,7 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
             }
             Values::zip(a, b, py, out, eval).map(Some)
         }
-        Code::Pga(eval) => Values::zip(a, b, py, out, move |x, y| widen(eval(&narrow(x), &narrow(y)))).map(Some),
+        Code::Small(eval) => Values::zip(a, b, py, out, move |x, y| widen(eval(&narrow(x), &narrow(y)))).map(Some),
     }
 }
 
@@ -641,6 +637,7 @@ pub fn type_named(algebra: Algebra, name: &str) -> Option<&'static Type> {
     match algebra {
         Algebra::Cga => type_in(name),
         Algebra::Pga => pga::type_in(name),
+        Algebra::Sta => sta::type_in(name),
     }
 }
 
@@ -649,6 +646,7 @@ pub fn wrap(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
     match values.ty.algebra {
         Algebra::Cga => wrap_in(py, values),
         Algebra::Pga => pga::wrap_in(py, values),
+        Algebra::Sta => sta::wrap_in(py, values),
     }
 }
 
@@ -660,15 +658,19 @@ pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
 
 /// The values `obj` holds if it is a class of any algebra (what the operators take).
 pub fn any_values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
-    values_in(obj).or_else(|| pga::values_in(obj))
+    values_in(obj).or_else(|| pga::values_in(obj)).or_else(|| sta::values_in(obj))
 }
 
-/// Adds cga-core's classes to the module, and PGA's to its submodule `pga`.
+/// Adds cga-core's classes to the module, PGA's to its submodule `pga` and STA's to `sta`.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     register_in(m)?;
-    let sub = PyModule::new(m.py(), "pga")?;
-    pga::register_in(&sub)?;
-    m.add_submodule(&sub)
+    type Register = fn(&Bound<'_, PyModule>) -> PyResult<()>;
+    for (name, classes) in [("pga", pga::register_in as Register), ("sta", sta::register_in)] {
+        let sub = PyModule::new(m.py(), name)?;
+        classes(&sub)?;
+        m.add_submodule(&sub)?;
+    }
+    Ok(())
 }
 
 /// A value's coefficients by blade: `Motor(s=1, e12=0.5)`, the zero ones left out.
@@ -678,94 +680,122 @@ pub fn coefficients(v: &Values, i: usize) -> String {
     format!("{}({})", v.ty.name, terms.join(", "))
 }
 
-/// 3D projective geometric algebra G(3,0,1) (cga-algebras' `pga`: bivector.net's and
-/// kingdon's conventions) as classes of `cga.pga`, with the same operators and arrays.
-pub mod pga {
-    use super::*;
-    use cga_algebras::pga as algebra;
+/// An algebra of 16 coefficients from cga-algebras as a module of classes: `$module` (the
+/// Rust module), the algebra's crate module `$path`, its classes, its dense type and the
+/// types whose blades cover the storage basis.
+macro_rules! small_algebra {
+    ($(#[$doc:meta])* $module:ident, $variant:ident, $python:literal, $path:path; $($class:ident),*; dense $dense:ident; covered by $($cover:ident),*) => {
+        $(#[$doc])*
+        pub mod $module {
+            use super::{Binary, Code, Product, ProductKind, Unary, UnaryKind, narrow, widen};
+            use crate::values::{Algebra, Type, Values};
+            use numpy::PyArrayDyn;
+            use pyo3::IntoPyObjectExt;
+            use pyo3::exceptions::PyTypeError;
+            use pyo3::prelude::*;
+            use $path as algebra;
 
-    classes!(Pga, "cga.pga", coefficients; Scalar, Plane, Line, Point, Pseudoscalar, Motor, Multivector dense);
+            classes!($variant, $python, coefficients; $($class,)* $dense dense);
 
-    /// The storage basis in order, for the dense type: every blade as the algebra spells it.
-    const STORAGE_ORDER: [usize; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
+            /// The storage basis in order, for the dense type.
+            const STORAGE_ORDER: [usize; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
 
-    /// The storage basis's blades by index, read from the sparse types that hold them all.
-    fn algebra_storage_blades() -> &'static [&'static str] {
-        static NAMES: std::sync::LazyLock<Vec<&'static str>> = std::sync::LazyLock::new(|| {
-            let mut names = vec![""; 16];
-            let types: [(&[&'static str], &[usize]); 5] = [
-                (&algebra::Scalar::<f64>::BLADES, &algebra::Scalar::<f64>::STORAGE_INDEX),
-                (&algebra::Plane::<f64>::BLADES, &algebra::Plane::<f64>::STORAGE_INDEX),
-                (&algebra::Line::<f64>::BLADES, &algebra::Line::<f64>::STORAGE_INDEX),
-                (&algebra::Point::<f64>::BLADES, &algebra::Point::<f64>::STORAGE_INDEX),
-                (&algebra::Pseudoscalar::<f64>::BLADES, &algebra::Pseudoscalar::<f64>::STORAGE_INDEX),
-            ];
-            for (blades, at) in types {
-                for (b, &i) in blades.iter().zip(at) {
-                    names[i] = b;
+            /// The storage basis's blades by index, as the algebra spells them: read from the
+            /// sparse types that hold them all.
+            fn algebra_storage_blades() -> &'static [&'static str] {
+                static NAMES: std::sync::LazyLock<Vec<&'static str>> = std::sync::LazyLock::new(|| {
+                    let mut names = vec![""; 16];
+                    $(for (b, &i) in algebra::$cover::<f64>::BLADES.iter().zip(&algebra::$cover::<f64>::STORAGE_INDEX) {
+                        names[i] = b;
+                    })*
+                    names
+                });
+                &NAMES
+            }
+
+            /// Its products and unary maps, keyed as the classes look them up.
+            pub fn tables() -> (Vec<((Algebra, ProductKind, &'static str, &'static str), Product)>, Vec<((Algebra, UnaryKind, &'static str), Unary)>) {
+                let products = algebra::product_table::<f64>().into_iter().map(|e| {
+                    ((Algebra::$variant, product_kind(e.kind), e.lhs, e.rhs), Product { output: e.output, code: Code::Small(e.eval) })
+                });
+                let unaries = algebra::unary_table::<f64>().into_iter().map(|e| {
+                    ((Algebra::$variant, unary_kind(e.kind), e.input), Unary { output: e.output, code: Code::Small(e.eval) })
+                });
+                (products.collect(), unaries.collect())
+            }
+
+            /// A product with the dense type, for which no table is generated: both operands
+            /// as dense values and the dense type's own product; `None` for the sandwich and
+            /// the scalar product, which it does not define.
+            pub fn dense_code(kind: ProductKind) -> Option<Binary<32>> {
+                use algebra::{
+                    CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector as Dense,
+                    OuterProduct, RegressiveProduct, RightContraction,
+                };
+                fn of(x: &[f64; 32]) -> Dense<f64> {
+                    Dense::from_storage(&narrow(x))
+                }
+                fn back(x: Dense<f64>) -> [f64; 32] {
+                    widen(x.to_storage())
+                }
+                Some(match kind {
+                    ProductKind::Geometric => |a, b| back(of(a).gp(of(b))),
+                    ProductKind::Outer => |a, b| back(of(a).wedge(of(b))),
+                    ProductKind::Inner => |a, b| back(of(a).inner(of(b))),
+                    ProductKind::LeftContraction => |a, b| back(of(a).lc(of(b))),
+                    ProductKind::RightContraction => |a, b| back(of(a).rc(of(b))),
+                    ProductKind::Regressive => |a, b| back(of(a).vee(of(b))),
+                    ProductKind::Commutator => |a, b| back(of(a).commutator(of(b))),
+                    ProductKind::ScalarProduct | ProductKind::Sandwich => return None,
+                })
+            }
+
+            /// Its product kind as the classes name it (cga-core's).
+            fn product_kind(k: algebra::ProductKind) -> ProductKind {
+                use algebra::ProductKind as P;
+                match k {
+                    P::Geometric => ProductKind::Geometric,
+                    P::Outer => ProductKind::Outer,
+                    P::Inner => ProductKind::Inner,
+                    P::LeftContraction => ProductKind::LeftContraction,
+                    P::RightContraction => ProductKind::RightContraction,
+                    P::Regressive => ProductKind::Regressive,
+                    P::Commutator => ProductKind::Commutator,
+                    P::ScalarProduct => ProductKind::ScalarProduct,
+                    P::Sandwich => ProductKind::Sandwich,
                 }
             }
-            names
-        });
-        &NAMES
-    }
 
-    /// A product with the dense type, for which no table is generated: both operands as dense
-    /// values and the dense type's own product; `None` for the sandwich and the scalar
-    /// product, which it does not define.
-    pub fn dense_code(kind: ProductKind) -> Option<Binary<32>> {
-        use algebra::{
-            CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector as Dense, OuterProduct,
-            RegressiveProduct, RightContraction,
-        };
-        fn of(x: &[f64; 32]) -> Dense<f64> {
-            Dense::from_storage(&narrow(x))
+            /// Its unary kind as the classes name it (cga-core's).
+            fn unary_kind(k: algebra::UnaryKind) -> UnaryKind {
+                use algebra::UnaryKind as U;
+                match k {
+                    U::Reverse => UnaryKind::Reverse,
+                    U::Involute => UnaryKind::Involute,
+                    U::Conjugate => UnaryKind::Conjugate,
+                    U::Dual => UnaryKind::Dual,
+                    U::Undual => UnaryKind::Undual,
+                    U::Grade(g) => UnaryKind::Grade(g),
+                    U::NormSquared => UnaryKind::NormSquared,
+                }
+            }
         }
-        fn back(x: Dense<f64>) -> [f64; 32] {
-            widen(x.to_storage())
-        }
-        Some(match kind {
-            ProductKind::Geometric => |a, b| back(of(a).gp(of(b))),
-            ProductKind::Outer => |a, b| back(of(a).wedge(of(b))),
-            ProductKind::Inner => |a, b| back(of(a).inner(of(b))),
-            ProductKind::LeftContraction => |a, b| back(of(a).lc(of(b))),
-            ProductKind::RightContraction => |a, b| back(of(a).rc(of(b))),
-            ProductKind::Regressive => |a, b| back(of(a).vee(of(b))),
-            ProductKind::Commutator => |a, b| back(of(a).commutator(of(b))),
-            ProductKind::ScalarProduct | ProductKind::Sandwich => return None,
-        })
-    }
-
-    /// PGA's product kind as the classes name it (cga-core's).
-    pub fn product_kind(k: algebra::ProductKind) -> ProductKind {
-        use algebra::ProductKind as P;
-        match k {
-            P::Geometric => ProductKind::Geometric,
-            P::Outer => ProductKind::Outer,
-            P::Inner => ProductKind::Inner,
-            P::LeftContraction => ProductKind::LeftContraction,
-            P::RightContraction => ProductKind::RightContraction,
-            P::Regressive => ProductKind::Regressive,
-            P::Commutator => ProductKind::Commutator,
-            P::ScalarProduct => ProductKind::ScalarProduct,
-            P::Sandwich => ProductKind::Sandwich,
-        }
-    }
-
-    /// PGA's unary kind as the classes name it (cga-core's).
-    pub fn unary_kind(k: algebra::UnaryKind) -> UnaryKind {
-        use algebra::UnaryKind as U;
-        match k {
-            U::Reverse => UnaryKind::Reverse,
-            U::Involute => UnaryKind::Involute,
-            U::Conjugate => UnaryKind::Conjugate,
-            U::Dual => UnaryKind::Dual,
-            U::Undual => UnaryKind::Undual,
-            U::Grade(g) => UnaryKind::Grade(g),
-            U::NormSquared => UnaryKind::NormSquared,
-        }
-    }
+    };
 }
+
+small_algebra!(
+    /// 3D projective geometric algebra G(3,0,1) (cga-algebras' `pga`: bivector.net's and
+    /// kingdon's conventions) as classes of `cga.pga`, with the same operators and arrays.
+    pga, Pga, "cga.pga", cga_algebras::pga; Scalar, Plane, Line, Point, Pseudoscalar, Motor; dense Multivector;
+    covered by Scalar, Plane, Line, Point, Pseudoscalar
+);
+
+small_algebra!(
+    /// Spacetime algebra G(1,3) (cga-algebras' `sta`: `e0² = +1`, `e1² = e2² = e3² = −1`) as
+    /// classes of `cga.sta`, with the same operators and arrays.
+    sta, Sta, "cga.sta", cga_algebras::sta; Scalar, Vector, Bivector, Trivector, Pseudoscalar, Rotor;
+    dense Multivector; covered by Scalar, Vector, Bivector, Trivector, Pseudoscalar
+);
 
 /// Python's `NotImplemented`, so that the other operand may answer.
 fn not_implemented(py: Python<'_>) -> PyResult<Py<PyAny>> {

@@ -13,6 +13,8 @@ pub enum Algebra {
     Cga,
     /// cga-algebras' PGA, G(3,0,1) (`cga.pga`).
     Pga,
+    /// cga-algebras' spacetime algebra, G(1,3) (`cga.sta`).
+    Sta,
 }
 
 /// A generated type as the bindings see it: its name, blades, where each sits in the storage
@@ -35,6 +37,7 @@ impl Type {
         match self.algebra {
             Algebra::Cga => self.name.to_string(),
             Algebra::Pga => format!("pga.{}", self.name),
+            Algebra::Sta => format!("sta.{}", self.name),
         }
     }
 }

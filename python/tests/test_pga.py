@@ -1,7 +1,7 @@
-"""cga.pga, G(3,0,1): the generated products against kingdon's ``Algebra(3, 0, 1)`` on random
-values of every class (blades spelled as bivector.net spells them, signs handled), points,
-planes and motors against Euclid, arrays row for row against single values, and values of
-two algebras refused."""
+"""cga.pga, G(3,0,1), and cga.sta, G(1,3): the generated products against kingdon's
+``Algebra(3, 0, 1)`` and ``Algebra(1, 3)`` on random values of every class (blades spelled as
+bivector.net spells them, signs handled), PGA's points, planes and motors against Euclid,
+arrays row for row against single values, and values of two algebras refused."""
 
 import itertools
 
@@ -9,10 +9,14 @@ import numpy as np
 import pytest
 
 import cga
-from cga import pga
+from cga import pga, sta
 
 RNG = np.random.default_rng(29)
 CLASSES = [pga.Scalar, pga.Plane, pga.Line, pga.Point, pga.Pseudoscalar, pga.Motor, pga.Multivector]
+STA = [sta.Scalar, sta.Vector, sta.Bivector, sta.Trivector, sta.Pseudoscalar, sta.Rotor, sta.Multivector]
+# Each algebra's classes, and kingdon's algebra of the same signature and labels.
+ALGEBRAS = [(CLASSES, dict(p=3, q=0, r=1)), (STA, dict(p=1, q=3, start_index=0))]
+PAIRS = [(left, right, k) for classes, k in ALGEBRAS for left, right in itertools.product(classes, classes)]
 
 
 def random(cls, n=None):
@@ -58,10 +62,10 @@ OPS = [("*", lambda a, b: a * b, lambda a, b: a * b), ("^", lambda a, b: a ^ b, 
        ("&", lambda a, b: a & b, lambda a, b: a & b)]
 
 
-@pytest.mark.parametrize("left,right", list(itertools.product(CLASSES, CLASSES)))
-def test_products_are_kingdons(left, right):
+@pytest.mark.parametrize("left,right,signature", PAIRS)
+def test_products_are_kingdons(left, right, signature):
     kingdon = pytest.importorskip("kingdon")
-    alg = kingdon.Algebra(3, 0, 1)
+    alg = kingdon.Algebra(**signature)
     a, b = random(left), random(right)
     for symbol, ours, theirs in OPS:
         try:
@@ -106,7 +110,8 @@ def test_motors_move_points_and_planes_as_euclid_does():
 
 
 def test_the_dense_class_holds_every_blade_once():
-    assert len(set(pga.Multivector.blades)) == 16 and "" not in pga.Multivector.blades
+    for dense in (pga.Multivector, sta.Multivector):
+        assert len(set(dense.blades)) == 16 and "" not in dense.blades
 
 
 def test_arrays_are_row_for_row_single_values_and_algebras_do_not_mix():
@@ -118,6 +123,8 @@ def test_arrays_are_row_for_row_single_values_and_algebras_do_not_mix():
     assert "pga.Line" not in repr(random(pga.Line)) and repr(random(pga.Line)).startswith("Line(")
     with pytest.raises(TypeError, match="two algebras"):
         cga.up([1.0, 2, 3]) ^ random(pga.Point)
+    with pytest.raises(TypeError, match="two algebras"):
+        random(sta.Vector) * random(pga.Plane)
     with pytest.raises(cga.ShapeError):
         cga.Line.fit(random(pga.Point, 5))
     with pytest.raises(cga.GeometryError):

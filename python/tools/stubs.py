@@ -198,6 +198,16 @@ class pga:
     Motor: Any
     Multivector: Any
 
+class sta:
+    """The classes of G(1,3), which :mod:`cga.sta` binds."""
+    Scalar: Any
+    Vector: Any
+    Bivector: Any
+    Trivector: Any
+    Pseudoscalar: Any
+    Rotor: Any
+    Multivector: Any
+
 class Picture:
     @property
     def linear(self) -> NDArray[np.float64]: ...
