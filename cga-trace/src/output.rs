@@ -346,16 +346,15 @@ fn new_file_permissions() -> Option<fs::Permissions> {
 mod tests {
     use super::*;
 
-    fn scratch(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("cga-trace-output-{}-{name}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
-        fs::create_dir_all(&dir).unwrap();
-        dir
+    /// A fresh scratch directory for one test, removed when the test ends, pass or fail.
+    fn scratch(name: &str) -> tempfile::TempDir {
+        tempfile::Builder::new().prefix(&format!("cga-trace-output-{name}-")).tempdir().unwrap()
     }
 
     #[test]
     fn an_existing_file_is_replaced_only_on_commit() {
-        let dir = scratch("commit");
+        let scratch_dir = scratch("commit");
+        let dir = scratch_dir.path();
         let out = dir.join("out.png");
         fs::write(&out, b"old").unwrap();
         let mut file = OutputFile::create(&out, &[]).unwrap();
@@ -363,7 +362,7 @@ mod tests {
         assert_eq!(fs::read(&out).unwrap(), b"old", "untouched while writing");
         drop(file);
         assert_eq!(fs::read(&out).unwrap(), b"old", "untouched when dropped");
-        assert_eq!(fs::read_dir(&dir).unwrap().count(), 1, "no temporary file left");
+        assert_eq!(fs::read_dir(dir).unwrap().count(), 1, "no temporary file left");
         let mut file = OutputFile::create(&out, &[]).unwrap();
         file.write_all(b"new").unwrap();
         file.commit().unwrap();
@@ -373,7 +372,8 @@ mod tests {
     #[cfg(unix)]
     #[test]
     fn links_to_an_input_are_refused_and_links_elsewhere_followed() {
-        let dir = scratch("links");
+        let scratch_dir = scratch("links");
+        let dir = scratch_dir.path();
         let (scene, other) = (dir.join("scene.toml"), dir.join("v3.png"));
         fs::write(&scene, b"scene").unwrap();
         fs::write(&other, b"v3").unwrap();

@@ -9,12 +9,9 @@ fn scene(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
 }
 
-/// A fresh scratch directory for one test.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("cga-trace-cli-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh scratch directory for one test, removed when the test ends, pass or fail.
+fn scratch(test: &str) -> tempfile::TempDir {
+    tempfile::Builder::new().prefix(&format!("cga-trace-cli-{test}-")).tempdir().unwrap()
 }
 
 /// `cga-trace render ARGS…`, with backtraces asked for (they must not appear).
@@ -35,7 +32,8 @@ fn error_line(out: &Output) -> String {
 
 #[test]
 fn user_errors_are_one_line_and_come_before_any_rendering() {
-    let dir = scratch("errors");
+    let scratch_dir = scratch("errors");
+    let dir = scratch_dir.path();
     let primitives = scene("primitives.toml");
     let p = primitives.to_str().unwrap();
     let jpg = dir.join("x.jpg");
@@ -109,7 +107,8 @@ fn help_points_at_the_scene_format() {
 
 #[test]
 fn formats_follow_the_extension() {
-    let dir = scratch("formats");
+    let scratch_dir = scratch("formats");
+    let dir = scratch_dir.path();
     let p = scene("primitives.toml");
     let run = |name: &str, extra: &[&str]| {
         let path = dir.join(name);
@@ -147,7 +146,8 @@ fn formats_follow_the_extension() {
 
 #[test]
 fn crops_from_the_command_line_assemble_into_the_frame() {
-    let dir = scratch("crops");
+    let scratch_dir = scratch("crops");
+    let dir = scratch_dir.path();
     let p = scene("combined.toml");
     let run = |name: &str, crop: Option<&str>| {
         let path = dir.join(name);
@@ -170,7 +170,8 @@ fn crops_from_the_command_line_assemble_into_the_frame() {
 
 #[test]
 fn a_camera_without_a_size_takes_the_command_lines_and_a_dark_scene_gets_a_note() {
-    let dir = scratch("sizeless");
+    let scratch_dir = scratch("sizeless");
+    let dir = scratch_dir.path();
     let file = dir.join("sizeless.toml");
     std::fs::write(
         &file,
@@ -186,28 +187,28 @@ fn a_camera_without_a_size_takes_the_command_lines_and_a_dark_scene_gets_a_note(
     assert!(run.status.success(), "{run:?}");
     assert_eq!(image::image_dimensions(&out).unwrap(), (32, 24));
     assert!(String::from_utf8_lossy(&run.stderr).contains("note: the scene has no lights"), "{run:?}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn frames_are_numbered_files_and_a_range_renders_only_its_own() {
-    let dir = scratch("frames");
+    let scratch_dir = scratch("frames");
+    let dir = scratch_dir.path();
     let scene_file = scene("primitives.toml");
     let (s, out) = (scene_file.to_str().unwrap(), dir.join("anim.png"));
     let o = out.to_str().unwrap();
     let run = render(&[s, "-o", o, "--width", "16", "--frames", "3", "--frame-range", "1..3"]);
     assert!(run.status.success(), "{run:?}");
     let names: std::collections::BTreeSet<String> =
-        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     assert_eq!(names, ["anim_0001.png", "anim_0002.png"].map(String::from).into());
     let line = error_line(&render(&[s, "-o", o, "--frames", "3", "--frame-range", "2..5"]));
     assert!(line.contains("--frame-range 2..5: the animation has frames 0 to 2"), "{line}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn exposure_scales_linear_values_and_the_filmic_map_keeps_highlights_below_white() {
-    let dir = scratch("exposure");
+    let scratch_dir = scratch("exposure");
+    let dir = scratch_dir.path();
     let p = scene("primitives.toml");
     let s = p.to_str().unwrap();
     let png = |name: &str, extra: &[&str]| {
@@ -233,12 +234,12 @@ fn exposure_scales_linear_values_and_the_filmic_map_keeps_highlights_below_white
     assert!(clipped.iter().filter(|&&v| v == 255).count() > filmic.iter().filter(|&&v| v == 255).count());
     let line = error_line(&render(&[s, "-o", dir.join("f.png").to_str().unwrap(), "--exposure", "100"]));
     assert!(line.contains("--exposure") && line.contains("exposure must lie in [-64, 64] stops"), "{line}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn a_shutter_blurs_what_moves_and_leaves_what_stands() {
-    let dir = scratch("shutter");
+    let scratch_dir = scratch("shutter");
+    let dir = scratch_dir.path();
     let p = scene("motion.toml");
     let s = p.to_str().unwrap();
     let still = dir.join("still.toml");
@@ -261,5 +262,4 @@ fn a_shutter_blurs_what_moves_and_leaves_what_stands() {
     assert!(differ(0, 40) > 200, "{}", differ(0, 40));
     let post = blurred.width() * 55 / 64;
     assert!(blurred.get_pixel(post, 20).0.iter().zip(sharp.get_pixel(post, 20).0).all(|(a, b)| a.abs_diff(b) <= 2));
-    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -14,12 +14,9 @@ fn shipped(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
 }
 
-/// A fresh scratch directory for one test.
-fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("cga-trace-outputs-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A fresh scratch directory for one test, removed when the test ends, pass or fail.
+fn scratch(test: &str) -> tempfile::TempDir {
+    tempfile::Builder::new().prefix(&format!("cga-trace-outputs-{test}-")).tempdir().unwrap()
 }
 
 fn cga_trace(args: &[&str]) -> Output {
@@ -40,7 +37,8 @@ fn fails_and_keeps(dir: &Path, args: &[&str], says: &str) {
 
 #[test]
 fn an_existing_output_survives_every_failure() {
-    let dir = scratch("survives");
+    let scratch_dir = scratch("survives");
+    let dir = scratch_dir.path();
     std::fs::copy(shipped("primitives.toml"), dir.join("scene.toml")).unwrap();
     std::fs::write(dir.join("out.png"), b"an earlier render").unwrap();
     std::fs::write(dir.join("broken.toml"), "[camera\n").unwrap();
@@ -56,13 +54,14 @@ fn an_existing_output_survives_every_failure() {
         (&["render", "broken.toml", "-o", "out.png", "--aov", "gaussian"], "broken.toml:1:"),
         (&["render", "scene.toml", "-o", "out.png", "--aov", "gaussian", "--crop", "2,3,0,1"], "--crop"),
     ] {
-        fails_and_keeps(&dir, args, says);
+        fails_and_keeps(dir, args, says);
     }
 }
 
 #[test]
 fn an_output_that_is_an_input_is_refused() {
-    let dir = scratch("inputs");
+    let scratch_dir = scratch("inputs");
+    let dir = scratch_dir.path();
     std::fs::copy(shipped("primitives.toml"), dir.join("scene.toml")).unwrap();
     std::fs::copy(shipped("primitives.toml"), dir.join("scene.png")).unwrap();
     std::fs::copy(shipped("fig3b.toml"), dir.join("surface.obj")).unwrap();
@@ -88,14 +87,15 @@ fn an_output_that_is_an_input_is_refused() {
         ]);
     }
     for (args, says) in cases {
-        fails_and_keeps(&dir, &args, says);
+        fails_and_keeps(dir, &args, says);
     }
 }
 
 #[cfg(unix)]
 #[test]
 fn links_are_written_through_and_devices_never_removed() {
-    let dir = scratch("links");
+    let scratch_dir = scratch("links");
+    let dir = scratch_dir.path();
     std::fs::copy(shipped("primitives.toml"), dir.join("scene.toml")).unwrap();
     std::fs::write(dir.join("broken.toml"), "[camera\n").unwrap();
     std::fs::create_dir(dir.join("renders")).unwrap();
@@ -105,13 +105,13 @@ fn links_are_written_through_and_devices_never_removed() {
     std::os::unix::fs::symlink("/dev/null", dir.join("null.png")).unwrap();
     std::fs::create_dir(dir.join("folder.png")).unwrap();
     // The user's case: a failed render through a link leaves the link and its file.
-    fails_and_keeps(&dir, &["render", "broken.toml", "-o", "latest.png"], "broken.toml:1:");
+    fails_and_keeps(dir, &["render", "broken.toml", "-o", "latest.png"], "broken.toml:1:");
     // A device that cannot take the bytes: an error, and the link is still there.
-    fails_and_keeps(&dir, &["render", "scene.toml", "-o", "full.png", "--width", "16"], "No space left");
-    fails_and_keeps(&dir, &["render", "scene.toml", "-o", "folder.png", "--width", "16"], "is a directory");
+    fails_and_keeps(dir, &["render", "scene.toml", "-o", "full.png", "--width", "16"], "No space left");
+    fails_and_keeps(dir, &["render", "scene.toml", "-o", "folder.png", "--width", "16"], "is a directory");
     let run = |out: &str| {
         Command::new(env!("CARGO_BIN_EXE_cga-trace"))
-            .current_dir(&dir)
+            .current_dir(dir)
             .args(["render", "scene.toml", "-o", out, "--width", "16"])
             .output()
             .unwrap()
@@ -126,15 +126,16 @@ fn links_are_written_through_and_devices_never_removed() {
     // A named pipe is refused at once (opening it to write would wait for a reader).
     let fifo = dir.join("pipe.png");
     assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
-    fails_and_keeps(&dir, &["render", "scene.toml", "-o", "pipe.png", "--width", "16"], "named pipe");
+    fails_and_keeps(dir, &["render", "scene.toml", "-o", "pipe.png", "--width", "16"], "named pipe");
     // Only the outputs asked for were written: no temporary file is left anywhere.
-    let names: Vec<String> = snapshot(&dir).into_iter().map(|(n, _)| n).collect();
+    let names: Vec<String> = snapshot(dir).into_iter().map(|(n, _)| n).collect();
     assert!(names.iter().all(|n| !n.ends_with(".tmp")), "{names:?}");
 }
 
 #[test]
 fn a_replaced_output_keeps_its_permissions() {
-    let dir = scratch("mode");
+    let scratch_dir = scratch("mode");
+    let dir = scratch_dir.path();
     let out = dir.join("out.png");
     std::fs::write(&out, b"old").unwrap();
     #[cfg(unix)]
@@ -171,7 +172,8 @@ fn a_replaced_output_keeps_its_permissions() {
 #[cfg(unix)]
 #[test]
 fn a_broken_stderr_never_panics() {
-    let dir = scratch("stderr");
+    let scratch_dir = scratch("stderr");
+    let dir = scratch_dir.path();
     let scene = shipped("primitives.toml");
     std::fs::write(dir.join("broken.toml"), "[camera\n").unwrap();
     let (good, bad) = (scene.to_str().unwrap().to_string(), dir.join("broken.toml").to_string_lossy().into_owned());
@@ -201,7 +203,8 @@ fn a_broken_stderr_never_panics() {
 
 #[test]
 fn counts_the_command_line_sets_are_bounded_before_anything_is_allocated() {
-    let dir = scratch("limits");
+    let scratch_dir = scratch("limits");
+    let dir = scratch_dir.path();
     std::fs::copy(shipped("primitives.toml"), dir.join("scene.toml")).unwrap();
     std::fs::copy(shipped("fig3b.toml"), dir.join("surface.toml")).unwrap();
     for (args, says) in [
@@ -219,11 +222,11 @@ fn counts_the_command_line_sets_are_bounded_before_anything_is_allocated() {
         (&["mesh", "surface.toml", "--object", "surface", "-o", "m.obj", "--rings", "0"], "1 to 65536 rings"),
         (&["mesh", "surface.toml", "--object", "surface", "-o", "m.obj", "--segments", "2"], "3 to 65536 segments"),
     ] {
-        fails_and_keeps(&dir, args, says);
+        fails_and_keeps(dir, args, says);
     }
     // More threads than cores: rendered, with a note that says so.
     let out = Command::new(env!("CARGO_BIN_EXE_cga-trace"))
-        .current_dir(&dir)
+        .current_dir(dir)
         .args(["render", "scene.toml", "-o", "a.png", "--width", "8", "--threads", "1024"])
         .output()
         .unwrap();
@@ -236,8 +239,9 @@ fn counts_the_command_line_sets_are_bounded_before_anything_is_allocated() {
 
 /// A folder with a scene that reads a file of every role: an included file, a texture, an
 /// environment image and a mesh (beside a swept surface, for `mesh`).
-fn every_role(test: &str) -> PathBuf {
-    let dir = scratch(test);
+fn every_role(test: &str) -> tempfile::TempDir {
+    let scratch_dir = scratch(test);
+    let dir = scratch_dir.path();
     let scenes = shipped("");
     for (from, to) in [
         ("parts/studio.toml", "parts/studio.toml"),
@@ -257,12 +261,13 @@ fn every_role(test: &str) -> PathBuf {
          material = {{ colour = [1.0, 1.0, 1.0] }}\n"
     );
     std::fs::write(dir.join("scene.toml"), scene).unwrap();
-    dir
+    scratch_dir
 }
 
 #[test]
 fn no_input_of_any_role_can_be_an_output() {
-    let dir = every_role("roles");
+    let scratch_dir = every_role("roles");
+    let dir = scratch_dir.path();
     fn render(out: &str) -> Vec<&str> {
         vec!["render", "scene.toml", "-o", out, "--width", "16", "--height", "12"]
     }
@@ -271,7 +276,7 @@ fn no_input_of_any_role_can_be_an_output() {
     }
     // Sanity: the scene renders and meshes with outputs elsewhere.
     for args in [render("fine.png"), mesh("fine.obj")] {
-        let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(&dir).args(&args).output().unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(dir).args(&args).output().unwrap();
         assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
     let roles = [
@@ -283,13 +288,13 @@ fn no_input_of_any_role_can_be_an_output() {
     for (k, (input, role)) in roles.into_iter().enumerate() {
         // The input itself, however spelt: refused (by its role, or as no image or mesh).
         for name in [input.to_string(), format!("./{input}"), format!("parts/../{input}")] {
-            fails_and_keeps(&dir, &render(&name), "");
-            fails_and_keeps(&dir, &mesh(&name), "");
+            fails_and_keeps(dir, &render(&name), "");
+            fails_and_keeps(dir, &mesh(&name), "");
         }
         let extension = Path::new(input).extension().unwrap().to_str().unwrap();
         if matches!(extension, "png" | "obj") {
             let args = if extension == "png" { render(input) } else { mesh(input) };
-            fails_and_keeps(&dir, &args, role);
+            fails_and_keeps(dir, &args, role);
         }
         // Links to it under an image's and a mesh's name: refused by its role.
         #[cfg(unix)]
@@ -299,7 +304,7 @@ fn no_input_of_any_role_can_be_an_output() {
             std::fs::hard_link(dir.join(input), dir.join(&hard)).unwrap();
             for name in [&sym, &hard] {
                 let args = if kind == "png" { render(name) } else { mesh(name) };
-                fails_and_keeps(&dir, &args, role);
+                fails_and_keeps(dir, &args, role);
             }
         }
         // The scale beside a false-colour image, a link to the input.
@@ -309,7 +314,7 @@ fn no_input_of_any_role_can_be_an_output() {
             let out = format!("x{k}.png");
             let mut args = render(&out);
             args.extend(["--aov", "gaussian"]);
-            fails_and_keeps(&dir, &args, role);
+            fails_and_keeps(dir, &args, role);
         }
     }
 }
@@ -317,28 +322,29 @@ fn no_input_of_any_role_can_be_an_output() {
 #[cfg(unix)]
 #[test]
 fn frames_are_never_written_over_each_other() {
-    let dir = scratch("frames");
+    let scratch_dir = scratch("frames");
+    let dir = scratch_dir.path();
     std::fs::copy(shipped("motion.toml"), dir.join("scene.toml")).unwrap();
     fn frames(out: &str) -> Vec<&str> {
         vec!["render", "scene.toml", "-o", out, "--frames", "3", "--width", "8", "--height", "6"]
     }
     // A link from one frame to another, existing or not yet written, and a hard link.
     std::os::unix::fs::symlink("a_0001.png", dir.join("a_0000.png")).unwrap();
-    fails_and_keeps(&dir, &frames("a.png"), "are the same file");
+    fails_and_keeps(dir, &frames("a.png"), "are the same file");
     std::fs::write(dir.join("b_0002.png"), b"frame 2 of another run").unwrap();
     std::os::unix::fs::symlink("b_0002.png", dir.join("b_0000.png")).unwrap();
-    fails_and_keeps(&dir, &frames("b.png"), "are the same file");
+    fails_and_keeps(dir, &frames("b.png"), "are the same file");
     std::fs::write(dir.join("c_0000.png"), b"frame 0").unwrap();
     std::fs::hard_link(dir.join("c_0000.png"), dir.join("c_0001.png")).unwrap();
-    fails_and_keeps(&dir, &frames("c.png"), "are the same file");
+    fails_and_keeps(dir, &frames("c.png"), "are the same file");
     // Also when only part of the animation is rendered here.
     let mut some = frames("b.png");
     some.extend(["--frame-range", "0..1"]);
-    fails_and_keeps(&dir, &some, "are the same file");
+    fails_and_keeps(dir, &some, "are the same file");
     // Links elsewhere are written through.
     std::fs::create_dir(dir.join("out")).unwrap();
     std::os::unix::fs::symlink("out/d_0001.png", dir.join("d_0001.png")).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(&dir).args(frames("d.png")).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_cga-trace")).current_dir(dir).args(frames("d.png")).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(dir.join("out/d_0001.png").is_file() && dir.join("d_0002.png").is_file());
 }
@@ -367,7 +373,8 @@ fn within(dir: &Path, args: &[&str], seconds: u64) -> Output {
 #[cfg(unix)]
 #[test]
 fn a_pipe_or_device_named_by_a_scene_is_refused_at_once() {
-    let dir = every_role("pipes");
+    let scratch_dir = every_role("pipes");
+    let dir = scratch_dir.path();
     assert!(Command::new("mkfifo").arg(dir.join("pipe")).status().unwrap().success());
     let scene = std::fs::read_to_string(dir.join("scene.toml")).unwrap();
     for (input, says) in [
@@ -379,7 +386,7 @@ fn a_pipe_or_device_named_by_a_scene_is_refused_at_once() {
         for (name, kind) in [("pipe", "a named pipe"), ("/dev/zero", "a device"), ("parts", "a directory")] {
             let text = scene.replace(input, name);
             std::fs::write(dir.join("named.toml"), text).unwrap();
-            let out = within(&dir, &["render", "named.toml", "-o", "out.png", "--width", "8", "--height", "6"], 30);
+            let out = within(dir, &["render", "named.toml", "-o", "out.png", "--width", "8", "--height", "6"], 30);
             let stderr = String::from_utf8_lossy(&out.stderr);
             assert_eq!(out.status.code(), Some(1), "{input} as {name}: {stderr}");
             assert!(stderr.contains("named.toml:") && stderr.contains(kind), "{input} as {name}: {stderr}");

@@ -162,8 +162,9 @@ fn meshes_read_back_lie_on_the_surface_with_analytic_normals() {
 
 #[test]
 fn the_command_line_writes_each_format() {
-    let dir = std::env::temp_dir().join(format!("cga-trace-mesh-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    // Removed when the test ends, pass or fail.
+    let scratch = tempfile::Builder::new().prefix("cga-trace-mesh-").tempdir().unwrap();
+    let dir = scratch.path();
     let scene_file = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/fig3b.toml");
     for ext in ["obj", "ply", "glb"] {
         let out = dir.join(format!("m.{ext}"));
