@@ -158,7 +158,8 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
 /// `values[0] ^ values[1] ^ …`, left to right: the chain of `^`, row for row the same
 /// numbers. Where every step has a kernel it runs a block of rows at a time, its
 /// intermediates in the core's cache (for arrays about half the memory traffic of the steps
-/// one by one); otherwise it is the operators one by one.
+/// one by one), and two steps over arrays as one kernel; otherwise it is the operators one
+/// by one.
 #[pyfunction]
 #[pyo3(signature = (*values))]
 pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny>> {

@@ -4,7 +4,9 @@
 //! single value put in every lane — and run on rayon's threads in blocks for large arrays.
 //! The arrays' rows are read in place as the typed values they are (a generated type is
 //! `repr(C)`, its coefficients in field order). Every other product goes through the
-//! registry's storage-basis path ([`crate::classes`]).
+//! registry's storage-basis path ([`crate::classes`]). A chain of two outer products over
+//! arrays (the circle through three points) runs as one kernel, its intermediate never
+//! leaving the lanes.
 
 use crate::values::{Type, Values};
 use cga_core::ProductKind;
@@ -14,6 +16,9 @@ use std::marker::PhantomData;
 
 /// A product of an `A` and a `B` giving an `O`, on any lanes.
 trait Product {
+    /// Its kind, and the names of its operands' and result's classes.
+    const KIND: ProductKind;
+    const NAMES: [&'static str; 3];
     type A: Lanes + Send + Sync;
     type B: Lanes + Send + Sync;
     type O: Lanes + Send + Sync;
@@ -53,6 +58,20 @@ impl<P: Product> Kernel for FixedRight<P> {
     #[inline(always)]
     fn apply<L: Lane>(&self, a: Over<P::A, L>) -> Over<P::O, L> {
         P::op::<L>(a, splat::<P::B, L>(self.0))
+    }
+}
+
+/// Two products in a row, `(a ∘ b) ∘ c`, without leaving the lanes between them: the same
+/// operations in the same order as the steps one by one (so the same bits), with one
+/// transpose in and one out instead of one each per step.
+struct Fused<P, Q>(PhantomData<fn() -> (P, Q)>);
+
+impl<P: Product, Q: Product<A = P::O>> Kernel for Fused<P, Q> {
+    type Input = (P::A, P::B, Q::B);
+    type Output = Q::O;
+    #[inline(always)]
+    fn apply<L: Lane>(&self, (a, b, c): Over<(P::A, P::B, Q::B), L>) -> Over<Q::O, L> {
+        Q::op::<L>(P::op::<L>(a, b), c)
     }
 }
 
@@ -101,25 +120,31 @@ fn product_of<P: Product>(a: (&[f64], usize), b: (&[f64], usize), n: usize, k: u
     match (xs.len(), ys.len()) {
         (1, m) if m == n && n > 1 => run_blocks(&FixedLeft::<P>(xs[0]), ys, out),
         (m, 1) if m == n => run_blocks(&FixedRight::<P>(ys[0]), xs, out),
-        _ => {
-            let kernel = Rows::<P>(PhantomData);
-            let block = |pairs: &mut Vec<(P::A, P::B)>, (c, o): (usize, &mut [P::O])| {
-                for (j, o) in o.chunks_mut(PAIRS).enumerate() {
-                    let first = c * BLOCK + j * PAIRS;
-                    pairs.clear();
-                    pairs.extend(
-                        xs[first..first + o.len()].iter().copied().zip(ys[first..first + o.len()].iter().copied()),
-                    );
-                    run(&kernel, pairs, o).expect("equal lengths");
-                }
-            };
-            if n < THREADED {
-                let mut pairs = Vec::with_capacity(PAIRS);
-                out.chunks_mut(BLOCK).enumerate().for_each(|c| block(&mut pairs, c));
-            } else {
-                out.par_chunks_mut(BLOCK).enumerate().for_each_init(|| Vec::with_capacity(PAIRS), block);
-            }
+        _ => gathered(&Rows::<P>(PhantomData), |i| (xs[i], ys[i]), out),
+    }
+}
+
+/// `kernel` on row `i`'s input `row(i)` into `out[i]`, for every row: the inputs gathered
+/// [`PAIRS`] rows at a time into a buffer each thread reuses (no array of inputs as large as
+/// the operands), in blocks on threads for large arrays.
+fn gathered<K: Kernel + Sync>(kernel: &K, row: impl Fn(usize) -> K::Input + Sync, out: &mut [K::Output])
+where
+    K::Input: Send + Sync,
+    K::Output: Send + Sync,
+{
+    let block = |inputs: &mut Vec<K::Input>, (c, o): (usize, &mut [K::Output])| {
+        for (j, o) in o.chunks_mut(PAIRS).enumerate() {
+            let first = c * BLOCK + j * PAIRS;
+            inputs.clear();
+            inputs.extend((first..first + o.len()).map(&row));
+            run(kernel, inputs, o).expect("equal lengths");
         }
+    };
+    if out.len() < THREADED {
+        let mut inputs = Vec::with_capacity(PAIRS);
+        out.chunks_mut(BLOCK).enumerate().for_each(|c| block(&mut inputs, c));
+    } else {
+        out.par_chunks_mut(BLOCK).enumerate().for_each_init(|| Vec::with_capacity(PAIRS), block);
     }
 }
 
@@ -129,6 +154,8 @@ macro_rules! kernels {
         $(
             struct $name;
             impl Product for $name {
+                const KIND: ProductKind = ProductKind::$kind;
+                const NAMES: [&'static str; 3] = [stringify!($a), stringify!($b), stringify!($o)];
                 type A = cga_core::$a<f64>;
                 type B = cga_core::$b<f64>;
                 type O = cga_core::$o<f64>;
@@ -200,6 +227,36 @@ kernels! {
     PlanePlane: Regressive(Plane, Plane) -> Line, |a, b| a & b;
 }
 
+/// `(a ∘ b) ∘ c` for arrays of one length as `P` then `Q` fused, where the operands and the
+/// result `out` are their classes; `None` otherwise.
+fn fused_as<P: Product, Q: Product<A = P::O>>(
+    kind: ProductKind,
+    [a, b, c]: [&Values; 3],
+    out: &Type,
+    n: usize,
+) -> Option<Vec<f64>> {
+    let names = [a.ty.name, b.ty.name, c.ty.name, out.name];
+    if kind != P::KIND || kind != Q::KIND || names != [P::NAMES[0], P::NAMES[1], Q::NAMES[1], Q::NAMES[2]] {
+        return None;
+    }
+    let (xs, ys, zs) = (typed::<P::A>(&a.data, a.k()), typed::<P::B>(&b.data, b.k()), typed::<Q::B>(&c.data, c.k()));
+    let k = out.blades.len();
+    let mut data = crate::values::scratch(n * k);
+    gathered(&Fused::<P, Q>(PhantomData), |i| (xs[i], ys[i], zs[i]), typed_mut::<Q::O>(&mut data, k));
+    Some(data)
+}
+
+/// A chain of two steps of cga-core's classes over arrays of one length, fused where its
+/// kernels are (the circle through three points, the sphere through a pair and two points).
+fn fused(kind: ProductKind, values: &[&Values], out: &Type, n: usize) -> Option<Vec<f64>> {
+    let &[a, b, c] = values else { return None };
+    if n < 2 || [a, b, c].iter().any(|v| v.n != n || v.ty.algebra != crate::values::Algebra::Cga) {
+        return None;
+    }
+    fused_as::<VectorVector, BivectorVector>(kind, [a, b, c], out, n)
+        .or_else(|| fused_as::<BivectorVector, CircleVector>(kind, [a, b, c], out, n))
+}
+
 /// Rows a block of a chain takes: its intermediates (at most 32 coefficients a row) stay
 /// within a core's cache.
 const CHAIN_BLOCK: usize = 1024;
@@ -219,6 +276,9 @@ pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: 
     let known = (1..=steps).all(|i| KERNELS.contains(&(kind, types[i - 1].name, values[i].ty.name)));
     if !known || values.iter().any(|v| v.n != 1 && v.n != n) {
         return None;
+    }
+    if let Some(data) = fused(kind, values, types[steps], n) {
+        return Some(data);
     }
     let k = types[steps].blades.len();
     let mut out = crate::values::scratch(n * k);

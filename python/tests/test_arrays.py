@@ -99,6 +99,8 @@ def test_wedge_is_the_chain_of_outer_products_bit_for_bit():
         assert np.array_equal(cga.wedge(p, q, r).array, (p ^ q ^ r).array)
         assert np.array_equal(cga.wedge(p, q, r, s).array, (p ^ q ^ r ^ s).array)
         assert type(cga.wedge(p, q, r, s)) is cga.Sphere
+        pair = p ^ q
+        assert np.array_equal(cga.wedge(pair, r, s).array, (pair ^ r ^ s).array)
     # One value against arrays, at any place in the chain.
     one, many = cga.up([1.0, 2.0, 3.0]), cga.up(rng.normal(size=(3000, 3)))
     other = cga.up(rng.normal(size=(3000, 3)))
