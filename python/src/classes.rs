@@ -21,7 +21,7 @@ use std::sync::OnceLock;
 pub enum Code<F32, F16> {
     /// cga-core's.
     Cga(F32),
-    /// An algebra of 16 coefficients from cga-algebras (`pga`, `sta`).
+    /// An algebra of 16 coefficients from cga-algebras (`pga`, `sta`, `cga2`).
     Small(F16),
 }
 
@@ -84,7 +84,7 @@ fn products() -> &'static Products {
         let cga = product_table::<f64>()
             .into_iter()
             .map(|e| ((Algebra::Cga, e.kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Cga(e.eval) }));
-        cga.chain(pga::tables().0).chain(sta::tables().0).collect()
+        cga.chain(pga::tables().0).chain(sta::tables().0).chain(cga2::tables().0).collect()
     })
 }
 
@@ -98,7 +98,7 @@ fn unaries() -> &'static Unaries {
         let cga = unary_table::<f64>()
             .into_iter()
             .map(|e| ((Algebra::Cga, e.kind, e.input), Unary { output: e.output, code: Code::Cga(e.eval) }));
-        cga.chain(pga::tables().1).chain(sta::tables().1).collect()
+        cga.chain(pga::tables().1).chain(sta::tables().1).chain(cga2::tables().1).collect()
     })
 }
 
@@ -132,6 +132,7 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
     if algebra != Algebra::Cga && (a.ty.name == "Multivector" || b.ty.name == "Multivector") {
         let (code, dense) = match algebra {
             Algebra::Sta => (sta::dense_code(kind), sta::Multivector::ty()),
+            Algebra::Cga2 => (cga2::dense_code(kind), cga2::Multivector::ty()),
             _ => (pga::dense_code(kind), pga::Multivector::ty()),
         };
         let code = code.ok_or_else(|| {
@@ -639,6 +640,7 @@ pub fn type_named(algebra: Algebra, name: &str) -> Option<&'static Type> {
         Algebra::Cga => type_in(name),
         Algebra::Pga => pga::type_in(name),
         Algebra::Sta => sta::type_in(name),
+        Algebra::Cga2 => cga2::type_in(name),
     }
 }
 
@@ -648,6 +650,7 @@ pub fn wrap(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
         Algebra::Cga => wrap_in(py, values),
         Algebra::Pga => pga::wrap_in(py, values),
         Algebra::Sta => sta::wrap_in(py, values),
+        Algebra::Cga2 => cga2::wrap_in(py, values),
     }
 }
 
@@ -659,14 +662,17 @@ pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
 
 /// The values `obj` holds if it is a class of any algebra (what the operators take).
 pub fn any_values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
-    values_in(obj).or_else(|| pga::values_in(obj)).or_else(|| sta::values_in(obj))
+    values_in(obj).or_else(|| pga::values_in(obj)).or_else(|| sta::values_in(obj)).or_else(|| cga2::values_in(obj))
 }
 
-/// Adds cga-core's classes to the module, PGA's to its submodule `pga` and STA's to `sta`.
+/// Adds cga-core's classes to the module, PGA's to its submodule `pga`, STA's to `sta` and 2D
+/// CGA's to `cga2`.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     register_in(m)?;
     type Register = fn(&Bound<'_, PyModule>) -> PyResult<()>;
-    for (name, classes) in [("pga", pga::register_in as Register), ("sta", sta::register_in)] {
+    for (name, classes) in
+        [("pga", pga::register_in as Register), ("sta", sta::register_in), ("cga2", cga2::register_in)]
+    {
         let sub = PyModule::new(m.py(), name)?;
         classes(&sub)?;
         m.add_submodule(&sub)?;
@@ -796,6 +802,14 @@ small_algebra!(
     /// classes of `cga.sta`, with the same operators and arrays.
     sta, Sta, "cga.sta", cga_algebras::sta; Scalar, Vector, Bivector, Trivector, Pseudoscalar, Rotor;
     dense Multivector; covered by Scalar, Vector, Bivector, Trivector, Pseudoscalar
+);
+
+small_algebra!(
+    /// 2D conformal geometric algebra G(3,1) (cga-algebras' `cga2`: points
+    /// `x + ½x² ei + eo` of the plane, blades in the null basis `e1, e2, eo, ei`) as classes of
+    /// `cga.cga2`, with the same operators and arrays.
+    cga2, Cga2, "cga.cga2", cga_algebras::cga2; Scalar, Vector, PointPair, Circle, Pseudoscalar, Rotor, Motor, Even;
+    dense Multivector; covered by Scalar, Vector, PointPair, Circle, Pseudoscalar
 );
 
 /// Python's `NotImplemented`, so that the other operand may answer.

@@ -15,6 +15,8 @@ pub enum Algebra {
     Pga,
     /// cga-algebras' spacetime algebra, G(1,3) (`cga.sta`).
     Sta,
+    /// cga-algebras' 2D conformal geometric algebra, G(3,1) (`cga.cga2`).
+    Cga2,
 }
 
 /// A generated type as the bindings see it: its name, blades, where each sits in the storage
@@ -38,6 +40,7 @@ impl Type {
             Algebra::Cga => self.name.to_string(),
             Algebra::Pga => format!("pga.{}", self.name),
             Algebra::Sta => format!("sta.{}", self.name),
+            Algebra::Cga2 => format!("cga2.{}", self.name),
         }
     }
 }

@@ -208,6 +208,18 @@ class sta:
     Rotor: Any
     Multivector: Any
 
+class cga2:
+    """The classes of G(3,1), which :mod:`cga.cga2` binds."""
+    Scalar: Any
+    Vector: Any
+    PointPair: Any
+    Circle: Any
+    Pseudoscalar: Any
+    Rotor: Any
+    Motor: Any
+    Even: Any
+    Multivector: Any
+
 class Picture:
     @property
     def linear(self) -> NDArray[np.float64]: ...
