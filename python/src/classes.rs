@@ -145,15 +145,12 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
         PyTypeError::new_err(format!("{} {} {}: no class for {}", a.ty.name, symbol(kind), b.ty.name, entry.output))
     })?;
     let n = crate::values::broadcast(a, b)?;
-    match entry.code {
-        Code::Cga(eval) => {
-            if let Some(data) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out)) {
-                return Ok(Some(Values { ty: out, data, n, single: a.single && b.single }));
-            }
-            Values::zip(a, b, py, out, eval).map(Some)
-        }
-        Code::Small(eval) => Values::zip(a, b, py, out, move |x, y| widen(eval(&narrow(x), &narrow(y)))).map(Some),
+    if let Code::Cga(_) = entry.code
+        && let Some(data) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out))
+    {
+        return Ok(Some(Values { ty: out, data, n, single: a.single && b.single }));
     }
+    Values::zip(a, b, py, out, |x, y| entry.eval(x, y)).map(Some)
 }
 
 /// `values[0] ^ values[1] ^ …`, left to right: the chain of `^`, row for row the same
