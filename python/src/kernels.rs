@@ -8,10 +8,10 @@
 //! arrays (the circle through three points) runs as one kernel, its intermediate never
 //! leaving the lanes.
 
+use crate::threads::share;
 use crate::values::{Type, Values};
 use cga_core::ProductKind;
-use cga_core::simd::{Kernel, Lane, Lanes, Over, run, splat};
-use rayon::prelude::*;
+use cga_core::simd::{Columns, Kernel, Lane, Lanes, Over, run_columns, splat};
 use std::marker::PhantomData;
 
 /// A product of an `A` and a `B` giving an `O`, on any lanes.
@@ -92,59 +92,38 @@ fn typed_mut<X>(data: &mut [f64], k: usize) -> &mut [X] {
 
 /// Rows a thread takes at a time, and the array length from which threads are used.
 const BLOCK: usize = 8192;
-/// Rows paired at a time (their buffer stays in the core's cache).
-const PAIRS: usize = 512;
 const THREADED: usize = 1 << 15;
 
-/// `kernel` over `input` into `out`, in blocks on threads for large arrays.
-fn run_blocks<K: Kernel + Sync>(kernel: &K, input: &[K::Input], out: &mut [K::Output])
+/// `kernel` over `input` (an array, or arrays of one length read in place) into `out`, in
+/// blocks on threads for large arrays.
+fn run_blocks<K: Kernel + Sync, S: Columns<Item = K::Input> + Send + Sync>(kernel: &K, input: S, out: &mut [K::Output])
 where
-    K::Input: Send + Sync,
     K::Output: Send + Sync,
 {
-    if input.len() < THREADED {
-        run(kernel, input, out).expect("equal lengths");
+    if out.len() < THREADED {
+        run_columns(kernel, input, out).expect("equal lengths");
     } else {
-        out.par_chunks_mut(BLOCK).zip(input.par_chunks(BLOCK)).for_each(|(o, i)| {
-            run(kernel, i, o).expect("equal lengths");
-        });
+        share(
+            out,
+            BLOCK,
+            || (),
+            |(), c, o| {
+                let first = c * BLOCK;
+                run_columns(kernel, input.part(first..first + o.len()), o).expect("equal lengths");
+            },
+        );
     }
 }
 
 /// `P` on rows `a` and `b`, each as (data, coefficients a row), one of them broadcast where a
-/// single row, `n` rows of `k` coefficients into `out`. Two arrays are paired a block at a
-/// time, in a buffer each thread reuses (no array of pairs as large as the inputs).
+/// single row, `n` rows of `k` coefficients into `out`.
 fn product_of<P: Product>(a: (&[f64], usize), b: (&[f64], usize), n: usize, k: usize, out: &mut [f64]) {
     let (xs, ys) = (typed::<P::A>(a.0, a.1), typed::<P::B>(b.0, b.1));
     let out = typed_mut::<P::O>(out, k);
     match (xs.len(), ys.len()) {
         (1, m) if m == n && n > 1 => run_blocks(&FixedLeft::<P>(xs[0]), ys, out),
         (m, 1) if m == n => run_blocks(&FixedRight::<P>(ys[0]), xs, out),
-        _ => gathered(&Rows::<P>(PhantomData), |i| (xs[i], ys[i]), out),
-    }
-}
-
-/// `kernel` on row `i`'s input `row(i)` into `out[i]`, for every row: the inputs gathered
-/// [`PAIRS`] rows at a time into a buffer each thread reuses (no array of inputs as large as
-/// the operands), in blocks on threads for large arrays.
-fn gathered<K: Kernel + Sync>(kernel: &K, row: impl Fn(usize) -> K::Input + Sync, out: &mut [K::Output])
-where
-    K::Input: Send + Sync,
-    K::Output: Send + Sync,
-{
-    let block = |inputs: &mut Vec<K::Input>, (c, o): (usize, &mut [K::Output])| {
-        for (j, o) in o.chunks_mut(PAIRS).enumerate() {
-            let first = c * BLOCK + j * PAIRS;
-            inputs.clear();
-            inputs.extend((first..first + o.len()).map(&row));
-            run(kernel, inputs, o).expect("equal lengths");
-        }
-    };
-    if out.len() < THREADED {
-        let mut inputs = Vec::with_capacity(PAIRS);
-        out.chunks_mut(BLOCK).enumerate().for_each(|c| block(&mut inputs, c));
-    } else {
-        out.par_chunks_mut(BLOCK).enumerate().for_each_init(|| Vec::with_capacity(PAIRS), block);
+        _ => run_blocks(&Rows::<P>(PhantomData), (xs, ys), out),
     }
 }
 
@@ -242,7 +221,7 @@ fn fused_as<P: Product, Q: Product<A = P::O>>(
     let (xs, ys, zs) = (typed::<P::A>(&a.data, a.k()), typed::<P::B>(&b.data, b.k()), typed::<Q::B>(&c.data, c.k()));
     let k = out.blades.len();
     let mut data = crate::values::scratch(n * k);
-    gathered(&Fused::<P, Q>(PhantomData), |i| (xs[i], ys[i], zs[i]), typed_mut::<Q::O>(&mut data, k));
+    run_blocks(&Fused::<P, Q>(PhantomData), (xs, ys, zs), typed_mut::<Q::O>(&mut data, k));
     Some(data)
 }
 
@@ -309,7 +288,7 @@ pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: 
         let mut bufs = [Vec::new(), Vec::new()];
         out.chunks_mut(CHAIN_BLOCK * k).enumerate().for_each(|c| block(&mut bufs, c));
     } else {
-        out.par_chunks_mut(CHAIN_BLOCK * k).enumerate().for_each_init(|| [Vec::new(), Vec::new()], block);
+        share(&mut out, CHAIN_BLOCK * k, || [Vec::new(), Vec::new()], |bufs, c, o| block(bufs, (c, o)));
     }
     (!refused.into_inner()).then_some(out)
 }

@@ -12,6 +12,7 @@ mod fit;
 mod geometry;
 mod kernels;
 mod render;
+mod threads;
 mod toolkit;
 mod values;
 

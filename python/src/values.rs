@@ -3,7 +3,6 @@
 
 use crate::errors::{ShapeError, ValueError};
 use pyo3::prelude::*;
-use rayon::prelude::*;
 use std::sync::Mutex;
 
 /// An algebra with classes.
@@ -201,7 +200,15 @@ fn fill(out: &'static Type, n: usize, f: impl Fn(usize) -> [f64; 32] + Sync + Se
         }
     };
     if n >= PARALLEL_ROWS {
-        data.par_chunks_mut(k).enumerate().for_each(write);
+        let rows = PARALLEL_ROWS / 4;
+        crate::threads::share(
+            &mut data,
+            rows * k.max(1),
+            || (),
+            |(), c, block| {
+                block.chunks_mut(k.max(1)).enumerate().for_each(|(i, row)| write((c * rows + i, row)));
+            },
+        );
     } else {
         data.chunks_mut(k).enumerate().for_each(write);
     }

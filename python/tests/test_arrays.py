@@ -92,6 +92,19 @@ def test_every_lane_kernel_gives_the_registrys_bits(n):
             assert np.array_equal(got.array, want.array), (kind, left, right, n)
 
 
+def test_threads_share_the_rows_and_each_row_gets_its_own_answer():
+    # Rows are shared out in chunks (4096 rows through the storage basis, 8192 on lanes): the
+    # rows at chunk edges against the same product of those rows alone.
+    from cga import _cga
+
+    n = 70_000
+    a, b = cga.Circle(RNG.normal(size=(n, 10))), cga.Sphere(RNG.normal(size=(n, 5)))
+    lanes, storage = a & b, _cga._registry_product("Regressive", a, b)
+    for i in (0, 4095, 4096, 8191, 8192, 65_535, n - 1):
+        one = _cga._registry_product("Regressive", a[i], b[i])
+        assert np.array_equal(storage[i].array, one.array) and np.array_equal(lanes[i].array, one.array), i
+
+
 def test_wedge_is_the_chain_of_outer_products_bit_for_bit():
     rng = np.random.default_rng(11)
     for n in (1, 7, 5000, 100_000):

@@ -9,6 +9,8 @@
 //! - [`run`]: over slices of ordinary values, transposed into lanes and back in place:
 //!   eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on [`F64x4`]
 //!   with AVX2 (benches/README.md times both against Versor);
+//! - [`run_columns`]: the same over operands kept in separate arrays (a tuple of slices),
+//!   read in place;
 //! - [`map`]: the same with an `#[inline(always)]` closure on four or eight lanes.
 //!
 //! `run` and `run_packed` take the operation as a [`Kernel`] and compile it for each level
@@ -27,11 +29,13 @@
 //! assert_eq!(pairs[7], line(7) & sphere); // the same bits as one at a time
 //! ```
 
+mod columns;
 mod pack;
 #[cfg(target_arch = "x86_64")]
 mod transpose;
 mod wide;
 
+pub use columns::Columns;
 pub use pack::{Lanes, splat};
 pub use wide::{F64x4, F64x8, Lane, Mask4, Mask8};
 
@@ -125,7 +129,7 @@ impl Width for F64x4 {}
 impl Width for F64x8 {}
 
 mod rows {
-    use super::{F64x4, F64x8, Lane, Lanes, Over};
+    use super::{Columns, F64x4, F64x8, Lane, Lanes, Over};
 
     /// An operation on the lanes `L`: a [`Kernel`](super::Kernel) at `L`, or
     /// [`map`](super::map)'s closure.
@@ -142,23 +146,23 @@ mod rows {
         /// # Safety
         /// The CPU must have AVX2 and FMA.
         #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]);
+        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]);
         /// The loop compiled with AVX-512 enabled.
         ///
         /// # Safety
         /// The CPU must have AVX-512 F, DQ and VL, AVX2 and FMA.
         #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]);
+        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]);
     }
 
     impl Rows for F64x4 {
         #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
             // SAFETY: the caller's CPU has AVX2.
             unsafe { super::rows_avx2(f, input, out) }
         }
         #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
             // SAFETY: the caller's CPU has AVX-512.
             unsafe { super::rows4_avx512(f, input, out) }
         }
@@ -168,12 +172,12 @@ mod rows {
         /// Eight lanes are two AVX2 registers: packed by value (no eight-row transposes
         /// without AVX-512).
         #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
             // SAFETY: the caller's CPU has AVX2.
             unsafe { super::by_value_avx2(f, input, out) }
         }
         #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
             // SAFETY: the caller's CPU has AVX-512.
             unsafe { super::rows8_avx512(f, input, out) }
         }
@@ -240,20 +244,20 @@ fn map_at<L: Width, I: Lanes, R: Lanes>(
 /// The baseline loop: `L::LANES` values packed by value, a tail padded with copies of the
 /// last input.
 #[inline(always)]
-fn by_value<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
-    let n = L::LANES;
-    let whole = input.len() / n * n;
-    for (x, out) in input[..whole].chunks_exact(n).zip(out[..whole].chunks_exact_mut(n)) {
-        F::Output::unpack_lanes(f.op(F::Input::pack_lanes(x)), out);
+fn by_value<L: Lane, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    let (n, len) = (L::LANES, out.len());
+    let whole = len / n * n;
+    for (c, out) in out[..whole].chunks_exact_mut(n).enumerate() {
+        F::Output::unpack_lanes(f.op(input.pack_lanes::<L>(c * n)), out);
         not_across_iterations();
     }
-    if whole < input.len() {
+    if whole < len {
         // Room for the widest lanes, eight (`Width` is sealed to four and eight).
-        let last = input.len() - 1;
-        let padded: [F::Input; 8] = core::array::from_fn(|k| input[(whole + k).min(last)]);
+        let last = len - 1;
+        let padded: [F::Input; 8] = core::array::from_fn(|k| input.row((whole + k).min(last)));
         let mut lanes = [F::Output::pack_filler(); 8];
         F::Output::unpack_lanes(f.op(F::Input::pack_lanes(&padded[..n])), &mut lanes[..n]);
-        out[whole..].copy_from_slice(&lanes[..input.len() - whole]);
+        out[whole..].copy_from_slice(&lanes[..len - whole]);
     }
 }
 
@@ -264,6 +268,34 @@ fn by_value<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut [F::Output])
 /// the same bits at every level (no multiply–add is contracted). `None`, and nothing
 /// written, where the lengths differ.
 pub fn run<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
+    run_at(Level::detect(), kernel, input, out)
+}
+
+/// [`run`] on operands kept in separate arrays of one length (a tuple of slices, each an
+/// element of the kernel's tuple input: [`Columns`]), read in place: no array of tuples is
+/// built. The same loops, levels and bits as `run`; `None`, and nothing written, where a
+/// length differs.
+///
+/// ```
+/// use cga_core::simd::{Kernel, Lane, run_columns};
+/// use cga_core::{Bivector, Vector, up};
+/// struct Wedge;
+/// impl Kernel for Wedge {
+///     type Input = (Vector, Vector);
+///     type Output = Bivector;
+///     #[inline(always)]
+///     fn apply<L: Lane>(&self, (a, b): (Vector<L>, Vector<L>)) -> Bivector<L> {
+///         a ^ b
+///     }
+/// }
+/// let a: Vec<Vector> = (0..9).map(|k| up([k as f64, 0.0, 1.0])).collect();
+/// let b: Vec<Vector> = (0..9).map(|k| up([0.0, k as f64, 2.0])).collect();
+/// let mut pairs = vec![Bivector::zero(); 9];
+/// run_columns(&Wedge, (&a[..], &b[..]), &mut pairs).unwrap();
+/// assert_eq!(pairs[5], a[5] ^ b[5]);
+/// assert_eq!(run_columns(&Wedge, (&a[..], &b[1..]), &mut pairs), None);
+/// ```
+pub fn run_columns<K: Kernel, S: Columns<Item = K::Input>>(kernel: &K, input: S, out: &mut [K::Output]) -> Option<()> {
     run_at(Level::detect(), kernel, input, out)
 }
 
@@ -292,8 +324,13 @@ impl Level {
 }
 
 /// [`run`] at a given level (the tests run each one the CPU has).
-fn run_at<K: Kernel>(level: Level, kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
-    if input.len() != out.len() {
+fn run_at<K: Kernel, S: Columns<Item = K::Input>>(
+    level: Level,
+    kernel: &K,
+    input: S,
+    out: &mut [K::Output],
+) -> Option<()> {
+    if input.rows() != Some(out.len()) {
         return None;
     }
     let kernel = AtLanes(kernel);
@@ -303,7 +340,7 @@ fn run_at<K: Kernel>(level: Level, kernel: &K, input: &[K::Input], out: &mut [K:
         Level::Avx512 => unsafe { rows8_avx512(&kernel, input, out) },
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { rows_avx2(&kernel, input, out) },
-        Level::Baseline => by_value::<F64x4, _>(&kernel, input, out),
+        Level::Baseline => by_value::<F64x4, _, _>(&kernel, input, out),
     }
     Some(())
 }
@@ -311,7 +348,7 @@ fn run_at<K: Kernel>(level: Level, kernel: &K, input: &[K::Input], out: &mut [K:
 /// The four-lane loop compiled with AVX2 and FMA enabled.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn rows_avx2<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+unsafe fn rows_avx2<F: Op<F64x4>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
     // SAFETY: the CPU has AVX2.
     unsafe { rows4(f, input, out) }
 }
@@ -319,7 +356,7 @@ unsafe fn rows_avx2<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Outpu
 /// The by-value loop compiled with AVX2 and FMA enabled (eight lanes as two registers).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn by_value_avx2<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+unsafe fn by_value_avx2<L: Lane, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
     by_value(f, input, out)
 }
 
@@ -327,7 +364,7 @@ unsafe fn by_value_avx2<L: Lane, F: Op<L>>(f: &F, input: &[F::Input], out: &mut 
 /// vector registers AVX-512 gives (fewer spills than AVX2's 16).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-unsafe fn rows4_avx512<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
+unsafe fn rows4_avx512<F: Op<F64x4>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
     // SAFETY: AVX-512 implies AVX.
     unsafe { rows4(f, input, out) }
 }
@@ -338,18 +375,19 @@ unsafe fn rows4_avx512<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Ou
 /// The CPU must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn rows4<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
-    let whole = input.len() / 4 * 4;
-    for (x, y) in input[..whole].chunks_exact(4).zip(out[..whole].chunks_exact_mut(4)) {
+unsafe fn rows4<F: Op<F64x4>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    let whole = out.len() / 4 * 4;
+    for (c, y) in out[..whole].chunks_exact_mut(4).enumerate() {
         let rows = y.as_mut_ptr();
-        // SAFETY: the CPU has AVX; the rows are the chunks' four values.
+        // SAFETY: the CPU has AVX; the input has as many rows as `out` (checked by the
+        // caller), so rows `4c .. 4c + 4` exist, and the output's are the chunk's four.
         unsafe {
-            let lanes = F::Input::pack_rows([0, 1, 2, 3].map(|i| &raw const x[i]));
+            let lanes = input.pack_rows(4 * c);
             F::Output::unpack_rows(f.op(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
         }
         not_across_iterations();
     }
-    by_value::<F64x4, _>(f, &input[whole..], &mut out[whole..])
+    by_value::<F64x4, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
 }
 
 /// Eight at a time on [`F64x8`] by AVX-512 transposes in place, compiled with AVX-512
@@ -357,18 +395,19 @@ unsafe fn rows4<F: Op<F64x4>>(f: &F, input: &[F::Input], out: &mut [F::Output]) 
 /// [`map`]'s on eight lanes).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-unsafe fn rows8_avx512<F: Op<F64x8>>(f: &F, input: &[F::Input], out: &mut [F::Output]) {
-    let whole = input.len() / 8 * 8;
-    for (x, y) in input[..whole].chunks_exact(8).zip(out[..whole].chunks_exact_mut(8)) {
+unsafe fn rows8_avx512<F: Op<F64x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    let whole = out.len() / 8 * 8;
+    for (c, y) in out[..whole].chunks_exact_mut(8).enumerate() {
         let rows = y.as_mut_ptr();
-        // SAFETY: the CPU has AVX-512 F and DQ; the rows are the chunks' eight values.
+        // SAFETY: the CPU has AVX-512 F and DQ; the input has as many rows as `out`
+        // (checked by the caller), so rows `8c .. 8c + 8` exist.
         unsafe {
-            let lanes = F::Input::pack_rows8(core::array::from_fn(|i| &raw const x[i]));
+            let lanes = input.pack_rows8(8 * c);
             F::Output::unpack_rows8(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
         }
         not_across_iterations();
     }
-    by_value::<F64x8, _>(f, &input[whole..], &mut out[whole..])
+    by_value::<F64x8, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
 }
 
 /// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
@@ -505,6 +544,17 @@ mod tests {
         }
     }
 
+    /// Three operands: `(M x M̃ ∧ x) ∧ y`.
+    struct Wedged;
+    impl Kernel for Wedged {
+        type Input = (Motor, Vector, Vector);
+        type Output = Circle;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, (m, x, y): (Motor<L>, Vector<L>, Vector<L>)) -> Circle<L> {
+            (m.sandwich(x) ^ x) ^ y
+        }
+    }
+
     /// A motor given at run time, in every lane.
     struct MoveBy(Motor);
     impl Kernel for MoveBy {
@@ -621,8 +671,23 @@ mod tests {
             let mut got = vec![Vector::zero(); n];
             for level in levels() {
                 got.fill(Vector::zero());
-                run_at(level, &Sandwiched, &moved, &mut got).unwrap();
+                run_at(level, &Sandwiched, &moved[..], &mut got).unwrap();
                 assert_eq!(got, want, "run at {level:?}, n = {n}");
+            }
+            // The same operands as two arrays read in place.
+            let (motors, points): (Vec<Motor>, Vec<Vector>) = moved.iter().copied().unzip();
+            for level in levels() {
+                got.fill(Vector::zero());
+                run_at(level, &Sandwiched, (&motors[..], &points[..]), &mut got).unwrap();
+                assert_eq!(got, want, "columns at {level:?}, n = {n}");
+            }
+            let thirds: Vec<Vector> = (0..n).map(|k| point(k, 7.0)).collect();
+            let wedged: Vec<Circle> = (0..n).map(|k| (motors[k].sandwich(points[k]) ^ points[k]) ^ thirds[k]).collect();
+            let mut circles = vec![Circle::zero(); n];
+            for level in levels() {
+                circles.fill(Circle::zero());
+                run_at(level, &Wedged, (&motors[..], &points[..], &thirds[..]), &mut circles).unwrap();
+                assert_eq!(circles, wedged, "three columns at {level:?}, n = {n}");
             }
             for level in levels() {
                 got.fill(Vector::zero());
@@ -655,6 +720,9 @@ mod tests {
         let input = vec![(motor(1), point(1, 0.0)); 3];
         let mut out = vec![Vector::zero(); 2];
         assert_eq!(run(&Sandwiched, &input, &mut out), None);
+        let (motors, points): (Vec<Motor>, Vec<Vector>) = input.iter().copied().unzip();
+        assert_eq!(run_columns(&Sandwiched, (&motors[..2], &points[..]), &mut out), None);
+        assert_eq!(run_columns(&Sandwiched, (&motors[..], &points[..]), &mut out), None);
         assert_eq!(map(&input, &mut out, |(m, x): (Motor<F64x4>, Vector<F64x4>)| m.sandwich(x)), None);
         assert_eq!(out, vec![Vector::zero(); 2], "nothing written");
         let mut packed = vec![Vector::<F64x4>::zero(); 1];
