@@ -9,6 +9,7 @@
 //! - [`cga2`]: 2D conformal geometric algebra G(3,1) — points, point pairs, circles and
 //!   lines, rotors and motors.
 //! - [`sta`]: the spacetime algebra G(1,3) — `γ0..γ3` as `e0..e3`, `γ0² = 1`.
+//! - [`vga`]: the 3D vector algebra G(3) — vectors, bivectors, rotors.
 //! - [`g91`]: G(9,1), the ten-dimensional algebra of the tests of dimension.
 //!
 //! Each is checked product by product against its dense type and against kingdon's golden
@@ -18,5 +19,6 @@ pub mod cga2;
 pub mod g91;
 pub mod pga;
 pub mod sta;
+pub mod vga;
 
 pub use cga_core::Real;

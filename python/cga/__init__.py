@@ -19,9 +19,10 @@ rows at a time, with the same numbers)::
 object, and any rendered ``Picture``, as a picture), and ``cga.Scene`` renders scenes, read
 from files or built in code (:mod:`cga.scene`), to numpy arrays.
 
-``cga.pga`` is 3D projective geometric algebra G(3,0,1), ``cga.sta`` spacetime algebra G(1,3)
-and ``cga.cga2`` the plane's conformal algebra G(3,1), with the same classes and operators
-(:mod:`cga.pga`, :mod:`cga.sta`, :mod:`cga.cga2`). ``cga.random`` draws random objects of every class (:mod:`cga.random`); ``cga.fit_sphere``,
+``cga.pga`` is 3D projective geometric algebra G(3,0,1), ``cga.sta`` spacetime algebra G(1,3),
+``cga.cga2`` the plane's conformal algebra G(3,1) and ``cga.vga`` the 3D vector algebra G(3),
+with the same classes and operators (:mod:`cga.pga`, :mod:`cga.sta`, :mod:`cga.cga2`,
+:mod:`cga.vga`). ``cga.random`` draws random objects of every class (:mod:`cga.random`); ``cga.fit_sphere``,
 ``fit_circle``, ``fit_plane`` and ``fit_line`` fit objects to points by least squares.
 
 ``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
@@ -82,7 +83,7 @@ __all__ = [
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
     "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "fit_circle", "fit_line",
     "fit_plane", "fit_sphere", "from_clifford", "from_kingdon",
-    "cga2", "interop", "pga", "random", "sta", "to_clifford", "to_kingdon", "up", "wedge",
+    "cga2", "interop", "pga", "random", "sta", "to_clifford", "to_kingdon", "up", "vga", "wedge",
 ]
 
 
@@ -97,6 +98,6 @@ def __getattr__(name):
     if name in _INTEROP:
         interop = importlib.import_module(".interop", __name__)
         return interop if name == "interop" else getattr(interop, name)
-    if name in ("random", "pga", "sta", "cga2"):
+    if name in ("random", "pga", "sta", "cga2", "vga"):
         return importlib.import_module("." + name, __name__)
     raise AttributeError(f"module 'cga' has no attribute {name!r}")

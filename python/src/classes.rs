@@ -13,16 +13,16 @@ use pyo3::exceptions::{PyIndexError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyFloat, PyInt, PySlice};
 use std::collections::HashMap;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
-/// A generated map's code on storage-basis arrays: CGA's of 32 coefficients, or PGA's of 16
-/// (held in the first 16 of 32, as the classes hold every algebra's values).
-#[derive(Clone, Copy)]
-pub enum Code<F32, F16> {
+/// A generated map's code on storage-basis arrays of 32 coefficients: cga-core's own, or
+/// another algebra's on its own storage (of at most 32 coefficients, held in the first of the
+/// 32 as the classes hold every algebra's values).
+pub enum Code<F, D: ?Sized> {
     /// cga-core's.
-    Cga(F32),
-    /// An algebra of 16 coefficients from cga-algebras (`pga`, `sta`, `cga2`).
-    Small(F16),
+    Cga(F),
+    /// Another algebra's, between the storage arrays.
+    Other(Arc<D>),
 }
 
 /// A product's code on storage arrays of `N` coefficients.
@@ -31,35 +31,51 @@ type Binary<const N: usize> = fn(&[f64; N], &[f64; N]) -> [f64; N];
 /// A unary map's code on storage arrays of `N` coefficients.
 type Single<const N: usize> = fn(&[f64; N]) -> [f64; N];
 
+/// Another algebra's product, on storage arrays of 32.
+pub type OtherBinary = dyn Fn(&[f64; 32], &[f64; 32]) -> [f64; 32] + Send + Sync;
+
+/// Another algebra's unary map, on storage arrays of 32.
+pub type OtherSingle = dyn Fn(&[f64; 32]) -> [f64; 32] + Send + Sync;
+
 /// A generated product of two types: its result type and code.
-#[derive(Clone, Copy)]
 pub struct Product {
     pub output: &'static str,
-    pub code: Code<Binary<32>, Binary<16>>,
+    pub code: Code<Binary<32>, OtherBinary>,
 }
 
 /// A generated unary map of one type: its result type and code.
-#[derive(Clone, Copy)]
 pub struct Unary {
     pub output: &'static str,
-    pub code: Code<Single<32>, Single<16>>,
+    pub code: Code<Single<32>, OtherSingle>,
 }
 
-/// The first 16 of 32 storage coefficients, and back.
-fn narrow(x: &[f64; 32]) -> [f64; 16] {
+/// The first `N` of 32 storage coefficients, and back.
+fn narrow<const N: usize>(x: &[f64; 32]) -> [f64; N] {
     std::array::from_fn(|k| x[k])
 }
 
-fn widen(x: [f64; 16]) -> [f64; 32] {
-    std::array::from_fn(|k| if k < 16 { x[k] } else { 0.0 })
+fn widen<const N: usize>(x: [f64; N]) -> [f64; 32] {
+    std::array::from_fn(|k| if k < N { x[k] } else { 0.0 })
+}
+
+/// A product of an algebra with `N` storage coefficients, on storage arrays of 32.
+fn widened<const N: usize>(f: Binary<N>) -> Arc<OtherBinary> {
+    const { assert!(N <= 32, "the classes hold at most 32 coefficients") };
+    Arc::new(move |a, b| widen(f(&narrow(a), &narrow(b))))
+}
+
+/// A unary map of an algebra with `N` storage coefficients, on storage arrays of 32.
+fn widened_single<const N: usize>(f: Single<N>) -> Arc<OtherSingle> {
+    const { assert!(N <= 32, "the classes hold at most 32 coefficients") };
+    Arc::new(move |a| widen(f(&narrow(a))))
 }
 
 impl Product {
     /// The product of two storage-basis values.
     pub fn eval(&self, a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
-        match self.code {
+        match &self.code {
             Code::Cga(f) => f(a, b),
-            Code::Small(f) => widen(f(&narrow(a), &narrow(b))),
+            Code::Other(f) => f(a, b),
         }
     }
 }
@@ -67,39 +83,84 @@ impl Product {
 impl Unary {
     /// The map of a storage-basis value.
     pub fn eval(&self, a: &[f64; 32]) -> [f64; 32] {
-        match self.code {
+        match &self.code {
             Code::Cga(f) => f(a),
-            Code::Small(f) => widen(f(&narrow(a))),
+            Code::Other(f) => f(a),
         }
     }
 }
 
-/// Generated products by algebra, kind and operand types.
-type Products = HashMap<(Algebra, ProductKind, &'static str, &'static str), Product>;
+/// A product's key: algebra, kind and operand types.
+pub type ProductKey = (Algebra, ProductKind, &'static str, &'static str);
 
-/// Every generated product of every algebra with classes, by algebra, kind and operand types.
-fn products() -> &'static Products {
-    static TABLE: OnceLock<Products> = OnceLock::new();
-    TABLE.get_or_init(|| {
-        let cga = product_table::<f64>()
-            .into_iter()
-            .map(|e| ((Algebra::Cga, e.kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Cga(e.eval) }));
-        cga.chain(pga::tables().0).chain(sta::tables().0).chain(cga2::tables().0).collect()
-    })
+/// A unary map's key: algebra, kind and operand type.
+pub type UnaryKey = (Algebra, UnaryKind, &'static str);
+
+/// An algebra's products and unary maps, keyed.
+pub type Tables = (Vec<(ProductKey, Product)>, Vec<(UnaryKey, Unary)>);
+
+/// An algebra's dense type, and its products' code by kind (`None` where it defines none).
+pub type Dense = (fn() -> &'static Type, fn(ProductKind) -> Option<Binary<32>>);
+
+/// An algebra's classes as the operators reach them: one entry of [`ALGEBRAS`] each.
+pub struct Classes {
+    /// The algebra (its Python module).
+    pub algebra: Algebra,
+    /// Its type of a name, where that is a class.
+    pub type_in: fn(&str) -> Option<&'static Type>,
+    /// Its values as an object of their type's class.
+    pub wrap_in: fn(Python<'_>, Values) -> PyResult<Py<PyAny>>,
+    /// The values an object holds, where it is one of its classes.
+    pub values_in: for<'a, 'py> fn(&'a Bound<'py, PyAny>) -> Option<&'a Values>,
+    /// Adds its classes to a module.
+    pub register_in: fn(&Bound<'_, PyModule>) -> PyResult<()>,
+    /// Its generated products and unary maps.
+    pub tables: fn() -> Tables,
+    /// Its dense type and the products on it, where mixed results take that class.
+    pub dense: Option<Dense>,
 }
 
-/// Generated unary maps by algebra, kind and operand type.
-type Unaries = HashMap<(Algebra, UnaryKind, &'static str), Unary>;
+/// Every algebra with classes: cga-core's (the package's own), then each in its submodule.
+/// An algebra declared with `algebra!` joins with one `small_algebra!` line and one entry here.
+static ALGEBRAS: [Classes; 5] = [
+    Classes {
+        algebra: Algebra::CGA,
+        type_in,
+        wrap_in,
+        values_in,
+        register_in,
+        tables: || {
+            let products = product_table::<f64>()
+                .into_iter()
+                .map(|e| ((Algebra::CGA, e.kind, e.lhs, e.rhs), Product { output: e.output, code: Code::Cga(e.eval) }));
+            let unaries = unary_table::<f64>()
+                .into_iter()
+                .map(|e| ((Algebra::CGA, e.kind, e.input), Unary { output: e.output, code: Code::Cga(e.eval) }));
+            (products.collect(), unaries.collect())
+        },
+        dense: None,
+    },
+    pga::CLASSES,
+    sta::CLASSES,
+    cga2::CLASSES,
+    vga::CLASSES,
+];
+
+/// The classes of `algebra`.
+fn classes_of(algebra: Algebra) -> &'static Classes {
+    ALGEBRAS.iter().find(|c| c.algebra == algebra).expect("every value's algebra has classes")
+}
+
+/// Every generated product of every algebra with classes, by algebra, kind and operand types.
+fn products() -> &'static HashMap<ProductKey, Product> {
+    static TABLE: OnceLock<HashMap<ProductKey, Product>> = OnceLock::new();
+    TABLE.get_or_init(|| ALGEBRAS.iter().flat_map(|c| (c.tables)().0).collect())
+}
 
 /// Every generated unary map of every algebra with classes, by algebra, kind and operand type.
-fn unaries() -> &'static Unaries {
-    static TABLE: OnceLock<Unaries> = OnceLock::new();
-    TABLE.get_or_init(|| {
-        let cga = unary_table::<f64>()
-            .into_iter()
-            .map(|e| ((Algebra::Cga, e.kind, e.input), Unary { output: e.output, code: Code::Cga(e.eval) }));
-        cga.chain(pga::tables().1).chain(sta::tables().1).chain(cga2::tables().1).collect()
-    })
+fn unaries() -> &'static HashMap<UnaryKey, Unary> {
+    static TABLE: OnceLock<HashMap<UnaryKey, Unary>> = OnceLock::new();
+    TABLE.get_or_init(|| ALGEBRAS.iter().flat_map(|c| (c.tables)().1).collect())
 }
 
 /// The symbol of a product in messages.
@@ -129,13 +190,11 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
             b.ty.describe()
         )));
     }
-    if algebra != Algebra::Cga && (a.ty.name == "Multivector" || b.ty.name == "Multivector") {
-        let (code, dense) = match algebra {
-            Algebra::Sta => (sta::dense_code(kind), sta::Multivector::ty()),
-            Algebra::Cga2 => (cga2::dense_code(kind), cga2::Multivector::ty()),
-            _ => (pga::dense_code(kind), pga::Multivector::ty()),
-        };
-        let code = code.ok_or_else(|| {
+    if let Some((dense, code)) = classes_of(algebra).dense
+        && (a.ty.name == "Multivector" || b.ty.name == "Multivector")
+    {
+        let dense = dense();
+        let code = code(kind).ok_or_else(|| {
             PyTypeError::new_err(format!("{}: no {} is defined on the dense type", dense.describe(), symbol(kind)))
         })?;
         return Values::zip(a, b, py, dense, code).map(Some);
@@ -172,11 +231,11 @@ pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny
     let mut types = vec![all[0].ty];
     for v in &all[1..] {
         let last = types[types.len() - 1].name;
-        let key = (Algebra::Cga, ProductKind::Outer, last, v.ty.name);
+        let key = (Algebra::CGA, ProductKind::Outer, last, v.ty.name);
         match products()
             .get(&key)
-            .filter(|_| all[0].ty.algebra == Algebra::Cga)
-            .and_then(|e| type_named(Algebra::Cga, e.output))
+            .filter(|_| all[0].ty.algebra == Algebra::CGA)
+            .and_then(|e| type_named(Algebra::CGA, e.output))
         {
             Some(t) => types.push(t),
             None => break,
@@ -214,9 +273,9 @@ pub fn registry_product(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bo
     let (Some(a), Some(b)) = (values_of(a), values_of(b)) else {
         return Err(PyTypeError::new_err("_registry_product takes two cga values"));
     };
-    let key = (Algebra::Cga, kind, a.ty.name, b.ty.name);
+    let key = (Algebra::CGA, kind, a.ty.name, b.ty.name);
     let entry = products().get(&key).ok_or_else(|| PyTypeError::new_err("not generated"))?;
-    let out = type_named(Algebra::Cga, entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
+    let out = type_named(Algebra::CGA, entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
     wrap(py, Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?)
 }
 
@@ -352,9 +411,9 @@ macro_rules! classes {
         (&algebra::$name::<f64>::BLADES[..], &algebra::$name::<f64>::STORAGE_INDEX[..])
     };
     (@basis $name:ident dense) => {
-        (algebra_storage_blades(), &STORAGE_ORDER[..])
+        (&storage_basis().0[..], &storage_basis().1[..])
     };
-    ($algebra:ident, $module:literal, $repr:ident; $($name:ident $($dense:ident)?),* $(,)?) => {
+    ($algebra:expr, $module:literal, $repr:ident; $($name:ident $($dense:ident)?),* $(,)?) => {
         $(
             #[doc = concat!(
                 "`", stringify!($name), "` of ", $module, ": one value (coefficients of shape (k,)) or an ",
@@ -368,7 +427,7 @@ macro_rules! classes {
                 pub fn ty() -> &'static Type {
                     static TYPE: std::sync::LazyLock<Type> = std::sync::LazyLock::new(|| {
                         let (blades, storage) = classes!(@basis $name $($dense)?);
-                        Type { name: stringify!($name), blades, storage, algebra: crate::values::Algebra::$algebra }
+                        Type { name: stringify!($name), blades, storage, algebra: $algebra }
                     });
                     &TYPE
                 }
@@ -609,7 +668,7 @@ macro_rules! classes {
 use cga_core as algebra;
 
 classes!(
-    Cga, "cga", display;
+    Algebra::CGA, "cga", display;
     Scalar,
     Infinity,
     Vector,
@@ -633,22 +692,12 @@ classes!(
 
 /// The type named `name` of `algebra`, if it is a class.
 pub fn type_named(algebra: Algebra, name: &str) -> Option<&'static Type> {
-    match algebra {
-        Algebra::Cga => type_in(name),
-        Algebra::Pga => pga::type_in(name),
-        Algebra::Sta => sta::type_in(name),
-        Algebra::Cga2 => cga2::type_in(name),
-    }
+    (classes_of(algebra).type_in)(name)
 }
 
 /// `values` as an object of its type's class.
 pub fn wrap(py: Python<'_>, values: Values) -> PyResult<Py<PyAny>> {
-    match values.ty.algebra {
-        Algebra::Cga => wrap_in(py, values),
-        Algebra::Pga => pga::wrap_in(py, values),
-        Algebra::Sta => sta::wrap_in(py, values),
-        Algebra::Cga2 => cga2::wrap_in(py, values),
-    }
+    (classes_of(values.ty.algebra).wrap_in)(py, values)
 }
 
 /// The values `obj` holds if it is one of cga-core's classes (what the geometry, figures and
@@ -659,20 +708,21 @@ pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
 
 /// The values `obj` holds if it is a class of any algebra (what the operators take).
 pub fn any_values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
-    values_in(obj).or_else(|| pga::values_in(obj)).or_else(|| sta::values_in(obj)).or_else(|| cga2::values_in(obj))
+    ALGEBRAS.iter().find_map(|c| (c.values_in)(obj))
 }
 
-/// Adds cga-core's classes to the module, PGA's to its submodule `pga`, STA's to `sta` and 2D
-/// CGA's to `cga2`.
+/// Adds cga-core's classes to the module and every other algebra's to its submodule
+/// (`cga.pga`'s to `pga`).
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    register_in(m)?;
-    type Register = fn(&Bound<'_, PyModule>) -> PyResult<()>;
-    for (name, classes) in
-        [("pga", pga::register_in as Register), ("sta", sta::register_in), ("cga2", cga2::register_in)]
-    {
-        let sub = PyModule::new(m.py(), name)?;
-        classes(&sub)?;
-        m.add_submodule(&sub)?;
+    for c in &ALGEBRAS {
+        match c.algebra.0.strip_prefix("cga.") {
+            None => (c.register_in)(m)?,
+            Some(name) => {
+                let sub = PyModule::new(m.py(), name)?;
+                (c.register_in)(&sub)?;
+                m.add_submodule(&sub)?;
+            }
+        }
     }
     Ok(())
 }
@@ -684,14 +734,15 @@ pub fn coefficients(v: &Values, i: usize) -> String {
     format!("{}({})", v.ty.name, terms.join(", "))
 }
 
-/// An algebra of 16 coefficients from cga-algebras as a module of classes: `$module` (the
-/// Rust module), the algebra's crate module `$path`, its classes, its dense type and the
-/// types whose blades cover the storage basis.
+/// An algebra declared with `algebra!` (of at most 32 storage coefficients) as a module of
+/// classes: `$module` (the Rust module), `$python` its Python module, the algebra's crate
+/// module `$path`, its classes, its dense type and the types whose blades cover the storage
+/// basis. Its [`Classes`] are `$module::CLASSES`, for [`ALGEBRAS`].
 macro_rules! small_algebra {
-    ($(#[$doc:meta])* $module:ident, $variant:ident, $python:literal, $path:path; $($class:ident),*; dense $dense:ident; covered by $($cover:ident),*) => {
+    ($(#[$doc:meta])* $module:ident, $python:literal, $path:path; $($class:ident),*; dense $dense:ident; covered by $($cover:ident),*) => {
         $(#[$doc])*
         pub mod $module {
-            use super::{Binary, Code, Product, ProductKind, Unary, UnaryKind, narrow, widen};
+            use super::{Binary, Classes, Code, Product, ProductKind, Tables, Unary, UnaryKind, narrow, widen, widened, widened_single};
             use crate::values::{Algebra, Type, Values};
             use numpy::PyArrayDyn;
             use pyo3::IntoPyObjectExt;
@@ -699,31 +750,45 @@ macro_rules! small_algebra {
             use pyo3::prelude::*;
             use $path as algebra;
 
-            classes!($variant, $python, coefficients; $($class,)* $dense dense);
+            /// The algebra.
+            pub const ALGEBRA: Algebra = Algebra($python);
 
-            /// The storage basis in order, for the dense type.
-            const STORAGE_ORDER: [usize; 16] = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
+            classes!(ALGEBRA, $python, coefficients; $($class,)* $dense dense);
 
-            /// The storage basis's blades by index, as the algebra spells them: read from the
-            /// sparse types that hold them all.
-            fn algebra_storage_blades() -> &'static [&'static str] {
-                static NAMES: std::sync::LazyLock<Vec<&'static str>> = std::sync::LazyLock::new(|| {
-                    let mut names = vec![""; 16];
+            /// Its classes, for the operators.
+            pub const CLASSES: Classes = Classes {
+                algebra: ALGEBRA,
+                type_in,
+                wrap_in,
+                values_in,
+                register_in,
+                tables,
+                dense: Some((Multivector::ty, dense_code)),
+            };
+
+            /// The storage basis's blades by index, as the algebra spells them (read from the
+            /// sparse types that hold them all), and its indices in order.
+            fn storage_basis() -> &'static (Vec<&'static str>, Vec<usize>) {
+                static BASIS: std::sync::LazyLock<(Vec<&'static str>, Vec<usize>)> = std::sync::LazyLock::new(|| {
+                    let mut names = vec![""; 32];
+                    let mut width = 0;
                     $(for (b, &i) in algebra::$cover::<f64>::BLADES.iter().zip(&algebra::$cover::<f64>::STORAGE_INDEX) {
                         names[i] = b;
+                        width = width.max(i + 1);
                     })*
-                    names
+                    names.truncate(width);
+                    (names, (0..width).collect())
                 });
-                &NAMES
+                &BASIS
             }
 
             /// Its products and unary maps, keyed as the classes look them up.
-            pub fn tables() -> (Vec<((Algebra, ProductKind, &'static str, &'static str), Product)>, Vec<((Algebra, UnaryKind, &'static str), Unary)>) {
+            fn tables() -> Tables {
                 let products = algebra::product_table::<f64>().into_iter().map(|e| {
-                    ((Algebra::$variant, product_kind(e.kind), e.lhs, e.rhs), Product { output: e.output, code: Code::Small(e.eval) })
+                    ((ALGEBRA, product_kind(e.kind), e.lhs, e.rhs), Product { output: e.output, code: Code::Other(widened(e.eval)) })
                 });
                 let unaries = algebra::unary_table::<f64>().into_iter().map(|e| {
-                    ((Algebra::$variant, unary_kind(e.kind), e.input), Unary { output: e.output, code: Code::Small(e.eval) })
+                    ((ALGEBRA, unary_kind(e.kind), e.input), Unary { output: e.output, code: Code::Other(widened_single(e.eval)) })
                 });
                 (products.collect(), unaries.collect())
             }
@@ -731,7 +796,7 @@ macro_rules! small_algebra {
             /// A product with the dense type, for which no table is generated: both operands
             /// as dense values and the dense type's own product; `None` for the sandwich and
             /// the scalar product, which it does not define.
-            pub fn dense_code(kind: ProductKind) -> Option<Binary<32>> {
+            fn dense_code(kind: ProductKind) -> Option<Binary<32>> {
                 use algebra::{
                     CommutatorProduct, GeometricProduct, InnerProduct, LeftContraction, Multivector as Dense,
                     OuterProduct, RegressiveProduct, RightContraction,
@@ -790,14 +855,14 @@ macro_rules! small_algebra {
 small_algebra!(
     /// 3D projective geometric algebra G(3,0,1) (cga-algebras' `pga`: bivector.net's and
     /// kingdon's conventions) as classes of `cga.pga`, with the same operators and arrays.
-    pga, Pga, "cga.pga", cga_algebras::pga; Scalar, Plane, Line, Point, Pseudoscalar, Motor; dense Multivector;
+    pga, "cga.pga", cga_algebras::pga; Scalar, Plane, Line, Point, Pseudoscalar, Motor; dense Multivector;
     covered by Scalar, Plane, Line, Point, Pseudoscalar
 );
 
 small_algebra!(
     /// Spacetime algebra G(1,3) (cga-algebras' `sta`: `e0² = +1`, `e1² = e2² = e3² = −1`) as
     /// classes of `cga.sta`, with the same operators and arrays.
-    sta, Sta, "cga.sta", cga_algebras::sta; Scalar, Vector, Bivector, Trivector, Pseudoscalar, Rotor;
+    sta, "cga.sta", cga_algebras::sta; Scalar, Vector, Bivector, Trivector, Pseudoscalar, Rotor;
     dense Multivector; covered by Scalar, Vector, Bivector, Trivector, Pseudoscalar
 );
 
@@ -805,8 +870,15 @@ small_algebra!(
     /// 2D conformal geometric algebra G(3,1) (cga-algebras' `cga2`: points
     /// `x + ½x² ei + eo` of the plane, blades in the null basis `e1, e2, eo, ei`) as classes of
     /// `cga.cga2`, with the same operators and arrays.
-    cga2, Cga2, "cga.cga2", cga_algebras::cga2; Scalar, Vector, PointPair, Circle, Pseudoscalar, Rotor, Motor, Even;
+    cga2, "cga.cga2", cga_algebras::cga2; Scalar, Vector, PointPair, Circle, Pseudoscalar, Rotor, Motor, Even;
     dense Multivector; covered by Scalar, Vector, PointPair, Circle, Pseudoscalar
+);
+
+small_algebra!(
+    /// The 3D vector algebra G(3) (cga-algebras' `vga`: `e1, e2, e3` orthonormal) as classes
+    /// of `cga.vga`, with the same operators and arrays.
+    vga, "cga.vga", cga_algebras::vga; Scalar, Vector, Bivector, Pseudoscalar, Rotor, Odd;
+    dense Multivector; covered by Scalar, Vector, Bivector, Pseudoscalar
 );
 
 /// Python's `NotImplemented`, so that the other operand may answer.

@@ -34,7 +34,7 @@ pub fn add(mut figure: Figure, values: &Values, colour: &str, label: Option<&str
 /// One value (or array) drawn alone at 320 × 240 as PNG bytes; `None` where it has no picture
 /// (a versor, a zero blade), so that a notebook shows its text instead.
 pub fn png(py: Python<'_>, values: &Values) -> Option<Vec<u8>> {
-    if values.ty.algebra != crate::values::Algebra::Cga {
+    if values.ty.algebra != crate::values::Algebra::CGA {
         return None;
     }
     let figure = add(Figure::new().resolution(320, 240), values, PALETTE[0], None);

@@ -229,7 +229,7 @@ fn fused_as<P: Product, Q: Product<A = P::O>>(
 /// kernels are (the circle through three points, the sphere through a pair and two points).
 fn fused(kind: ProductKind, values: &[&Values], out: &Type, n: usize) -> Option<Vec<f64>> {
     let &[a, b, c] = values else { return None };
-    if n < 2 || [a, b, c].iter().any(|v| v.n != n || v.ty.algebra != crate::values::Algebra::Cga) {
+    if n < 2 || [a, b, c].iter().any(|v| v.n != n || v.ty.algebra != crate::values::Algebra::CGA) {
         return None;
     }
     fused_as::<VectorVector, BivectorVector>(kind, [a, b, c], out, n)

@@ -5,17 +5,13 @@ use crate::errors::{ShapeError, ValueError};
 use pyo3::prelude::*;
 use std::sync::Mutex;
 
-/// An algebra with classes.
+/// An algebra with classes, named by its Python module (`cga`, `cga.pga`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Algebra {
-    /// cga-core's G(4,1).
-    Cga,
-    /// cga-algebras' PGA, G(3,0,1) (`cga.pga`).
-    Pga,
-    /// cga-algebras' spacetime algebra, G(1,3) (`cga.sta`).
-    Sta,
-    /// cga-algebras' 2D conformal geometric algebra, G(3,1) (`cga.cga2`).
-    Cga2,
+pub struct Algebra(pub &'static str);
+
+impl Algebra {
+    /// cga-core's G(4,1), the package's own (`cga`).
+    pub const CGA: Algebra = Algebra("cga");
 }
 
 /// A generated type as the bindings see it: its name, blades, where each sits in the storage
@@ -35,11 +31,9 @@ pub struct Type {
 impl Type {
     /// Its name with its algebra's where that is not cga-core's: `Line`, `pga.Line`.
     pub fn describe(&self) -> String {
-        match self.algebra {
-            Algebra::Cga => self.name.to_string(),
-            Algebra::Pga => format!("pga.{}", self.name),
-            Algebra::Sta => format!("sta.{}", self.name),
-            Algebra::Cga2 => format!("cga2.{}", self.name),
+        match self.algebra.0.strip_prefix("cga.") {
+            Some(module) => format!("{module}.{}", self.name),
+            None => self.name.to_string(),
         }
     }
 }

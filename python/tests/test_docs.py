@@ -14,7 +14,7 @@ ROOT = os.path.join(HERE, "..", "..")
 
 
 def test_the_module_doctests_pass():
-    for module in (cga, cga.interop, cga.random, cga.pga, cga.sta, cga.cga2):
+    for module in (cga, cga.interop, cga.random, cga.pga, cga.sta, cga.cga2, cga.vga):
         result = doctest.testmod(module, verbose=False)
         assert result.attempted > 0 and result.failed == 0, module.__name__
 

@@ -220,6 +220,16 @@ class cga2:
     Even: Any
     Multivector: Any
 
+class vga:
+    """The classes of G(3), which :mod:`cga.vga` binds."""
+    Scalar: Any
+    Vector: Any
+    Bivector: Any
+    Pseudoscalar: Any
+    Rotor: Any
+    Odd: Any
+    Multivector: Any
+
 class Picture:
     @property
     def linear(self) -> NDArray[np.float64]: ...

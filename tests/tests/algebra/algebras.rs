@@ -1,5 +1,6 @@
 //! The shipped algebras of `cga-algebras` besides PGA (tests/tests/algebra/pga.rs) and G(9,1)
-//! (tests/tests/algebra/dimension.rs): 2D CGA G(3,1) and the spacetime algebra G(1,3). Each dense
+//! (tests/tests/algebra/dimension.rs): 2D CGA G(3,1), the spacetime algebra G(1,3) and the
+//! vector algebra G(3) (its products against kingdon in python/tests/test_vga.py). Each dense
 //! type against kingdon 3.0.0 (`tools/kingdon_dense.py` → `tests/data/kingdon_dense.json`),
 //! each generated map against the dense type, and the geometry against Euclidean and
 //! Minkowski formulas.
@@ -154,6 +155,35 @@ proptest! {
         prop_assert!((g0.e0 - ch).abs() <= 1e-12 * ch && (g0.e1.abs() - sh.abs()).abs() <= 1e-12 * ch);
         prop_assert!(g0.e2 == 0.0 && g0.e3 == 0.0);
     }
+
+    /// VGA: `Rotor::from_axis_angle` turns a vector as Rodrigues' formula does, and a vector
+    /// squares to its length².
+    #[test]
+    fn vga_rotors_are_rodrigues(n in prop::array::uniform3(-2.0f64..2.0), x in prop::array::uniform3(-3.0f64..3.0), angle in -3.0f64..3.0) {
+        use cga_algebras::vga::{GeometricProduct, Rotor, Sandwich, Vector};
+        let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        prop_assume!(len > 1e-3);
+        let u = n.map(|c| c / len);
+        let r = Rotor::from_axis_angle(n, angle).unwrap();
+        let y = r.sandwich(Vector { e1: x[0], e2: x[1], e3: x[2] });
+        let (c, s) = (angle.cos(), angle.sin());
+        let dot = u[0] * x[0] + u[1] * x[1] + u[2] * x[2];
+        let cross = [u[1] * x[2] - u[2] * x[1], u[2] * x[0] - u[0] * x[2], u[0] * x[1] - u[1] * x[0]];
+        let want: [f64; 3] = core::array::from_fn(|k| x[k] * c + cross[k] * s + u[k] * dot * (1.0 - c));
+        for (got, want) in [y.e1, y.e2, y.e3].into_iter().zip(want) {
+            prop_assert!((got - want).abs() <= 1e-13 * 6.0, "{got} against {want}");
+        }
+        let v = Vector { e1: x[0], e2: x[1], e3: x[2] };
+        prop_assert!((v.gp(v).s - (x[0] * x[0] + x[1] * x[1] + x[2] * x[2])).abs() <= 1e-15 * 30.0);
+    }
+}
+
+#[test]
+fn vga_refuses_a_zero_or_unfinite_axis() {
+    use cga_algebras::vga::Rotor;
+    assert!(Rotor::from_axis_angle([0.0, 0.0, 0.0], 1.0).is_none());
+    assert!(Rotor::<f64>::from_axis_angle([f64::NAN, 0.0, 1.0], 1.0).is_none());
+    assert!(Rotor::<f64>::from_axis_angle([f64::INFINITY, 0.0, 1.0], 1.0).is_none());
 }
 
 mod quaternions {
