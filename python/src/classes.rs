@@ -13,7 +13,7 @@ use pyo3::exceptions::{PyIndexError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyFloat, PyInt, PySlice};
 use std::collections::HashMap;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, RwLock};
 
 /// A generated map's code on storage-basis arrays of 32 coefficients: cga-core's own, or
 /// another algebra's on its own storage (of at most 32 coefficients, held in the first of the
@@ -26,10 +26,10 @@ pub enum Code<F, D: ?Sized> {
 }
 
 /// A product's code on storage arrays of `N` coefficients.
-type Binary<const N: usize> = fn(&[f64; N], &[f64; N]) -> [f64; N];
+pub type Binary<const N: usize> = fn(&[f64; N], &[f64; N]) -> [f64; N];
 
 /// A unary map's code on storage arrays of `N` coefficients.
-type Single<const N: usize> = fn(&[f64; N]) -> [f64; N];
+pub type Single<const N: usize> = fn(&[f64; N]) -> [f64; N];
 
 /// Another algebra's product, on storage arrays of 32.
 pub type OtherBinary = dyn Fn(&[f64; 32], &[f64; 32]) -> [f64; 32] + Send + Sync;
@@ -50,22 +50,22 @@ pub struct Unary {
 }
 
 /// The first `N` of 32 storage coefficients, and back.
-fn narrow<const N: usize>(x: &[f64; 32]) -> [f64; N] {
+pub fn narrow<const N: usize>(x: &[f64; 32]) -> [f64; N] {
     std::array::from_fn(|k| x[k])
 }
 
-fn widen<const N: usize>(x: [f64; N]) -> [f64; 32] {
+pub fn widen<const N: usize>(x: [f64; N]) -> [f64; 32] {
     std::array::from_fn(|k| if k < N { x[k] } else { 0.0 })
 }
 
 /// A product of an algebra with `N` storage coefficients, on storage arrays of 32.
-fn widened<const N: usize>(f: Binary<N>) -> Arc<OtherBinary> {
+pub fn widened<const N: usize>(f: Binary<N>) -> Arc<OtherBinary> {
     const { assert!(N <= 32, "the classes hold at most 32 coefficients") };
     Arc::new(move |a, b| widen(f(&narrow(a), &narrow(b))))
 }
 
 /// A unary map of an algebra with `N` storage coefficients, on storage arrays of 32.
-fn widened_single<const N: usize>(f: Single<N>) -> Arc<OtherSingle> {
+pub fn widened_single<const N: usize>(f: Single<N>) -> Arc<OtherSingle> {
     const { assert!(N <= 32, "the classes hold at most 32 coefficients") };
     Arc::new(move |a| widen(f(&narrow(a))))
 }
@@ -146,21 +146,73 @@ static ALGEBRAS: [Classes; 5] = [
     vga::CLASSES,
 ];
 
+/// Algebras added by another extension module built on this crate ([`add_algebra`]).
+static ADDED: RwLock<Vec<&'static Classes>> = RwLock::new(Vec::new());
+
+/// The first answer of `f` on the algebras with classes: the package's, then those added.
+fn find_algebra<R>(mut f: impl FnMut(&'static Classes) -> Option<R>) -> Option<R> {
+    ALGEBRAS
+        .iter()
+        .find_map(&mut f)
+        .or_else(|| ADDED.read().unwrap_or_else(|e| e.into_inner()).iter().copied().find_map(f))
+}
+
+/// Adds an algebra's classes (`python_algebra!`'s `CLASSES`) to the module `m`: the
+/// `#[pymodule]` of an extension that binds a user's own algebra calls this. An algebra
+/// added twice, or named as one of the package's, is refused.
+pub fn add_algebra(m: &Bound<'_, PyModule>, classes: &'static Classes) -> PyResult<()> {
+    let mut added = ADDED.write().unwrap_or_else(|e| e.into_inner());
+    if ALGEBRAS.iter().chain(added.iter().copied()).any(|c| c.algebra == classes.algebra) {
+        return Err(crate::errors::ValueError::new_err(format!(
+            "the algebra {} has classes already",
+            classes.algebra.0
+        )));
+    }
+    (classes.register_in)(m)?;
+    added.push(classes);
+    Ok(())
+}
+
 /// The classes of `algebra`.
 fn classes_of(algebra: Algebra) -> &'static Classes {
-    ALGEBRAS.iter().find(|c| c.algebra == algebra).expect("every value's algebra has classes")
+    find_algebra(|c| (c.algebra == algebra).then_some(c)).expect("every value's algebra has classes")
 }
 
-/// Every generated product of every algebra with classes, by algebra, kind and operand types.
-fn products() -> &'static HashMap<ProductKey, Product> {
-    static TABLE: OnceLock<HashMap<ProductKey, Product>> = OnceLock::new();
-    TABLE.get_or_init(|| ALGEBRAS.iter().flat_map(|c| (c.tables)().0).collect())
+/// An algebra's generated products and unary maps, by key.
+struct Lookup {
+    products: HashMap<ProductKey, Product>,
+    unaries: HashMap<UnaryKey, Unary>,
 }
 
-/// Every generated unary map of every algebra with classes, by algebra, kind and operand type.
-fn unaries() -> &'static HashMap<UnaryKey, Unary> {
-    static TABLE: OnceLock<HashMap<UnaryKey, Unary>> = OnceLock::new();
-    TABLE.get_or_init(|| ALGEBRAS.iter().flat_map(|c| (c.tables)().1).collect())
+/// The tables of `algebra`, built on first use.
+fn lookup(algebra: Algebra) -> &'static Lookup {
+    static BUILT: RwLock<Vec<(Algebra, &'static Lookup)>> = RwLock::new(Vec::new());
+    let found = |built: &[(Algebra, &'static Lookup)]| built.iter().find(|b| b.0 == algebra).map(|b| b.1);
+    if let Some(l) = found(&BUILT.read().unwrap_or_else(|e| e.into_inner())) {
+        return l;
+    }
+    let mut built = BUILT.write().unwrap_or_else(|e| e.into_inner());
+    if let Some(l) = found(&built) {
+        return l;
+    }
+    let (products, unaries) = (classes_of(algebra).tables)();
+    // One per algebra, kept for the process's life, as a static table would be.
+    let l: &'static Lookup = Box::leak(Box::new(Lookup {
+        products: products.into_iter().collect(),
+        unaries: unaries.into_iter().collect(),
+    }));
+    built.push((algebra, l));
+    l
+}
+
+/// The generated product `key`, where there is one.
+fn product_of(key: &ProductKey) -> Option<&'static Product> {
+    lookup(key.0).products.get(key)
+}
+
+/// The generated unary map `key`, where there is one.
+fn unary_of(key: &UnaryKey) -> Option<&'static Unary> {
+    lookup(key.0).unaries.get(key)
 }
 
 /// The symbol of a product in messages.
@@ -199,7 +251,7 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
         })?;
         return Values::zip(a, b, py, dense, code).map(Some);
     }
-    let Some(entry) = products().get(&(algebra, kind, a.ty.name, b.ty.name)) else { return Ok(None) };
+    let Some(entry) = product_of(&(algebra, kind, a.ty.name, b.ty.name)) else { return Ok(None) };
     let out = type_named(algebra, entry.output).ok_or_else(|| {
         PyTypeError::new_err(format!("{} {} {}: no class for {}", a.ty.name, symbol(kind), b.ty.name, entry.output))
     })?;
@@ -232,8 +284,7 @@ pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny
     for v in &all[1..] {
         let last = types[types.len() - 1].name;
         let key = (Algebra::CGA, ProductKind::Outer, last, v.ty.name);
-        match products()
-            .get(&key)
+        match product_of(&key)
             .filter(|_| all[0].ty.algebra == Algebra::CGA)
             .and_then(|e| type_named(Algebra::CGA, e.output))
         {
@@ -274,15 +325,14 @@ pub fn registry_product(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bo
         return Err(PyTypeError::new_err("_registry_product takes two cga values"));
     };
     let key = (Algebra::CGA, kind, a.ty.name, b.ty.name);
-    let entry = products().get(&key).ok_or_else(|| PyTypeError::new_err("not generated"))?;
+    let entry = product_of(&key).ok_or_else(|| PyTypeError::new_err("not generated"))?;
     let out = type_named(Algebra::CGA, entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
     wrap(py, Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?)
 }
 
 /// The unary map `kind` of `a`.
 pub fn unary(py: Python<'_>, kind: UnaryKind, a: &Values) -> PyResult<Values> {
-    let entry = unaries()
-        .get(&(a.ty.algebra, kind, a.ty.name))
+    let entry = unary_of(&(a.ty.algebra, kind, a.ty.name))
         .ok_or_else(|| PyTypeError::new_err(format!("{}: no {kind:?} is generated", a.ty.name)))?;
     let out = type_named(a.ty.algebra, entry.output)
         .ok_or_else(|| PyTypeError::new_err(format!("no class for {}", entry.output)))?;
@@ -291,14 +341,13 @@ pub fn unary(py: Python<'_>, kind: UnaryKind, a: &Values) -> PyResult<Values> {
 
 /// `⟨A Ã⟩₀` of each value.
 pub fn norm_squared(py: Python<'_>, a: &Values) -> PyResult<Vec<f64>> {
-    let entry = unaries()
-        .get(&(a.ty.algebra, UnaryKind::NormSquared, a.ty.name))
+    let entry = unary_of(&(a.ty.algebra, UnaryKind::NormSquared, a.ty.name))
         .ok_or_else(|| PyTypeError::new_err(format!("{}: no norm is generated", a.ty.name)))?;
     Ok(py.detach(|| (0..a.n).map(|i| entry.eval(&a.storage(i))[0]).collect()))
 }
 
 /// Each value times `s` (a float, or an array of one float a value).
-fn scaled(a: &Values, s: &[f64]) -> PyResult<Values> {
+pub fn scaled(a: &Values, s: &[f64]) -> PyResult<Values> {
     if s.len() != 1 && s.len() != a.n {
         return Err(ShapeError::new_err(format!("{} scalars for {} values", s.len(), a.n)));
     }
@@ -308,7 +357,7 @@ fn scaled(a: &Values, s: &[f64]) -> PyResult<Values> {
 }
 
 /// `other` as scalars: a Python number or a 1-D float array; `None` otherwise.
-fn scalars(other: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
+pub fn scalars(other: &Bound<'_, PyAny>) -> Option<Vec<f64>> {
     if other.is_instance_of::<PyFloat>() || other.is_instance_of::<PyInt>() {
         return other.extract::<f64>().ok().map(|s| vec![s]);
     }
@@ -349,7 +398,7 @@ pub fn array<'py>(py: Python<'py>, values: &Values) -> PyResult<Bound<'py, PyArr
 }
 
 /// Row `index` (negative from the end) or a slice of an array.
-fn item(values: &Values, index: &Bound<'_, PyAny>) -> PyResult<Values> {
+pub fn item(values: &Values, index: &Bound<'_, PyAny>) -> PyResult<Values> {
     if values.single {
         return Err(PyTypeError::new_err(format!("a single {} is not an array: it has no items", values.ty.name)));
     }
@@ -368,7 +417,7 @@ fn item(values: &Values, index: &Bound<'_, PyAny>) -> PyResult<Values> {
 }
 
 /// The value `v` divided by `√|⟨v ṽ⟩₀|`, refused (by name) where that is zero or not finite.
-fn normalised(py: Python<'_>, v: &Values) -> PyResult<Values> {
+pub fn normalised(py: Python<'_>, v: &Values) -> PyResult<Values> {
     let ns = norm_squared(py, v)?;
     let mut data = v.data.clone();
     let k = v.k();
@@ -391,7 +440,9 @@ fn normalised(py: Python<'_>, v: &Values) -> PyResult<Values> {
 /// the algebra's crate module `algebra` (`use cga_core as algebra;`); `$algebra` names it,
 /// `$module` is the Python module of its classes, `$repr` how a value reads (`display`: the
 /// type's Euclidean `Display`; `coefficients`: its blades).
-macro_rules! classes {
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __classes {
     (@typed display, $name:ident) => {
         impl $name {
             /// The typed value of row `i` (for what the algebra's crate computes on it).
@@ -405,7 +456,7 @@ macro_rules! classes {
         format!("{}", $name::typed($v, $i))
     };
     (@repr coefficients, $v:expr, $i:expr, $name:ident) => {
-        crate::classes::coefficients($v, $i)
+        $crate::__private::coefficients($v, $i)
     };
     (@basis $name:ident) => {
         (&algebra::$name::<f64>::BLADES[..], &algebra::$name::<f64>::STORAGE_INDEX[..])
@@ -426,14 +477,14 @@ macro_rules! classes {
                 /// The type.
                 pub fn ty() -> &'static Type {
                     static TYPE: std::sync::LazyLock<Type> = std::sync::LazyLock::new(|| {
-                        let (blades, storage) = classes!(@basis $name $($dense)?);
+                        let (blades, storage) = $crate::__classes!(@basis $name $($dense)?);
                         Type { name: stringify!($name), blades, storage, algebra: $algebra }
                     });
                     &TYPE
                 }
             }
 
-            classes!(@typed $repr, $name);
+            $crate::__classes!(@typed $repr, $name);
 
             #[pymethods]
             impl $name {
@@ -441,13 +492,13 @@ macro_rules! classes {
                 /// in the order of `blades`.
                 #[new]
                 fn new(coefficients: &Bound<'_, PyAny>) -> PyResult<Self> {
-                    Ok($name(crate::classes::read(Self::ty(), coefficients)?))
+                    Ok($name($crate::__private::read(Self::ty(), coefficients)?))
                 }
 
                 /// The same as the constructor: coefficients of shape (k,) or (n, k).
                 #[staticmethod]
                 fn from_array(coefficients: &Bound<'_, PyAny>) -> PyResult<Self> {
-                    Ok($name(crate::classes::read(Self::ty(), coefficients)?))
+                    Ok($name($crate::__private::read(Self::ty(), coefficients)?))
                 }
 
                 /// The blades' names, in coefficient order.
@@ -459,7 +510,7 @@ macro_rules! classes {
                 /// The coefficients: shape (k,) for one value, (n, k) for an array.
                 #[getter(array)]
                 fn get_array<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-                    crate::classes::array(py, &self.0)
+                    $crate::__private::array(py, &self.0)
                 }
 
                 /// Whether this holds one value (not an array).
@@ -476,11 +527,11 @@ macro_rules! classes {
                 }
 
                 fn __getitem__(&self, index: &Bound<'_, PyAny>) -> PyResult<Self> {
-                    Ok($name(crate::classes::item(&self.0, index)?))
+                    Ok($name($crate::__private::item(&self.0, index)?))
                 }
 
                 fn __repr__(&self) -> String {
-                    let show = |i: usize| classes!(@repr $repr, &self.0, i, $name);
+                    let show = |i: usize| $crate::__classes!(@repr $repr, &self.0, i, $name);
                     if self.0.single {
                         show(0)
                     } else {
@@ -492,142 +543,142 @@ macro_rules! classes {
 
                 /// Exactly the same type, shape and coefficients.
                 fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-                    match crate::classes::any_values_of(other) {
+                    match $crate::__private::any_values_of(other) {
                         Some(o) => std::ptr::eq(o.ty, self.0.ty) && o.single == self.0.single && o.data == self.0.data,
                         None => false,
                     }
                 }
 
                 fn __mul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::binary(py, ProductKind::Geometric, &self.0, other, false)
+                    $crate::__private::binary(py, ProductKind::Geometric, &self.0, other, false)
                 }
 
                 fn __rmul__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::binary(py, ProductKind::Geometric, &self.0, other, true)
+                    $crate::__private::binary(py, ProductKind::Geometric, &self.0, other, true)
                 }
 
                 fn __truediv__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    match crate::classes::scalars(other) {
-                        Some(s) => crate::classes::wrap(py, crate::classes::scaled(&self.0, &s.iter().map(|x| 1.0 / x).collect::<Vec<_>>())?),
-                        None => crate::classes::not_implemented(py),
+                    match $crate::__private::scalars(other) {
+                        Some(s) => $crate::__private::wrap(py, $crate::__private::scaled(&self.0, &s.iter().map(|x| 1.0 / x).collect::<Vec<_>>())?),
+                        None => $crate::__private::not_implemented(py),
                     }
                 }
 
                 fn __xor__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::binary(py, ProductKind::Outer, &self.0, other, false)
+                    $crate::__private::binary(py, ProductKind::Outer, &self.0, other, false)
                 }
 
                 fn __or__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::binary(py, ProductKind::Inner, &self.0, other, false)
+                    $crate::__private::binary(py, ProductKind::Inner, &self.0, other, false)
                 }
 
                 fn __and__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::binary(py, ProductKind::Regressive, &self.0, other, false)
+                    $crate::__private::binary(py, ProductKind::Regressive, &self.0, other, false)
                 }
 
                 fn __add__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::sum(py, &self.0, other, 1.0)
+                    $crate::__private::sum(py, &self.0, other, 1.0)
                 }
 
                 fn __sub__(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::sum(py, &self.0, other, -1.0)
+                    $crate::__private::sum(py, &self.0, other, -1.0)
                 }
 
                 fn __neg__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::scaled(&self.0, &[-1.0])?)
+                    $crate::__private::wrap(py, $crate::__private::scaled(&self.0, &[-1.0])?)
                 }
 
                 /// `~x`: the reverse.
                 fn __invert__(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Reverse, &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Reverse, &self.0)?)
                 }
 
                 /// The reverse `Ã`.
                 fn reverse(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Reverse, &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Reverse, &self.0)?)
                 }
 
                 /// The grade involution `Â`.
                 fn involute(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Involute, &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Involute, &self.0)?)
                 }
 
                 /// The Clifford conjugate `Ā`.
                 fn conjugate(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Conjugate, &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Conjugate, &self.0)?)
                 }
 
                 /// The dual `A I₅⁻¹`.
                 fn dual(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Dual, &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Dual, &self.0)?)
                 }
 
                 /// The undual `A I₅`.
                 fn undual(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Undual, &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Undual, &self.0)?)
                 }
 
                 /// The part of grade `k`, `⟨A⟩ₖ`.
                 fn grade(&self, py: Python<'_>, k: usize) -> PyResult<Py<PyAny>> {
-                    crate::classes::wrap(py, crate::classes::unary(py, UnaryKind::Grade(k), &self.0)?)
+                    $crate::__private::wrap(py, $crate::__private::unary(py, UnaryKind::Grade(k), &self.0)?)
                 }
 
                 /// `⟨A Ã⟩₀`: a float for one value, an array of n for an array.
                 fn norm_squared(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    crate::classes::floats(py, &self.0, crate::classes::norm_squared(py, &self.0)?)
+                    $crate::__private::floats(py, &self.0, $crate::__private::norm_squared(py, &self.0)?)
                 }
 
                 /// `√|⟨A Ã⟩₀|`.
                 fn norm(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-                    let n = crate::classes::norm_squared(py, &self.0)?.into_iter().map(|s| s.abs().sqrt()).collect();
-                    crate::classes::floats(py, &self.0, n)
+                    let n = $crate::__private::norm_squared(py, &self.0)?.into_iter().map(|s| s.abs().sqrt()).collect();
+                    $crate::__private::floats(py, &self.0, n)
                 }
 
                 /// The value over `√|⟨A Ã⟩₀|` (clifford's `.normal()`); a zero or null value is
                 /// refused (`GeometryError`).
                 fn normalise(&self, py: Python<'_>) -> PyResult<Self> {
-                    Ok($name(crate::classes::normalised(py, &self.0)?))
+                    Ok($name($crate::__private::normalised(py, &self.0)?))
                 }
 
                 /// The geometric product (`*`).
                 fn gp(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::Geometric, &self.0, other)
+                    $crate::__private::named(py, ProductKind::Geometric, &self.0, other)
                 }
 
                 /// The outer product (`^`).
                 fn wedge(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::Outer, &self.0, other)
+                    $crate::__private::named(py, ProductKind::Outer, &self.0, other)
                 }
 
                 /// The Hestenes inner product (`|`).
                 fn inner(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::Inner, &self.0, other)
+                    $crate::__private::named(py, ProductKind::Inner, &self.0, other)
                 }
 
                 /// The left contraction `A ⌋ B`.
                 fn lc(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::LeftContraction, &self.0, other)
+                    $crate::__private::named(py, ProductKind::LeftContraction, &self.0, other)
                 }
 
                 /// The right contraction `A ⌊ B`.
                 fn rc(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::RightContraction, &self.0, other)
+                    $crate::__private::named(py, ProductKind::RightContraction, &self.0, other)
                 }
 
                 /// The regressive product, the meet (`&`).
                 fn vee(&self, py: Python<'_>, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::Regressive, &self.0, other)
+                    $crate::__private::named(py, ProductKind::Regressive, &self.0, other)
                 }
 
                 /// The value drawn (a notebook shows it): PNG bytes, or `None` where it has no
                 /// picture (a versor, a zero blade).
                 fn _repr_png_<'py>(&self, py: Python<'py>) -> Option<Bound<'py, pyo3::types::PyBytes>> {
-                    crate::figure::png(py, &self.0).map(|b| pyo3::types::PyBytes::new(py, &b))
+                    $crate::__private::png(py, &self.0).map(|b| pyo3::types::PyBytes::new(py, &b))
                 }
 
                 /// `V X Ṽ` for this versor and `x`.
                 fn sandwich(&self, py: Python<'_>, x: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
-                    crate::classes::named(py, ProductKind::Sandwich, &self.0, x)
+                    $crate::__private::named(py, ProductKind::Sandwich, &self.0, x)
                 }
             }
         )*
@@ -667,7 +718,7 @@ macro_rules! classes {
 
 use cga_core as algebra;
 
-classes!(
+crate::__classes!(
     Algebra::CGA, "cga", display;
     Scalar,
     Infinity,
@@ -708,7 +759,7 @@ pub fn values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
 
 /// The values `obj` holds if it is a class of any algebra (what the operators take).
 pub fn any_values_of<'a>(obj: &'a Bound<'_, PyAny>) -> Option<&'a Values> {
-    ALGEBRAS.iter().find_map(|c| (c.values_in)(obj))
+    find_algebra(|c| (c.values_in)(obj))
 }
 
 /// Adds cga-core's classes to the module and every other algebra's to its submodule
@@ -738,22 +789,18 @@ pub fn coefficients(v: &Values, i: usize) -> String {
 /// classes: `$module` (the Rust module), `$python` its Python module, the algebra's crate
 /// module `$path`, its classes, its dense type and the types whose blades cover the storage
 /// basis. Its [`Classes`] are `$module::CLASSES`, for [`ALGEBRAS`].
-macro_rules! small_algebra {
+#[macro_export]
+macro_rules! python_algebra {
     ($(#[$doc:meta])* $module:ident, $python:literal, $path:path; $($class:ident),*; dense $dense:ident; covered by $($cover:ident),*) => {
         $(#[$doc])*
         pub mod $module {
-            use super::{Binary, Classes, Code, Product, ProductKind, Tables, Unary, UnaryKind, narrow, widen, widened, widened_single};
-            use crate::values::{Algebra, Type, Values};
-            use numpy::PyArrayDyn;
-            use pyo3::IntoPyObjectExt;
-            use pyo3::exceptions::PyTypeError;
-            use pyo3::prelude::*;
+            use $crate::__private::*;
             use $path as algebra;
 
             /// The algebra.
             pub const ALGEBRA: Algebra = Algebra($python);
 
-            classes!(ALGEBRA, $python, coefficients; $($class,)* $dense dense);
+            $crate::__classes!(ALGEBRA, $python, coefficients; $($class,)* $dense dense);
 
             /// Its classes, for the operators.
             pub const CLASSES: Classes = Classes {
@@ -852,21 +899,21 @@ macro_rules! small_algebra {
     };
 }
 
-small_algebra!(
+crate::python_algebra!(
     /// 3D projective geometric algebra G(3,0,1) (cga-algebras' `pga`: bivector.net's and
     /// kingdon's conventions) as classes of `cga.pga`, with the same operators and arrays.
     pga, "cga.pga", cga_algebras::pga; Scalar, Plane, Line, Point, Pseudoscalar, Motor; dense Multivector;
     covered by Scalar, Plane, Line, Point, Pseudoscalar
 );
 
-small_algebra!(
+crate::python_algebra!(
     /// Spacetime algebra G(1,3) (cga-algebras' `sta`: `e0² = +1`, `e1² = e2² = e3² = −1`) as
     /// classes of `cga.sta`, with the same operators and arrays.
     sta, "cga.sta", cga_algebras::sta; Scalar, Vector, Bivector, Trivector, Pseudoscalar, Rotor;
     dense Multivector; covered by Scalar, Vector, Bivector, Trivector, Pseudoscalar
 );
 
-small_algebra!(
+crate::python_algebra!(
     /// 2D conformal geometric algebra G(3,1) (cga-algebras' `cga2`: points
     /// `x + ½x² ei + eo` of the plane, blades in the null basis `e1, e2, eo, ei`) as classes of
     /// `cga.cga2`, with the same operators and arrays.
@@ -874,7 +921,7 @@ small_algebra!(
     dense Multivector; covered by Scalar, Vector, PointPair, Circle, Pseudoscalar
 );
 
-small_algebra!(
+crate::python_algebra!(
     /// The 3D vector algebra G(3) (cga-algebras' `vga`: `e1, e2, e3` orthonormal) as classes
     /// of `cga.vga`, with the same operators and arrays.
     vga, "cga.vga", cga_algebras::vga; Scalar, Vector, Bivector, Pseudoscalar, Rotor, Odd;
@@ -882,13 +929,13 @@ small_algebra!(
 );
 
 /// Python's `NotImplemented`, so that the other operand may answer.
-fn not_implemented(py: Python<'_>) -> PyResult<Py<PyAny>> {
+pub fn not_implemented(py: Python<'_>) -> PyResult<Py<PyAny>> {
     Ok(py.NotImplemented())
 }
 
 /// `a op other` (or `other op a` when `reflected`): a product of two values, or a scaling by
 /// numbers for the geometric product.
-fn binary(
+pub fn binary(
     py: Python<'_>,
     kind: ProductKind,
     a: &Values,
@@ -914,7 +961,7 @@ fn binary(
 }
 
 /// A named product's method: as the operator, refusing what is not a value.
-fn named(py: Python<'_>, kind: ProductKind, a: &Values, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+pub fn named(py: Python<'_>, kind: ProductKind, a: &Values, other: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     if any_values_of(other).is_none() && !(kind == ProductKind::Geometric && scalars(other).is_some()) {
         return Err(PyTypeError::new_err(format!(
             "{} {}: expected a cga value, got {}",
@@ -927,7 +974,7 @@ fn named(py: Python<'_>, kind: ProductKind, a: &Values, other: &Bound<'_, PyAny>
 }
 
 /// `a + sign · b` for two values of one type.
-fn sum(py: Python<'_>, a: &Values, other: &Bound<'_, PyAny>, sign: f64) -> PyResult<Py<PyAny>> {
+pub fn sum(py: Python<'_>, a: &Values, other: &Bound<'_, PyAny>, sign: f64) -> PyResult<Py<PyAny>> {
     let Some(b) = any_values_of(other) else { return not_implemented(py) };
     if b.ty.name != a.ty.name || b.ty.algebra != a.ty.algebra {
         return Err(PyTypeError::new_err(format!(

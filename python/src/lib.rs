@@ -18,6 +18,25 @@ mod values;
 
 use pyo3::prelude::*;
 
+pub use classes::{Classes, add_algebra};
+
+/// What `python_algebra!`'s expansion names, in the crate that invokes it.
+#[doc(hidden)]
+pub mod __private {
+    pub use crate::classes::{
+        Binary, Classes, Code, Product, Tables, Unary, any_values_of, array, binary, coefficients, floats, item, named,
+        narrow, norm_squared, normalised, not_implemented, read, scalars, scaled, sum, unary, widen, widened,
+        widened_single, wrap,
+    };
+    pub use crate::figure::png;
+    pub use crate::values::{Algebra, Type, Values};
+    pub use cga_core::{ProductKind, UnaryKind};
+    pub use numpy::PyArrayDyn;
+    pub use pyo3::IntoPyObjectExt;
+    pub use pyo3::exceptions::PyTypeError;
+    pub use pyo3::prelude::*;
+}
+
 /// The module: classes, functions, exceptions.
 #[pymodule]
 fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
