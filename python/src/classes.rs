@@ -5,6 +5,7 @@
 //! with the GIL released; the result's class is the Rust result's type.
 
 use crate::errors::{GeometryError, ShapeError};
+use crate::kernels::all_finite;
 use crate::values::{Algebra, Type, Values};
 use cga_core::{ProductKind, UnaryKind, product_table, unary_table};
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
@@ -249,19 +250,38 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
         let code = code(kind).ok_or_else(|| {
             PyTypeError::new_err(format!("{}: no {} is defined on the dense type", dense.describe(), symbol(kind)))
         })?;
-        return Values::zip(a, b, py, dense, code).map(Some);
+        let v = Values::zip(a, b, py, dense, code)?;
+        let finite = all_finite(&v.data);
+        return finite_result(|| format!("{} {} {}", a.ty.describe(), symbol(kind), b.ty.describe()), v, finite)
+            .map(Some);
     }
     let Some(entry) = product_of(&(algebra, kind, a.ty.name, b.ty.name)) else { return Ok(None) };
     let out = type_named(algebra, entry.output).ok_or_else(|| {
         PyTypeError::new_err(format!("{} {} {}: no class for {}", a.ty.name, symbol(kind), b.ty.name, entry.output))
     })?;
     let n = crate::values::broadcast(a, b)?;
+    let what = || format!("{} {} {}", a.ty.describe(), symbol(kind), b.ty.describe());
     if let Code::Cga(_) = entry.code
-        && let Some(data) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out))
+        && let Some((data, finite)) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out))
     {
-        return Ok(Some(Values { ty: out, data, n, single: a.single && b.single }));
+        return finite_result(what, Values { ty: out, data, n, single: a.single && b.single }, finite).map(Some);
     }
-    Values::zip(a, b, py, out, |x, y| entry.eval(x, y)).map(Some)
+    let v = Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?;
+    let finite = all_finite(&v.data);
+    finite_result(what, v, finite).map(Some)
+}
+
+/// `v`, the result of `what`, refused where `finite` says a coefficient is not: the operands
+/// are finite (the classes take no others), so the answer overflowed f64 at their scale.
+fn finite_result(what: impl FnOnce() -> String, v: Values, finite: bool) -> PyResult<Values> {
+    if finite {
+        return Ok(v);
+    }
+    let row = v.data.iter().position(|x| !x.is_finite()).map_or(0, |i| i / v.k().max(1));
+    Err(crate::errors::ValueError::new_err(format!(
+        "{}: value {row} of the result is not finite (it overflows f64 at the operands' scale)",
+        what()
+    )))
 }
 
 /// `values[0] ^ values[1] ^ …`, left to right: the chain of `^`, row for row the same
@@ -293,10 +313,11 @@ pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny
         }
     }
     if types.len() == all.len()
-        && let Some(data) = py.detach(|| crate::kernels::chain(ProductKind::Outer, &all, &types, n))
+        && let Some((data, finite)) = py.detach(|| crate::kernels::chain(ProductKind::Outer, &all, &types, n))
     {
         let single = all.iter().all(|v| v.single);
-        return wrap(py, Values { ty: types[types.len() - 1], data, n, single });
+        let v = Values { ty: types[types.len() - 1], data, n, single };
+        return wrap(py, finite_result(|| "wedge".to_string(), v, finite)?);
     }
     let mut acc = first.clone();
     for v in rest {
@@ -336,7 +357,9 @@ pub fn unary(py: Python<'_>, kind: UnaryKind, a: &Values) -> PyResult<Values> {
         .ok_or_else(|| PyTypeError::new_err(format!("{}: no {kind:?} is generated", a.ty.name)))?;
     let out = type_named(a.ty.algebra, entry.output)
         .ok_or_else(|| PyTypeError::new_err(format!("no class for {}", entry.output)))?;
-    Ok(a.map(py, out, |x| entry.eval(&x)))
+    let v = a.map(py, out, |x| entry.eval(&x));
+    let finite = all_finite(&v.data);
+    finite_result(|| format!("{kind:?} of {}", a.ty.describe()), v, finite)
 }
 
 /// `⟨A Ã⟩₀` of each value.

@@ -12,7 +12,9 @@ use crate::threads::share;
 use crate::values::{Type, Values};
 use cga_core::ProductKind;
 use cga_core::simd::{Columns, Kernel, Lane, Lanes, Over, run_columns, splat};
+use std::cell::Cell;
 use std::marker::PhantomData;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A product of an `A` and a `B` giving an `O`, on any lanes.
 trait Product {
@@ -23,57 +25,85 @@ trait Product {
     type B: Lanes + Send + Sync;
     type O: Lanes + Send + Sync;
     fn op<L: Lane>(a: Over<Self::A, L>, b: Over<Self::B, L>) -> Over<Self::O, L>;
+    /// Lanes whose result has every coefficient finite.
+    fn finite<L: Lane>(o: &Over<Self::O, L>) -> L::Mask;
+}
+
+/// A kernel that notes, as it runs, whether any result had a coefficient that is not finite
+/// (checked in the lanes, so it costs no pass over the results).
+trait Noting: Kernel {
+    /// Whether every result so far was finite.
+    fn finite(&self) -> bool;
+}
+
+/// `o`, noted in `finite` (false from the first result with a coefficient that is not).
+#[inline(always)]
+fn noted<P: Product, L: Lane>(finite: &Cell<bool>, o: Over<P::O, L>) -> Over<P::O, L> {
+    finite.set(finite.get() & L::all(P::finite::<L>(&o)));
+    o
 }
 
 /// Both operands vary.
-struct Rows<P>(PhantomData<fn() -> P>);
+struct Rows<P>(Cell<bool>, PhantomData<fn() -> P>);
 
 impl<P: Product> Kernel for Rows<P> {
     type Input = (P::A, P::B);
     type Output = P::O;
     #[inline(always)]
     fn apply<L: Lane>(&self, (a, b): Over<(P::A, P::B), L>) -> Over<P::O, L> {
-        P::op::<L>(a, b)
+        noted::<P, L>(&self.0, P::op::<L>(a, b))
     }
 }
 
 /// One left operand for every row.
-struct FixedLeft<P: Product>(P::A);
+struct FixedLeft<P: Product>(P::A, Cell<bool>);
 
 impl<P: Product> Kernel for FixedLeft<P> {
     type Input = P::B;
     type Output = P::O;
     #[inline(always)]
     fn apply<L: Lane>(&self, b: Over<P::B, L>) -> Over<P::O, L> {
-        P::op::<L>(splat::<P::A, L>(self.0), b)
+        noted::<P, L>(&self.1, P::op::<L>(splat::<P::A, L>(self.0), b))
     }
 }
 
 /// One right operand for every row.
-struct FixedRight<P: Product>(P::B);
+struct FixedRight<P: Product>(P::B, Cell<bool>);
 
 impl<P: Product> Kernel for FixedRight<P> {
     type Input = P::A;
     type Output = P::O;
     #[inline(always)]
     fn apply<L: Lane>(&self, a: Over<P::A, L>) -> Over<P::O, L> {
-        P::op::<L>(a, splat::<P::B, L>(self.0))
+        noted::<P, L>(&self.1, P::op::<L>(a, splat::<P::B, L>(self.0)))
     }
 }
 
 /// Two products in a row, `(a ∘ b) ∘ c`, without leaving the lanes between them: the same
 /// operations in the same order as the steps one by one (so the same bits), with one
-/// transpose in and one out instead of one each per step.
-struct Fused<P, Q>(PhantomData<fn() -> (P, Q)>);
+/// transpose in and one out instead of one each per step. Only the result is checked: no
+/// product makes an infinity or a NaN finite again.
+struct Fused<P, Q>(Cell<bool>, PhantomData<fn() -> (P, Q)>);
 
 impl<P: Product, Q: Product<A = P::O>> Kernel for Fused<P, Q> {
     type Input = (P::A, P::B, Q::B);
     type Output = Q::O;
     #[inline(always)]
     fn apply<L: Lane>(&self, (a, b, c): Over<(P::A, P::B, Q::B), L>) -> Over<Q::O, L> {
-        Q::op::<L>(P::op::<L>(a, b), c)
+        noted::<Q, L>(&self.0, Q::op::<L>(P::op::<L>(a, b), c))
     }
 }
+
+macro_rules! noting {
+    ($($kernel:ident<$($p:ident),*> . $field:tt),*) => {$(
+        impl<$($p: Product),*> Noting for $kernel<$($p),*> where Self: Kernel {
+            fn finite(&self) -> bool {
+                self.$field.get()
+            }
+        }
+    )*};
+}
+noting!(Rows<P> . 0, FixedLeft<P> . 1, FixedRight<P> . 1, Fused<P, Q> . 0);
 
 /// Rows of `k` coefficients read as values of `X`.
 fn typed<X>(data: &[f64], k: usize) -> &[X] {
@@ -94,36 +124,54 @@ fn typed_mut<X>(data: &mut [f64], k: usize) -> &mut [X] {
 const BLOCK: usize = 8192;
 const THREADED: usize = 1 << 15;
 
-/// `kernel` over `input` (an array, or arrays of one length read in place) into `out`, in
-/// blocks on threads for large arrays.
-fn run_blocks<K: Kernel + Sync, S: Columns<Item = K::Input> + Send + Sync>(kernel: &K, input: S, out: &mut [K::Output])
+/// A kernel from `make` over `input` (an array, or arrays of one length read in place) into
+/// `out`, in blocks on threads for large arrays (a kernel each); whether every result
+/// coefficient is finite.
+fn run_blocks<K: Noting, S: Columns<Item = K::Input> + Send + Sync>(
+    make: impl Fn() -> K + Sync,
+    input: S,
+    out: &mut [K::Output],
+) -> bool
 where
     K::Output: Send + Sync,
 {
     if out.len() < THREADED {
-        run_columns(kernel, input, out).expect("equal lengths");
-    } else {
-        share(
-            out,
-            BLOCK,
-            || (),
-            |(), c, o| {
-                let first = c * BLOCK;
-                run_columns(kernel, input.part(first..first + o.len()), o).expect("equal lengths");
-            },
-        );
+        let kernel = make();
+        run_columns(&kernel, input, out).expect("equal lengths");
+        return kernel.finite();
     }
+    let finite = AtomicBool::new(true);
+    share(
+        out,
+        BLOCK,
+        || (),
+        |(), c, o| {
+            let (first, kernel) = (c * BLOCK, make());
+            run_columns(&kernel, input.part(first..first + o.len()), o).expect("equal lengths");
+            if !kernel.finite() {
+                finite.store(false, Ordering::Relaxed);
+            }
+        },
+    );
+    finite.into_inner()
+}
+
+/// Whether no coefficient is infinite or NaN (its exponent bits all set), in a loop the
+/// compiler vectorises (no early exit).
+pub fn all_finite(x: &[f64]) -> bool {
+    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+    x.chunks(256).all(|c| c.iter().fold(0u64, |acc, v| acc | u64::from(v.to_bits() & EXPONENT == EXPONENT)) == 0)
 }
 
 /// `P` on rows `a` and `b`, each as (data, coefficients a row), one of them broadcast where a
-/// single row, `n` rows of `k` coefficients into `out`.
-fn product_of<P: Product>(a: (&[f64], usize), b: (&[f64], usize), n: usize, k: usize, out: &mut [f64]) {
+/// single row, `n` rows of `k` coefficients into `out`; whether every coefficient is finite.
+fn product_of<P: Product>(a: (&[f64], usize), b: (&[f64], usize), n: usize, k: usize, out: &mut [f64]) -> bool {
     let (xs, ys) = (typed::<P::A>(a.0, a.1), typed::<P::B>(b.0, b.1));
     let out = typed_mut::<P::O>(out, k);
     match (xs.len(), ys.len()) {
-        (1, m) if m == n && n > 1 => run_blocks(&FixedLeft::<P>(xs[0]), ys, out),
-        (m, 1) if m == n => run_blocks(&FixedRight::<P>(ys[0]), xs, out),
-        _ => run_blocks(&Rows::<P>(PhantomData), (xs, ys), out),
+        (1, m) if m == n && n > 1 => run_blocks(|| FixedLeft::<P>(xs[0], Cell::new(true)), ys, out),
+        (m, 1) if m == n => run_blocks(|| FixedRight::<P>(ys[0], Cell::new(true)), xs, out),
+        _ => run_blocks(|| Rows::<P>(Cell::new(true), PhantomData), (xs, ys), out),
     }
 }
 
@@ -142,6 +190,12 @@ macro_rules! kernels {
                 fn op<L: Lane>($x: cga_core::$a<L>, $y: cga_core::$b<L>) -> cga_core::$o<L> {
                     $op
                 }
+                #[inline(always)]
+                fn finite<L: Lane>(o: &cga_core::$o<L>) -> L::Mask {
+                    // x − x is 0 for a finite x and NaN otherwise: one test of their sum.
+                    let c = o.to_array();
+                    c[1..].iter().fold(c[0] - c[0], |s, &x| s + (x - x)).finite()
+                }
             }
         )*
 
@@ -149,32 +203,32 @@ macro_rules! kernels {
         pub const KERNELS: &[(ProductKind, &str, &str)] = &[$((ProductKind::$kind, stringify!($a), stringify!($b))),*];
 
         /// The product `kind` of rows `a` (of type `ta`) and `b` (of `tb`), one of them
-        /// broadcast where a single row, into `out` (`n` rows of `to`'s coefficients); `false`
-        /// where it is not one of the kernels.
+        /// broadcast where a single row, into `out` (`n` rows of `to`'s coefficients): whether
+        /// every coefficient is finite, or `None` where it is not one of the kernels.
         pub fn lanes_into(
             kind: ProductKind,
             (ta, a): (&Type, &[f64]),
             (tb, b): (&Type, &[f64]),
             (to, out): (&Type, &mut [f64]),
-        ) -> bool {
+        ) -> Option<bool> {
             let (k, n) = (to.blades.len(), out.len() / to.blades.len().max(1));
             match (kind, ta.name, tb.name) {
                 $((ProductKind::$kind, stringify!($a), stringify!($b)) if to.name == stringify!($o) => {
-                    product_of::<$name>((a, ta.blades.len()), (b, tb.blades.len()), n, k, out);
-                    true
+                    Some(product_of::<$name>((a, ta.blades.len()), (b, tb.blades.len()), n, k, out))
                 })*
-                _ => false,
+                _ => None,
             }
         }
 
-        /// The product `kind` of `a` and `b` on lanes (`n` rows of `out`'s coefficients),
-        /// where it is one of the kernels.
-        pub fn lanes(kind: ProductKind, a: &Values, b: &Values, n: usize, out: &Type) -> Option<Vec<f64>> {
+        /// The product `kind` of `a` and `b` on lanes (`n` rows of `out`'s coefficients), and
+        /// whether every coefficient is finite, where it is one of the kernels.
+        pub fn lanes(kind: ProductKind, a: &Values, b: &Values, n: usize, out: &Type) -> Option<(Vec<f64>, bool)> {
             if !KERNELS.contains(&(kind, a.ty.name, b.ty.name)) {
                 return None;
             }
             let mut data = crate::values::scratch(n * out.blades.len());
-            lanes_into(kind, (a.ty, &a.data), (b.ty, &b.data), (out, &mut data)).then_some(data)
+            let finite = lanes_into(kind, (a.ty, &a.data), (b.ty, &b.data), (out, &mut data))?;
+            Some((data, finite))
         }
     };
 }
@@ -213,7 +267,7 @@ fn fused_as<P: Product, Q: Product<A = P::O>>(
     [a, b, c]: [&Values; 3],
     out: &Type,
     n: usize,
-) -> Option<Vec<f64>> {
+) -> Option<(Vec<f64>, bool)> {
     let names = [a.ty.name, b.ty.name, c.ty.name, out.name];
     if kind != P::KIND || kind != Q::KIND || names != [P::NAMES[0], P::NAMES[1], Q::NAMES[1], Q::NAMES[2]] {
         return None;
@@ -221,13 +275,14 @@ fn fused_as<P: Product, Q: Product<A = P::O>>(
     let (xs, ys, zs) = (typed::<P::A>(&a.data, a.k()), typed::<P::B>(&b.data, b.k()), typed::<Q::B>(&c.data, c.k()));
     let k = out.blades.len();
     let mut data = crate::values::scratch(n * k);
-    run_blocks(&Fused::<P, Q>(PhantomData), (xs, ys, zs), typed_mut::<Q::O>(&mut data, k));
-    Some(data)
+    let finite =
+        run_blocks(|| Fused::<P, Q>(Cell::new(true), PhantomData), (xs, ys, zs), typed_mut::<Q::O>(&mut data, k));
+    Some((data, finite))
 }
 
 /// A chain of two steps of cga-core's classes over arrays of one length, fused where its
 /// kernels are (the circle through three points, the sphere through a pair and two points).
-fn fused(kind: ProductKind, values: &[&Values], out: &Type, n: usize) -> Option<Vec<f64>> {
+fn fused(kind: ProductKind, values: &[&Values], out: &Type, n: usize) -> Option<(Vec<f64>, bool)> {
     let &[a, b, c] = values else { return None };
     if n < 2 || [a, b, c].iter().any(|v| v.n != n || v.ty.algebra != crate::values::Algebra::CGA) {
         return None;
@@ -250,7 +305,7 @@ fn block_rows(v: &Values, first: usize, len: usize) -> &[f64] {
 /// new array, a block of rows at a time: each block's intermediates stay in buffers in the
 /// core's cache, so the operands are read and the result written once, and every row gets
 /// the numbers of the chain taken step by step. `None` where a step has no kernel.
-pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: usize) -> Option<Vec<f64>> {
+pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: usize) -> Option<(Vec<f64>, bool)> {
     let steps = values.len().checked_sub(1).filter(|&s| s > 0)?;
     let known = (1..=steps).all(|i| KERNELS.contains(&(kind, types[i - 1].name, values[i].ty.name)));
     if !known || values.iter().any(|v| v.n != 1 && v.n != n) {
@@ -262,7 +317,7 @@ pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: 
     let k = types[steps].blades.len();
     let mut out = crate::values::scratch(n * k);
     // A step whose result type is not its kernel's: no answer here (the operators give it).
-    let refused = std::sync::atomic::AtomicBool::new(false);
+    let (refused, unfinite) = (AtomicBool::new(false), AtomicBool::new(false));
     let block = |bufs: &mut [Vec<f64>; 2], (c, o): (usize, &mut [f64])| {
         let (first, len) = (c * CHAIN_BLOCK, o.len() / k);
         // Rows of step i's result: one while every operand so far is a single value.
@@ -279,8 +334,12 @@ pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: 
                 into.resize(width(i) * types[i].blades.len(), 0.0);
                 lanes_into(kind, a, b, (types[i], into))
             };
-            if !known {
-                refused.store(true, std::sync::atomic::Ordering::Relaxed);
+            match known {
+                None => refused.store(true, Ordering::Relaxed),
+                // A step's non-finite coefficient reaches the result (no product makes an
+                // infinity or a NaN finite again): the last step's tell.
+                Some(false) if i == steps => unfinite.store(true, Ordering::Relaxed),
+                Some(_) => {}
             }
         }
     };
@@ -290,5 +349,5 @@ pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: 
     } else {
         share(&mut out, CHAIN_BLOCK * k, || [Vec::new(), Vec::new()], |bufs, c, o| block(bufs, (c, o)));
     }
-    (!refused.into_inner()).then_some(out)
+    (!refused.into_inner()).then_some((out, !unfinite.into_inner()))
 }
