@@ -115,6 +115,12 @@ pub fn ei<T: Real>() -> Infinity<T> {
     Infinity { ei: T::one() }
 }
 
+/// The origin `eo = up(0)` (`eo · ei = −1`).
+#[inline]
+pub fn eo<T: Real>() -> Vector<T> {
+    Vector { e1: T::zero(), e2: T::zero(), e3: T::zero(), eo: T::one(), ei: T::zero() }
+}
+
 fn finite<T: Real>(points: &[E3<T>]) -> Result<()> {
     if points.iter().flatten().all(|x| x.is_finite()) { Ok(()) } else { Err(GeometryError::NonFinite) }
 }

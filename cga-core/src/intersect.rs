@@ -300,3 +300,42 @@ fn two_rounds<T: Real>(c1: E3<T>, u: E3<T>, r1: T, r2: T, d: T) -> Rounds<T> {
     let a = (d * d + (r1 - r2) * (r1 + r2)) / (d + d);
     Rounds::Cross { foot: add(c1, scale(u, a)), half: ((r1 - a) * (r1 + a)).sqrt() }
 }
+
+/// The meets named from the other side: the same answer whichever object is asked, in the
+/// order and orientation the first method states (a line's points along the line; a circle
+/// of a sphere and a plane normal to the plane).
+impl<T: Real> Sphere<T> {
+    /// Where a line crosses the sphere: [`Line::intersect_sphere`].
+    pub fn intersect_line(&self, line: &Line<T>) -> Result<Meet<T>> {
+        line.intersect_sphere(self)
+    }
+
+    /// The circle where a plane cuts the sphere (normal the plane's): [`Plane::intersect_sphere`].
+    pub fn intersect_plane(&self, plane: &Plane<T>) -> Result<Meet<T>> {
+        plane.intersect_sphere(self)
+    }
+
+    /// Where a circle meets the sphere: [`Circle::intersect_sphere`].
+    pub fn intersect_circle(&self, circle: &Circle<T>) -> Result<Meet<T>> {
+        circle.intersect_sphere(self)
+    }
+}
+
+impl<T: Real> Plane<T> {
+    /// Where a line crosses the plane: [`Line::intersect_plane`].
+    pub fn intersect_line(&self, line: &Line<T>) -> Result<Meet<T>> {
+        line.intersect_plane(self)
+    }
+}
+
+impl<T: Real> Circle<T> {
+    /// Where a line crosses the circle (points along the line): [`Line::intersect_circle`].
+    pub fn intersect_line(&self, line: &Line<T>) -> Result<Meet<T>> {
+        line.intersect_circle(self)
+    }
+
+    /// Where the circle pierces a plane: [`Plane::intersect_circle`].
+    pub fn intersect_plane(&self, plane: &Plane<T>) -> Result<Meet<T>> {
+        plane.intersect_circle(self)
+    }
+}

@@ -123,7 +123,7 @@ pub mod versor;
 
 pub use algebra::*;
 pub use classify::{Kind, Reality, classify_storage};
-pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_lanes, down_unit, ei, up};
+pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_lanes, down_unit, ei, eo, up};
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};

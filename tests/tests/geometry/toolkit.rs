@@ -417,6 +417,54 @@ fn meets_hand_back_euclidean_points_lines_and_circles() {
 }
 
 #[test]
+fn meets_give_one_answer_whichever_object_is_asked() {
+    let unit = Sphere::new([0.0; 3], 1.0).unwrap();
+    let floor = Plane::new([0.0, 0.0, 0.5], [0.0, 0.0, 1.0]).unwrap();
+    let ring = Circle::new([0.0; 3], [0.0, 0.0, 1.0], 1.0).unwrap();
+    let tilted = Circle::new([0.2, 0.1, 0.3], [0.3, -0.2, 1.0], 0.9).unwrap();
+    let wall = Plane::new([0.3, 0.0, 0.0], [1.0, 0.2, 0.1]).unwrap();
+    for line in [
+        Line::new([-3.0, 0.1, 0.2], [1.0, 0.05, 0.0]).unwrap(),
+        Line::new([0.3, -0.4, -2.0], [0.1, 0.2, 1.0]).unwrap(),
+        Line::new([5.0, 5.0, 5.0], [0.0, 0.0, 1.0]).unwrap(),
+    ] {
+        assert_eq!(unit.intersect_line(&line).unwrap(), line.intersect_sphere(&unit).unwrap());
+        assert_eq!(floor.intersect_line(&line).unwrap(), line.intersect_plane(&floor).unwrap());
+        assert_eq!(ring.intersect_line(&line).unwrap(), line.intersect_circle(&ring).unwrap());
+    }
+    // The circle of a sphere and a plane is normal to the plane, from either side.
+    let cut = unit.intersect_plane(&floor).unwrap();
+    assert_eq!(cut, floor.intersect_sphere(&unit).unwrap());
+    match cut {
+        Meet::Circle { normal, .. } => close(normal, [0.0, 0.0, 1.0], 1e-15, "the plane's normal"),
+        m => panic!("{m:?}"),
+    }
+    assert_eq!(unit.intersect_circle(&tilted).unwrap(), tilted.intersect_sphere(&unit).unwrap());
+    assert_eq!(tilted.intersect_plane(&wall).unwrap(), wall.intersect_circle(&tilted).unwrap());
+    assert!(matches!(tilted.intersect_plane(&wall).unwrap(), Meet::Points(_)));
+}
+
+#[test]
+fn the_origin_and_scalar_results_are_numbers_as_written() {
+    let o = cga_core::eo::<f64>();
+    assert_eq!(o, up([0.0; 3]));
+    assert_eq!(*(o | cga_core::ei::<f64>()), -1.0);
+    // A scalar-valued product is its number: deref, the number's methods, and `f64::from`.
+    let (a, b) = (up([1.0, 2.0, 3.0]), up([4.0, 6.0, 3.0]));
+    let half_squared = -*(a | b);
+    assert_eq!(half_squared, 12.5);
+    assert_eq!((a | b).abs(), 12.5);
+    let x = Vector { e1: 3.0, e2: 4.0, e3: 0.0, eo: 0.0, ei: 0.0 };
+    assert_eq!((x | x).sqrt(), 5.0);
+    assert_eq!(f64::from(x | x), 25.0);
+    let (y, e1) = (
+        Vector::<f32> { e1: 3.0, e2: 4.0, e3: 0.0, eo: 0.0, ei: 0.0 },
+        Vector::<f32> { e1: 1.0, e2: 0.0, e3: 0.0, eo: 0.0, ei: 0.0 },
+    );
+    assert_eq!(f32::from(y | e1), 3.0);
+}
+
+#[test]
 fn bulk_transforms_are_the_single_ones_to_the_bit_and_glam_round_trips() {
     let mut rng = Rng::new(11);
     let m = random_motor(&mut rng, 100.0);
