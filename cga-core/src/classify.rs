@@ -236,6 +236,20 @@ classify_round! {
     Sphere: 4, 1.0, flat_sphere, no_direction, "A grade-4 blade: a sphere (real, imaginary or tangent), a plane, or the direction `e123 ∧ ei`.";
 }
 
+/// The flats' own types, read as their grade's general type reads them.
+macro_rules! classify_as {
+    ($($ty:ident as $general:ident),*) => {$(
+        impl<T: Real> $ty<T> {
+            #[doc = concat!("The kind of this blade, as [`", stringify!($general), "::classify`] reads it (a ", stringify!($ty), " may also hold a direction, or zero).")]
+            pub fn classify(&self) -> Result<Kind<T>> {
+                $general::from_storage(&self.to_storage()).classify()
+            }
+        }
+    )*};
+}
+
+classify_as!(FlatPoint as Bivector, Line as Circle, Plane as Sphere);
+
 impl<T: Real> Multivector<T> {
     /// The kind of a dense blade: `NotABlade` unless it is of one grade from 1 to 4 with
     /// `X X̃` a scalar (to rounding), then as the typed `classify` of that grade. The dense

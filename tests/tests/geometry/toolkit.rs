@@ -445,6 +445,31 @@ fn meets_give_one_answer_whichever_object_is_asked() {
 }
 
 #[test]
+fn every_blade_type_classifies_as_its_grade_does() {
+    use cga_core::{FlatPoint, Kind};
+    let line = Line::new([1.0, 2.0, 3.0], [0.0, 0.6, 0.8]).unwrap();
+    match line.classify().unwrap() {
+        Kind::Line { point, direction } => {
+            close(direction, [0.0, 0.6, 0.8], 1e-15, "line direction");
+            assert!(line.distance_to(point).unwrap() < 1e-14);
+        }
+        k => panic!("{k:?}"),
+    }
+    let plane = Plane::new([0.0, 0.0, 2.0], [0.0, 0.0, 1.0]).unwrap();
+    match plane.classify().unwrap() {
+        Kind::Plane { grade: 4, normal, offset } => {
+            close(normal, [0.0, 0.0, 1.0], 1e-15, "plane normal");
+            assert!((offset - 2.0).abs() < 1e-15);
+        }
+        k => panic!("{k:?}"),
+    }
+    let flat_point = FlatPoint { e1i: 2.0, e2i: -4.0, e3i: 6.0, eoi: 2.0 };
+    assert_eq!(flat_point.classify().unwrap(), Bivector::from_storage(&flat_point.to_storage()).classify().unwrap());
+    assert!(matches!(flat_point.classify().unwrap(), Kind::FlatPoint(_)));
+    assert_eq!(Line::<f64>::zero().classify().unwrap(), Kind::Zero);
+}
+
+#[test]
 fn the_origin_and_scalar_results_are_numbers_as_written() {
     let o = cga_core::eo::<f64>();
     assert_eq!(o, up([0.0; 3]));
