@@ -5,7 +5,7 @@
 //! with the GIL released; the result's class is the Rust result's type.
 
 use crate::errors::{GeometryError, ShapeError};
-use crate::kernels::all_finite;
+use crate::values::all_finite;
 use crate::values::{Algebra, Type, Values};
 use cga_core::{ProductKind, UnaryKind, product_table, unary_table};
 use numpy::{AllowTypeChange, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
@@ -122,7 +122,8 @@ pub struct Classes {
 }
 
 /// Every algebra with classes: cga-core's (the package's own), then each in its submodule.
-/// An algebra declared with `algebra!` joins with one `small_algebra!` line and one entry here.
+/// An algebra declared with `algebra!` joins with one `python_algebra!` line and one entry here
+/// (or, from another crate, through [`add_algebra`]).
 static ALGEBRAS: [Classes; 5] = [
     Classes {
         algebra: Algebra::CGA,
@@ -251,9 +252,7 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
             PyTypeError::new_err(format!("{}: no {} is defined on the dense type", dense.describe(), symbol(kind)))
         })?;
         let v = Values::zip(a, b, py, dense, code)?;
-        let finite = all_finite(&v.data);
-        return finite_result(|| format!("{} {} {}", a.ty.describe(), symbol(kind), b.ty.describe()), v, finite)
-            .map(Some);
+        return scanned(|| format!("{} {} {}", a.ty.describe(), symbol(kind), b.ty.describe()), v).map(Some);
     }
     let Some(entry) = product_of(&(algebra, kind, a.ty.name, b.ty.name)) else { return Ok(None) };
     let out = type_named(algebra, entry.output).ok_or_else(|| {
@@ -266,9 +265,13 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
     {
         return finite_result(what, Values { ty: out, data, n, single: a.single && b.single }, finite).map(Some);
     }
-    let v = Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?;
+    scanned(what, Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?).map(Some)
+}
+
+/// `v`, the result of `what`, scanned: refused where a coefficient is not finite.
+fn scanned(what: impl FnOnce() -> String, v: Values) -> PyResult<Values> {
     let finite = all_finite(&v.data);
-    finite_result(what, v, finite).map(Some)
+    finite_result(what, v, finite)
 }
 
 /// `v`, the result of `what`, refused where `finite` says a coefficient is not: the operands
@@ -357,9 +360,7 @@ pub fn unary(py: Python<'_>, kind: UnaryKind, a: &Values) -> PyResult<Values> {
         .ok_or_else(|| PyTypeError::new_err(format!("{}: no {kind:?} is generated", a.ty.name)))?;
     let out = type_named(a.ty.algebra, entry.output)
         .ok_or_else(|| PyTypeError::new_err(format!("no class for {}", entry.output)))?;
-    let v = a.map(py, out, |x| entry.eval(&x));
-    let finite = all_finite(&v.data);
-    finite_result(|| format!("{kind:?} of {}", a.ty.describe()), v, finite)
+    scanned(|| format!("{kind:?} of {}", a.ty.describe()), a.map(py, out, |x| entry.eval(&x)))
 }
 
 /// `⟨A Ã⟩₀` of each value.

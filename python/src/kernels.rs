@@ -1,9 +1,10 @@
 //! The products users batch most, on SIMD lanes: each is compiled as a cga-core
 //! [`Kernel`] (four or eight rows at once, the CPU's widest level chosen at run time, the
 //! same bits as one row at a time) in three forms — both operands arrays, or one of them a
-//! single value put in every lane — and run on rayon's threads in blocks for large arrays.
-//! The arrays' rows are read in place as the typed values they are (a generated type is
-//! `repr(C)`, its coefficients in field order). Every other product goes through the
+//! single value put in every lane — and run in blocks shared between the caller and rayon's
+//! threads for large arrays ([`crate::threads`]). The arrays' rows are read in place as the
+//! typed values they are (a generated type is `repr(C)`, its coefficients in field order),
+//! and each kernel notes in its lanes whether a result coefficient is not finite. Every other product goes through the
 //! registry's storage-basis path ([`crate::classes`]). A chain of two outer products over
 //! arrays (the circle through three points) runs as one kernel, its intermediate never
 //! leaving the lanes.
@@ -154,13 +155,6 @@ where
         },
     );
     finite.into_inner()
-}
-
-/// Whether no coefficient is infinite or NaN (its exponent bits all set), in a loop the
-/// compiler vectorises (no early exit).
-pub fn all_finite(x: &[f64]) -> bool {
-    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
-    x.chunks(256).all(|c| c.iter().fold(0u64, |acc, v| acc | u64::from(v.to_bits() & EXPONENT == EXPONENT)) == 0)
 }
 
 /// `P` on rows `a` and `b`, each as (data, coefficients a row), one of them broadcast where a

@@ -209,6 +209,13 @@ fn fill(out: &'static Type, n: usize, f: impl Fn(usize) -> [f64; 32] + Sync + Se
     data
 }
 
+/// Whether no coefficient is infinite or NaN (its exponent bits all set), in a loop the
+/// compiler vectorises (no early exit).
+pub fn all_finite(x: &[f64]) -> bool {
+    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+    x.chunks(256).all(|c| c.iter().fold(0u64, |acc, v| acc | u64::from(v.to_bits() & EXPONENT == EXPONENT)) == 0)
+}
+
 /// The common length of arguments of `lens` rows (1 broadcasts).
 pub(crate) fn length(lens: &[usize]) -> PyResult<usize> {
     let n = lens.iter().copied().max().unwrap_or(1);
