@@ -13,6 +13,7 @@
 //! `cargo run --release -p cga-benches --example batch_timing`
 
 use cga_benches::kernels::{CircleCircle, MeetSphere, MotorMotor, MotorOnPoint, RotorRotor, ThreePoints};
+use cga_benches::medians_ns;
 use cga_core::simd::{F64x4, F64x8, Kernel, Lanes, map, run, run_packed};
 use cga_core::{Circle, Line, Motor, ProductKind, Rotor, Sandwich, Sphere, Vector, product_table};
 use std::hint::black_box;
@@ -27,28 +28,6 @@ fn point(i: usize, seed: f64) -> Vector {
     let t = seed + i as f64;
     let x = [3.0 * (1.3 * t).sin(), 2.0 * (0.7 * t).cos(), (2.9 * t).sin() - 0.5];
     cga_core::up(x)
-}
-
-/// The median ns per operation of each of `forms`, timed in interleaved rounds (one round
-/// of each in turn) so that a change in the machine's load falls on all of them alike.
-fn medians_ns(forms: &mut [&mut dyn FnMut()]) -> Vec<f64> {
-    let mut rounds = vec![Vec::with_capacity(ROUNDS); forms.len()];
-    for _ in 0..ROUNDS {
-        for (f, times) in forms.iter_mut().zip(&mut rounds) {
-            let t = Instant::now();
-            for _ in 0..REPS {
-                f();
-            }
-            times.push(t.elapsed().as_nanos() as f64 / (REPS * N) as f64);
-        }
-    }
-    rounds
-        .into_iter()
-        .map(|mut r| {
-            r.sort_by(f64::total_cmp);
-            r[ROUNDS / 2]
-        })
-        .collect()
 }
 
 /// Times an operation over `input` one at a time (`scalar`), through
@@ -67,40 +46,45 @@ where
     let packed_in: Vec<_> = input.chunks_exact(4).map(|x| K::Input::pack([x[0], x[1], x[2], x[3]])).collect();
     let mut packed_out: Vec<_> = packed_in.iter().map(|&x| K::default().apply(x)).collect();
     let kernel = K::default();
-    let medians = medians_ns(&mut [
-        &mut || {
-            for (o, &x) in scalar_out.iter_mut().zip(black_box(input)) {
-                *o = op(x);
-            }
-            black_box(&scalar_out);
-        },
-        &mut || {
-            run(&K::default(), black_box(input), &mut batch_out);
-            black_box(&batch_out);
-        },
-        &mut || {
-            map(
-                black_box(input),
-                &mut map_out,
-                #[inline(always)]
-                |x| kernel.apply::<F64x4>(x),
-            );
-            black_box(&map_out);
-        },
-        &mut || {
-            map(
-                black_box(input),
-                &mut map8_out,
-                #[inline(always)]
-                |x| kernel.apply::<F64x8>(x),
-            );
-            black_box(&map8_out);
-        },
-        &mut || {
-            run_packed(&K::default(), black_box(&packed_in), &mut packed_out);
-            black_box(&packed_out);
-        },
-    ]);
+    let medians = medians_ns(
+        N,
+        REPS,
+        ROUNDS,
+        &mut [
+            &mut || {
+                for (o, &x) in scalar_out.iter_mut().zip(black_box(input)) {
+                    *o = op(x);
+                }
+                black_box(&scalar_out);
+            },
+            &mut || {
+                run(&K::default(), black_box(input), &mut batch_out);
+                black_box(&batch_out);
+            },
+            &mut || {
+                map(
+                    black_box(input),
+                    &mut map_out,
+                    #[inline(always)]
+                    |x| kernel.apply::<F64x4>(x),
+                );
+                black_box(&map_out);
+            },
+            &mut || {
+                map(
+                    black_box(input),
+                    &mut map8_out,
+                    #[inline(always)]
+                    |x| kernel.apply::<F64x8>(x),
+                );
+                black_box(&map8_out);
+            },
+            &mut || {
+                run_packed(&K::default(), black_box(&packed_in), &mut packed_out);
+                black_box(&packed_out);
+            },
+        ],
+    );
     for (form, out) in [("scalar", &scalar_out), ("batch", &batch_out), ("map", &map_out), ("map8", &map8_out)] {
         assert_eq!(*out, one_at_a_time, "{name}: {form} differs from one at a time");
     }

@@ -1,9 +1,32 @@
 //! The benchmarks live beside this file (`products.rs`, `render.rs`, `peers.rs`,
-//! `batch_timing.rs`); this library only holds what they share.
+//! `batch_timing.rs`, `pga_timing.rs`); this library only holds what they share.
 
 /// A shipped scene file of cga-trace, by name (`primitives`, `surface`, `combined`).
 pub fn scene_path(name: &str) -> std::path::PathBuf {
     std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cga-trace/scenes").join(format!("{name}.toml"))
+}
+
+/// The median ns per operation of each of `forms` (each call does `ops` operations, and is
+/// run `reps` times a round), in `rounds` interleaved rounds (one round of each in turn) so
+/// that a change in the machine's load falls on all of them alike.
+pub fn medians_ns(ops: usize, reps: usize, rounds: usize, forms: &mut [&mut dyn FnMut()]) -> Vec<f64> {
+    let mut times = vec![Vec::with_capacity(rounds); forms.len()];
+    for _ in 0..rounds {
+        for (f, t) in forms.iter_mut().zip(&mut times) {
+            let start = std::time::Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            t.push(start.elapsed().as_nanos() as f64 / (reps * ops) as f64);
+        }
+    }
+    times
+        .into_iter()
+        .map(|mut r| {
+            r.sort_by(f64::total_cmp);
+            r[rounds / 2]
+        })
+        .collect()
 }
 
 /// The six operations of the Versor comparison as [`cga_core::simd::Kernel`]s, for

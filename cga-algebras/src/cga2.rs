@@ -11,6 +11,8 @@ use crate::Real;
 cga_macros::algebra! {
     scalar = crate::Real;
     scalars = [f32, f64];
+    lanes = cga_core::simd;
+    prelude = f64;
     signature = (3, 1);
     basis = [e1, e2, eo = 0.5 * (e4 - e3), ei = e3 + e4];
 

@@ -5,6 +5,8 @@
 cga_macros::algebra! {
     scalar = crate::Real;
     signature = (9, 1);
+    lanes = cga_core::simd;
+    prelude = f64;
 
     /// A scalar.
     type Scalar = [s];

@@ -19,6 +19,8 @@ use crate::Real;
 cga_macros::algebra! {
     scalar = crate::Real;
     scalars = [f32, f64];
+    lanes = cga_core::simd;
+    prelude = f64;
     signature = (3, 0, 1);
     basis = [e0 = e4, e1, e2, e3];
 

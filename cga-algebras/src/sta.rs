@@ -9,6 +9,8 @@
 cga_macros::algebra! {
     scalar = crate::Real;
     scalars = [f32, f64];
+    lanes = cga_core::simd;
+    prelude = f64;
     signature = (1, 3);
     basis = [e0 = e1, e1 = e2, e2 = e3, e3 = e4];
 

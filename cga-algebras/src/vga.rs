@@ -10,6 +10,8 @@ use crate::Real;
 cga_macros::algebra! {
     scalar = crate::Real;
     scalars = [f32, f64];
+    lanes = cga_core::simd;
+    prelude = f64;
     signature = (3, 0);
 
     /// All 8 coefficients.

@@ -25,6 +25,8 @@ cga_macros::algebra! {
     basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];
     #[cfg(feature = "approx")]
     approx = ::approx;
+    lanes = crate::simd;
+    prelude = f64;
 
     /// A dense multivector of G(4,1): all 32 coefficients in the orthonormal basis, every
     /// product a loop over its Cayley table. The reference the sparse types are tested

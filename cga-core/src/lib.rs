@@ -122,6 +122,26 @@ pub mod spline;
 pub mod versor;
 
 pub use algebra::*;
+
+/// Everything at `f64`, for `use cga_core::prelude::*;`: every type as an alias
+/// (`prelude::Circle` is `Circle<f64>`, so float literals need no annotation), the generated
+/// products and the toolkit's traits (methods and operators), and the free functions.
+///
+/// ```
+/// use cga_core::prelude::*;
+/// let c = Circle::through([1.3, 0.0, 0.0], [0.0, 1.3, 0.0], [-1.3, 0.0, 0.0]).unwrap();
+/// let (centre, _, radius) = c.centre_normal_radius().unwrap();
+/// assert!((radius - 1.3).abs() < 1e-12 && centre.iter().all(|x| x.abs() < 1e-12));
+/// let moved: Vector = Motor::from_translation([0.0, 0.0, 2.0]).sandwich(up([1.0, 2.0, 3.0]));
+/// assert!((down(moved).unwrap()[2] - 5.0).abs() < 1e-12);
+/// ```
+pub mod prelude {
+    pub use crate::algebra::prelude::*;
+    pub use crate::{
+        AsFlat as _, Interpolable as _, Meet, Nearest as _, Real, Reflect as _, RoundMeet, distance, down, ei, eo,
+        fit_circle, fit_line, fit_plane, fit_sphere, interpolate, up,
+    };
+}
 pub use classify::{Kind, Reality, classify_storage};
 pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_lanes, down_unit, ei, eo, up};
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};

@@ -12,6 +12,8 @@
 //! algebra! {
 //!     scalar = crate::Real;                 // trait bound of the coefficient type T
 //!     scalars = [f32, f64];                 // optional: concrete scalars for `2.0 * x`, `1.0 - r`
+//!     lanes = cga_core::simd;               // optional: every type batches on SIMD lanes
+//!     prelude = f64;                        // optional: `prelude::Circle` is `Circle<f64>`
 //!     signature = (4, 1);                   // e1..e4 square to +1, e5 to −1
 //!     basis = [e1, e2, e3, eo = 0.5 * (e5 - e4), ei = e4 + e5];   // storage vectors
 //!     /// docs…
@@ -30,12 +32,26 @@
 //! `|B|` of a tiny bivector without underflow), `sin`, `cos`, `atan2`, `sinh`, `cosh` and
 //! `ln_1p` (`cga_core::Real` documents each); it needs `Copy + PartialEq + PartialOrd + Add +
 //! Sub + Mul + Div + Neg` (all with `Output = Self`) and `Debug`: declare those in the trait
-//! (`cga_core::Real` does).
+//! (`cga_core::Real` does). A trait that lacks one of those functions gets one error per
+//! missing function at the `scalar` item (“cannot find method … `to_f64` in trait …”,
+//! `ui/fail/scalar_trait_lacks_a_method.rs`), the compiler's follow-on errors after them.
 //!
 //! `scalars` (optional) lists concrete coefficient types (`f32`, `f64`, any type that
 //! implements the `scalar` trait) that get the operators with the scalar on the left: the
 //! orphan rule forbids `impl<T> Mul<X<T>> for T`, so for each listed `S` and type `X` the
 //! macro emits `S * X<S>`, and where `X + s` exists (below) `S + X<S>` and `S − X<S>`.
+//!
+//! `lanes` (optional) names cga-core's `simd` module: every type, declared or generated,
+//! then implements `cga_core::simd::Lanes` over `f64` (packing, the AVX and AVX-512
+//! transposes, `splat`), so `simd::run`, `run_packed`, `run_columns` and `map` batch the
+//! algebra's products four or eight at a time with the bits of one at a time, as they do
+//! cga-core's own types. It needs the `scalar` trait implemented by the lanes `F64x4` and
+//! `F64x8` (`cga_core::Real` is).
+//!
+//! `prelude` (optional) names a scalar: a module `prelude` then holds every type at it
+//! (`prelude::Circle` is `Circle<f64>`, aliases and the dense type included) and every
+//! generated trait (imported as `_`: methods and operators, no names), so that after
+//! `use …::prelude::*` a float literal needs no annotation (`Circle::through([1.3, …])`).
 //!
 //! `signature = (p, q, r)` declares a degenerate metric: after the p vectors that square to
 //! +1 and the q to −1 come r null vectors (`e_i² = 0`), e.g. 3D PGA is `signature =
@@ -171,7 +187,11 @@ pub(crate) struct Spec {
     pub dense: Option<parse::Named>,
     pub types: Vec<TypeSpec>,
     pub aliases: Vec<parse::Alias>,
-    pub approx: Option<parse::Approx>,
+    pub approx: Option<parse::PathItem>,
+    /// `lanes = cga_core::simd;`: where `Lanes` is, when the types are to batch.
+    pub lanes: Option<parse::PathItem>,
+    /// `prelude = f64;`: the scalar of the prelude's types, when one is asked for.
+    pub prelude: Option<parse::PathItem>,
     /// Concrete scalars that get the scalar-on-the-left operators (`scalars = [f32, f64];`).
     pub scalars: Vec<syn::Type>,
 }
@@ -252,7 +272,17 @@ fn resolve(input: parse::Input) -> syn::Result<Spec> {
         names.push(alias.name.clone());
     }
     let scalars = resolve_scalars(input.scalars)?;
-    Ok(Spec { algebra, scalar, dense: input.dense, types, aliases: input.aliases, approx: input.approx, scalars })
+    Ok(Spec {
+        algebra,
+        scalar,
+        dense: input.dense,
+        types,
+        aliases: input.aliases,
+        approx: input.approx,
+        lanes: input.lanes,
+        prelude: input.prelude,
+        scalars,
+    })
 }
 
 /// The `scalars` list: at least one type, none twice.

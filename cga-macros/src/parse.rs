@@ -15,7 +15,9 @@ pub struct Input {
     pub dense: Option<Named>,
     pub types: Vec<TypeDecl>,
     pub aliases: Vec<Alias>,
-    pub approx: Option<Approx>,
+    pub approx: Option<PathItem>,
+    pub lanes: Option<PathItem>,
+    pub prelude: Option<PathItem>,
     pub scalars: Option<Scalars>,
 }
 
@@ -26,11 +28,17 @@ pub struct Scalars {
     pub span: Span,
 }
 
-/// `#[cfg(…)] approx = path::to::approx;`: implement the `approx` crate's comparison traits
-/// for every type, each impl carrying the item's attributes (so a crate can gate them behind
-/// a feature).
+/// An item naming a path, each generated impl carrying the item's attributes (so a crate can
+/// gate them behind a feature):
+/// - `#[cfg(…)] approx = path::to::approx;`: the `approx` crate's comparison traits for every
+///   type;
+/// - `lanes = cga_core::simd;`: `cga_core::simd::Lanes` for every type over `f64`, so that
+///   `simd::run`, `run_packed`, `run_columns` and `map` batch them (the path names
+///   cga-core's `simd` module);
+/// - `prelude = f64;`: a module `prelude` of every type at that scalar (`Circle` for
+///   `Circle<f64>`) and every product trait, for `use …::prelude::*`.
 #[derive(Clone)]
-pub struct Approx {
+pub struct PathItem {
     pub attrs: Vec<Attribute>,
     pub path: Path,
 }
@@ -98,6 +106,8 @@ impl Parse for Input {
             types: vec![],
             aliases: vec![],
             approx: None,
+            lanes: None,
+            prelude: None,
             scalars: None,
         };
         while !input.is_empty() {
@@ -148,7 +158,15 @@ impl Parse for Input {
                 "versor" => out.types.push(parse_type(input, attrs, true)?),
                 "approx" => {
                     input.parse::<Token![=]>()?;
-                    set_once(&mut out.approx, Approx { attrs, path: input.parse()? }, &key)?;
+                    set_once(&mut out.approx, PathItem { attrs, path: input.parse()? }, &key)?;
+                }
+                "lanes" => {
+                    input.parse::<Token![=]>()?;
+                    set_once(&mut out.lanes, PathItem { attrs, path: input.parse()? }, &key)?;
+                }
+                "prelude" => {
+                    input.parse::<Token![=]>()?;
+                    set_once(&mut out.prelude, PathItem { attrs, path: input.parse()? }, &key)?;
                 }
                 "scalars" => {
                     input.parse::<Token![=]>()?;
@@ -167,7 +185,7 @@ impl Parse for Input {
                     return Err(syn::Error::new(
                         key.span(),
                         format!(
-                            "unknown item `{other}`: expected `scalar`, `signature`, `basis`, `dense`, `type`, `versor`, `alias`, `approx` or `scalars`"
+                            "unknown item `{other}`: expected `scalar`, `signature`, `basis`, `dense`, `type`, `versor`, `alias`, `approx`, `lanes`, `prelude` or `scalars`"
                         ),
                     ));
                 }

@@ -260,9 +260,7 @@ pub fn product(py: Python<'_>, kind: ProductKind, a: &Values, b: &Values) -> PyR
     })?;
     let n = crate::values::broadcast(a, b)?;
     let what = || format!("{} {} {}", a.ty.describe(), symbol(kind), b.ty.describe());
-    if let Code::Cga(_) = entry.code
-        && let Some((data, finite)) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out))
-    {
+    if let Some((data, finite)) = py.detach(|| crate::kernels::lanes(kind, a, b, n, out)) {
         return finite_result(what, Values { ty: out, data, n, single: a.single && b.single }, finite).map(Some);
     }
     scanned(what, Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?).map(Some)
@@ -329,11 +327,11 @@ pub fn wedge(py: Python<'_>, values: Vec<Bound<'_, PyAny>>) -> PyResult<Py<PyAny
     Ok(acc.unbind())
 }
 
-/// The products computed on lanes, as `(kind, left class, right class)` (for the tests that
-/// compare them with [`registry_product`]).
+/// The products computed on lanes, as `(algebra's module, kind, left class, right class)`
+/// (for the tests that compare them with [`registry_product`]).
 #[pyfunction(name = "_kernels")]
-pub fn kernels() -> Vec<(String, &'static str, &'static str)> {
-    crate::kernels::KERNELS.iter().map(|(kind, a, b)| (format!("{kind:?}"), *a, *b)).collect()
+pub fn kernels() -> Vec<(&'static str, String, &'static str, &'static str)> {
+    crate::kernels::KERNELS.iter().map(|(algebra, kind, a, b)| (algebra.0, format!("{kind:?}"), *a, *b)).collect()
 }
 
 /// The product `kind` (a [`ProductKind`] name) of `a` and `b` through the registry's
@@ -342,15 +340,15 @@ pub fn kernels() -> Vec<(String, &'static str, &'static str)> {
 pub fn registry_product(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let kind = crate::kernels::KERNELS
         .iter()
-        .map(|k| k.0)
+        .map(|k| k.1)
         .find(|k| format!("{k:?}") == kind)
         .ok_or_else(|| PyTypeError::new_err(format!("no kernel of kind {kind}")))?;
-    let (Some(a), Some(b)) = (values_of(a), values_of(b)) else {
-        return Err(PyTypeError::new_err("_registry_product takes two cga values"));
+    let (Some(a), Some(b)) = (any_values_of(a), any_values_of(b)) else {
+        return Err(PyTypeError::new_err("_registry_product takes two values of cga's classes"));
     };
-    let key = (Algebra::CGA, kind, a.ty.name, b.ty.name);
+    let key = (a.ty.algebra, kind, a.ty.name, b.ty.name);
     let entry = product_of(&key).ok_or_else(|| PyTypeError::new_err("not generated"))?;
-    let out = type_named(Algebra::CGA, entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
+    let out = type_named(a.ty.algebra, entry.output).ok_or_else(|| PyTypeError::new_err("no class"))?;
     wrap(py, Values::zip(a, b, py, out, |x, y| entry.eval(x, y))?)
 }
 

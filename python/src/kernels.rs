@@ -10,7 +10,7 @@
 //! leaving the lanes.
 
 use crate::threads::share;
-use crate::values::{Type, Values};
+use crate::values::{Algebra, Type, Values};
 use cga_core::ProductKind;
 use cga_core::simd::{Columns, Kernel, Lane, Lanes, Over, run_columns, splat};
 use std::cell::Cell;
@@ -169,23 +169,24 @@ fn product_of<P: Product>(a: (&[f64], usize), b: (&[f64], usize), n: usize, k: u
     }
 }
 
-/// The kernels: `Name: Kind(A, B) -> O, |a, b| op` for each.
+/// The kernels: `Name: "algebra" module::Kind(A, B) -> O, |a, b| op` for each, `module` the
+/// Rust module of the algebra's types and `"algebra"` its Python module.
 macro_rules! kernels {
-    ($($name:ident: $kind:ident($a:ident, $b:ident) -> $o:ident, |$x:ident, $y:ident| $op:expr;)*) => {
+    ($($name:ident: $alg:literal $m:ident::$kind:ident($a:ident, $b:ident) -> $o:ident, |$x:ident, $y:ident| $op:expr;)*) => {
         $(
             struct $name;
             impl Product for $name {
                 const KIND: ProductKind = ProductKind::$kind;
                 const NAMES: [&'static str; 3] = [stringify!($a), stringify!($b), stringify!($o)];
-                type A = cga_core::$a<f64>;
-                type B = cga_core::$b<f64>;
-                type O = cga_core::$o<f64>;
+                type A = $m::$a<f64>;
+                type B = $m::$b<f64>;
+                type O = $m::$o<f64>;
                 #[inline(always)]
-                fn op<L: Lane>($x: cga_core::$a<L>, $y: cga_core::$b<L>) -> cga_core::$o<L> {
+                fn op<L: Lane>($x: $m::$a<L>, $y: $m::$b<L>) -> $m::$o<L> {
                     $op
                 }
                 #[inline(always)]
-                fn finite<L: Lane>(o: &cga_core::$o<L>) -> L::Mask {
+                fn finite<L: Lane>(o: &$m::$o<L>) -> L::Mask {
                     // x − x is 0 for a finite x and NaN otherwise: one test of their sum.
                     let c = o.to_array();
                     c[1..].iter().fold(c[0] - c[0], |s, &x| s + (x - x)).finite()
@@ -193,8 +194,9 @@ macro_rules! kernels {
             }
         )*
 
-        /// The products with a kernel: kind, left and right operand types.
-        pub const KERNELS: &[(ProductKind, &str, &str)] = &[$((ProductKind::$kind, stringify!($a), stringify!($b))),*];
+        /// The products with a kernel: algebra, kind, left and right operand types.
+        pub const KERNELS: &[(Algebra, ProductKind, &str, &str)] =
+            &[$((Algebra($alg), ProductKind::$kind, stringify!($a), stringify!($b))),*];
 
         /// The product `kind` of rows `a` (of type `ta`) and `b` (of `tb`), one of them
         /// broadcast where a single row, into `out` (`n` rows of `to`'s coefficients): whether
@@ -206,8 +208,11 @@ macro_rules! kernels {
             (to, out): (&Type, &mut [f64]),
         ) -> Option<bool> {
             let (k, n) = (to.blades.len(), out.len() / to.blades.len().max(1));
-            match (kind, ta.name, tb.name) {
-                $((ProductKind::$kind, stringify!($a), stringify!($b)) if to.name == stringify!($o) => {
+            if ta.algebra != tb.algebra || ta.algebra != to.algebra {
+                return None;
+            }
+            match (ta.algebra.0, kind, ta.name, tb.name) {
+                $(($alg, ProductKind::$kind, stringify!($a), stringify!($b)) if to.name == stringify!($o) => {
                     Some(product_of::<$name>((a, ta.blades.len()), (b, tb.blades.len()), n, k, out))
                 })*
                 _ => None,
@@ -217,7 +222,7 @@ macro_rules! kernels {
         /// The product `kind` of `a` and `b` on lanes (`n` rows of `out`'s coefficients), and
         /// whether every coefficient is finite, where it is one of the kernels.
         pub fn lanes(kind: ProductKind, a: &Values, b: &Values, n: usize, out: &Type) -> Option<(Vec<f64>, bool)> {
-            if !KERNELS.contains(&(kind, a.ty.name, b.ty.name)) {
+            if !KERNELS.contains(&(a.ty.algebra, kind, a.ty.name, b.ty.name)) {
                 return None;
             }
             let mut data = crate::values::scratch(n * out.blades.len());
@@ -227,31 +232,42 @@ macro_rules! kernels {
     };
 }
 
-use cga_core::Sandwich;
+use cga_algebras::pga;
+use cga_algebras::pga::Sandwich as _;
+use cga_core as cga;
+use cga_core::Sandwich as _;
 
 kernels! {
-    MotorVector: Sandwich(Motor, Vector) -> Vector, |m, x| m.sandwich(x);
-    MotorBivector: Sandwich(Motor, Bivector) -> Bivector, |m, x| m.sandwich(x);
-    MotorLine: Sandwich(Motor, Line) -> Line, |m, x| m.sandwich(x);
-    MotorCircle: Sandwich(Motor, Circle) -> Circle, |m, x| m.sandwich(x);
-    MotorSphere: Sandwich(Motor, Sphere) -> Sphere, |m, x| m.sandwich(x);
-    MotorPlane: Sandwich(Motor, Plane) -> Plane, |m, x| m.sandwich(x);
-    RotorVector: Sandwich(Rotor, Vector) -> Vector, |m, x| m.sandwich(x);
-    RotorLine: Sandwich(Rotor, Line) -> Line, |m, x| m.sandwich(x);
-    RotorCircle: Sandwich(Rotor, Circle) -> Circle, |m, x| m.sandwich(x);
-    TranslatorVector: Sandwich(Translator, Vector) -> Vector, |m, x| m.sandwich(x);
-    TranslatorLine: Sandwich(Translator, Line) -> Line, |m, x| m.sandwich(x);
-    TranslatorCircle: Sandwich(Translator, Circle) -> Circle, |m, x| m.sandwich(x);
-    MotorMotor: Geometric(Motor, Motor) -> Motor, |a, b| a * b;
-    VectorVector: Outer(Vector, Vector) -> Bivector, |a, b| a ^ b;
-    BivectorVector: Outer(Bivector, Vector) -> Circle, |a, b| a ^ b;
-    CircleVector: Outer(Circle, Vector) -> Sphere, |a, b| a ^ b;
-    LineSphere: Regressive(Line, Sphere) -> Bivector, |a, b| a & b;
-    LinePlane: Regressive(Line, Plane) -> FlatPoint, |a, b| a & b;
-    CircleSphere: Regressive(Circle, Sphere) -> Bivector, |a, b| a & b;
-    CirclePlane: Regressive(Circle, Plane) -> Bivector, |a, b| a & b;
-    SphereSphere: Regressive(Sphere, Sphere) -> Circle, |a, b| a & b;
-    PlanePlane: Regressive(Plane, Plane) -> Line, |a, b| a & b;
+    MotorVector: "cga" cga::Sandwich(Motor, Vector) -> Vector, |m, x| m.sandwich(x);
+    MotorBivector: "cga" cga::Sandwich(Motor, Bivector) -> Bivector, |m, x| m.sandwich(x);
+    MotorLine: "cga" cga::Sandwich(Motor, Line) -> Line, |m, x| m.sandwich(x);
+    MotorCircle: "cga" cga::Sandwich(Motor, Circle) -> Circle, |m, x| m.sandwich(x);
+    MotorSphere: "cga" cga::Sandwich(Motor, Sphere) -> Sphere, |m, x| m.sandwich(x);
+    MotorPlane: "cga" cga::Sandwich(Motor, Plane) -> Plane, |m, x| m.sandwich(x);
+    RotorVector: "cga" cga::Sandwich(Rotor, Vector) -> Vector, |m, x| m.sandwich(x);
+    RotorLine: "cga" cga::Sandwich(Rotor, Line) -> Line, |m, x| m.sandwich(x);
+    RotorCircle: "cga" cga::Sandwich(Rotor, Circle) -> Circle, |m, x| m.sandwich(x);
+    TranslatorVector: "cga" cga::Sandwich(Translator, Vector) -> Vector, |m, x| m.sandwich(x);
+    TranslatorLine: "cga" cga::Sandwich(Translator, Line) -> Line, |m, x| m.sandwich(x);
+    TranslatorCircle: "cga" cga::Sandwich(Translator, Circle) -> Circle, |m, x| m.sandwich(x);
+    MotorMotor: "cga" cga::Geometric(Motor, Motor) -> Motor, |a, b| a * b;
+    VectorVector: "cga" cga::Outer(Vector, Vector) -> Bivector, |a, b| a ^ b;
+    BivectorVector: "cga" cga::Outer(Bivector, Vector) -> Circle, |a, b| a ^ b;
+    CircleVector: "cga" cga::Outer(Circle, Vector) -> Sphere, |a, b| a ^ b;
+    LineSphere: "cga" cga::Regressive(Line, Sphere) -> Bivector, |a, b| a & b;
+    LinePlane: "cga" cga::Regressive(Line, Plane) -> FlatPoint, |a, b| a & b;
+    CircleSphere: "cga" cga::Regressive(Circle, Sphere) -> Bivector, |a, b| a & b;
+    CirclePlane: "cga" cga::Regressive(Circle, Plane) -> Bivector, |a, b| a & b;
+    SphereSphere: "cga" cga::Regressive(Sphere, Sphere) -> Circle, |a, b| a & b;
+    PlanePlane: "cga" cga::Regressive(Plane, Plane) -> Line, |a, b| a & b;
+    PgaMotorPoint: "cga.pga" pga::Sandwich(Motor, Point) -> Point, |m, x| m.sandwich(x);
+    PgaMotorLine: "cga.pga" pga::Sandwich(Motor, Line) -> Line, |m, x| m.sandwich(x);
+    PgaMotorPlane: "cga.pga" pga::Sandwich(Motor, Plane) -> Plane, |m, x| m.sandwich(x);
+    PgaMotorMotor: "cga.pga" pga::Geometric(Motor, Motor) -> Motor, |a, b| a * b;
+    PgaJoin: "cga.pga" pga::Regressive(Point, Point) -> Line, |a, b| a & b;
+    PgaPointLine: "cga.pga" pga::Regressive(Point, Line) -> Plane, |a, b| a & b;
+    PgaMeet: "cga.pga" pga::Outer(Plane, Plane) -> Line, |a, b| a ^ b;
+    PgaLinePlane: "cga.pga" pga::Outer(Line, Plane) -> Point, |a, b| a ^ b;
 }
 
 /// `(a ∘ b) ∘ c` for arrays of one length as `P` then `Q` fused, where the operands and the
@@ -301,7 +317,8 @@ fn block_rows(v: &Values, first: usize, len: usize) -> &[f64] {
 /// the numbers of the chain taken step by step. `None` where a step has no kernel.
 pub fn chain(kind: ProductKind, values: &[&Values], types: &[&'static Type], n: usize) -> Option<(Vec<f64>, bool)> {
     let steps = values.len().checked_sub(1).filter(|&s| s > 0)?;
-    let known = (1..=steps).all(|i| KERNELS.contains(&(kind, types[i - 1].name, values[i].ty.name)));
+    let known =
+        (1..=steps).all(|i| KERNELS.contains(&(values[i].ty.algebra, kind, types[i - 1].name, values[i].ty.name)));
     if !known || values.iter().any(|v| v.n != 1 && v.n != n) {
         return None;
     }

@@ -31,10 +31,16 @@
 
 mod columns;
 mod pack;
+// Public for `lanes!`'s expansion in the crates whose `algebra!` asks for lanes.
 #[cfg(target_arch = "x86_64")]
-mod transpose;
+#[doc(hidden)]
+pub mod transpose;
 mod wide;
 
+/// `Lanes` for the named generated types: what `algebra! { lanes = cga_core::simd; … }`
+/// expands to (spelled through `$crate`, so it expands in any crate).
+#[doc(hidden)]
+pub use crate::__simd_lanes as lanes;
 pub use columns::Columns;
 pub use pack::{Lanes, splat};
 pub use wide::{F64x4, F64x8, Lane, Mask4, Mask8};

@@ -1,8 +1,6 @@
 //! [`Lanes`]: a generated type (or a tuple of them) over lanes, and the moves between
 //! values and lanes.
 
-#[cfg(target_arch = "x86_64")]
-use super::transpose::{avx, avx512};
 use super::{F64x4, F64x8, Lane};
 
 /// A generated type (or a tuple of them) that runs on lanes, field by field:
@@ -74,87 +72,70 @@ pub fn splat<X: Lanes, L: Lane>(x: X) -> X::Over<L> {
     X::pack_lanes(&[x; 8][..L::LANES])
 }
 
-macro_rules! lanes {
+/// `Lanes` for the named generated types over `f64`: what `algebra!` emits for an algebra that
+/// asks for it (`lanes = cga_core::simd;`), spelled through `$crate` so that it expands in any
+/// crate.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __simd_lanes {
     ($($t:ident),*) => {$(
-        impl Lanes for crate::$t<f64> {
-            type Over<L: Lane> = crate::$t<L>;
+        impl $crate::simd::Lanes for $t<f64> {
+            type Over<L: $crate::simd::Lane> = $t<L>;
             #[inline(always)]
-            fn pack_lanes<L: Lane>(x: &[Self]) -> crate::$t<L> {
+            fn pack_lanes<L: $crate::simd::Lane>(x: &[Self]) -> $t<L> {
                 let a: [[f64; Self::BLADES.len()]; 8] = core::array::from_fn(|l| x.get(l).map_or([0.0; Self::BLADES.len()], |v| v.to_array()));
-                crate::$t::from_array(core::array::from_fn(|k| L::from_fn(|l| a[l][k])))
+                $t::from_array(core::array::from_fn(|k| L::from_fn(|l| a[l][k])))
             }
             #[inline(always)]
-            fn unpack_lanes<L: Lane>(p: crate::$t<L>, out: &mut [Self]) {
+            fn unpack_lanes<L: $crate::simd::Lane>(p: $t<L>, out: &mut [Self]) {
                 let a = p.to_array();
                 for (l, o) in out.iter_mut().enumerate().take(L::LANES) {
-                    *o = crate::$t::from_array(core::array::from_fn(|k| a[k].lane(l)));
+                    *o = $t::from_array(core::array::from_fn(|k| a[k].lane(l)));
                 }
             }
             #[inline(always)]
             fn pack_filler() -> Self {
-                crate::$t::zero()
+                $t::zero()
             }
             // The generated types are `#[repr(C)]` structs of their coefficients in field
             // order: a value is `[T; N]` in memory, a packed one `[F64x4; N]`.
             #[cfg(target_arch = "x86_64")]
             #[inline(always)]
-            unsafe fn pack_rows(rows: [*const Self; 4]) -> crate::$t<F64x4> {
-                let mut out = core::mem::MaybeUninit::<crate::$t<F64x4>>::uninit();
+            unsafe fn pack_rows(rows: [*const Self; 4]) -> $t<$crate::simd::F64x4> {
+                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F64x4>>::uninit();
                 // SAFETY: the caller's CPU has AVX and its rows are valid; `pack` writes
                 // every coefficient of `out`.
                 unsafe {
-                    avx::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    $crate::simd::transpose::avx::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
                     out.assume_init()
                 }
             }
             #[cfg(target_arch = "x86_64")]
             #[inline(always)]
-            unsafe fn unpack_rows(p: crate::$t<F64x4>, rows: [*mut Self; 4]) {
+            unsafe fn unpack_rows(p: $t<$crate::simd::F64x4>, rows: [*mut Self; 4]) {
                 // SAFETY: as in `pack_rows`.
-                unsafe { avx::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+                unsafe { $crate::simd::transpose::avx::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
             }
             #[cfg(target_arch = "x86_64")]
             #[inline(always)]
-            unsafe fn pack_rows8(rows: [*const Self; 8]) -> crate::$t<F64x8> {
-                let mut out = core::mem::MaybeUninit::<crate::$t<F64x8>>::uninit();
+            unsafe fn pack_rows8(rows: [*const Self; 8]) -> $t<$crate::simd::F64x8> {
+                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F64x8>>::uninit();
                 // SAFETY: the caller's CPU has AVX-512 and its rows are valid; `pack` writes
                 // every coefficient of `out`.
                 unsafe {
-                    avx512::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    $crate::simd::transpose::avx512::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
                     out.assume_init()
                 }
             }
             #[cfg(target_arch = "x86_64")]
             #[inline(always)]
-            unsafe fn unpack_rows8(p: crate::$t<F64x8>, rows: [*mut Self; 8]) {
+            unsafe fn unpack_rows8(p: $t<$crate::simd::F64x8>, rows: [*mut Self; 8]) {
                 // SAFETY: as in `pack_rows8`.
-                unsafe { avx512::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+                unsafe { $crate::simd::transpose::avx512::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
             }
         }
     )*};
 }
-lanes!(
-    Scalar,
-    Infinity,
-    Vector,
-    Bivector,
-    FlatPoint,
-    Line,
-    Circle,
-    Plane,
-    Sphere,
-    Pseudoscalar,
-    ScalarQuadvector,
-    Rotor,
-    Translator,
-    Motor,
-    Dilator,
-    Transversor,
-    Generator,
-    Even,
-    Odd
-);
-
 macro_rules! tuple_lanes {
     ($($x:ident $k:tt),*) => {
         /// Tuples pack element by element.

@@ -8,7 +8,7 @@ use quote::quote;
 /// one, coefficient by coefficient (what `to_array` holds), when the invocation asks for
 /// them; each impl carries the `approx` item's attributes.
 pub(super) fn approx(spec: &Spec) -> TokenStream {
-    let Some(crate::parse::Approx { attrs, path }) = &spec.approx else { return TokenStream::new() };
+    let Some(crate::parse::PathItem { attrs, path }) = &spec.approx else { return TokenStream::new() };
     let real = &spec.scalar;
     // Sparse types give their coefficients by `to_array`, the dense one holds `coeffs`.
     let sparse = spec.types.iter().map(|t| (&t.ident, quote!(to_array())));

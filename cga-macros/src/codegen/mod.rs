@@ -9,9 +9,13 @@ use std::collections::BTreeMap;
 
 mod approx;
 mod arith;
+mod contract;
 mod dense;
 mod functions;
+mod lanes;
 mod mixed;
+mod prelude;
+mod prepared;
 mod products;
 mod registry;
 mod types;
@@ -33,24 +37,30 @@ fn emit(g: &Gen) -> TokenStream {
     let mut out = g.traits();
     out.extend(g.error_types());
     out.extend(g.function_traits());
+    let mut functions = TokenStream::new();
     for (pos, t) in spec.types.iter().enumerate() {
         out.extend(g.type_items(pos, t));
         out.extend(g.scalar_ops(t));
         out.extend(g.inverse(pos, t));
         out.extend(g.inverse_trait(pos, t));
-        out.extend(g.exp(t));
-        out.extend(g.log(t));
+        functions.extend(g.exp(t));
+        functions.extend(g.log(t));
     }
+    out.extend(g.scalar_contract(!functions.is_empty()));
+    out.extend(functions);
     out.extend(g.embeddings());
     out.extend(g.mixed_sums());
     out.extend(g.truncations());
     out.extend(g.products());
     out.extend(g.scalar_products());
     out.extend(g.sandwiches());
+    out.extend(g.prepared());
     out.extend(g.dense());
     out.extend(g.registry());
     out.extend(g.aliases());
     out.extend(approx::approx(spec));
+    out.extend(lanes::lanes(spec));
+    out.extend(prelude::prelude(spec));
     out
 }
 

@@ -62,6 +62,59 @@ impl Gen<'_> {
                 fn sandwich(self, x: X) -> Self::Output;
             }
 
+            /// A versor's sandwich `V X Ṽ` as the linear map of `X` it is: its matrix (each
+            /// nonzero entry a quadratic form in `V`'s coefficients) computed once by `matrix`,
+            /// then applied to each operand by `apply_matrix` at one multiplication an entry.
+            /// Generated wherever `Sandwich` is; used through `V::prepare` and `V::apply_to`.
+            /// The same value as `sandwich` up to rounding (the terms are summed in another
+            /// order).
+            pub trait Prepare<X>: Sandwich<X> + Sized {
+                /// The nonzero entries, row by row.
+                type Matrix: Copy;
+                /// The matrix of `X ↦ V X Ṽ`.
+                fn matrix(self) -> Self::Matrix;
+                /// `V X Ṽ` from `V`'s matrix.
+                fn apply_matrix(m: &Self::Matrix, x: X) -> Self::Output;
+            }
+
+            /// A versor prepared to act on values of `X` (`V::prepare`): `apply` is
+            /// `V X Ṽ` at one multiplication per nonzero entry of its matrix.
+            pub struct Prepared<V: Prepare<X>, X> {
+                matrix: V::Matrix,
+                operand: core::marker::PhantomData<fn(X)>,
+            }
+
+            impl<V: Prepare<X>, X> Clone for Prepared<V, X> {
+                fn clone(&self) -> Self {
+                    *self
+                }
+            }
+
+            impl<V: Prepare<X>, X> Copy for Prepared<V, X> {}
+
+            impl<V: Prepare<X>, X: Copy> Prepared<V, X> {
+                /// `V`'s matrix on `X`, computed once.
+                pub fn new(v: V) -> Self {
+                    Prepared { matrix: v.matrix(), operand: core::marker::PhantomData }
+                }
+                /// `V X Ṽ`.
+                #[inline(always)]
+                pub fn apply(&self, x: X) -> V::Output {
+                    V::apply_matrix(&self.matrix, x)
+                }
+                /// `V X Ṽ` for each `X` of `xs`, in order.
+                pub fn apply_to(&self, xs: &[X]) -> ::std::vec::Vec<V::Output> {
+                    xs.iter().map(|&x| self.apply(x)).collect()
+                }
+                /// `V X Ṽ` for each `X` of `xs` into `out`, in order (as many as the shorter
+                /// holds).
+                pub fn apply_into(&self, xs: &[X], out: &mut [V::Output]) {
+                    for (o, &x) in out.iter_mut().zip(xs) {
+                        *o = self.apply(x);
+                    }
+                }
+            }
+
             /// The scalar product `⟨A B⟩₀`: the scalar part of the geometric product, computed
             /// alone (one multiplication per scalar term of the Cayley table). Generated for every
             /// pair of types whose geometric product has a scalar part.

@@ -16,6 +16,7 @@ pub mod g02 {
     cga_macros::algebra! {
         scalar = cga_core::Real;
         scalars = [f64];
+        lanes = cga_core::simd;
         signature = (0, 2);
 
         /// All 4 coefficients.

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Ours (benches/pga_timing.rs, cga-algebras' PGA) against klein (github.com/jeremyong/klein,
+# header-only C++ with SSE, f32) on five operations, interleaved: klein.cpp built with
+# -O3 -march=native, and our example in release, each run ROUNDS times in turn; prints the
+# table of medians for benches/README.md with ours over klein's time (f32 and f64; klein has
+# no f64).
+#
+#   KLEIN_DIR=/path/to/klein benches/peers/klein.sh
+#
+# Only klein.cpp is ours: klein's headers are read from the checkout, never copied here.
+set -euo pipefail
+: "${KLEIN_DIR:?set KLEIN_DIR to a checkout of github.com/jeremyong/klein}"
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+out=${OUT:-$(mktemp -d)}
+rounds=${ROUNDS:-5}
+mkdir -p "$out"
+cxx=${CXX:-g++}
+
+"$cxx" -O3 -march=native -std=c++17 -I"$KLEIN_DIR/public" "$here/klein.cpp" -o "$out/klein"
+cargo build --quiet --release -p cga-benches --example pga_timing --manifest-path "$root/Cargo.toml"
+ours="${CARGO_TARGET_DIR:-$root/target}/release/examples/pga_timing"
+
+: > "$out/raw.txt"
+for _ in $(seq "$rounds"); do
+    "$ours" >> "$out/raw.txt"
+    "$out/klein" >> "$out/raw.txt"
+done
+echo "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, $("$cxx" --version | head -1), $(rustc --version)"
+python3 - "$out/raw.txt" <<'PY'
+import sys, statistics, collections
+t = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    op, form, ns = line.split()
+    t[(op, form)].append(float(ns))
+m = {k: statistics.median(v) for k, v in t.items()}
+print("| operation | klein f32 | ours f32 | ours f64 | ours f64 lanes | f32 / klein | f64 / klein |")
+print("|---|---|---|---|---|---|---|")
+for op in dict.fromkeys(op for op, _ in t):
+    k, a, b = m[(op, "klein")], m[(op, "f32")], m[(op, "f64")]
+    lanes = m.get((op, "f64-lanes"))
+    best = min(b, lanes) if lanes else b
+    print(f"| {op} | {k:.3f} | {a:.3f} | {b:.3f} | {f'{lanes:.3f}' if lanes else '–'} | {a / k:.2f}× | {best / k:.2f}× |")
+PY

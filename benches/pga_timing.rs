@@ -1,0 +1,147 @@
+//! Times 3D PGA (cga-algebras' `pga`) on the operations of the klein comparison
+//! (benches/peers/klein.sh), the same way benches/peers/klein.cpp times klein: a motor moving
+//! 1e6 points (`motor_points`, by the prepared matrix `motor.prepare()`), and over batches
+//! of 256 operands the motor product (`motor_motor`), the join of two points (`join`), the
+//! meet of two planes (`meet`) and of three (`meet3`), each in f32 and f64, the median over
+//! interleaved rounds in ns per operation. Prints `operation form ns` lines (`form` is `f32`
+//! or `f64`, and for the points also `f64-lanes`: the prepared matrix on SIMD lanes).
+//!
+//! `cargo run --release -p cga-benches --example pga_timing`
+
+use cga_algebras::pga::{Line, Motor, Plane, Point, Prepare, Sandwich};
+use cga_benches::medians_ns;
+use cga_core::Real;
+use cga_core::simd::{Kernel, Lane, run};
+use std::hint::black_box;
+
+const BATCH: usize = 256;
+const POINTS: usize = 1_000_000;
+const ROUNDS: usize = 15;
+
+/// The same deterministic spread as klein.cpp: coordinate `k` of operand `i`.
+fn coord(i: usize, k: usize, seed: f64) -> f64 {
+    let t = seed + i as f64;
+    [3.0 * (1.3 * t).sin(), 2.0 * (0.7 * t).cos(), (2.9 * t).sin() - 0.5][k]
+}
+
+fn point<T: Real>(i: usize, seed: f64) -> Point<T> {
+    Point::at([0, 1, 2].map(|k| T::from_f64(coord(i, k, seed))))
+}
+
+fn plane<T: Real>(i: usize, seed: f64) -> Plane<T> {
+    let [a, b, c] = [0, 1, 2].map(|k| coord(i, k, seed));
+    let n = (a * a + b * b + c * c).sqrt();
+    Plane::new(T::from_f64(a / n), T::from_f64(b / n), T::from_f64(c / n), T::from_f64(coord(i, 0, seed + 7.0)))
+}
+
+/// A unit motor: a rotation about an axis by an angle, then a translation (klein.cpp's
+/// `motor(i)`, the same numbers).
+fn motor<T: Real>(i: usize) -> Motor<T> {
+    let (s, c) = ((0.01 * i as f64 + 0.3).sin(), (0.01 * i as f64 + 0.3).cos());
+    // r = c + s (0.6 e23 − 0.48 e31 + 0.64 e12): the axis (0.6, −0.48, 0.64) is a unit vector.
+    let r = [c, 0.0, 0.0, 0.0, 0.64 * s, -0.48 * s, 0.6 * s, 0.0];
+    // t = 1 + ½ (0.3 e01 − 0.2 e02 + 0.1 e03) moves by (−0.6, 0.4, −0.2) in this basis.
+    let t = [1.0, 0.15, -0.1, 0.05, 0.0, 0.0, 0.0, 0.0];
+    let m = Motor::from_array(t) * Motor::from_array(r);
+    Motor::from_array(m.to_array().map(T::from_f64))
+}
+
+/// An operation over a batch of 256 operands in f32 and in f64, timed interleaved.
+fn batch<A32: Copy, A64: Copy, R32: Copy, R64: Copy>(
+    name: &str,
+    input: (&[A32], &[A64]),
+    (op32, op64): (impl Fn(A32) -> R32, impl Fn(A64) -> R64),
+    zero: (R32, R64),
+) {
+    let (mut out32, mut out64) = (vec![zero.0; BATCH], vec![zero.1; BATCH]);
+    let medians = medians_ns(
+        BATCH,
+        4000,
+        ROUNDS,
+        &mut [
+            &mut || {
+                for (o, &x) in out32.iter_mut().zip(black_box(input.0)) {
+                    *o = op32(x);
+                }
+                black_box(&out32);
+            },
+            &mut || {
+                for (o, &x) in out64.iter_mut().zip(black_box(input.1)) {
+                    *o = op64(x);
+                }
+                black_box(&out64);
+            },
+        ],
+    );
+    println!("{name} f32 {:.3}\n{name} f64 {:.3}", medians[0], medians[1]);
+}
+
+/// The prepared matrix of a motor on points, in every lane: `run`'s kernel.
+struct MovePoints([f64; 13]);
+
+impl Kernel for MovePoints {
+    type Input = Point;
+    type Output = Point;
+    #[inline(always)]
+    fn apply<L: Lane>(&self, x: Point<L>) -> Point<L> {
+        let m = self.0.map(|c| L::from_fn(|_| c));
+        <Motor<L> as Prepare<Point<L>>>::apply_matrix(&m, x)
+    }
+}
+
+fn main() {
+    let (m32, m64) = (motor::<f32>(1), motor::<f64>(1));
+    let (p32, p64): (Vec<Point<f32>>, Vec<Point<f64>>) =
+        ((0..POINTS).map(|i| point(i, 0.0)).collect(), (0..POINTS).map(|i| point(i, 0.0)).collect());
+    let (mut o32, mut o64, mut lanes) =
+        (vec![Point::zero(); POINTS], vec![Point::zero(); POINTS], vec![Point::zero(); POINTS]);
+    let medians = medians_ns(
+        POINTS,
+        3,
+        ROUNDS,
+        &mut [
+            &mut || {
+                m32.prepare().apply_into(black_box(&p32), &mut o32);
+                black_box(&o32);
+            },
+            &mut || {
+                m64.prepare().apply_into(black_box(&p64), &mut o64);
+                black_box(&o64);
+            },
+            &mut || {
+                run(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&p64), &mut lanes).unwrap();
+                black_box(&lanes);
+            },
+        ],
+    );
+    // Each form moves the points as the sandwich does.
+    for k in [0, POINTS / 2, POINTS - 1] {
+        let want = m64.sandwich(p64[k]).to_array();
+        for got in [o64[k].to_array(), lanes[k].to_array(), o32[k].to_array().map(f64::from)] {
+            assert!(want.iter().zip(got).all(|(a, b)| (a - b).abs() < 1e-5 * (1.0 + a.abs())), "{want:?} {got:?}");
+        }
+    }
+    for (form, ns) in ["f32", "f64", "f64-lanes"].iter().zip(medians) {
+        println!("motor_points {form} {ns:.3}");
+    }
+
+    let motors32: Vec<(Motor<f32>, Motor<f32>)> = (0..BATCH).map(|i| (motor(i), motor(i + 300))).collect();
+    let motors64: Vec<(Motor<f64>, Motor<f64>)> = (0..BATCH).map(|i| (motor(i), motor(i + 300))).collect();
+    batch("motor_motor", (&motors32, &motors64), (|(a, b)| a * b, |(a, b)| a * b), (Motor::zero(), Motor::zero()));
+
+    let points32: Vec<(Point<f32>, Point<f32>)> = (0..BATCH).map(|i| (point(i, 0.0), point(i, 100.0))).collect();
+    let points64: Vec<(Point<f64>, Point<f64>)> = (0..BATCH).map(|i| (point(i, 0.0), point(i, 100.0))).collect();
+    batch("join", (&points32, &points64), (|(p, q)| p & q, |(p, q)| p & q), (Line::zero(), Line::zero()));
+
+    let planes32: Vec<(Plane<f32>, Plane<f32>, Plane<f32>)> =
+        (0..BATCH).map(|i| (plane(i, 0.0), plane(i, 100.0), plane(i, 200.0))).collect();
+    let planes64: Vec<(Plane<f64>, Plane<f64>, Plane<f64>)> =
+        (0..BATCH).map(|i| (plane(i, 0.0), plane(i, 100.0), plane(i, 200.0))).collect();
+    batch("meet", (&planes32, &planes64), (|(p, q, _)| p ^ q, |(p, q, _)| p ^ q), (Line::zero(), Line::zero()));
+    batch(
+        "meet3",
+        (&planes32, &planes64),
+        (|(p, q, r)| p ^ q ^ r, |(p, q, r)| p ^ q ^ r),
+        (Point::zero(), Point::zero()),
+    );
+}
