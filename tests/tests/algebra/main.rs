@@ -14,4 +14,5 @@ mod golden_products;
 mod multiplication_counts;
 mod orthonormal_basis;
 mod pga;
+mod pga_toolkit;
 mod scalars;
