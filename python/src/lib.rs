@@ -11,6 +11,7 @@ mod figure;
 mod fit;
 mod geometry;
 mod kernels;
+mod pga;
 mod render;
 mod threads;
 mod toolkit;
@@ -42,6 +43,7 @@ pub mod __private {
 fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     classes::register(m)?;
+    pga::register(m)?;
     m.add_class::<render::Scene>()?;
     m.add_class::<render::Picture>()?;
     m.add_function(wrap_pyfunction!(geometry::up, m)?)?;
