@@ -5,6 +5,7 @@
 
 mod algebras;
 mod arithmetic;
+mod cga2_toolkit;
 mod dimension;
 mod exp_log;
 mod facts;
@@ -16,3 +17,4 @@ mod orthonormal_basis;
 mod pga;
 mod pga_toolkit;
 mod scalars;
+mod sta_toolkit;
