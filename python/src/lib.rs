@@ -4,6 +4,7 @@
 //! pipeline. Errors are Python
 //! exceptions (`cga.ValueError` and its kinds), never a crash.
 
+mod cga2_sta;
 mod classes;
 mod draw;
 mod errors;
@@ -44,6 +45,7 @@ fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     classes::register(m)?;
     pga::register(m)?;
+    cga2_sta::register(m)?;
     m.add_class::<render::Scene>()?;
     m.add_class::<render::Picture>()?;
     m.add_function(wrap_pyfunction!(geometry::up, m)?)?;

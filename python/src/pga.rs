@@ -12,12 +12,12 @@ use pyo3::IntoPyObjectExt;
 use pyo3::prelude::*;
 
 /// Rows of `K` numbers: shape `(K,)` (single) or `(n, K)`; `K = 1` also takes a number or `(n,)`.
-struct Rows<const K: usize> {
-    rows: Vec<[f64; K]>,
-    single: bool,
+pub(crate) struct Rows<const K: usize> {
+    pub(crate) rows: Vec<[f64; K]>,
+    pub(crate) single: bool,
 }
 
-fn rows<const K: usize>(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<K>> {
+pub(crate) fn rows<const K: usize>(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<K>> {
     let array = obj
         .extract::<PyArrayLikeDyn<'_, f64, AllowTypeChange>>()
         .map_err(|_| ShapeError::new_err(format!("{name}: expected numbers of shape ({K},) or (n, {K})")))?;
@@ -36,7 +36,7 @@ fn rows<const K: usize>(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<K>>
 }
 
 /// The common row count of broadcast arguments (`lens`: each one's rows), and whether all are single.
-fn broadcast(lens: &[(usize, bool)]) -> PyResult<(usize, bool)> {
+pub(crate) fn broadcast(lens: &[(usize, bool)]) -> PyResult<(usize, bool)> {
     let n = lens.iter().filter(|(_, s)| !s).map(|(n, _)| *n).max().unwrap_or(1);
     if lens.iter().any(|&(m, s)| !s && m != n) {
         return Err(ShapeError::new_err(format!("arrays of different lengths: {lens:?}")));
@@ -44,16 +44,16 @@ fn broadcast(lens: &[(usize, bool)]) -> PyResult<(usize, bool)> {
     Ok((n, lens.iter().all(|(_, s)| *s)))
 }
 
-fn at<const K: usize>(r: &Rows<K>, i: usize) -> [f64; K] {
+pub(crate) fn at<const K: usize>(r: &Rows<K>, i: usize) -> [f64; K] {
     if r.rows.len() == 1 { r.rows[0] } else { r.rows[i] }
 }
 
 /// The results as a `(K,)` or `(n, K)` array, the first failure refused by row.
-fn output<const K: usize>(
+pub(crate) fn output<const K: usize, E: std::fmt::Display>(
     py: Python<'_>,
     what: &str,
     (n, single): (usize, bool),
-    f: impl Fn(usize) -> Result<[f64; K], PgaError>,
+    f: impl Fn(usize) -> Result<[f64; K], E>,
 ) -> PyResult<Py<PyAny>> {
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
