@@ -52,3 +52,42 @@ def test_boosts_rotations_and_fields():
     assert np.allclose(e2, e, atol=1e-15) and np.allclose(b2, b, atol=1e-15)
     with pytest.raises(cga.GeometryError):
         sta.four_velocity([1.0, 0, 0])
+
+
+def test_against_kingdon():
+    kingdon = pytest.importorskip("kingdon")
+    from functools import reduce
+
+    from kingdon_blades import from_kingdon, to_kingdon
+
+    # 2D CGA: kingdon's A ^ B ^ C of its own conformal points, eo = ½(e4 − e3), ei = e3 + e4.
+    alg = kingdon.Algebra(3, 1)
+    e = alg.blades
+    vec = {"1": e.e1, "2": e.e2, "o": 0.5 * (e.e4 - e.e3), "i": e.e3 + e.e4}
+
+    def blade(name, alg):
+        if name == "s":
+            return alg.multivector({"e": 1.0})
+        return reduce(lambda a, b: a ^ b, (vec[label] for label in name[1:]))
+
+    def up(x):
+        return x[0] * vec["1"] + x[1] * vec["2"] + 0.5 * (x @ x) * vec["i"] + vec["o"]
+
+    a, b, c = (RNG.uniform(-5, 5, 2) for _ in range(3))
+    theirs = from_kingdon(up(a) ^ up(b) ^ up(c), cga2.Circle, alg, blade, 16)
+    assert np.allclose(cga2.circle_through(a, b, c).array, theirs, atol=1e-12)
+    theirs = from_kingdon(up(a) ^ up(b) ^ vec["i"], cga2.Circle, alg, blade, 16)
+    assert np.allclose(cga2.line_through(a, b).array, theirs, atol=1e-12)
+    # STA: kingdon's exp of −φ/2 n̂ · (e01, e02, e03) and of θ/2 a · (e23, −e13, e12).
+    alg = kingdon.Algebra(1, 3, start_index=0)
+    e = alg.blades
+    n = RNG.normal(size=3)
+    u = n / np.linalg.norm(n)
+    boost = (-0.35 * (u[0] * e.e01 + u[1] * e.e02 + u[2] * e.e03)).exp()
+    sta_blade = lambda name, alg: alg.multivector({"e": 1.0}) if name == "s" else getattr(alg.blades, name)
+    assert np.allclose(sta.boost(n, 0.7).array, from_kingdon(boost, sta.Rotor, alg, sta_blade, 16), atol=1e-14)
+    turn = (0.6 * (u[0] * e.e23 - u[1] * e.e13 + u[2] * e.e12)).exp()
+    assert np.allclose(sta.rotation(n, 1.2).array, from_kingdon(turn, sta.Rotor, alg, sta_blade, 16), atol=1e-14)
+    # And kingdon's sandwich of γ0 by the boost moves it along +n̂.
+    moved = boost * e.e0 * ~boost
+    assert np.allclose([moved.e1 / moved.e0, moved.e2 / moved.e0, moved.e3 / moved.e0], u * np.tanh(0.7))
