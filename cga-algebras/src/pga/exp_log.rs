@@ -18,8 +18,9 @@
 //! ```
 //!
 //! `sinc` and `f` are evaluated by their series near `a = 0` (a pure translation), where the
-//! quotients cancel. The formulas are klein's `kln::exp` / `kln::log` (`exp_log.hpp`), in the
-//! dual-number form of Gunn and De Keninck; written here from the derivation above.
+//! quotients cancel. The maps are klein's `kln::exp` / `kln::log` (`exp_log.hpp`), written here
+//! from the dual-number derivation above (`tests/tests/algebra/pga_toolkit.rs` checks them on
+//! kingdon's screws).
 
 use super::error::{PgaError, finite};
 use super::vec3::norm;
