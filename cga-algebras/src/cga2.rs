@@ -8,6 +8,11 @@
 
 use crate::Real;
 
+mod construct;
+mod error;
+
+pub use error::Cga2Error;
+
 cga_macros::algebra! {
     scalar = crate::Real;
     scalars = [f32, f64];

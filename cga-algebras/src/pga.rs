@@ -13,8 +13,45 @@
 //! - A motor `[s, grade(2), e0123]` moves by `M X M̃` (`sandwich`); two planes' product
 //!   `q p` reflects in `p` then `q`: a rotation about their line, or a translation by twice
 //!   their distance when parallel.
+//!
+//! The toolkit, in klein's conventions (the same as kingdon's; `docs/PGA.md` tabulates the
+//! signs and each peer's spelling), one file per subject in `pga/`:
+//!
+//! - constructors and read-backs ([`Plane::from_normal_distance`], [`Plane::through`],
+//!   [`Line::through`], [`Line::from_point_direction`], [`Line::direction`],
+//!   [`Line::moment`], [`Point::ideal`]);
+//! - motors ([`Motor::rotor`], [`Motor::translator`], [`Motor::from_rotor_translator`],
+//!   [`Motor::screw`], [`Motor::apply`]);
+//! - closed-form [`Line::exp_motor`] and [`Motor::log`] of screws, [`Motor::sqrt`],
+//!   [`Motor::pow`], [`Motor::interpolate`], [`Motor::normalise_motor`];
+//! - distances, angles and projections ([`Point::distance_to_line`],
+//!   [`Line::distance_to_line`], [`Line::project_onto_plane`], …).
+//!
+//! ```
+//! use cga_algebras::pga::{Line, Motor, Point};
+//! let axis = Line::through([1.0, 0.0, 0.0], [1.0, 0.0, 1.0])?; // along +z through (1, 0, 0)
+//! let screw = Motor::screw(axis, std::f64::consts::PI, 2.0)?; // half turn, 2 along +z
+//! let x = screw.apply(Point::at([0.0, 0.0, 0.0])).position().unwrap();
+//! assert!((x[0] - 2.0).abs() < 1e-12 && x[1].abs() < 1e-12 && (x[2] - 2.0).abs() < 1e-12);
+//! let half = screw.sqrt()?; // the quarter turn, 1 along +z
+//! assert!((half * half - screw).to_array().iter().all(|c| c.abs() < 1e-12));
+//! let generator = screw.log()?; // (−θ + δ I) L̂ / 2
+//! assert!((generator.exp_motor()? - screw).to_array().iter().all(|c| c.abs() < 1e-12));
+//! let mid = Motor::interpolate(Motor::identity(), screw, 0.5)?;
+//! assert!((mid - half).to_array().iter().all(|c| c.abs() < 1e-12));
+//! # Ok::<(), cga_algebras::pga::PgaError>(())
+//! ```
 
 use crate::Real;
+
+mod construct;
+mod error;
+mod exp_log;
+mod metric;
+mod motor;
+mod vec3;
+
+pub use error::PgaError;
 
 cga_macros::algebra! {
     scalar = crate::Real;

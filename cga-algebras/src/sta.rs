@@ -2,9 +2,18 @@
 //! signature (+, −, −, −)); the pseudoscalar `I = e0123`, `I² = −1`.
 //!
 //! - An event or four-velocity is a [`Vector`]; `v * v` is its squared interval.
-//! - Lorentz transformations are even [`Rotor`]s: a boost along `γk` with rapidity `φ` is
-//!   `cosh(φ/2) + sinh(φ/2) e0k` (moving by `R v R̃`), a rotation `cos(θ/2) − sin(θ/2) e_jk`.
+//! - Lorentz transformations are even [`Rotor`]s moving by `R v R̃`: the boost that takes `γ0`
+//!   to velocity `tanh φ` along `+γk` is `cosh(φ/2) − sinh(φ/2) e0k` ([`Rotor::boost`]; `+`
+//!   boosts along `−γk`, as `e0k γ0 = −γk`), the right-handed rotation about `γk` is
+//!   `cos(θ/2) + sin(θ/2) e_ij` ([`Rotor::rotation`]; `γk² = −1` flips G(3)'s sign).
 //! - The electromagnetic field is a [`Bivector`].
+//!
+//! Constructors and read-backs (`sta/construct.rs`): [`Vector::new`], [`Vector::from_velocity`],
+//! [`Rotor::boost`], [`Rotor::rotation`], [`Bivector::from_fields`], [`Bivector::fields`].
+
+mod construct;
+
+pub use construct::StaError;
 
 cga_macros::algebra! {
     scalar = crate::Real;

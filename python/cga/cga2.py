@@ -18,6 +18,9 @@ The classes are cga's, on this algebra: one value or an array of n, the operator
     [1.5, 2.0]
     >>> type(cga2.point([0, 0]) ^ cga2.point([1, 0]) ^ cga2.point([0, 1])).__name__
     'Circle'
+    >>> centre, radius = cga2.centre_radius(cga2.circle_through([1, 0], [0, 1], [-1, 0]))
+    >>> [round(float(c), 12) + 0.0 for c in centre], round(float(radius), 12)
+    ([0.0, 0.0], 1.0)
 """
 
 import numpy as np
@@ -27,6 +30,7 @@ from ._cga import GeometryError
 from .pga import _of, _rows
 
 _cga2 = _cga.cga2
+_tk = _cga.cga2_toolkit
 Scalar = _cga2.Scalar
 Vector = _cga2.Vector
 PointPair = _cga2.PointPair
@@ -38,8 +42,9 @@ Even = _cga2.Even
 #: Any value: the results of mixed grades, the 16 blades in storage order.
 Multivector = _cga2.Multivector
 
-__all__ = ["Circle", "Even", "Motor", "Multivector", "PointPair", "Pseudoscalar", "Rotor", "Scalar", "Vector", "ei",
-           "eo", "point", "position", "rotor", "translator"]
+__all__ = ["Circle", "Even", "Motor", "Multivector", "PointPair", "Pseudoscalar", "Rotor", "Scalar", "Vector",
+           "centre_radius", "circle_through", "ei", "ends", "eo", "line_through", "point", "position", "rotor",
+           "translator"]
 
 #: The point at infinity ``ei = e3 + e4`` and the origin ``eo = ½(e4 − e3)``.
 ei = _of(Vector, {"ei": 1.0}, ())
@@ -79,3 +84,30 @@ def rotor(angle):
     if half.ndim > 1:
         raise _cga.ShapeError(f"rotor: shape {half.shape}; give a number or an array of shape (n,)")
     return _of(Motor, {"s": np.cos(half), "e12": -np.sin(half)}, half.shape)
+
+
+def circle_through(a, b, c):
+    """Circles through three points (shape (2,) or (n, 2) each), ``A ∧ B ∧ C``; coincident or
+    collinear points are refused (``GeometryError``: use :func:`line_through`). Rust:
+    ``cga2::Circle::through``."""
+    return Circle(_tk.circle_through(a, b, c))
+
+
+def line_through(p, q):
+    """Lines through two points, ``P ∧ Q ∧ ei``, directed from ``p`` to ``q``. Rust:
+    ``cga2::Circle::line_through``."""
+    return Circle(_tk.line_through(p, q))
+
+
+def centre_radius(circle):
+    """Centres (shape (2,) or (n, 2)) and radii of circles, from their duals; a line or an
+    imaginary circle is refused. Rust: ``cga2::Circle::centre_radius``."""
+    out = np.asarray(_tk.centre_radius(circle.array))
+    return out[..., :2], out[..., 2]
+
+
+def ends(pair):
+    """The two points of point pairs ``A ∧ B``, in order ``(a, b)``: shape (2, 2) or (n, 2, 2).
+    Rust: ``cga2::PointPair::ends``."""
+    out = np.asarray(_tk.ends(pair.array))
+    return out.reshape(out.shape[:-1] + (2, 2))

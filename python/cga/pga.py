@@ -6,7 +6,10 @@ bivector.net's and kingdon's conventions (``e0² = 0``, ``e1² = e2² = e3² = 1
   :func:`position`).
 - A line is ``P & Q`` (the join) of two points, ``p ^ q`` (the meet) of two planes.
 - A motor ``[s, e01, e02, e03, e12, e31, e23, e0123]`` moves anything by ``M.sandwich(X)``
-  (``M X M̃``); :func:`translator` and :func:`rotor` make them.
+  (``M X M̃``); :func:`translator`, :func:`rotor` and :func:`screw` make them; :func:`log`,
+  :func:`exp`, :func:`sqrt`, :func:`interpolate` and :func:`normalise` are closed forms, screws
+  included, run by cga-algebras' Rust on every row (``docs/PGA.md``: klein's and kingdon's
+  spellings beside each).
 
 The classes are cga's, on this algebra: one value or an array of n (``Point(a)``, ``a`` of
 shape (n, 4), in the order of ``Point.blades``), the operators ``*`` ``^`` ``|`` ``&`` ``~``
@@ -19,6 +22,10 @@ running the generated Rust code on every row::
     >>> moved = pga.translator([0, 2, 0]).sandwich(pga.point([1, 0, 0]))
     >>> [float(c) for c in pga.position(moved)]
     [1.0, 2.0, 0.0]
+    >>> axis = pga.line_through([1, 0, 0], [1, 0, 1])
+    >>> half = pga.sqrt(pga.screw(axis, np.pi, 2.0))  # a quarter turn, 1 along +z
+    >>> [round(float(c), 12) + 0.0 for c in pga.position(half.sandwich(pga.point([0, 0, 0])))]
+    [1.0, -1.0, 1.0]
 """
 
 import numpy as np
@@ -27,6 +34,7 @@ from . import _cga
 from ._cga import GeometryError, ShapeError
 
 _pga = _cga.pga
+_tk = _cga.pga_toolkit
 Scalar = _pga.Scalar
 Plane = _pga.Plane
 Line = _pga.Line
@@ -36,8 +44,9 @@ Motor = _pga.Motor
 #: Any value: the results of mixed grades (a plane times a line), the 16 blades in storage order.
 Multivector = _pga.Multivector
 
-__all__ = ["Line", "Motor", "Multivector", "Plane", "Point", "Pseudoscalar", "Scalar", "plane", "point", "position", "rotor",
-           "translator"]
+__all__ = ["Line", "Motor", "Multivector", "Plane", "Point", "Pseudoscalar", "Scalar", "direction", "distance", "exp",
+           "interpolate", "line_through", "log", "moment", "normalise", "plane", "plane_from_normal_distance", "point",
+           "position", "project", "rotor", "screw", "sqrt", "translator"]
 
 
 def _rows(x, width, name):
@@ -79,24 +88,113 @@ def plane(a, b, c, d):
 
 
 def translator(t):
-    """Motors that move by ``t`` (shape (3,) or (n, 3)): ``1 − ½ (t₁ e01 + t₂ e02 + t₃ e03)``
-    (with points ``e123 + x e032 + …``, ``e01`` moves them along −x)."""
-    t = _rows(t, 3, "translator")
-    half = -0.5 * t
-    parts = {"s": 1.0, "e01": half[..., 0], "e02": half[..., 1], "e03": half[..., 2]}
-    return _of(Motor, parts, t.shape[:-1])
+    """Motors that move by ``+t`` (shape (3,) or (n, 3)): ``1 − ½ (t₁ e01 + t₂ e02 + t₃ e03)``
+    (with points ``e123 + x e032 + …``, ``e01`` moves them along −x). klein:
+    ``kln::translator(|t|, x, y, z)``. Rust: ``Motor::translator``."""
+    return Motor(_tk.translator(t))
 
 
 def rotor(axis, angle):
     """Motors that turn by ``angle`` (radians, right-handed) about the unit ``axis`` through the
     origin: ``cos(θ/2) − sin(θ/2)(a₁ e23 + a₂ e31 + a₃ e12)``. The axis is normalised; a zero
-    axis is refused."""
-    axis = _rows(axis, 3, "rotor")
-    norm = np.linalg.norm(axis, axis=-1)
-    if np.any(norm == 0):
-        raise GeometryError("rotor: the axis is zero")
-    a = axis / norm[..., None]
-    half = 0.5 * np.asarray(angle, dtype=float)
-    s = np.sin(half)
-    parts = {"s": np.cos(half), "e23": -s * a[..., 0], "e31": -s * a[..., 1], "e12": -s * a[..., 2]}
-    return _of(Motor, parts, np.broadcast_shapes(a.shape[:-1], np.shape(half)))
+    axis is refused (``GeometryError``). klein: ``kln::rotor(θ, x, y, z)``. Rust:
+    ``Motor::rotor``."""
+    return Motor(_tk.rotor(axis, angle))
+
+
+def screw(line, angle, distance):
+    """Motors that turn by ``angle`` (right-handed about the line's direction) about ``line``
+    and slide ``distance`` along it: ``exp((−θ + δ I) L̂ / 2)``. klein: ``kln::motor(θ, δ, l)``.
+    Rust: ``Motor::screw``."""
+    return Motor(_tk.screw(line.array, angle, distance))
+
+
+def exp(line):
+    """``exp(B)`` of bivectors (lines or screw generators, ``B ∧ B ≠ 0`` too), closed form:
+    motors. klein: ``kln::exp``; kingdon: ``B.exp()`` (simple ``B`` only). Rust:
+    ``Line::exp_motor``."""
+    return Motor(_tk.exp(line.array))
+
+
+def log(motor):
+    """The principal logarithm of motors, screws included: ``Line`` values with ``exp(log(M)) =
+    M``. klein: ``kln::log``. Rust: ``Motor::log``. A full turn (``−1``) is refused."""
+    return Line(_tk.log(motor.array))
+
+
+def sqrt(motor):
+    """The square root of motors, half their screw: ``(1 + M) / ‖1 + M‖`` normalised as a motor.
+    klein: ``kln::sqrt``; kingdon: ``M.sqrt()`` (the same for rotations and translations). Rust:
+    ``Motor::sqrt``."""
+    return Motor(_tk.sqrt(motor.array))
+
+
+def normalise(motor):
+    """Motors scaled to ``M M̃ = 1``, the Study condition (the ``e0123`` part) included. klein:
+    ``m.normalize()``; kingdon: ``M.normalized()``. Rust: ``Motor::normalise_motor``."""
+    return Motor(_tk.normalise(motor.array))
+
+
+def interpolate(a, b, t):
+    """The motors a fraction ``t`` of the way from ``a`` to ``b`` along the shorter screw that
+    joins them, ``(b ã)ᵗ a`` (``t`` a number or an array of n). klein: ``kln::exp(t *
+    kln::log(b * ~a)) * a``; kingdon: ``(B * ~A).sqrt() * A`` at ``t = ½``. Rust:
+    ``Motor::interpolate``."""
+    return Motor(_tk.interpolate(a.array, b.array, t))
+
+
+def line_through(p, q):
+    """Lines through ``p`` and ``q`` (shape (3,) or (n, 3)), directed from ``p`` to ``q``: the
+    join ``P & Q``. Coincident points are refused. Rust: ``Line::through``."""
+    return Line(_tk.line_through(p, q))
+
+
+def plane_from_normal_distance(n, d):
+    """Planes ``n̂ · x = d`` (``n̂ = n / |n|``): ``n̂ · (e1, e2, e3) − d e0``. Rust:
+    ``Plane::from_normal_distance``."""
+    return Plane(_tk.plane_from_normal_distance(n, d))
+
+
+def direction(line):
+    """The directions ``(e23, e31, e12)`` of lines: ``q − p`` for ``P & Q``. Rust:
+    ``Line::direction``."""
+    c = dict(zip(Line.blades, np.moveaxis(line.array, -1, 0)))
+    return np.stack([c["e23"], c["e31"], c["e12"]], axis=-1)
+
+
+def moment(line):
+    """The moments ``(e01, e02, e03)`` of lines about the origin: ``p × d``. Rust:
+    ``Line::moment``."""
+    c = dict(zip(Line.blades, np.moveaxis(line.array, -1, 0)))
+    return np.stack([c["e01"], c["e02"], c["e03"]], axis=-1)
+
+
+_DISTANCES = {("Point", "Point"): "point_point", ("Point", "Plane"): "point_plane", ("Point", "Line"): "point_line",
+              ("Line", "Line"): "line_line"}
+
+
+def distance(a, b):
+    """Euclidean distances: point–point, point–plane (signed, positive on the normal's side),
+    point–line, line–line (also with the arguments the other way round). Rust:
+    ``Point::distance_to_point``, ``distance_to_plane``, ``distance_to_line``,
+    ``Line::distance_to_line``."""
+    key = (type(a).__name__, type(b).__name__)
+    if key not in _DISTANCES and key[::-1] in _DISTANCES:
+        a, b, key = b, a, key[::-1]
+    if key not in _DISTANCES:
+        raise TypeError(f"distance: no distance between {key[0]} and {key[1]}")
+    return _tk.distance(_DISTANCES[key], a.array, b.array)
+
+
+def project(x, onto):
+    """Orthogonal projections, as klein's ``kln::project``: a point onto a plane or a line,
+    ``(P · X) ∧ X``; a line onto a plane, ``(L · p) ∧ p``; a line or a plane onto a point, the
+    one through it parallel, ``−(X · P) · P`` (keeping the orientation). Rust:
+    ``Point::project_onto_plane``, ``project_onto_line``, ``Line::project_onto_plane``,
+    ``project_onto_point``, ``Plane::project_onto_point``."""
+    kinds = (type(x).__name__, type(onto).__name__)
+    if kinds in (("Point", "Plane"), ("Point", "Line"), ("Line", "Plane")):
+        return (x | onto) ^ onto
+    if kinds in (("Line", "Point"), ("Plane", "Point")):
+        return -((x | onto) | onto)
+    raise TypeError(f"project: no projection of {kinds[0]} onto {kinds[1]}")

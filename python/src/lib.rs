@@ -4,6 +4,7 @@
 //! pipeline. Errors are Python
 //! exceptions (`cga.ValueError` and its kinds), never a crash.
 
+mod cga2_sta;
 mod classes;
 mod draw;
 mod errors;
@@ -11,6 +12,7 @@ mod figure;
 mod fit;
 mod geometry;
 mod kernels;
+mod pga;
 mod render;
 mod threads;
 mod toolkit;
@@ -42,6 +44,8 @@ pub mod __private {
 fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     classes::register(m)?;
+    pga::register(m)?;
+    cga2_sta::register(m)?;
     m.add_class::<render::Scene>()?;
     m.add_class::<render::Picture>()?;
     m.add_function(wrap_pyfunction!(geometry::up, m)?)?;

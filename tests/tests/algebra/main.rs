@@ -5,6 +5,7 @@
 
 mod algebras;
 mod arithmetic;
+mod cga2_toolkit;
 mod dimension;
 mod exp_log;
 mod facts;
@@ -15,5 +16,7 @@ mod lanes;
 mod multiplication_counts;
 mod orthonormal_basis;
 mod pga;
+mod pga_toolkit;
 mod prepared;
 mod scalars;
+mod sta_toolkit;
