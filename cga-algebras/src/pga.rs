@@ -23,7 +23,7 @@
 //! - motors ([`Motor::rotor`], [`Motor::translator`], [`Motor::from_rotor_translator`],
 //!   [`Motor::screw`], [`Motor::apply`]);
 //! - closed-form [`Line::exp_motor`] and [`Motor::log`] of screws, [`Motor::sqrt`],
-//!   [`Motor::pow`], [`Motor::interpolate`], [`Motor::normalise_motor`];
+//!   [`Motor::pow`], [`Motor::interpolate`], [`Motor::renormalise`];
 //! - distances, angles and projections ([`Point::distance_to_line`],
 //!   [`Line::distance_to_line`], [`Line::project_onto_plane`], …).
 //!

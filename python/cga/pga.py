@@ -131,7 +131,7 @@ def sqrt(motor):
 
 def normalise(motor):
     """Motors scaled to ``M M̃ = 1``, the Study condition (the ``e0123`` part) included. klein:
-    ``m.normalize()``; kingdon: ``M.normalized()``. Rust: ``Motor::normalise_motor``."""
+    ``m.normalize()``; kingdon: ``M.normalized()``. Rust: ``Motor::renormalise``."""
     return Motor(_tk.normalise(motor.array))
 
 

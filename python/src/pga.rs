@@ -134,7 +134,7 @@ fn sqrt(py: Python<'_>, motor: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
 fn normalise(py: Python<'_>, motor: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let m = rows::<8>("motor", motor)?;
     let shape = broadcast(&[(m.rows.len(), m.single)])?;
-    output(py, "normalise", shape, |i| Motor::from_array(at(&m, i)).normalise_motor().map(Motor::to_array))
+    output(py, "normalise", shape, |i| Motor::from_array(at(&m, i)).renormalise().map(Motor::to_array))
 }
 
 #[pyfunction]

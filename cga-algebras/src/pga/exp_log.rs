@@ -73,13 +73,13 @@ impl<T: Real> Line<T> {
 impl<T: Real> Motor<T> {
     /// The principal logarithm of a motor, a screw's included, in closed form (see the
     /// module's formula): `B_M / sinc(a) − q f(a) / sinc(a)³ · I u_M` with `a = atan2(|u_M|,
-    /// s) ∈ [0, π]`, after [`normalise_motor`](Self::normalise_motor); `exp_motor(log(M)) =
+    /// s) ∈ [0, π]`, after [`renormalise`](Self::renormalise); `exp_motor(log(M)) =
     /// M`. `log(M) = (−θ + δ I) L̂ / 2` for the screw by `θ` and `δ` about `L̂`; a pure
     /// translation `1 + v` gives `v`. klein: `kln::log(motor)`; kingdon has no `log`.
     /// `NotAMotor` for `⟨M M̃⟩₀ = 0`, `FullTurn` for `M = −1` up to a translation (every
     /// line's half turn twice), `NonFinite` for a non-finite input or result.
     pub fn log(self) -> Result<Line<T>, PgaError> {
-        let m = self.normalise_motor()?;
+        let m = self.renormalise()?;
         let b = Line { e01: m.e01, e02: m.e02, e03: m.e03, e12: m.e12, e31: m.e31, e23: m.e23 };
         let sin_a = norm(b.direction());
         if sin_a == T::zero() && m.s < T::zero() {
@@ -104,11 +104,11 @@ impl<T: Real> Motor<T> {
     /// screw. klein: `kln::sqrt(m)` (the same formula); kingdon: `M.sqrt()`, which divides by
     /// the real part of `|1 + M|` only, so agrees for rotations and translations but not for
     /// screws. `FullTurn` for `M = −1` up to a translation, `NotAMotor`, `NonFinite` as
-    /// [`normalise_motor`](Self::normalise_motor).
+    /// [`renormalise`](Self::renormalise).
     pub fn sqrt(self) -> Result<Self, PgaError> {
-        let m = self.normalise_motor()?;
+        let m = self.renormalise()?;
         let one_plus = Motor { s: m.s + T::one(), ..m };
-        match one_plus.normalise_motor() {
+        match one_plus.renormalise() {
             Err(PgaError::NotAMotor) => Err(PgaError::FullTurn),
             r => r,
         }
@@ -120,8 +120,8 @@ impl<T: Real> Motor<T> {
     /// `√(b ã) a`. klein: `kln::exp(t * kln::log(b * ~a)) * a`; kingdon: `(b * ~a).sqrt() *
     /// a` at `t = ½`. Errors as [`log`](Self::log), of `b ã`.
     pub fn interpolate(a: Motor<T>, b: Motor<T>, t: T) -> Result<Self, PgaError> {
-        let a = a.normalise_motor()?;
-        let mut d = (b.normalise_motor()? * a.reverse()).normalise_motor()?;
+        let a = a.renormalise()?;
+        let mut d = (b.renormalise()? * a.reverse()).renormalise()?;
         if d.s < T::zero() {
             d = -d;
         }
@@ -135,7 +135,7 @@ impl<T: Real> Motor<T> {
     /// `m.normalize()`; kingdon: `M.normalized()` (dividing by `M.norm()`, a Study number).
     /// The generated `normalise` divides by `√⟨M M̃⟩₀` alone and leaves the Study defect.
     /// `NotAMotor` for `⟨M M̃⟩₀ ≤ 0`, `NonFinite` for a non-finite input or result.
-    pub fn normalise_motor(self) -> Result<Self, PgaError> {
+    pub fn renormalise(self) -> Result<Self, PgaError> {
         finite((), &self.to_array())?;
         let n = self.gp(self.reverse());
         let (n0, n1) = (n.s, n.e0123);

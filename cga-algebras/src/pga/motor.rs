@@ -91,12 +91,12 @@ impl<T: Real> Motor<T> {
     }
 
     /// The motor's rotation part `⟨M⟩₀ + ⟨M⟩₂`'s Euclidean terms `s + e12, e31, e23` and its
-    /// translation: for a unit motor `M = T R` ([`normalise_motor`](Self::normalise_motor)
+    /// translation: for a unit motor `M = T R` ([`renormalise`](Self::renormalise)
     /// first), `R = s + b` (the Euclidean part) and the translation `t = −2 ⟨M R̃⟩_{e0i}`,
     /// what [`from_rotor_translator`](Self::from_rotor_translator) would be given. `NotAMotor`
     /// where the rotation part is zero.
     pub fn rotor_translation(self) -> Result<(Motor<T>, [T; 3]), PgaError> {
-        let m = self.normalise_motor()?;
+        let m = self.renormalise()?;
         let r = Motor { s: m.s, e12: m.e12, e31: m.e31, e23: m.e23, ..Motor::zero() };
         let t = m * r.reverse();
         let k = -T::from_f64(2.0);

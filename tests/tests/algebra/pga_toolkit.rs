@@ -144,7 +144,7 @@ fn interpolation_and_normalisation_are_kingdons() {
         assert!(close_motor(Motor::interpolate(a, b, 1.0).unwrap(), b) <= 1e-12);
     }
     for case in data["normalised"].as_array().unwrap() {
-        let got = motor(&case["motor"]).normalise_motor().unwrap();
+        let got = motor(&case["motor"]).renormalise().unwrap();
         assert!(close(&got.to_storage(), &ours(&case["want"])) <= 1e-15);
         let n = got * got.reverse();
         assert!((n.s - 1.0).abs() <= 1e-15 && n.e0123.abs() <= 1e-15, "M M̃ = 1: {n:?}");
