@@ -5,7 +5,7 @@
 //! noisy machine only ratios measured side by side mean anything.
 
 use cga_core::simd::{self, F64x4, F64x8, Kernel, Lane};
-use cga_core::{Motor, Rotor, Sandwich, Vector, down, up};
+use cga_core::{Motor, Prepare, Rotor, Sandwich, Vector, down, up};
 use criterion::{Criterion, Throughput};
 use glam::{DAffine3, DQuat, DVec3};
 use std::hint::black_box;
@@ -116,14 +116,31 @@ impl Kernel for MoveBy {
     }
 }
 
+/// The same by the motor's prepared matrix (`Prepare`: 21 multiplications a point against
+/// the sandwich's two stages), in every lane.
+struct MoveByMatrix(<Motor as Prepare<Vector>>::Matrix);
+
+impl Kernel for MoveByMatrix {
+    type Input = Vector;
+    type Output = Vector;
+    #[inline(always)]
+    fn apply<L: Lane>(&self, x: Vector<L>) -> Vector<L> {
+        let m = self.0.map(|c| L::from_fn(|_| c));
+        <Motor<L> as Prepare<Vector<L>>>::apply_matrix(&m, x)
+    }
+}
+
 type Conformal = (&'static str, Box<dyn Fn(&[Vector], &mut [Vector])>);
 
 /// Moving conformal points (`M X M̃`, all five coefficients) one at a time, through
 /// `simd::run` with a kernel and through `simd::map` with a closure on eight lanes and on
 /// four, marked `#[inline(always)]` and not: the marked closure is meant to cost nothing
 /// over the kernel at the lane width `run` takes on this CPU.
-fn conformal_methods(m: Motor) -> Vec<Conformal> {
+fn conformal_methods(m: Motor, points: &[[f64; 3]]) -> Vec<Conformal> {
     let (lanes, eight) = (simd::splat::<Motor, F64x4>(m), simd::splat::<Motor, F64x8>(m));
+    let (affine, euclidean) = (DAffine3::from(m), points.to_vec());
+    let moved = std::cell::RefCell::new(vec![[0.0; 3]; points.len()]);
+    let prepared = m.prepare::<Vector>();
     vec![
         (
             "sandwich, one at a time",
@@ -134,6 +151,21 @@ fn conformal_methods(m: Motor) -> Vec<Conformal> {
             }),
         ),
         ("simd::run(MoveBy)", Box::new(move |x: &[Vector], out: &mut [Vector]| simd::run(&MoveBy(m), x, out).unwrap())),
+        (
+            "simd::run(MoveByMatrix)",
+            Box::new(move |x: &[Vector], out: &mut [Vector]| {
+                simd::run(&MoveByMatrix(Prepare::<Vector>::matrix(m)), x, out).unwrap()
+            }),
+        ),
+        ("m.prepare().apply_into", Box::new(move |x: &[Vector], out: &mut [Vector]| prepared.apply_into(x, out))),
+        (
+            "glam DAffine3 (Euclidean points)",
+            Box::new(move |_: &[Vector], _: &mut [Vector]| {
+                for (o, p) in moved.borrow_mut().iter_mut().zip(&euclidean) {
+                    *o = affine.transform_point3(DVec3::from(*p)).to_array();
+                }
+            }),
+        ),
         (
             "simd::map(#[inline(always)] |x| …) ×8",
             Box::new(move |x: &[Vector], out: &mut [Vector]| {
@@ -169,7 +201,7 @@ fn conformal_methods(m: Motor) -> Vec<Conformal> {
 
 /// [`interleaved`] for conformal points; ratios to one at a time.
 fn interleaved_conformal(m: Motor, points: &[[f64; 3]]) {
-    let methods = conformal_methods(m);
+    let methods = conformal_methods(m, points);
     let xs: Vec<Vector> = points.iter().map(|&p| up(p)).collect();
     let mut out = vec![Vector::zero(); N];
     let mut times = vec![Vec::new(); methods.len()];
