@@ -5,6 +5,7 @@
 
 mod clifford_tools;
 mod conformal;
+mod cookbook_clifford;
 mod curvature;
 mod far_reference;
 mod fit;
