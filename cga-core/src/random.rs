@@ -127,14 +127,15 @@ pub fn random_circle<T: Real, R: Rng + ?Sized>(rng: &mut R, scale: T) -> Result<
     Circle::new(c, n, size(rng, s))
 }
 
-/// A point pair `up(c + r d) ∧ up(c − r d)` (normalised): a [`random_point`] centre `c`, a
-/// [`random_direction`] `d`, a half separation `r` uniform in `[0.1, 1] · scale`.
+/// A point pair `up(c + r d) ∧ up(c − r d)`, normalised (`P P̃ = −1`, as clifford's): a
+/// [`random_point`] centre `c`, a [`random_direction`] `d`, a half separation `r` uniform in
+/// `[0.1, 1] · scale`.
 pub fn random_point_pair<T: Real, R: Rng + ?Sized>(rng: &mut R, scale: T) -> Result<Bivector<T>> {
     let s = checked(scale)?;
     let c = position(rng, s);
     let d = random_direction::<T, _>(rng);
     let r = size::<T, _>(rng, s);
-    Bivector::from_points(add(c, times(d, r)), add(c, times(d, -r)))
+    Bivector::from_points(add(c, times(d, r)), add(c, times(d, -r)))?.try_normalise().ok_or(GeometryError::Degenerate)
 }
 
 /// A rotor about a [`random_direction`] axis by a [`random_angle`].

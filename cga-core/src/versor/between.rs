@@ -131,6 +131,8 @@ pub trait VersorBetween<T: Real>: Sized {
     /// `V Ṽ = 1` takes such a sphere onto the other with its orientation). clifford's
     /// `rotor_between_objects`, which normalises the same way. For lines and planes `V` is a
     /// motor; for rounds of different sizes it scales too (a general conformal versor).
+    /// `V` takes the normalised `X₁` to the normalised `X₂` (an `X₁` of another weight to
+    /// `X₂` of that weight).
     /// `NoVersor` for opposite objects (`X₂ ≈ −X₁`) or where `K` has no real root;
     /// `ZeroAxis` for a zero or null object.
     fn versor_to(&self, other: &Self) -> VersorResult<Even<T>>;

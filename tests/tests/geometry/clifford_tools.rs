@@ -496,3 +496,62 @@ fn motor_between_rounds_against_clifford() {
         assert!(e < 1e-9, "{i}: {e:e} from clifford's");
     }
 }
+
+/// Anywhere and at any size: random circles and lines (`cga_core::random`), scaled by
+/// 1e-3 … 1e3 and moved up to 100 of their own sizes from the origin, have their closest
+/// points found to Euclid's global minimum (brute force) within 1e-9 of the scene's size,
+/// for circle–line and circle–circle alike.
+#[test]
+fn closest_points_anywhere_and_at_any_size() {
+    let mut rng = seeded(2026);
+    for trial in 0..60 {
+        let s = [1e-3, 1.0, 1e3][trial % 3];
+        let shift = random::random_point::<f64, _>(&mut rng, 100.0 * s).unwrap();
+        let place = |c: E3| add(scale(c, s), shift);
+        let circle = |rng: &mut random::Stream| {
+            let c = random::random_circle::<f64, _>(rng, 1.0).unwrap();
+            let (c, n, r) = c.centre_normal_radius().unwrap();
+            (place(c), n, r * s)
+        };
+        let (c1, n1, r1) = circle(&mut rng);
+        let (c2, n2, r2) = circle(&mut rng);
+        let a = Circle::new(c1, n1, r1).unwrap();
+        let b = Circle::new(c2, n2, r2).unwrap();
+        let size = norm(sub(c1, c2)) + r1 + r2;
+        let k = a.closest_points_to_circle(&b).unwrap();
+        let want = brute(c1, n1, r1, |x| r2 * cga_core::euclid::circle_distance(x, (c2, n2, r2)));
+        assert!((k.distance - want).abs() <= 1e-9 * size, "{trial}: circles {} vs {want}", k.distance);
+        let line = random::random_line::<f64, _>(&mut rng, 1.0).unwrap();
+        let line = Line::new(place(line.point().unwrap()), line.direction().unwrap()).unwrap();
+        let k = a.closest_points_to_line(&line).unwrap();
+        let size = norm(sub(c1, line.point().unwrap())) + r1;
+        let want = brute(c1, n1, r1, |x| line.distance_to(x).unwrap());
+        assert!((k.distance - want).abs() <= 1e-9 * size, "{trial}: line {} vs {want}", k.distance);
+    }
+}
+
+/// `versor_to` on 100 random pairs of each kind (`cga_core::random`): `V X₁ V⁻¹ = X₂` to
+/// 1e-10 of the blade, `V Ṽ = ±1`.
+#[test]
+fn versor_between_random_objects_takes_one_onto_the_other() {
+    let mut rng = seeded(77);
+    macro_rules! check {
+        ($draw:ident) => {{
+            for _ in 0..100 {
+                let a = random::$draw::<f64, _>(&mut rng, 1.0).unwrap();
+                let b = random::$draw::<f64, _>(&mut rng, 1.0).unwrap();
+                let v = a.versor_to(&b).unwrap();
+                let (moved, want) = (Multivector::from(a.moved_by(&v)), Multivector::from(b.try_normalise().unwrap()));
+                let e = common::max_rel_diff(&moved.coeffs, &want.coeffs);
+                assert!(e < 1e-10, "{}: {e:e}", stringify!($draw));
+                let vv = Multivector::from(v) * Multivector::from(v.reverse());
+                assert!((vv.coeffs[0].abs() - 1.0).abs() < 1e-10);
+            }
+        }};
+    }
+    check!(random_circle);
+    check!(random_sphere);
+    check!(random_line);
+    check!(random_plane);
+    check!(random_point_pair);
+}
