@@ -95,6 +95,11 @@
 //! assert_eq!((p.ei.re, p.ei.du), (2.0, 2.0)); // ½t² and its derivative t
 //! ```
 //!
+//! **clifford.tools' helpers**: seeded random objects ([`random`], feature `random`, on by
+//! default), fits with a stated error ([`Fit`]), [`average_objects`], the closest points of
+//! a circle and a line or two circles ([`closest`]), and versors between frames, objects and
+//! rounds ([`Rotor::between_frames`], [`VersorBetween`], [`Motor::between_circles`]).
+//!
 //! Conventions (basis, signs, dual, meet) are in the repository's ARCHITECTURE.md and on
 //! [`algebra`]; error bounds against `ρ = |c|/r` in docs/STABILITY.md.
 
