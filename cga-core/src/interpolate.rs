@@ -46,6 +46,18 @@ pub enum InterpolationError {
     /// An endpoint is zero or null: it cannot be normalised.
     #[error("an endpoint is zero or null")]
     Degenerate,
+    /// [`average_objects`] of no objects.
+    #[error("no objects to average")]
+    NoObjects,
+    /// [`average_objects_weighted`]: the weights are not one per object, not all finite, or
+    /// sum to zero.
+    #[error("{weights} weights for {objects} objects, or weights not finite or summing to zero")]
+    Weights {
+        /// The objects' count.
+        objects: usize,
+        /// The weights' count.
+        weights: usize,
+    },
     /// f64 (or the scalar in use) cannot deliver the interpolation to the accuracy [`Pair`]
     /// promises ([`accuracy`]): `estimate` is the relative error to expect (see
     /// [`Pair::condition`]). Move the objects to a frame near them (translate by minus their
@@ -335,4 +347,47 @@ impl<X> Pair<X> {
         let c = interpolate(self.c1.lift(), self.c2.lift(), Dual::variable(alpha))?;
         Ok(X::split(c))
     }
+}
+
+/// The average of objects of one kind (clifford.tools.g3c's `average_objects`; Hadfield
+/// and Lasenby, "Direct linear interpolation of geometric objects", AGACSE 2018): each
+/// normalised and [`align`]ed to the first, summed, `X = (1/n) Σ Cᵢ`, and projected back
+/// onto the blades of that kind by the square-root projector `C = K⁻¹ X`,
+/// `K = √(−X X̃)` (see [`project_at`]; errors are labelled `α = 0`), normalised.
+///
+/// For two objects this is [`interpolate`] at `α = ½`. Unlike clifford, which sums the
+/// objects as given, the objects are oriented like the first before they are summed: an object and its
+/// negative are the same object, so `[C, −C]` averages to `C` here (clifford's sum is zero
+/// and its answer NaN).
+///
+/// `NoObjects` for an empty slice, `Degenerate` for a zero or null object; the projector's
+/// own errors where the sum has no real blade nearby (objects far apart, disjoint spheres).
+pub fn average_objects<T: Real, X: Interpolable<T>>(objects: &[X]) -> Result<X, InterpolationError> {
+    let weights = vec![T::one(); objects.len()];
+    average_objects_weighted(objects, &weights)
+}
+
+/// [`average_objects`] with weights: `X = Σ wᵢ Cᵢ / Σ wᵢ` of the normalised, aligned
+/// objects, projected. `Weights` unless there is one finite weight per object and they do
+/// not sum to zero.
+pub fn average_objects_weighted<T: Real, X: Interpolable<T>>(
+    objects: &[X],
+    weights: &[T],
+) -> Result<X, InterpolationError> {
+    let Some(&first) = objects.first() else { return Err(InterpolationError::NoObjects) };
+    let total = weights.iter().fold(T::zero(), |s, &w| s + w);
+    if weights.len() != objects.len()
+        || !weights.iter().all(|w| w.is_finite())
+        || total == T::zero()
+        || !total.is_finite()
+    {
+        return Err(InterpolationError::Weights { objects: objects.len(), weights: weights.len() });
+    }
+    let c1 = first.try_normalised().ok_or(InterpolationError::Degenerate)?;
+    let mut sum = c1 * (weights[0] / total);
+    for (&x, &w) in objects.iter().zip(weights).skip(1) {
+        let c = align(c1, x.try_normalised().ok_or(InterpolationError::Degenerate)?);
+        sum = sum + c * (w / total);
+    }
+    project_at(sum, T::zero())
 }

@@ -95,11 +95,17 @@
 //! assert_eq!((p.ei.re, p.ei.du), (2.0, 2.0)); // ½t² and its derivative t
 //! ```
 //!
+//! **clifford.tools' helpers**: seeded random objects ([`random`], feature `random`, on by
+//! default), fits with a stated error ([`Fit`]), [`average_objects`], the closest points of
+//! a circle and a line or two circles ([`closest`]), and versors between frames, objects and
+//! rounds ([`Rotor::between_frames`], [`VersorBetween`], [`Motor::between_circles`]).
+//!
 //! Conventions (basis, signs, dual, meet) are in the repository's ARCHITECTURE.md and on
 //! [`algebra`]; error bounds against `ρ = |c|/r` in docs/STABILITY.md.
 
 pub mod algebra;
 pub mod classify;
+pub mod closest;
 pub mod conformal;
 mod convert;
 #[cfg(feature = "glam")]
@@ -115,6 +121,8 @@ pub mod interpolate;
 pub mod intersect;
 pub mod measure;
 pub mod meet;
+#[cfg(feature = "random")]
+pub mod random;
 mod real;
 pub mod reflect;
 pub mod simd;
@@ -147,13 +155,18 @@ pub use conformal::{Disk, GeometryError, circumcircle, circumsphere, down, down_
 pub use curvature::{Curvature, CurvatureError, curvature, from_fundamental_forms};
 pub use dual::Dual;
 pub use evolved::{NormalError, NormalParts};
-pub use fit::{fit_circle, fit_line, fit_plane, fit_sphere};
+pub use fit::{
+    Fit, fit_circle, fit_circle_with_error, fit_line, fit_line_with_error, fit_plane, fit_plane_with_error, fit_sphere,
+    fit_sphere_with_error,
+};
 pub use flat::{AsFlat, Flat};
-pub use interpolate::{Interpolable, InterpolationError, Pair, align, interpolate, project_at};
+pub use interpolate::{
+    Interpolable, InterpolationError, Pair, align, average_objects, average_objects_weighted, interpolate, project_at,
+};
 pub use intersect::Meet;
 pub use measure::{Closest, Nearest, distance};
 pub use meet::{Hit, RoundMeet};
 pub use real::{Real, Select};
 pub use reflect::Reflect;
 pub use spline::{Joining, Spline, SplineError, bezier};
-pub use versor::{MotorSpline, Screw, VersorError, exp, rotor_between_lines};
+pub use versor::{Frame, MotorSpline, Screw, VersorBetween, VersorError, exp, rotor_between_lines};

@@ -249,7 +249,10 @@ pub struct Closest<T> {
     pub on_other: E3<T>,
     /// Their distance.
     pub distance: T,
-    /// The lines are parallel (the points are one closest pair of many).
+    /// The closest pair is one of many: parallel lines, and for
+    /// [`Circle::closest_points_to_line`] and [`Circle::closest_points_to_circle`] a line
+    /// along the circle's axis, coaxial circles, or a closest point on the other circle's
+    /// axis.
     pub parallel: bool,
 }
 

@@ -23,7 +23,8 @@ from files or built in code (:mod:`cga.scene`), to numpy arrays.
 ``cga.cga2`` the plane's conformal algebra G(3,1) and ``cga.vga`` the 3D vector algebra G(3),
 with the same classes and operators (:mod:`cga.pga`, :mod:`cga.sta`, :mod:`cga.cga2`,
 :mod:`cga.vga`). ``cga.random`` draws random objects of every class (:mod:`cga.random`); ``cga.fit_sphere``,
-``fit_circle``, ``fit_plane`` and ``fit_line`` fit objects to points by least squares.
+``fit_circle``, ``fit_plane`` and ``fit_line`` fit objects to points by least squares, and
+``cga.average_objects`` averages objects of one class.
 
 ``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
 convert values and arrays to and from those libraries' multivectors (:mod:`cga.interop`).
@@ -77,11 +78,18 @@ fit_circle = Circle.fit
 fit_plane = Plane.fit
 fit_line = Line.fit
 
+
+def average_objects(objects):
+    """The average of an array of circles, spheres, planes, lines or point pairs, as one object
+    (clifford.tools.g3c's name for ``objects.average()``: each normalised and oriented like the
+    first, summed, and projected back onto the blades)."""
+    return objects.average()
+
 __all__ = [
     "Bivector", "Circle", "Dilator", "Even", "FlatPoint", "Generator", "GeometryError", "Infinity",
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
-    "Transversor", "ValueError", "Vector", "__version__", "down", "draw", "fit_circle", "fit_line",
+    "Transversor", "ValueError", "Vector", "__version__", "average_objects", "down", "draw", "fit_circle", "fit_line",
     "fit_plane", "fit_sphere", "from_clifford", "from_kingdon",
     "cga2", "interop", "pga", "random", "sta", "to_clifford", "to_kingdon", "up", "vga", "wedge",
 ]

@@ -381,3 +381,71 @@ impl Motor {
         Ok(Motor(build(Self::ty(), us.len(), single, |i| spline.at(us[i]).map(|m| m.to_storage()))?))
     }
 }
+
+/// `(on_self, on_other, distance)` of rows of closest pairs, refused by name and row.
+fn closest_out(
+    py: Python<'_>,
+    class: &str,
+    all: Vec<Result<cga_core::Closest<f64>, cga_core::GeometryError>>,
+    single: bool,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, Py<PyAny>)> {
+    let all: Vec<cga_core::Closest<f64>> = all
+        .into_iter()
+        .enumerate()
+        .map(|(i, k)| k.map_err(|e| GeometryError::new_err(format!("{class} (row {i}): {e}"))))
+        .collect::<PyResult<_>>()?;
+    let pts = |f: fn(&cga_core::Closest<f64>) -> E3| points_out(py, all.iter().map(f).collect(), single);
+    let d = numbers(py, class, all.len(), single, |i| Ok::<_, String>(all[i].distance))?;
+    Ok((pts(|c| c.on_self)?, pts(|c| c.on_other)?, d))
+}
+
+#[pymethods]
+impl Circle {
+    /// `(on_self, on_other, distance)`: the closest points of the circle(s) and the line(s)
+    /// (cga-core's `Circle::closest_points_to_line`: the global minimum over the circle, to
+    /// rounding; for a line along the axis one pair of many).
+    fn closest_points_to_line(
+        &self,
+        py: Python<'_>,
+        line: &Bound<'_, PyAny>,
+    ) -> PyResult<(Py<PyAny>, Py<PyAny>, Py<PyAny>)> {
+        let (v, w) = (&self.0, of(line, Line::ty(), "line")?);
+        let (n, single) = rows(v, w)?;
+        let all = (0..n).map(|i| Self::typed(v, at(v, i)).closest_points_to_line(&Line::typed(w, at(w, i)))).collect();
+        closest_out(py, "Circle", all, single)
+    }
+
+    /// `(on_self, on_other, distance)`: the closest points of two circles (cga-core's
+    /// `Circle::closest_points_to_circle`; for coaxial circles one pair of many).
+    fn closest_points_to_circle(
+        &self,
+        py: Python<'_>,
+        other: &Bound<'_, PyAny>,
+    ) -> PyResult<(Py<PyAny>, Py<PyAny>, Py<PyAny>)> {
+        let (v, w) = (&self.0, of(other, Circle::ty(), "other")?);
+        let (n, single) = rows(v, w)?;
+        let all =
+            (0..n).map(|i| Self::typed(v, at(v, i)).closest_points_to_circle(&Self::typed(w, at(w, i)))).collect();
+        closest_out(py, "Circle", all, single)
+    }
+}
+
+macro_rules! average {
+    ($($class:ident),*) => {$(
+        #[pymethods]
+        impl $class {
+            /// The average of the rows as one object (cga-core's `average_objects`: each
+            /// normalised and oriented like the first, summed, projected back onto the blades
+            /// by the square-root projector; clifford.tools.g3c's `average_objects`).
+            fn average(&self) -> PyResult<Self> {
+                let v = &self.0;
+                let all: Vec<_> = (0..v.n).map(|i| Self::typed(v, i)).collect();
+                let mean = cga_core::average_objects(&all)
+                    .map_err(|e| GeometryError::new_err(format!("{}.average: {e}", stringify!($class))))?;
+                Ok($class(build(Self::ty(), 1, true, |_| Ok::<_, String>(mean.to_storage()))?))
+            }
+        }
+    )*};
+}
+
+average!(Circle, Sphere, Plane, Line, Bivector);

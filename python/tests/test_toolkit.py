@@ -222,3 +222,47 @@ def test_fits_take_sets_of_points_and_conformal_points_and_refuse_what_holds_no_
         cga.fit_sphere(np.zeros((4, 2)))
     with pytest.raises(cga.ValueError, match="finite"):
         cga.fit_line([[0, 0, 0], [1, np.nan, 0]])
+
+
+def _brute_on_circle(c, n, r, dist):
+    """The least of ``dist`` over 20000 points of the circle (centre c, unit normal n, radius r)."""
+    a = np.array([1.0, 0, 0]) if abs(n[0]) < 0.9 else np.array([0, 1.0, 0])
+    u = np.cross(n, a)
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    t = np.linspace(0, 2 * np.pi, 20000, endpoint=False)
+    xs = c + r * (np.outer(np.cos(t), u) + np.outer(np.sin(t), v))
+    return dist(xs).min()
+
+
+def test_closest_points_of_circles_and_lines_are_euclids():
+    ring = cga.Circle.from_centre_normal_radius([0, 0, 0.0], [0, 0, 1.0], 1.0)
+    above = cga.Line.from_point_direction([3.0, 0, 2.0], [0, 1.0, 0])
+    on_c, on_l, dist = ring.closest_points_to_line(above)
+    assert np.allclose(on_c, [1, 0, 0], atol=TOL) and np.allclose(on_l, [3, 0, 2], atol=TOL)
+    assert abs(dist - np.sqrt(8)) < TOL
+    upright = cga.Circle.from_centre_normal_radius([3.0, 0, 0], [0, 1.0, 0], 1.0)
+    on_a, on_b, dist = ring.closest_points_to_circle(upright)
+    assert np.allclose(on_a, [1, 0, 0], atol=TOL) and np.allclose(on_b, [2, 0, 0], atol=TOL) and abs(dist - 1) < TOL
+    # Arrays, row by row, against a brute force over each circle.
+    circles, lines = cga.random.circles(20, seed=3), cga.random.lines(20, seed=4)
+    c, n, r = circles.centre_normal_radius()
+    _, _, d = circles.closest_points_to_line(lines)
+    p, u = lines.point(), lines.direction()
+    for i in range(20):
+        want = _brute_on_circle(c[i], n[i], r[i], lambda x: np.linalg.norm(np.cross(x - p[i], u[i]), axis=1))
+        assert want - 1e-6 <= d[i] <= want + 1e-12
+    with pytest.raises(TypeError):
+        ring.closest_points_to_line(ring)
+
+
+def test_average_objects():
+    a = cga.Circle.from_centre_normal_radius([0, 0, 0.0], [0, 0, 1.0], 1.0)
+    both = cga.Circle(np.stack([a.array, (-a).array]))
+    mean = cga.average_objects(both)
+    assert mean.single and np.allclose(mean.array, a.array, atol=TOL)
+    spheres = cga.Sphere.from_centre_radius([[0, 0, 0.0], [0.02, 0, 0], [0, 0.02, 0]], [1.0, 1.0, 1.0])
+    c, r = spheres.average().centre_radius()
+    assert np.allclose(c, [0.02 / 3, 0.02 / 3, 0], atol=1e-4) and abs(r - 1) < 1e-3
+    with pytest.raises(cga.GeometryError):
+        cga.Circle(np.zeros((2, 10))).average()

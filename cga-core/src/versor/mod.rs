@@ -16,6 +16,7 @@
 //! - `M` and `−M` are the same motion; [`Motor::interpolate`] picks the shorter path between
 //!   them, [`Motor::pow`] follows the sign it is given.
 
+mod between;
 mod bulk;
 mod dilator;
 mod generator;
@@ -23,6 +24,7 @@ mod motor;
 mod rotor;
 mod spline;
 
+pub use between::{Frame, VersorBetween};
 pub use generator::Screw;
 pub use spline::MotorSpline;
 
@@ -75,6 +77,22 @@ pub enum VersorError {
     /// A spline needs at least two poses.
     #[error("a spline of motors needs at least two poses")]
     TooFewPoses,
+    /// Three axes that are not orthonormal (to `√ε`): `defect` is the largest
+    /// `|aᵢ·aⱼ − δᵢⱼ|`.
+    #[error("the axes are not an orthonormal frame: aᵢ·aⱼ differs from δᵢⱼ by {defect:e}")]
+    NotAFrame {
+        /// The largest `|aᵢ·aⱼ − δᵢⱼ|`.
+        defect: f64,
+    },
+    /// Two frames of opposite handedness: a reflection, not a rotation, takes one to the other.
+    #[error("the frames have opposite handedness: no rotation takes one to the other")]
+    Handedness,
+    /// `Y = 1 + γ X₂ X₁` has no normalising square root: the objects are opposite
+    /// (`X₂ ≈ −X₁`, where no versor of this form is unique) or `Y Ỹ` has no real root.
+    #[error(
+        "no versor of the form 1 + γ X2 X1 takes the first object to the second (opposite objects, or Y Ỹ has no real root)"
+    )]
+    NoVersor,
     /// A versor whose `V Ṽ` is zero or not finite: it has no inverse.
     #[error("the versor has no inverse (V Ṽ is zero or not finite)")]
     NotInvertible,

@@ -3,7 +3,9 @@
 //! extreme and far-from-origin cases against Euclidean formulas and high precision. One
 //! module a subject; `cargo test -p cga-tests --test geometry -- MODULE::` runs one.
 
+mod clifford_tools;
 mod conformal;
+mod cookbook_clifford;
 mod curvature;
 mod far_reference;
 mod fit;

@@ -129,6 +129,7 @@ fn short(e: &InterpolationError) -> String {
         InterpolationError::NoRealRoot { .. } => "NoRealRoot".into(),
         InterpolationError::Singular { .. } => "Singular".into(),
         InterpolationError::Degenerate => "Degenerate".into(),
+        InterpolationError::NoObjects | InterpolationError::Weights { .. } => format!("{e:?}"),
         InterpolationError::ThroughInfinity { .. } => "ThroughInfinity".into(),
         InterpolationError::IllConditioned { estimate } => format!("IllConditioned {{ estimate: {estimate:.1e} }}"),
     }
