@@ -197,3 +197,141 @@ fn batches_through_simd_equal_one_at_a_time() {
     // Lengths that differ: None.
     assert_eq!(run(&Rotate, &input[1..], &mut out), None);
 }
+
+/// 2D projective geometric algebra G(2,0,1), declared as the crate docs show for 3D PGA: the
+/// null vector renamed e0 and listed first, blades spelled as bivector.net does (e20).
+mod pga2 {
+    cga_macros::algebra! {
+        scalar = cga_core::Real;
+        scalars = [f64];
+        lanes = cga_core::simd;
+        prelude = f64;
+        signature = (2, 0, 1);
+        basis = [e0 = e3, e1, e2];
+        /// A line a x + b y + c = 0: a e1 + b e2 + c e0.
+        versor Line = [e0, e1, e2];
+        /// A point (x, y): e12 + x e20 + y e01.
+        type Point = [e20, e01, e12];
+        /// A motor: reflections in two lines.
+        versor Motor = [s, e20, e01, e12];
+    }
+}
+
+mod plane_pga {
+    use super::pga2 as gx;
+    use super::pga2::prelude::*;
+    use cga_core::simd::{F64x4, Kernel, Lane, map, run, run_columns, splat};
+
+    const EPS: f64 = 1e-12;
+
+    fn point(x: f64, y: f64) -> Point {
+        Point { e12: 1.0, e20: x, e01: y }
+    }
+
+    #[track_caller]
+    fn assert_at(p: Point, want: [f64; 2]) {
+        let got = [p.e20 / p.e12, p.e01 / p.e12];
+        assert!((got[0] - want[0]).abs() < EPS && (got[1] - want[1]).abs() < EPS, "got {got:?}, want {want:?}");
+    }
+
+    /// The line a x + b y + c = 0, its normal (a, b) of unit length.
+    fn line(a: f64, b: f64, c: f64) -> Line {
+        let n = (a * a + b * b).sqrt();
+        Line { e1: a / n, e2: b / n, e0: c / n }
+    }
+
+    #[test]
+    fn two_lines_meet_in_a_point_and_two_points_join_in_a_line() {
+        // x = 1 and y = 2 meet at (1, 2): (e1 − e0) ∧ (e2 − 2 e0) = e12 + 2 e01 + e20.
+        let p = line(1.0, 0.0, -1.0) ^ line(0.0, 1.0, -2.0);
+        assert_eq!((p.e12, p.e20, p.e01), (1.0, 1.0, 2.0));
+        // x + y = 3 and x − y = 1 meet at (2, 1).
+        assert_at(line(1.0, 1.0, -3.0) ^ line(1.0, -1.0, -1.0), [2.0, 1.0]);
+        // The join of (0, 1) and (1, 2) is y = x + 1: −x + y − 1 = 0, up to a factor.
+        let l: Line = point(0.0, 1.0) & point(1.0, 2.0);
+        assert!(l.e2.abs() > 0.5);
+        assert!((l.e1 / l.e2 + 1.0).abs() < EPS && (l.e0 / l.e2 + 1.0).abs() < EPS);
+        // A point on a line: P & L = 0 (a scalar, in the Motor: the smallest type holding s).
+        assert!((point(4.0, 5.0) & l).s.abs() < EPS);
+        assert!((point(4.0, 4.0) & l).s.abs() > 0.5);
+    }
+
+    #[test]
+    fn two_reflections_translate_and_rotate() {
+        // Reflections in x = 0, then x = 1: a translation by 2 along x.
+        let shift: Motor = line(1.0, 0.0, -1.0) * line(1.0, 0.0, 0.0);
+        assert_at(shift.sandwich(point(0.3, 0.5)), [2.3, 0.5]);
+        // In x = 0 (normal (1, 0)), then the line through the origin of normal (1, 1)/√2:
+        // twice 45°, a quarter turn counter-clockwise: (1, 0) → (0, 1), (2, 3) → (−3, 2).
+        let turn: Motor = line(1.0, 1.0, 0.0) * line(1.0, 0.0, 0.0);
+        assert_at(turn.sandwich(point(1.0, 0.0)), [0.0, 1.0]);
+        assert_at(turn.sandwich(point(2.0, 3.0)), [-3.0, 2.0]);
+        // Composed right to left: turn, then shift: (1, 0) → (0, 1) → (2, 1).
+        assert_at((shift * turn).sandwich(point(1.0, 0.0)), [2.0, 1.0]);
+        // A single line reflects: x = 1 takes (3, 7) to (−1, 7).
+        assert_at(line(1.0, 0.0, -1.0).sandwich(point(3.0, 7.0)), [-1.0, 7.0]);
+        // exp of b e12: cos b + sin b e12 (e12² = −1); exp of t e01: 1 + t e01 (e01² = 0).
+        let r: Motor = Point { e12: 0.3, e20: 0.0, e01: 0.0 }.exp();
+        assert!((r.s - 0.3f64.cos()).abs() < EPS && (r.e12 - 0.3f64.sin()).abs() < EPS);
+        let t: Motor = Point { e12: 0.0, e20: 0.0, e01: 0.7 }.exp();
+        assert_eq!((t.s, t.e01, t.e20, t.e12), (1.0, 0.7, 0.0, 0.0));
+    }
+
+    struct Apply;
+    impl Kernel for Apply {
+        type Input = (Motor, Point);
+        type Output = Point;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, (m, p): (gx::Motor<L>, gx::Point<L>)) -> gx::Point<L> {
+            m.sandwich(p)
+        }
+    }
+
+    struct Join;
+    impl Kernel for Join {
+        type Input = (Point, Point);
+        type Output = Line;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, (p, q): (gx::Point<L>, gx::Point<L>)) -> gx::Line<L> {
+            p & q
+        }
+    }
+
+    #[test]
+    fn batches_and_prepared_sandwiches() {
+        let n = 19;
+        let turn: Motor = line(1.0, 1.0, 0.0) * line(1.0, 0.0, 0.0); // a quarter turn
+        let points: Vec<Point> = (0..n).map(|k| point(k as f64, 1.0 - 0.5 * k as f64)).collect();
+        let want = |p: &Point| [-p.e01, p.e20]; // (x, y) → (−y, x)
+        // Prepared, one motor on many points.
+        let prepared = turn.prepare().apply_to(&points);
+        // run over (motor, point) pairs; run_columns over the same in two arrays.
+        let motors = vec![turn; n];
+        let input: Vec<(Motor, Point)> = motors.iter().copied().zip(points.iter().copied()).collect();
+        let mut by_run = vec![Point::zero(); n];
+        run(&Apply, &input, &mut by_run).unwrap();
+        let mut by_columns = vec![Point::zero(); n];
+        run_columns(&Apply, (&motors[..], &points[..]), &mut by_columns).unwrap();
+        // map with the motor splat into four lanes.
+        let lanes = splat::<Motor, F64x4>(turn);
+        let mut by_map = vec![Point::zero(); n];
+        map(&points, &mut by_map, #[inline(always)] |p: gx::Point<F64x4>| lanes.sandwich(p)).unwrap();
+        for k in 0..n {
+            let one = turn.sandwich(points[k]);
+            assert_eq!(by_run[k], one);
+            assert_eq!(by_columns[k], one);
+            assert_eq!(by_map[k], one);
+            assert_at(one, want(&points[k]));
+            assert_at(prepared[k], want(&points[k]));
+        }
+        // Joins in a batch: each line through (k, ·) and the origin-shifted copy.
+        let others: Vec<Point> = points.iter().map(|p| point(p.e20 + 1.0, p.e01 + 1.0)).collect();
+        let mut joins = vec![Line::zero(); n];
+        run_columns(&Join, (&points[..], &others[..]), &mut joins).unwrap();
+        for k in 0..n {
+            assert_eq!(joins[k], points[k] & others[k]);
+            // Direction (1, 1): the line's normal (e1, e2) is ±(1, −1)/√2 times its weight.
+            assert!((joins[k].e1 + joins[k].e2).abs() < EPS && joins[k].e1.abs() > 0.5);
+        }
+    }
+}
