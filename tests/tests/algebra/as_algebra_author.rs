@@ -315,7 +315,13 @@ mod plane_pga {
         // map with the motor splat into four lanes.
         let lanes = splat::<Motor, F64x4>(turn);
         let mut by_map = vec![Point::zero(); n];
-        map(&points, &mut by_map, #[inline(always)] |p: gx::Point<F64x4>| lanes.sandwich(p)).unwrap();
+        map(
+            &points,
+            &mut by_map,
+            #[inline(always)]
+            |p: gx::Point<F64x4>| lanes.sandwich(p),
+        )
+        .unwrap();
         for k in 0..n {
             let one = turn.sandwich(points[k]);
             assert_eq!(by_run[k], one);
