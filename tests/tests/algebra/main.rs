@@ -5,6 +5,9 @@
 
 mod algebras;
 mod arithmetic;
+mod as_algebra_author;
+mod as_cga2_user;
+mod as_klein_user;
 mod cga2_toolkit;
 mod dimension;
 mod exp_log;
