@@ -1,44 +1,9 @@
 //! Conversions between Euclidean points and conformal ones: `[T; 3]` always, glam's `DVec3`
-//! and `Vec3` behind the `glam` feature; and a scalar-valued result as the number it is.
+//! and `Vec3` behind the `glam` feature.
 
 use crate::conformal::{GeometryError, down, up};
 use crate::euclid::E3;
-use crate::{Real, Scalar, Vector};
-
-/// A scalar-valued product (`a | b`, `x * x`) is its number: `*(a | b)` is the `T`, and the
-/// number's own methods reach through (`(a | b).sqrt()`, `.abs()`).
-impl<T: Real> core::ops::Deref for Scalar<T> {
-    type Target = T;
-    fn deref(&self) -> &T {
-        &self.s
-    }
-}
-
-impl<T: Real> Scalar<T> {
-    /// `√s`, the square root of the scalar's number.
-    pub fn sqrt(self) -> T {
-        self.s.sqrt()
-    }
-
-    /// `|s|`.
-    pub fn abs(self) -> T {
-        self.s.abs()
-    }
-}
-
-impl From<Scalar<f64>> for f64 {
-    /// The scalar's number.
-    fn from(x: Scalar<f64>) -> f64 {
-        x.s
-    }
-}
-
-impl From<Scalar<f32>> for f32 {
-    /// The scalar's number.
-    fn from(x: Scalar<f32>) -> f32 {
-        x.s
-    }
-}
+use crate::{Real, Vector};
 
 impl<T: Real> From<E3<T>> for Vector<T> {
     /// `up(x)`: the conformal point of `x`.

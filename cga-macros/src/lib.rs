@@ -145,7 +145,26 @@
 //! `TruncationError` (source and target names, and each dropped blade with its nonzero value)
 //! unless every dropped coefficient is exactly zero.
 //!
-//! Versors get `Sandwich::sandwich` (`V X Ṽ`) on every type. A registry (`product_table`,
+//! A scalar-valued result is the smallest declared type holding `s` (declare `type Scalar =
+//! [s];` to get one: with a `Rotor = [s, …]` declared first, `a | b` would be a `Rotor`), `T`
+//! only where no declared type holds `s`. A type of `s` alone is its number: `Deref` to `T`
+//! (`*(a | b)`), `sqrt`, `abs`, and `From` into each of `scalars` (`f64::from(a | b)`).
+//!
+//! Versors get `Sandwich::sandwich` (`V X Ṽ`) on every type, and `Prepare` beside it: the
+//! map `X ↦ V X Ṽ` is linear, so its matrix (each nonzero entry a quadratic form in `V`'s
+//! coefficients) is computed once by `v.prepare()`, a `Prepared` whose `apply(x)`,
+//! `apply_to(&xs)` and `apply_into(&xs, &mut out)` cost one multiplication per nonzero
+//! entry (a 3D PGA motor on a point: 13, against the sandwich's 48); `v.apply_to(&xs)` is
+//! the same in one call. The result is the sandwich's up to rounding (the terms are summed in
+//! another order).
+//!
+//! With `lanes`, every type implements `cga_core::simd::Lanes`. With `prelude = f64;` the
+//! module `prelude` holds each type as an alias at `f64` (`prelude::Point` is `Point<f64>`,
+//! so it takes no parameter: code generic over lanes, `fn apply<L: Lane>(…, x: Point<L>)`,
+//! names the algebra's own `Point`, not the prelude's) and every generated trait, imported as
+//! `_`; what the crate adds by hand (its error types, say) is not in it.
+//!
+//! A registry (`product_table`,
 //! `unary_table`, `inverse_table`) lists every generated map with its term count, for tests
 //! that compare against the dense type. Besides the types, the invocation's module gets the
 //! traits above, `TruncationError`, `NormaliseError`, the registry and, with `dense`, the

@@ -147,7 +147,7 @@ fn interpolate(
     let (a, b, t) = (rows::<8>("a", a)?, rows::<8>("b", b)?, rows::<1>("t", t)?);
     let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single), (t.rows.len(), t.single)])?;
     output(py, "interpolate", shape, |i| {
-        Motor::interpolate(Motor::from_array(at(&a, i)), Motor::from_array(at(&b, i)), at(&t, i)[0])
+        Motor::interpolate(&Motor::from_array(at(&a, i)), &Motor::from_array(at(&b, i)), at(&t, i)[0])
             .map(Motor::to_array)
     })
 }

@@ -135,6 +135,15 @@ FIT = '''    @staticmethod
     def fit(points: Union[ArrayLike, "Vector"]) -> "{name}": ...
 '''
 
+# Classes averaged as clifford.tools' `average_objects` (cga-core's `average_objects`).
+AVERAGED = ["Bivector", "Line", "Circle", "Plane", "Sphere"]
+AVERAGE = '''    def average(self) -> "{name}": ...
+'''
+
+CIRCLE_CLOSEST = '''    def closest_points_to_line(self, line: "Line") -> tuple[NDArray[np.float64], NDArray[np.float64], Floats]: ...
+    def closest_points_to_circle(self, other: "Circle") -> tuple[NDArray[np.float64], NDArray[np.float64], Floats]: ...
+'''
+
 SPLINE = '''    @staticmethod
     def spline(poses: "Motor", u: ArrayLike) -> "Motor": ...
 '''
@@ -310,6 +319,8 @@ def main() -> None:
         out += VERSOR.replace("{name}", name) if name in ("Motor", "Rotor") else ""
         out += SPLINE if name == "Motor" else ""
         out += FIT.replace("{name}", name) if name in FITTED else ""
+        out += CIRCLE_CLOSEST if name == "Circle" else ""
+        out += AVERAGE.replace("{name}", name) if name in AVERAGED else ""
     path = os.path.join(os.path.dirname(__file__), "..", "cga", "_cga.pyi")
     with open(path, "w") as f:
         f.write(out)

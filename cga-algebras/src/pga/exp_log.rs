@@ -76,7 +76,7 @@ impl<T: Real> Motor<T> {
     /// s) ∈ [0, π]`, after [`renormalise`](Self::renormalise); `exp_motor(log(M)) =
     /// M`. `log(M) = (−θ + δ I) L̂ / 2` for the screw by `θ` and `δ` about `L̂`; a pure
     /// translation `1 + v` gives `v`. klein: `kln::log(motor)`; kingdon has no `log`.
-    /// `NotAMotor` for `⟨M M̃⟩₀ = 0`, `FullTurn` for `M = −1` up to a translation (every
+    /// `NotAMotor` for `⟨M M̃⟩₀ = 0`, `FullTurn` for `M = −1` exactly, up to a translation (every
     /// line's half turn twice), `NonFinite` for a non-finite input or result.
     pub fn log(self) -> Result<Line<T>, PgaError> {
         let m = self.renormalise()?;
@@ -118,8 +118,9 @@ impl<T: Real> Motor<T> {
     /// `(b ã)ᵗ a`, with `b ã` taken with a nonnegative scalar part (`M` and `−M` move alike:
     /// the shorter of the two screws). `t = 0` gives `a`, `t = 1` gives `±b`, `t = ½` gives
     /// `√(b ã) a`. klein: `kln::exp(t * kln::log(b * ~a)) * a`; kingdon: `(b * ~a).sqrt() *
-    /// a` at `t = ½`. Errors as [`log`](Self::log), of `b ã`.
-    pub fn interpolate(a: Motor<T>, b: Motor<T>, t: T) -> Result<Self, PgaError> {
+    /// a` at `t = ½`. Errors as [`log`](Self::log), of `b ã`. By reference, as cga-core's
+    /// `Motor::interpolate`.
+    pub fn interpolate(a: &Motor<T>, b: &Motor<T>, t: T) -> Result<Self, PgaError> {
         let a = a.renormalise()?;
         let mut d = (b.renormalise()? * a.reverse()).renormalise()?;
         if d.s < T::zero() {
@@ -130,7 +131,9 @@ impl<T: Real> Motor<T> {
     }
 
     /// The motor normalised as a rigid motion: `M M̃ = 1` exactly, its grade-4 part (the
-    /// Study condition) included, so that it moves without scaling or shearing. With `M M̃ =
+    /// Study condition) included, so that it is a motor `exp` and `log` take. A motor with a
+    /// Study defect still moves points rigidly, but not by the screw its coefficients name:
+    /// renormalising moves its image by about the size of the defect. With `M M̃ =
     /// n₀ + n₁ I` (a dual number), `M / √(n₀ + n₁ I) = M (1/√n₀ − n₁/(2 n₀^{3/2}) I)`. klein:
     /// `m.normalize()`; kingdon: `M.normalized()` (dividing by `M.norm()`, a Study number).
     /// The generated `normalise` divides by `√⟨M M̃⟩₀` alone and leaves the Study defect.

@@ -41,6 +41,7 @@ fn emit(g: &Gen) -> TokenStream {
     for (pos, t) in spec.types.iter().enumerate() {
         out.extend(g.type_items(pos, t));
         out.extend(g.scalar_ops(t));
+        out.extend(g.scalar_number(t));
         out.extend(g.inverse(pos, t));
         out.extend(g.inverse_trait(pos, t));
         functions.extend(g.exp(t));

@@ -766,6 +766,49 @@ impl Gen<'_> {
         out
     }
 
+    /// A type of the scalar alone is its number: `Deref` to `T` (`*(a | b)`, and the number's
+    /// methods reach through), `sqrt` and `abs`, and `From` into each of `scalars`.
+    pub(super) fn scalar_number(&self, t: &TypeSpec) -> TokenStream {
+        if t.model.blades != [0] {
+            return TokenStream::new();
+        }
+        let (real, ident) = (self.real, &t.ident);
+        let froms = self.spec.scalars.iter().map(|s| {
+            quote! {
+                impl From<#ident<#s>> for #s {
+                    /// The scalar's number.
+                    fn from(x: #ident<#s>) -> #s {
+                        x.s
+                    }
+                }
+            }
+        });
+        quote! {
+            /// A scalar-valued product (`a | b`, `x * x`) is its number: `*(a | b)` is the
+            /// `T`, and the number's own methods reach through.
+            impl<T: #real> core::ops::Deref for #ident<T> {
+                type Target = T;
+                fn deref(&self) -> &T {
+                    &self.s
+                }
+            }
+
+            impl<T: #real> #ident<T> {
+                /// `√s`, the square root of the scalar's number.
+                pub fn sqrt(self) -> T {
+                    <T as #real>::sqrt(self.s)
+                }
+
+                /// `|s|`.
+                pub fn abs(self) -> T {
+                    <T as #real>::abs(self.s)
+                }
+            }
+
+            #(#froms)*
+        }
+    }
+
     pub(super) fn aliases(&self) -> TokenStream {
         let mut out = TokenStream::new();
         for alias in &self.spec.aliases {

@@ -155,24 +155,24 @@ fn interpolating_two_motors_lands_halfway() {
     // Two turns about z: 30° and 90°; halfway is 60°.
     let a = Motor::rotor([0.0, 0.0, 1.0], PI / 6.0).unwrap();
     let b = Motor::rotor([0.0, 0.0, 1.0], FRAC_PI_2).unwrap();
-    let mid = Motor::interpolate(a, b, 0.5).unwrap();
+    let mid = Motor::interpolate(&a, &b, 0.5).unwrap();
     let (s, c) = FRAC_PI_3.sin_cos();
     assert_at(mid.apply(Point::at([1.0, 0.0, 0.0])), [c, s, 0.0]);
     // The ends are the motors themselves.
-    assert_at(Motor::interpolate(a, b, 0.0).unwrap().apply(Point::at([1.0, 0.0, 0.0])), [(PI / 6.0).cos(), 0.5, 0.0]);
-    assert_at(Motor::interpolate(a, b, 1.0).unwrap().apply(Point::at([1.0, 0.0, 0.0])), [0.0, 1.0, 0.0]);
+    assert_at(Motor::interpolate(&a, &b, 0.0).unwrap().apply(Point::at([1.0, 0.0, 0.0])), [(PI / 6.0).cos(), 0.5, 0.0]);
+    assert_at(Motor::interpolate(&a, &b, 1.0).unwrap().apply(Point::at([1.0, 0.0, 0.0])), [0.0, 1.0, 0.0]);
     // Two translations: halfway between (2, 0, 0) and (4, 2, 0) is (3, 1, 0).
     let ta = Motor::translator([2.0, 0.0, 0.0]).unwrap();
     let tb = Motor::translator([4.0, 2.0, 0.0]).unwrap();
-    assert_at(Motor::interpolate(ta, tb, 0.5).unwrap().apply(Point::at([0.0; 3])), [3.0, 1.0, 0.0]);
+    assert_at(Motor::interpolate(&ta, &tb, 0.5).unwrap().apply(Point::at([0.0; 3])), [3.0, 1.0, 0.0]);
     // From the identity to a quarter turn about the vertical line through (1, 1, 0): the
     // origin is at (−1, −1) from the axis; an eighth of a turn takes it to (0, −√2).
     let axis = Line::from_point_direction([1.0, 1.0, 0.0], [0.0, 0.0, 1.0]).unwrap();
     let quarter = Motor::screw(axis, FRAC_PI_2, 0.0).unwrap();
-    let mid = Motor::interpolate(Motor::identity(), quarter, 0.5).unwrap();
+    let mid = Motor::interpolate(&Motor::identity(), &quarter, 0.5).unwrap();
     assert_at(mid.apply(Point::at([0.0; 3])), [1.0, 1.0 - 2f64.sqrt(), 0.0]);
     // And a quarter turn's quarter: 22.5°, about (1, 1).
-    let q = Motor::interpolate(Motor::identity(), quarter, 0.25).unwrap();
+    let q = Motor::interpolate(&Motor::identity(), &quarter, 0.25).unwrap();
     // (−1, −1) from the axis is at 225°; turned by 22.5° it is at 247.5°, √2 away.
     let (s2, c2) = (5.0 * FRAC_PI_4 + FRAC_PI_4 / 2.0).sin_cos();
     let want = [1.0 + 2f64.sqrt() * c2, 1.0 + 2f64.sqrt() * s2, 0.0];

@@ -137,11 +137,11 @@ fn interpolation_and_normalisation_are_kingdons() {
     let data = kingdon();
     for (n, case) in data["interpolations"].as_array().unwrap().iter().enumerate() {
         let (a, b, t) = (motor(&case["a"]), motor(&case["b"]), case["t"].as_f64().unwrap());
-        let got = Motor::interpolate(a, b, t).unwrap();
+        let got = Motor::interpolate(&a, &b, t).unwrap();
         let d = close_motor(got, motor(&case["want"]));
         assert!(d <= 1e-12, "case {n}: interpolation differs by {d:e}");
-        assert!(close_motor(Motor::interpolate(a, b, 0.0).unwrap(), a) <= 1e-14);
-        assert!(close_motor(Motor::interpolate(a, b, 1.0).unwrap(), b) <= 1e-12);
+        assert!(close_motor(Motor::interpolate(&a, &b, 0.0).unwrap(), a) <= 1e-14);
+        assert!(close_motor(Motor::interpolate(&a, &b, 1.0).unwrap(), b) <= 1e-12);
     }
     for case in data["normalised"].as_array().unwrap() {
         let got = motor(&case["motor"]).renormalise().unwrap();
@@ -278,7 +278,7 @@ fn f32_follows_f64() {
         assert!(diff(m32.sqrt().unwrap(), m64.sqrt().unwrap()) <= 1e-6);
         let a = Motor::<f32>::translator([1.0, 0.0, 0.0]).unwrap();
         let a64 = Motor::<f64>::translator([1.0, 0.0, 0.0]).unwrap();
-        assert!(diff(Motor::interpolate(a, m32, 0.3).unwrap(), Motor::interpolate(a64, m64, 0.3).unwrap()) <= 2e-6);
+        assert!(diff(Motor::interpolate(&a, &m32, 0.3).unwrap(), Motor::interpolate(&a64, &m64, 0.3).unwrap()) <= 2e-6);
     }
 }
 
