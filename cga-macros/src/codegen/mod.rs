@@ -61,7 +61,7 @@ fn emit(g: &Gen) -> TokenStream {
     out.extend(g.aliases());
     out.extend(approx::approx(spec));
     out.extend(lanes::lanes(spec));
-    out.extend(prelude::prelude(spec));
+    out.extend(g.prelude());
     out
 }
 
