@@ -45,3 +45,42 @@ def check_products(a, b, alg, blade, width):
             continue
         want = from_kingdon(expected, type(got), alg, blade, width)
         assert np.allclose(got.array, want, rtol=1e-12, atol=1e-12), (type(a).__name__, symbol, type(b).__name__)
+
+
+# By blade name, for the algebras whose blades are spelled out of ascending order (PGA's
+# `e31`, `e021`): each name is kingdon's ascending blade times a sign.
+
+
+def canonical(name):
+    """A blade spelled as pga spells it (``e31``, ``e021``) as kingdon's ascending name and the
+    sign between them (a swap of two labels flips it)."""
+    if name == "s":
+        return "e", 1.0
+    labels = list(name[1:])
+    sign = 1.0
+    for i in range(len(labels)):
+        for j in range(len(labels) - 1 - i):
+            if labels[j] > labels[j + 1]:
+                labels[j], labels[j + 1] = labels[j + 1], labels[j]
+                sign = -sign
+    return "e" + "".join(labels), sign
+
+
+def named_to_kingdon(value, alg):
+    """One value as kingdon's multivector, blade by name."""
+    parts = {}
+    for name, c in zip(type(value).blades, value.array):
+        key, sign = canonical(name)
+        parts[key] = sign * float(c)
+    return alg.multivector(parts)
+
+
+def named_from_kingdon(mv, cls):
+    """The coefficients of ``cls``'s blades in kingdon's value (any other blade must be zero)."""
+    have = {mv.algebra.bin2canon[k]: float(v) for k, v in zip(mv.keys(), mv.values())}
+    out = []
+    for name in cls.blades:
+        key, sign = canonical(name)
+        out.append(sign * have.pop(key, 0.0))
+    assert all(abs(v) < 1e-12 for v in have.values()), have
+    return np.array(out)

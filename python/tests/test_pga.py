@@ -10,6 +10,8 @@ import pytest
 
 import cga
 from cga import pga, sta
+from kingdon_blades import named_from_kingdon as from_kingdon
+from kingdon_blades import named_to_kingdon as to_kingdon
 
 RNG = np.random.default_rng(29)
 CLASSES = [pga.Scalar, pga.Plane, pga.Line, pga.Point, pga.Pseudoscalar, pga.Motor, pga.Multivector]
@@ -22,40 +24,6 @@ PAIRS = [(left, right, k) for classes, k in ALGEBRAS for left, right in itertool
 def random(cls, n=None):
     shape = (len(cls.blades),) if n is None else (n, len(cls.blades))
     return cls(RNG.normal(size=shape))
-
-
-def canonical(name):
-    """A blade spelled as pga spells it (``e31``, ``e021``) as kingdon's ascending name and the
-    sign between them (a swap of two labels flips it)."""
-    if name == "s":
-        return "e", 1.0
-    labels = list(name[1:])
-    sign = 1.0
-    for i in range(len(labels)):
-        for j in range(len(labels) - 1 - i):
-            if labels[j] > labels[j + 1]:
-                labels[j], labels[j + 1] = labels[j + 1], labels[j]
-                sign = -sign
-    return "e" + "".join(labels), sign
-
-
-def to_kingdon(value, alg):
-    parts = {}
-    for name, c in zip(type(value).blades, value.array):
-        key, sign = canonical(name)
-        parts[key] = sign * float(c)
-    return alg.multivector(parts)
-
-
-def from_kingdon(mv, cls):
-    """The coefficients of ``cls``'s blades in kingdon's value (any other blade must be zero)."""
-    have = {mv.algebra.bin2canon[k]: float(v) for k, v in zip(mv.keys(), mv.values())}
-    out = []
-    for name in cls.blades:
-        key, sign = canonical(name)
-        out.append(sign * have.pop(key, 0.0))
-    assert all(abs(v) < 1e-12 for v in have.values()), have
-    return np.array(out)
 
 
 OPS = [("*", lambda a, b: a * b, lambda a, b: a * b), ("^", lambda a, b: a ^ b, lambda a, b: a ^ b),

@@ -8,37 +8,14 @@ import pytest
 
 import cga
 from cga import pga
+from kingdon_blades import named_from_kingdon
+from kingdon_blades import named_to_kingdon as to_kingdon
 
 RNG = np.random.default_rng(51)
 
 
-def canonical(name):
-    """A blade spelled as pga spells it as kingdon's ascending name and the sign between them."""
-    if name == "s":
-        return "e", 1.0
-    labels, sign = list(name[1:]), 1.0
-    for i in range(len(labels)):
-        for j in range(len(labels) - 1 - i):
-            if labels[j] > labels[j + 1]:
-                labels[j], labels[j + 1] = labels[j + 1], labels[j]
-                sign = -sign
-    return "e" + "".join(labels), sign
-
-
-def to_kingdon(value, alg):
-    parts = {}
-    for name, c in zip(type(value).blades, value.array):
-        key, sign = canonical(name)
-        parts[key] = sign * float(c)
-    return alg.multivector(parts)
-
-
 def from_kingdon(mv, cls):
-    out = []
-    for name in cls.blades:
-        key, sign = canonical(name)
-        out.append(sign * float(mv.e if key == "e" else getattr(mv, key, 0.0)))
-    return cls(np.array(out))
+    return cls(named_from_kingdon(mv, cls))
 
 
 def close_motor(a, b, tol):
