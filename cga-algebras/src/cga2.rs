@@ -5,6 +5,25 @@
 //! - `X1 ∧ X2` is a point pair, `X1 ∧ X2 ∧ X3` the circle (or line, with `ei`) through three
 //!   points; a point `X` lies on a circle `C` when `X ∧ C = 0`.
 //! - Rotors `exp(−½θ e12)` and translators `1 − ½ t ei` move by `V X Ṽ` (`sandwich`).
+//!
+//! The everyday calls (docs/PGA.md's "2D CGA and STA" gives kingdon's spelling beside
+//! each): `Vector::up(x)` and `down()`; `Circle::through(a, b, c)`,
+//! `Circle::line_through(p, q)` (a line is a circle through `ei`), `is_line`,
+//! `centre_radius`, `line_point_direction`; `PointPair::through(a, b)` and `ends()`; rotors
+//! `Rotor::from_angle(θ)`, motors `Motor::translator(t)` and `Motor::rotation_about(c, θ)`.
+//! Two circles or lines meet in a point pair, their regressive product `c1 & c2`, read by
+//! `ends()` (`Imaginary` where they miss); a pair's ends are `(T ∓ √T²)(−ei ⌋ T)⁻¹`, the
+//! order of the wedge `up(a) ∧ up(b)`.
+//!
+//! ```
+//! use cga_algebras::cga2::prelude::*;
+//! let circle = Circle::through([1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]).unwrap();
+//! let line = Circle::line_through([-2.0, 0.5], [2.0, 0.5]).unwrap();
+//! let [a, b] = (line & circle).ends().unwrap();
+//! let x = 0.75f64.sqrt();
+//! assert!(a.iter().zip(b).all(|(p, q)| (p.abs() - q.abs()).abs() < 1e-12));
+//! assert!(((a[0].abs() - x).abs() < 1e-12) && ((a[1] - 0.5).abs() < 1e-12));
+//! ```
 
 use crate::Real;
 

@@ -37,7 +37,7 @@
 //! assert!((half * half - screw).to_array().iter().all(|c| c.abs() < 1e-12));
 //! let generator = screw.log()?; // (−θ + δ I) L̂ / 2
 //! assert!((generator.exp_motor()? - screw).to_array().iter().all(|c| c.abs() < 1e-12));
-//! let mid = Motor::interpolate(Motor::identity(), screw, 0.5)?;
+//! let mid = Motor::interpolate(&Motor::identity(), &screw, 0.5)?;
 //! assert!((mid - half).to_array().iter().all(|c| c.abs() < 1e-12));
 //! # Ok::<(), cga_algebras::pga::PgaError>(())
 //! ```
