@@ -1,4 +1,5 @@
-//! The products users batch most, on SIMD lanes: each is compiled as a cga-core
+//! The products users batch most, in every algebra of the package (CGA, PGA, 2D CGA, VGA,
+//! STA: each asks `algebra!` for lanes), on SIMD lanes: each is compiled as a cga-core
 //! [`Kernel`] (four or eight rows at once, the CPU's widest level chosen at run time, the
 //! same bits as one row at a time) in three forms — both operands arrays, or one of them a
 //! single value put in every lane — and run in blocks shared between the caller and rayon's
@@ -232,8 +233,8 @@ macro_rules! kernels {
     };
 }
 
-use cga_algebras::pga;
-use cga_algebras::pga::Sandwich as _;
+use cga_algebras::{cga2, pga, sta, vga};
+use cga_algebras::{cga2::Sandwich as _, pga::Sandwich as _, sta::Sandwich as _, vga::Sandwich as _};
 use cga_core as cga;
 use cga_core::Sandwich as _;
 
@@ -268,6 +269,14 @@ kernels! {
     PgaPointLine: "cga.pga" pga::Regressive(Point, Line) -> Plane, |a, b| a & b;
     PgaMeet: "cga.pga" pga::Outer(Plane, Plane) -> Line, |a, b| a ^ b;
     PgaLinePlane: "cga.pga" pga::Outer(Line, Plane) -> Point, |a, b| a ^ b;
+    Cga2MotorVector: "cga.cga2" cga2::Sandwich(Motor, Vector) -> Vector, |m, x| m.sandwich(x);
+    Cga2MotorCircle: "cga.cga2" cga2::Sandwich(Motor, Circle) -> Circle, |m, x| m.sandwich(x);
+    Cga2VectorVector: "cga.cga2" cga2::Outer(Vector, Vector) -> PointPair, |a, b| a ^ b;
+    Cga2PointPairVector: "cga.cga2" cga2::Outer(PointPair, Vector) -> Circle, |a, b| a ^ b;
+    Cga2CircleCircle: "cga.cga2" cga2::Regressive(Circle, Circle) -> PointPair, |a, b| a & b;
+    VgaRotorVector: "cga.vga" vga::Sandwich(Rotor, Vector) -> Vector, |m, x| m.sandwich(x);
+    VgaRotorRotor: "cga.vga" vga::Geometric(Rotor, Rotor) -> Rotor, |a, b| a * b;
+    StaRotorVector: "cga.sta" sta::Sandwich(Rotor, Vector) -> Vector, |m, x| m.sandwich(x);
 }
 
 /// `(a ∘ b) ∘ c` for arrays of one length as `P` then `Q` fused, where the operands and the
