@@ -56,7 +56,7 @@ pub(crate) fn numbers(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<f64>>
 }
 
 /// Refuses NaN and ±∞, naming the argument.
-fn finite(name: &str, x: &[f64]) -> PyResult<()> {
+pub(crate) fn finite(name: &str, x: &[f64]) -> PyResult<()> {
     match x.iter().find(|v| !v.is_finite()) {
         Some(v) => Err(ValueError::new_err(format!("{name}: {v} (every number must be finite)"))),
         None => Ok(()),

@@ -6,18 +6,14 @@
 //! answer by row and name (`GeometryError`, with `PgaError`'s words).
 
 use crate::errors::{GeometryError, ShapeError, ValueError};
+use crate::geometry::{Rows, finite};
 use cga_algebras::pga::{Line, Motor, PgaError, Plane, Point};
 use numpy::{AllowTypeChange, PyArray1, PyArray2, PyArrayLikeDyn, PyUntypedArrayMethods};
 use pyo3::IntoPyObjectExt;
 use pyo3::prelude::*;
 
 /// Rows of `K` numbers: shape `(K,)` (single) or `(n, K)`; `K = 1` also takes a number or `(n,)`.
-pub(crate) struct Rows<const K: usize> {
-    pub(crate) rows: Vec<[f64; K]>,
-    pub(crate) single: bool,
-}
-
-pub(crate) fn rows<const K: usize>(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<K>> {
+pub(crate) fn rows<const K: usize>(name: &str, obj: &Bound<'_, PyAny>) -> PyResult<Rows<[f64; K]>> {
     let array = obj
         .extract::<PyArrayLikeDyn<'_, f64, AllowTypeChange>>()
         .map_err(|_| ShapeError::new_err(format!("{name}: expected numbers of shape ({K},) or (n, {K})")))?;
@@ -29,9 +25,7 @@ pub(crate) fn rows<const K: usize>(name: &str, obj: &Bound<'_, PyAny>) -> PyResu
         [_, k] if *k == K => false,
         shape => return Err(ShapeError::new_err(format!("{name}: shape {shape:?}; give ({K},) or (n, {K})"))),
     };
-    if let Some(v) = flat.iter().find(|v| !v.is_finite()) {
-        return Err(ValueError::new_err(format!("{name}: {v} (every number must be finite)")));
-    }
+    finite(name, &flat)?;
     Ok(Rows { rows: flat.chunks(K).map(|c| core::array::from_fn(|i| c[i])).collect(), single })
 }
 
@@ -42,10 +36,6 @@ pub(crate) fn broadcast(lens: &[(usize, bool)]) -> PyResult<(usize, bool)> {
         return Err(ShapeError::new_err(format!("arrays of different lengths: {lens:?}")));
     }
     Ok((n, lens.iter().all(|(_, s)| *s)))
-}
-
-pub(crate) fn at<const K: usize>(r: &Rows<K>, i: usize) -> [f64; K] {
-    if r.rows.len() == 1 { r.rows[0] } else { r.rows[i] }
 }
 
 /// The results as a `(K,)` or `(n, K)` array, the first failure refused by row.
@@ -85,14 +75,14 @@ fn numbers(
 fn rotor(py: Python<'_>, axis: &Bound<'_, PyAny>, angle: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let (a, t) = (rows::<3>("axis", axis)?, rows::<1>("angle", angle)?);
     let shape = broadcast(&[(a.rows.len(), a.single), (t.rows.len(), t.single)])?;
-    output(py, "rotor", shape, |i| Motor::rotor(at(&a, i), at(&t, i)[0]).map(Motor::to_array))
+    output(py, "rotor", shape, |i| Motor::rotor(a.at(i), t.at(i)[0]).map(Motor::to_array))
 }
 
 #[pyfunction]
 fn translator(py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let t = rows::<3>("t", t)?;
     let shape = broadcast(&[(t.rows.len(), t.single)])?;
-    output(py, "translator", shape, |i| Motor::translator(at(&t, i)).map(Motor::to_array))
+    output(py, "translator", shape, |i| Motor::translator(t.at(i)).map(Motor::to_array))
 }
 
 #[pyfunction]
@@ -104,37 +94,35 @@ fn screw(
 ) -> PyResult<Py<PyAny>> {
     let (l, a, d) = (rows::<6>("line", line)?, rows::<1>("angle", angle)?, rows::<1>("distance", distance)?);
     let shape = broadcast(&[(l.rows.len(), l.single), (a.rows.len(), a.single), (d.rows.len(), d.single)])?;
-    output(py, "screw", shape, |i| {
-        Motor::screw(Line::from_array(at(&l, i)), at(&a, i)[0], at(&d, i)[0]).map(Motor::to_array)
-    })
+    output(py, "screw", shape, |i| Motor::screw(Line::from_array(l.at(i)), a.at(i)[0], d.at(i)[0]).map(Motor::to_array))
 }
 
 #[pyfunction]
 fn exp(py: Python<'_>, line: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let l = rows::<6>("line", line)?;
     let shape = broadcast(&[(l.rows.len(), l.single)])?;
-    output(py, "exp", shape, |i| Line::from_array(at(&l, i)).exp_motor().map(Motor::to_array))
+    output(py, "exp", shape, |i| Line::from_array(l.at(i)).exp_motor().map(Motor::to_array))
 }
 
 #[pyfunction]
 fn log(py: Python<'_>, motor: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let m = rows::<8>("motor", motor)?;
     let shape = broadcast(&[(m.rows.len(), m.single)])?;
-    output(py, "log", shape, |i| Motor::from_array(at(&m, i)).log().map(Line::to_array))
+    output(py, "log", shape, |i| Motor::from_array(m.at(i)).log().map(Line::to_array))
 }
 
 #[pyfunction]
 fn sqrt(py: Python<'_>, motor: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let m = rows::<8>("motor", motor)?;
     let shape = broadcast(&[(m.rows.len(), m.single)])?;
-    output(py, "sqrt", shape, |i| Motor::from_array(at(&m, i)).sqrt().map(Motor::to_array))
+    output(py, "sqrt", shape, |i| Motor::from_array(m.at(i)).sqrt().map(Motor::to_array))
 }
 
 #[pyfunction]
 fn normalise(py: Python<'_>, motor: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let m = rows::<8>("motor", motor)?;
     let shape = broadcast(&[(m.rows.len(), m.single)])?;
-    output(py, "normalise", shape, |i| Motor::from_array(at(&m, i)).renormalise().map(Motor::to_array))
+    output(py, "normalise", shape, |i| Motor::from_array(m.at(i)).renormalise().map(Motor::to_array))
 }
 
 #[pyfunction]
@@ -147,8 +135,7 @@ fn interpolate(
     let (a, b, t) = (rows::<8>("a", a)?, rows::<8>("b", b)?, rows::<1>("t", t)?);
     let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single), (t.rows.len(), t.single)])?;
     output(py, "interpolate", shape, |i| {
-        Motor::interpolate(&Motor::from_array(at(&a, i)), &Motor::from_array(at(&b, i)), at(&t, i)[0])
-            .map(Motor::to_array)
+        Motor::interpolate(&Motor::from_array(a.at(i)), &Motor::from_array(b.at(i)), t.at(i)[0]).map(Motor::to_array)
     })
 }
 
@@ -156,7 +143,7 @@ fn interpolate(
 fn line_through(py: Python<'_>, p: &Bound<'_, PyAny>, q: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let (p, q) = (rows::<3>("p", p)?, rows::<3>("q", q)?);
     let shape = broadcast(&[(p.rows.len(), p.single), (q.rows.len(), q.single)])?;
-    output(py, "line_through", shape, |i| Line::through(at(&p, i), at(&q, i)).map(Line::to_array))
+    output(py, "line_through", shape, |i| Line::through(p.at(i), q.at(i)).map(Line::to_array))
 }
 
 #[pyfunction]
@@ -164,7 +151,7 @@ fn plane_from_normal_distance(py: Python<'_>, n: &Bound<'_, PyAny>, d: &Bound<'_
     let (n, d) = (rows::<3>("n", n)?, rows::<1>("d", d)?);
     let shape = broadcast(&[(n.rows.len(), n.single), (d.rows.len(), d.single)])?;
     output(py, "plane_from_normal_distance", shape, |i| {
-        Plane::from_normal_distance(at(&n, i), at(&d, i)[0]).map(Plane::to_array)
+        Plane::from_normal_distance(n.at(i), d.at(i)[0]).map(Plane::to_array)
     })
 }
 
@@ -176,30 +163,22 @@ fn distance(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAn
         "point_point" => {
             let (a, b) = (rows::<4>("a", a)?, rows::<4>("b", b)?);
             let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
-            numbers(py, "distance", shape, |i| {
-                Point::from_array(at(&a, i)).distance_to_point(Point::from_array(at(&b, i)))
-            })
+            numbers(py, "distance", shape, |i| Point::from_array(a.at(i)).distance_to_point(Point::from_array(b.at(i))))
         }
         "point_plane" => {
             let (a, b) = (rows::<4>("a", a)?, rows::<4>("b", b)?);
             let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
-            numbers(py, "distance", shape, |i| {
-                Point::from_array(at(&a, i)).distance_to_plane(Plane::from_array(at(&b, i)))
-            })
+            numbers(py, "distance", shape, |i| Point::from_array(a.at(i)).distance_to_plane(Plane::from_array(b.at(i))))
         }
         "point_line" => {
             let (a, b) = (rows::<4>("a", a)?, rows::<6>("b", b)?);
             let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
-            numbers(py, "distance", shape, |i| {
-                Point::from_array(at(&a, i)).distance_to_line(Line::from_array(at(&b, i)))
-            })
+            numbers(py, "distance", shape, |i| Point::from_array(a.at(i)).distance_to_line(Line::from_array(b.at(i))))
         }
         "line_line" => {
             let (a, b) = (rows::<6>("a", a)?, rows::<6>("b", b)?);
             let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
-            numbers(py, "distance", shape, |i| {
-                Line::from_array(at(&a, i)).distance_to_line(Line::from_array(at(&b, i)))
-            })
+            numbers(py, "distance", shape, |i| Line::from_array(a.at(i)).distance_to_line(Line::from_array(b.at(i))))
         }
         _ => Err(ValueError::new_err(format!("distance: no distance of kind {kind:?}"))),
     }
