@@ -4,7 +4,8 @@
 //! of 256 operands the motor product (`motor_motor`), the join of two points (`join`), the
 //! meet of two planes (`meet`) and of three (`meet3`), each in f32 and f64, the median over
 //! interleaved rounds in ns per operation. Prints `operation form ns` lines (`form` is `f32`
-//! or `f64`, and for the points also `f64-lanes`: the prepared matrix on SIMD lanes).
+//! or `f64` one at a time, `f32-lanes` or `f64-lanes` on SIMD lanes by `simd::run`: sixteen
+//! f32 or eight f64 to an AVX-512 register, eight or four with AVX2).
 //!
 //! `cargo run --release -p cga-benches --example pga_timing`
 
@@ -46,14 +47,19 @@ fn motor<T: Real>(i: usize) -> Motor<T> {
     Motor::from_array(m.to_array().map(T::from_f64))
 }
 
-/// An operation over a batch of 256 operands in f32 and in f64, timed interleaved.
-fn batch<A32: Copy, A64: Copy, R32: Copy, R64: Copy>(
+/// An operation over a batch of 256 operands in f32 and in f64, one at a time and on SIMD
+/// lanes (`simd::run` of the same operation as a kernel), timed interleaved.
+fn batch<K32: Kernel, K64: Kernel>(
     name: &str,
-    input: (&[A32], &[A64]),
-    (op32, op64): (impl Fn(A32) -> R32, impl Fn(A64) -> R64),
-    zero: (R32, R64),
-) {
-    let (mut out32, mut out64) = (vec![zero.0; BATCH], vec![zero.1; BATCH]);
+    input: (&[K32::Input], &[K64::Input]),
+    (k32, k64): (K32, K64),
+    (op32, op64): (impl Fn(K32::Input) -> K32::Output, impl Fn(K64::Input) -> K64::Output),
+) where
+    K32::Output: Default + core::fmt::Debug + PartialEq,
+    K64::Output: Default + core::fmt::Debug + PartialEq,
+{
+    let (mut out32, mut out64) = (vec![K32::Output::default(); BATCH], vec![K64::Output::default(); BATCH]);
+    let (mut lanes32, mut lanes64) = (out32.clone(), out64.clone());
     let medians = medians_ns(
         BATCH,
         4000,
@@ -71,30 +77,80 @@ fn batch<A32: Copy, A64: Copy, R32: Copy, R64: Copy>(
                 }
                 black_box(&out64);
             },
+            &mut || {
+                run(&k32, black_box(input.0), &mut lanes32).unwrap();
+                black_box(&lanes32);
+            },
+            &mut || {
+                run(&k64, black_box(input.1), &mut lanes64).unwrap();
+                black_box(&lanes64);
+            },
         ],
     );
-    println!("{name} f32 {:.3}\n{name} f64 {:.3}", medians[0], medians[1]);
-}
-
-/// The prepared matrix of a motor on points, in every lane: `run`'s kernel.
-struct MovePoints([f64; 13]);
-
-impl Kernel for MovePoints {
-    type Input = Point;
-    type Output = Point;
-    #[inline(always)]
-    fn apply<L: Lane>(&self, x: Point<L>) -> Point<L> {
-        let m = self.0.map(|c| L::from_fn(|_| c));
-        <Motor<L> as Prepare<Point<L>>>::apply_matrix(&m, x)
+    // Lanes give the bits of one at a time.
+    assert_eq!(lanes32, out32, "{name} f32");
+    assert_eq!(lanes64, out64, "{name} f64");
+    for (form, ns) in ["f32", "f64", "f32-lanes", "f64-lanes"].iter().zip(medians) {
+        println!("{name} {form} {ns:.3}");
     }
 }
+
+/// The motor product, the join of two points, and the meets of two and of three planes, as
+/// kernels on lanes of either precision.
+macro_rules! kernel {
+    ($name:ident, ($($input:ident),*) -> $output:ident, |$pat:pat_param| $body:expr) => {
+        struct $name<T>(core::marker::PhantomData<T>);
+        kernel!(@impl $name f32, ($($input),*) -> $output, |$pat| $body);
+        kernel!(@impl $name f64, ($($input),*) -> $output, |$pat| $body);
+        impl<T> $name<T> {
+            const NEW: Self = $name(core::marker::PhantomData);
+        }
+    };
+    (@impl $name:ident $t:ident, ($($input:ident),*) -> $output:ident, |$pat:pat_param| $body:expr) => {
+        impl Kernel for $name<$t> {
+            type Input = ($($input<$t>,)*);
+            type Output = $output<$t>;
+            #[inline(always)]
+            fn apply<L: Lane>(&self, $pat: ($($input<L>,)*)) -> $output<L> {
+                $body
+            }
+        }
+    };
+}
+
+kernel!(MotorProduct, (Motor, Motor) -> Motor, |(a, b)| a * b);
+kernel!(Join, (Point, Point) -> Line, |(p, q)| p & q);
+kernel!(Meet, (Plane, Plane) -> Line, |(p, q)| p ^ q);
+kernel!(Meet3, (Plane, Plane, Plane) -> Point, |(p, q, r)| p ^ q ^ r);
+
+/// The prepared matrix of a motor on points, in every lane: `run`'s kernel.
+struct MovePoints<T>([T; 13]);
+
+macro_rules! move_points {
+    ($($t:ident),*) => {$(
+        impl Kernel for MovePoints<$t> {
+            type Input = Point<$t>;
+            type Output = Point<$t>;
+            #[inline(always)]
+            fn apply<L: Lane>(&self, x: Point<L>) -> Point<L> {
+                let m = self.0.map(|c| L::from_fn(|_| c.to_f64()));
+                <Motor<L> as Prepare<Point<L>>>::apply_matrix(&m, x)
+            }
+        }
+    )*};
+}
+move_points!(f32, f64);
 
 fn main() {
     let (m32, m64) = (motor::<f32>(1), motor::<f64>(1));
     let (p32, p64): (Vec<Point<f32>>, Vec<Point<f64>>) =
         ((0..POINTS).map(|i| point(i, 0.0)).collect(), (0..POINTS).map(|i| point(i, 0.0)).collect());
-    let (mut o32, mut o64, mut lanes) =
-        (vec![Point::zero(); POINTS], vec![Point::zero(); POINTS], vec![Point::zero(); POINTS]);
+    let (mut o32, mut o64, mut lanes, mut lanes32) = (
+        vec![Point::zero(); POINTS],
+        vec![Point::zero(); POINTS],
+        vec![Point::zero(); POINTS],
+        vec![Point::zero(); POINTS],
+    );
     let medians = medians_ns(
         POINTS,
         3,
@@ -112,6 +168,10 @@ fn main() {
                 run(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&p64), &mut lanes).unwrap();
                 black_box(&lanes);
             },
+            &mut || {
+                run(&MovePoints(Prepare::<Point<f32>>::matrix(m32)), black_box(&p32), &mut lanes32).unwrap();
+                black_box(&lanes32);
+            },
         ],
     );
     // Each form moves the points as the sandwich does.
@@ -121,27 +181,35 @@ fn main() {
             assert!(want.iter().zip(got).all(|(a, b)| (a - b).abs() < 1e-5 * (1.0 + a.abs())), "{want:?} {got:?}");
         }
     }
-    for (form, ns) in ["f32", "f64", "f64-lanes"].iter().zip(medians) {
+    assert_eq!(lanes32, o32, "f32 lanes give the bits of one at a time");
+    for (form, ns) in ["f32", "f64", "f64-lanes", "f32-lanes"].iter().zip(medians) {
         println!("motor_points {form} {ns:.3}");
     }
 
     let motors32: Vec<(Motor<f32>, Motor<f32>)> = (0..BATCH).map(|i| (motor(i), motor(i + 300))).collect();
     let motors64: Vec<(Motor<f64>, Motor<f64>)> = (0..BATCH).map(|i| (motor(i), motor(i + 300))).collect();
-    batch("motor_motor", (&motors32, &motors64), (|(a, b)| a * b, |(a, b)| a * b), (Motor::zero(), Motor::zero()));
+    batch(
+        "motor_motor",
+        (&motors32, &motors64),
+        (MotorProduct::<f32>::NEW, MotorProduct::<f64>::NEW),
+        (|(a, b)| a * b, |(a, b)| a * b),
+    );
 
     let points32: Vec<(Point<f32>, Point<f32>)> = (0..BATCH).map(|i| (point(i, 0.0), point(i, 100.0))).collect();
     let points64: Vec<(Point<f64>, Point<f64>)> = (0..BATCH).map(|i| (point(i, 0.0), point(i, 100.0))).collect();
-    batch("join", (&points32, &points64), (|(p, q)| p & q, |(p, q)| p & q), (Line::zero(), Line::zero()));
+    batch("join", (&points32, &points64), (Join::<f32>::NEW, Join::<f64>::NEW), (|(p, q)| p & q, |(p, q)| p & q));
 
     let planes32: Vec<(Plane<f32>, Plane<f32>, Plane<f32>)> =
         (0..BATCH).map(|i| (plane(i, 0.0), plane(i, 100.0), plane(i, 200.0))).collect();
     let planes64: Vec<(Plane<f64>, Plane<f64>, Plane<f64>)> =
         (0..BATCH).map(|i| (plane(i, 0.0), plane(i, 100.0), plane(i, 200.0))).collect();
-    batch("meet", (&planes32, &planes64), (|(p, q, _)| p ^ q, |(p, q, _)| p ^ q), (Line::zero(), Line::zero()));
+    let pairs32: Vec<(Plane<f32>, Plane<f32>)> = planes32.iter().map(|&(p, q, _)| (p, q)).collect();
+    let pairs64: Vec<(Plane<f64>, Plane<f64>)> = planes64.iter().map(|&(p, q, _)| (p, q)).collect();
+    batch("meet", (&pairs32, &pairs64), (Meet::<f32>::NEW, Meet::<f64>::NEW), (|(p, q)| p ^ q, |(p, q)| p ^ q));
     batch(
         "meet3",
         (&planes32, &planes64),
+        (Meet3::<f32>::NEW, Meet3::<f64>::NEW),
         (|(p, q, r)| p ^ q ^ r, |(p, q, r)| p ^ q ^ r),
-        (Point::zero(), Point::zero()),
     );
 }

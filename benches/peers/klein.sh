@@ -2,8 +2,8 @@
 # Ours (benches/pga_timing.rs, cga-algebras' PGA) against klein (github.com/jeremyong/klein,
 # header-only C++ with SSE, f32) on five operations, interleaved: klein.cpp built with
 # -O3 -march=native, and our example in release, each run ROUNDS times in turn; prints the
-# table of medians for benches/README.md with ours over klein's time (f32 and f64; klein has
-# no f64).
+# table of medians for benches/README.md with ours (the faster of one at a time and SIMD
+# lanes) over klein's time (f32 and f64; klein has no f64).
 #
 #   KLEIN_DIR=/path/to/klein benches/peers/klein.sh
 #
@@ -34,11 +34,13 @@ for line in open(sys.argv[1]):
     op, form, ns = line.split()
     t[(op, form)].append(float(ns))
 m = {k: statistics.median(v) for k, v in t.items()}
-print("| operation | klein f32 | ours f32 | ours f64 | ours f64 lanes | f32 / klein | f64 / klein |")
-print("|---|---|---|---|---|---|---|")
+print("| operation | klein f32 | ours f32 | ours f32 lanes | ours f64 | ours f64 lanes | f32 / klein | f64 / klein |")
+print("|---|---|---|---|---|---|---|---|")
+fmt = lambda v: f"{v:.3f}" if v is not None else "–"
 for op in dict.fromkeys(op for op, _ in t):
-    k, a, b = m[(op, "klein")], m[(op, "f32")], m[(op, "f64")]
-    lanes = m.get((op, "f64-lanes"))
-    best = min(b, lanes) if lanes else b
-    print(f"| {op} | {k:.3f} | {a:.3f} | {b:.3f} | {f'{lanes:.3f}' if lanes else '–'} | {a / k:.2f}× | {best / k:.2f}× |")
+    k = m[(op, "klein")]
+    a, al, b, bl = (m.get((op, f)) for f in ("f32", "f32-lanes", "f64", "f64-lanes"))
+    best32 = min(v for v in (a, al) if v is not None)
+    best64 = min(v for v in (b, bl) if v is not None)
+    print(f"| {op} | {k:.3f} | {fmt(a)} | {fmt(al)} | {fmt(b)} | {fmt(bl)} | {best32 / k:.2f}× | {best64 / k:.2f}× |")
 PY

@@ -23,9 +23,9 @@ trait Product {
     /// Its kind, and the names of its operands' and result's classes.
     const KIND: ProductKind;
     const NAMES: [&'static str; 3];
-    type A: Lanes + Send + Sync;
-    type B: Lanes + Send + Sync;
-    type O: Lanes + Send + Sync;
+    type A: Lanes<Element = f64> + Send + Sync;
+    type B: Lanes<Element = f64> + Send + Sync;
+    type O: Lanes<Element = f64> + Send + Sync;
     fn op<L: Lane>(a: Over<Self::A, L>, b: Over<Self::B, L>) -> Over<Self::O, L>;
     /// Lanes whose result has every coefficient finite.
     fn finite<L: Lane>(o: &Over<Self::O, L>) -> L::Mask;

@@ -2,9 +2,9 @@
 //! (columns), each element of a kernel's tuple input read from its own array in place, so
 //! that operands kept apart are never copied into an array of tuples first.
 
+use super::{Element, Lane, Lanes, Over};
 #[cfg(target_arch = "x86_64")]
-use super::{F64x4, F64x8};
-use super::{Lane, Lanes, Over};
+use super::{F32x8, F32x16, F64x4, F64x8};
 use core::ops::Range;
 
 /// The operands of [`run_columns`](super::run_columns): a slice `&[X]` (items `X`), or a
@@ -33,6 +33,18 @@ pub trait Columns: Copy + sealed::Sealed {
     /// The CPU must have AVX-512 F and DQ, and `first + 8` rows must exist.
     #[cfg(target_arch = "x86_64")]
     unsafe fn pack_rows8(&self, first: usize) -> Over<Self::Item, F64x8>;
+    /// Rows `first .. first + 8` (f32 values) by AVX transposes in place.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `first + 8` rows must exist.
+    #[cfg(target_arch = "x86_64")]
+    unsafe fn pack_rows_f32x8(&self, first: usize) -> Over<Self::Item, F32x8>;
+    /// Rows `first .. first + 16` (f32 values) by AVX-512 transposes in place.
+    ///
+    /// # Safety
+    /// The CPU must have AVX-512 F and DQ, and `first + 16` rows must exist.
+    #[cfg(target_arch = "x86_64")]
+    unsafe fn pack_rows16(&self, first: usize) -> Over<Self::Item, F32x16>;
 }
 
 mod sealed {
@@ -71,14 +83,26 @@ impl<X: Lanes> Columns for &[X] {
         // SAFETY: the caller's CPU has AVX-512 and rows `first .. first + 8` exist.
         unsafe { X::pack_rows8(core::array::from_fn(|i| self.as_ptr().add(first + i))) }
     }
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn pack_rows_f32x8(&self, first: usize) -> Over<X, F32x8> {
+        // SAFETY: the caller's CPU has AVX and rows `first .. first + 8` exist.
+        unsafe { X::pack_rows_f32x8(core::array::from_fn(|i| self.as_ptr().add(first + i))) }
+    }
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn pack_rows16(&self, first: usize) -> Over<X, F32x16> {
+        // SAFETY: the caller's CPU has AVX-512 and rows `first .. first + 16` exist.
+        unsafe { X::pack_rows16(core::array::from_fn(|i| self.as_ptr().add(first + i))) }
+    }
 }
 
 macro_rules! columns {
     ($($x:ident $k:tt),*) => {
-        impl<$($x: Lanes),*> sealed::Sealed for ($(&[$x],)*) {}
+        impl<E: Element, $($x: Lanes<Element = E>),*> sealed::Sealed for ($(&[$x],)*) {}
 
-        /// Arrays of one length, each an element of the tuple.
-        impl<$($x: Lanes),*> Columns for ($(&[$x],)*) {
+        /// Arrays of one length, each an element of the tuple (of one scalar).
+        impl<E: Element, $($x: Lanes<Element = E>),*> Columns for ($(&[$x],)*) {
             type Item = ($($x,)*);
             #[inline(always)]
             fn rows(&self) -> Option<usize> {
@@ -108,6 +132,18 @@ macro_rules! columns {
             unsafe fn pack_rows8(&self, first: usize) -> Over<Self::Item, F64x8> {
                 // SAFETY: as in `pack_rows`.
                 unsafe { ($(self.$k.pack_rows8(first),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows_f32x8(&self, first: usize) -> Over<Self::Item, F32x8> {
+                // SAFETY: as in `pack_rows`.
+                unsafe { ($(self.$k.pack_rows_f32x8(first),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows16(&self, first: usize) -> Over<Self::Item, F32x16> {
+                // SAFETY: as in `pack_rows`.
+                unsafe { ($(self.$k.pack_rows16(first),)*) }
             }
         }
     };

@@ -1,6 +1,8 @@
-//! Many f64 lanes as a scalar: every generated type, product and sandwich runs on four or
-//! eight independent operands at once, `Line<F64x4>` being a packet of four lines in
-//! structure-of-arrays form.
+//! Many lanes as a scalar: every generated type, product and sandwich runs on four or eight
+//! independent f64 operands at once, or eight or sixteen f32 ones, `Line<F64x4>` being a
+//! packet of four lines in structure-of-arrays form. [`run`] picks the lanes from the
+//! values' scalar ([`Lanes::Element`]): f64 on [`F64x8`] or [`F64x4`], f32 on [`F32x16`] or
+//! [`F32x8`].
 //!
 //! Three ways to run an operation over many operands:
 //!
@@ -43,7 +45,7 @@ mod wide;
 pub use crate::__simd_lanes as lanes;
 pub use columns::Columns;
 pub use pack::{Lanes, splat};
-pub use wide::{F64x4, F64x8, Lane, Mask4, Mask8};
+pub use wide::{F32x8, F32x16, F64x4, F64x8, Lane, Mask4, Mask8, Mask32x8, Mask32x16};
 
 /// The packed form of a [`Lanes`] type on four lanes (`Packed<Line>` is `Line<F64x4>`).
 pub type Packed<X> = <X as Lanes>::Over<F64x4>;
@@ -101,7 +103,7 @@ pub trait Kernel {
     fn apply<L: Lane>(&self, x: Over<Self::Input, L>) -> Over<Self::Output, L>;
 }
 
-use rows::Op;
+use rows::{Op, Rows as _};
 
 /// A kernel at whichever lanes a loop takes.
 struct AtLanes<'a, K>(&'a K);
@@ -127,15 +129,43 @@ impl<L: Lane, I: Lanes, R: Lanes, F: Fn(Over<I, L>) -> Over<R, L>> Op<L> for Clo
     }
 }
 
-/// The lanes [`map`] runs a closure on: [`F64x4`] or [`F64x8`] (sealed: no others), each
-/// moved into and out of lanes by the transposes its CPU level has.
+/// The lanes [`map`] runs a closure on: [`F64x4`] or [`F64x8`] for f64 values, [`F32x8`]
+/// or [`F32x16`] for f32 ones (sealed: no others), each moved into and out of lanes by the
+/// transposes its CPU level has (f32 values by value).
 pub trait Width: Lane + rows::Rows {}
 
 impl Width for F64x4 {}
 impl Width for F64x8 {}
+impl Width for F32x8 {}
+impl Width for F32x16 {}
+
+/// The scalar of the values [`run`] takes, and the lanes it runs them on: f64 on [`F64x4`]
+/// (one AVX2 register, and the baseline loop) or [`F64x8`] (one AVX-512 register), f32 on
+/// [`F32x8`] or [`F32x16`], twice as many a register. Sealed: f64 and f32.
+pub trait Element: crate::Real + rows::Sealed {
+    /// The lanes of one AVX2 register, and of the baseline loop.
+    type Narrow: Width;
+    /// The lanes of one AVX-512 register.
+    type Broad: Width;
+}
+
+impl Element for f64 {
+    type Narrow = F64x4;
+    type Broad = F64x8;
+}
+
+impl Element for f32 {
+    type Narrow = F32x8;
+    type Broad = F32x16;
+}
 
 mod rows {
-    use super::{Columns, F64x4, F64x8, Lane, Lanes, Over};
+    use super::{Columns, F32x8, F32x16, F64x4, F64x8, Lane, Lanes, Over};
+
+    /// What only f64 and f32 are ([`Element`](super::Element)).
+    pub trait Sealed {}
+    impl Sealed for f64 {}
+    impl Sealed for f32 {}
 
     /// An operation on the lanes `L`: a [`Kernel`](super::Kernel) at `L`, or
     /// [`map`](super::map)'s closure.
@@ -186,6 +216,33 @@ mod rows {
         unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
             // SAFETY: the caller's CPU has AVX-512.
             unsafe { super::rows8_avx512(f, input, out) }
+        }
+    }
+
+    impl Rows for F32x8 {
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX2.
+            unsafe { super::rows_f32x8_avx2(f, input, out) }
+        }
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX-512.
+            unsafe { super::rows_f32x8_avx512(f, input, out) }
+        }
+    }
+
+    impl Rows for F32x16 {
+        /// Sixteen f32 lanes are two AVX2 registers: packed by value.
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX2.
+            unsafe { super::by_value_avx2(f, input, out) }
+        }
+        #[cfg(target_arch = "x86_64")]
+        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+            // SAFETY: the caller's CPU has AVX-512.
+            unsafe { super::rows16_avx512(f, input, out) }
         }
     }
 }
@@ -258,10 +315,10 @@ fn by_value<L: Lane, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, input: S, out
         not_across_iterations();
     }
     if whole < len {
-        // Room for the widest lanes, eight (`Width` is sealed to four and eight).
+        // Room for the widest lanes, sixteen (`Width` is sealed to four, eight and sixteen).
         let last = len - 1;
-        let padded: [F::Input; 8] = core::array::from_fn(|k| input.row((whole + k).min(last)));
-        let mut lanes = [F::Output::pack_filler(); 8];
+        let padded: [F::Input; 16] = core::array::from_fn(|k| input.row((whole + k).min(last)));
+        let mut lanes = [F::Output::pack_filler(); 16];
         F::Output::unpack_lanes(f.op(F::Input::pack_lanes(&padded[..n])), &mut lanes[..n]);
         out[whole..].copy_from_slice(&lanes[..len - whole]);
     }
@@ -339,14 +396,16 @@ fn run_at<K: Kernel, S: Columns<Item = K::Input>>(
     if input.rows() != Some(out.len()) {
         return None;
     }
+    type Narrow<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Narrow;
+    type Broad<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Broad;
     let kernel = AtLanes(kernel);
     match level {
         // SAFETY: `detect` found the features each loop is compiled for.
         #[cfg(target_arch = "x86_64")]
-        Level::Avx512 => unsafe { rows8_avx512(&kernel, input, out) },
+        Level::Avx512 => unsafe { Broad::<K>::rows_avx512(&kernel, input, out) },
         #[cfg(target_arch = "x86_64")]
-        Level::Avx2 => unsafe { rows_avx2(&kernel, input, out) },
-        Level::Baseline => by_value::<F64x4, _, _>(&kernel, input, out),
+        Level::Avx2 => unsafe { Narrow::<K>::rows_avx2(&kernel, input, out) },
+        Level::Baseline => by_value::<Narrow<K>, _, _>(&kernel, input, out),
     }
     Some(())
 }
@@ -414,6 +473,63 @@ unsafe fn rows8_avx512<F: Op<F64x8>, S: Columns<Item = F::Input>>(f: &F, input: 
         not_across_iterations();
     }
     by_value::<F64x8, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
+}
+
+/// Eight f32 values at a time on [`F32x8`] by AVX transposes in place, compiled with AVX2
+/// and FMA enabled.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn rows_f32x8_avx2<F: Op<F32x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    // SAFETY: the CPU has AVX2.
+    unsafe { rows_f32x8(f, input, out) }
+}
+
+/// [`rows_f32x8_avx2`] compiled with AVX-512 enabled ([`map`] on eight f32 lanes).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+unsafe fn rows_f32x8_avx512<F: Op<F32x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    // SAFETY: AVX-512 implies AVX.
+    unsafe { rows_f32x8(f, input, out) }
+}
+
+/// Eight f32 values at a time by AVX transposes in place, the tail by value.
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn rows_f32x8<F: Op<F32x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    let whole = out.len() / 8 * 8;
+    for (c, y) in out[..whole].chunks_exact_mut(8).enumerate() {
+        let rows = y.as_mut_ptr();
+        // SAFETY: the CPU has AVX; the input has as many rows as `out` (checked by the
+        // caller), so rows `8c .. 8c + 8` exist, and the output's are the chunk's eight.
+        unsafe {
+            let lanes = input.pack_rows_f32x8(8 * c);
+            F::Output::unpack_rows_f32x8(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
+        }
+        not_across_iterations();
+    }
+    by_value::<F32x8, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
+}
+
+/// Sixteen f32 values at a time on [`F32x16`] by AVX-512 transposes in place, compiled
+/// with AVX-512 enabled, a tail of fewer than sixteen padded by value.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+unsafe fn rows16_avx512<F: Op<F32x16>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    let whole = out.len() / 16 * 16;
+    for (c, y) in out[..whole].chunks_exact_mut(16).enumerate() {
+        let rows = y.as_mut_ptr();
+        // SAFETY: the CPU has AVX-512 F and DQ; the input has as many rows as `out`
+        // (checked by the caller), so rows `16c .. 16c + 16` exist.
+        unsafe {
+            let lanes = input.pack_rows16(16 * c);
+            F::Output::unpack_rows16(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
+        }
+        not_across_iterations();
+    }
+    by_value::<F32x16, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
 }
 
 /// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
@@ -654,6 +770,56 @@ mod tests {
         check(core::array::from_fn(|l| (rotors[l], points[l])), (crate::Rotor::zero(), Vector::zero()));
     }
 
+    /// The f32 transposes, AVX on eight rows (`pack_rows_f32x8`) and AVX-512 on sixteen
+    /// (`pack_rows16`), against packing by value, for every size of block and remainder
+    /// (1, 4, 5, 6, 8, 10 and 16 coefficients) and a tuple.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn f32_transposes_in_place_agree_with_packing() {
+        fn check<X: Lanes + PartialEq + core::fmt::Debug>(values: [X; 16], blank: X)
+        where
+            Over<X, F32x8>: PartialEq + core::fmt::Debug,
+            Over<X, F32x16>: PartialEq + core::fmt::Debug,
+        {
+            // SAFETY: run only where the CPU has AVX (AVX-512 for the second part); the
+            // pointers are to `values` and `back`.
+            unsafe {
+                let eight: [X; 8] = core::array::from_fn(|l| values[l]);
+                let packed = X::pack_rows_f32x8(eight.each_ref().map(|v| v as *const X));
+                assert_eq!(packed, X::pack_lanes::<F32x8>(&eight));
+                let mut back = [blank; 8];
+                X::unpack_rows_f32x8(packed, back.each_mut().map(|v| v as *mut X));
+                assert_eq!(back, eight);
+                if avx512() {
+                    let packed = X::pack_rows16(values.each_ref().map(|v| v as *const X));
+                    assert_eq!(packed, X::pack_lanes::<F32x16>(&values));
+                    let mut back = [blank; 16];
+                    X::unpack_rows16(packed, back.each_mut().map(|v| v as *mut X));
+                    assert_eq!(back, values);
+                }
+            }
+        }
+        if !std::is_x86_feature_detected!("avx") {
+            return;
+        }
+        // Distinct values in every coefficient of every lane, exact in f32.
+        macro_rules! values {
+            ($t:ident, $seed:expr) => {
+                core::array::from_fn::<crate::$t<f32>, 16, _>(|l| {
+                    crate::$t::from_array(core::array::from_fn(|k| (100 * l + k) as f32 + $seed))
+                })
+            };
+        }
+        macro_rules! each {
+            ($($t:ident),*) => {$(
+                check(values!($t, 0.5), crate::$t::zero());
+            )*};
+        }
+        each!(Scalar, Plane, Vector, Line, Motor, Circle, Even);
+        let (rotors, points) = (values!(Rotor, 0.25), values!(Vector, 0.75));
+        check(core::array::from_fn(|l| (rotors[l], points[l])), (crate::Rotor::zero(), Vector::zero()));
+    }
+
     /// Every level this CPU has.
     fn levels() -> Vec<Level> {
         let mut levels = vec![Level::Baseline];
@@ -717,6 +883,43 @@ mod tests {
             run_packed(&Product, &packets, &mut out).unwrap();
             for (k, &(a, b)) in circles.iter().enumerate().take(packets.len() * 4) {
                 assert_eq!(Even::unpack(out[k / 4])[k % 4], a * b, "packets, n = {n}");
+            }
+        }
+    }
+
+    /// f32 values on [`F32x8`] and [`F32x16`] lanes: `run`, `run_columns` and `map` at
+    /// every level give the bits of one at a time, for lengths about each lane count.
+    #[test]
+    fn f32_paths_give_the_bits_of_one_at_a_time() {
+        let to32 = |m: Motor| Motor::<f32>::from_array(m.to_array().map(|c| c as f32));
+        let p32 = |v: Vector| Vector::<f32>::from_array(v.to_array().map(|c| c as f32));
+        struct Sandwiched32;
+        impl Kernel for Sandwiched32 {
+            type Input = (Motor<f32>, Vector<f32>);
+            type Output = Vector<f32>;
+            #[inline(always)]
+            fn apply<L: Lane>(&self, (m, x): (Motor<L>, Vector<L>)) -> Vector<L> {
+                m.sandwich(x)
+            }
+        }
+        for n in [0, 1, 7, 8, 9, 15, 16, 17, 31, 32, 33, 45] {
+            let moved: Vec<_> = (0..n).map(|k| (to32(motor(k)), p32(point(k, 0.0)))).collect();
+            let want: Vec<Vector<f32>> = moved.iter().map(|&(m, x)| m.sandwich(x)).collect();
+            let (motors, points): (Vec<Motor<f32>>, Vec<Vector<f32>>) = moved.iter().copied().unzip();
+            let mut got = vec![Vector::<f32>::zero(); n];
+            for level in levels() {
+                got.fill(Vector::zero());
+                run_at(level, &Sandwiched32, &moved[..], &mut got).unwrap();
+                assert_eq!(got, want, "run at {level:?}, n = {n}");
+                got.fill(Vector::zero());
+                run_at(level, &Sandwiched32, (&motors[..], &points[..]), &mut got).unwrap();
+                assert_eq!(got, want, "columns at {level:?}, n = {n}");
+                got.fill(Vector::zero());
+                map_at(level, &moved, &mut got, |(m, x): (Motor<F32x8>, Vector<F32x8>)| m.sandwich(x)).unwrap();
+                assert_eq!(got, want, "map on eight lanes at {level:?}, n = {n}");
+                got.fill(Vector::zero());
+                map_at(level, &moved, &mut got, |(m, x): (Motor<F32x16>, Vector<F32x16>)| m.sandwich(x)).unwrap();
+                assert_eq!(got, want, "map on sixteen lanes at {level:?}, n = {n}");
             }
         }
     }

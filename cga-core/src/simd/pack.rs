@@ -1,11 +1,14 @@
 //! [`Lanes`]: a generated type (or a tuple of them) over lanes, and the moves between
 //! values and lanes.
 
-use super::{F64x4, F64x8, Lane};
+use super::{Element, F32x8, F32x16, F64x4, F64x8, Lane};
 
 /// A generated type (or a tuple of them) that runs on lanes, field by field:
 /// `Line<f64>::Over<F64x4>` is `Line<F64x4>`, four lines in structure-of-arrays form.
 pub trait Lanes: Copy {
+    /// The scalar of the values (of every element, for a tuple), which picks the lanes
+    /// [`run`](super::run) puts them in.
+    type Element: Element;
     /// The same type over the lanes `L`.
     type Over<L: Lane>: Copy;
     /// The values of `x` (one per lane, `L::LANES` of them) as one value whose lane `k` is
@@ -56,20 +59,82 @@ pub trait Lanes: Copy {
     /// # Safety
     /// The CPU must have AVX-512 F and DQ, and `rows` must point to eight values.
     #[cfg(target_arch = "x86_64")]
-    unsafe fn pack_rows8(rows: [*const Self; 8]) -> Self::Over<F64x8>;
+    #[inline(always)]
+    unsafe fn pack_rows8(rows: [*const Self; 8]) -> Self::Over<F64x8> {
+        // SAFETY: the caller's pointers are valid.
+        Self::pack_lanes(&rows.map(|r| unsafe { *r }))
+    }
     /// The inverse of [`Lanes::pack_rows8`], written in place.
     ///
     /// # Safety
     /// The CPU must have AVX-512 F and DQ, and `rows` must point to eight writable values.
     #[cfg(target_arch = "x86_64")]
-    unsafe fn unpack_rows8(p: Self::Over<F64x8>, rows: [*mut Self; 8]);
+    #[inline(always)]
+    unsafe fn unpack_rows8(p: Self::Over<F64x8>, rows: [*mut Self; 8]) {
+        let mut values = [Self::pack_filler(); 8];
+        Self::unpack_lanes(p, &mut values);
+        for (r, v) in rows.into_iter().zip(values) {
+            // SAFETY: the caller's pointers are valid.
+            unsafe { *r = v };
+        }
+    }
+    /// The eight values at `rows` in eight f32 lanes, read in place by AVX shuffles where
+    /// the type allows.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `rows` must point to eight values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn pack_rows_f32x8(rows: [*const Self; 8]) -> Self::Over<F32x8> {
+        // SAFETY: the caller's pointers are valid.
+        Self::pack_lanes(&rows.map(|r| unsafe { *r }))
+    }
+    /// The inverse of [`Lanes::pack_rows_f32x8`], written in place.
+    ///
+    /// # Safety
+    /// The CPU must have AVX, and `rows` must point to eight writable values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn unpack_rows_f32x8(p: Self::Over<F32x8>, rows: [*mut Self; 8]) {
+        let mut values = [Self::pack_filler(); 8];
+        Self::unpack_lanes(p, &mut values);
+        for (r, v) in rows.into_iter().zip(values) {
+            // SAFETY: the caller's pointers are valid.
+            unsafe { *r = v };
+        }
+    }
+    /// The sixteen values at `rows` in sixteen f32 lanes, read in place by AVX-512 shuffles
+    /// where the type allows.
+    ///
+    /// # Safety
+    /// The CPU must have AVX-512 F and DQ, and `rows` must point to sixteen values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn pack_rows16(rows: [*const Self; 16]) -> Self::Over<F32x16> {
+        // SAFETY: the caller's pointers are valid.
+        Self::pack_lanes(&rows.map(|r| unsafe { *r }))
+    }
+    /// The inverse of [`Lanes::pack_rows16`], written in place.
+    ///
+    /// # Safety
+    /// The CPU must have AVX-512 F and DQ, and `rows` must point to sixteen writable values.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn unpack_rows16(p: Self::Over<F32x16>, rows: [*mut Self; 16]) {
+        let mut values = [Self::pack_filler(); 16];
+        Self::unpack_lanes(p, &mut values);
+        for (r, v) in rows.into_iter().zip(values) {
+            // SAFETY: the caller's pointers are valid.
+            unsafe { *r = v };
+        }
+    }
 }
 
 /// `x` in every lane: a value of any generated type as the packet of `L::LANES` copies (a
 /// kernel's run-time state, such as the motor every point is moved by).
 #[inline(always)]
 pub fn splat<X: Lanes, L: Lane>(x: X) -> X::Over<L> {
-    X::pack_lanes(&[x; 8][..L::LANES])
+    X::pack_lanes(&[x; 16][..L::LANES])
 }
 
 /// `Lanes` for the named generated types over `f64`: what `algebra!` emits for an algebra that
@@ -79,24 +144,7 @@ pub fn splat<X: Lanes, L: Lane>(x: X) -> X::Over<L> {
 #[macro_export]
 macro_rules! __simd_lanes {
     ($($t:ident),*) => {$(
-        impl $crate::simd::Lanes for $t<f64> {
-            type Over<L: $crate::simd::Lane> = $t<L>;
-            #[inline(always)]
-            fn pack_lanes<L: $crate::simd::Lane>(x: &[Self]) -> $t<L> {
-                let a: [[f64; Self::BLADES.len()]; 8] = core::array::from_fn(|l| x.get(l).map_or([0.0; Self::BLADES.len()], |v| v.to_array()));
-                $t::from_array(core::array::from_fn(|k| L::from_fn(|l| a[l][k])))
-            }
-            #[inline(always)]
-            fn unpack_lanes<L: $crate::simd::Lane>(p: $t<L>, out: &mut [Self]) {
-                let a = p.to_array();
-                for (l, o) in out.iter_mut().enumerate().take(L::LANES) {
-                    *o = $t::from_array(core::array::from_fn(|k| a[k].lane(l)));
-                }
-            }
-            #[inline(always)]
-            fn pack_filler() -> Self {
-                $t::zero()
-            }
+        $crate::__simd_lanes!(@by_value $t f64 {
             // The generated types are `#[repr(C)]` structs of their coefficients in field
             // order: a value is `[T; N]` in memory, a packed one `[F64x4; N]`.
             #[cfg(target_arch = "x86_64")]
@@ -133,25 +181,87 @@ macro_rules! __simd_lanes {
                 // SAFETY: as in `pack_rows8`.
                 unsafe { $crate::simd::transpose::avx512::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
             }
-        }
+        });
+        $crate::__simd_lanes!(@by_value $t f32 {
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows_f32x8(rows: [*const Self; 8]) -> $t<$crate::simd::F32x8> {
+                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F32x8>>::uninit();
+                // SAFETY: the caller's CPU has AVX and its rows are valid; `pack` writes
+                // every coefficient of `out`.
+                unsafe {
+                    $crate::simd::transpose::avx_f32::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    out.assume_init()
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows_f32x8(p: $t<$crate::simd::F32x8>, rows: [*mut Self; 8]) {
+                // SAFETY: as in `pack_rows_f32x8`.
+                unsafe { $crate::simd::transpose::avx_f32::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows16(rows: [*const Self; 16]) -> $t<$crate::simd::F32x16> {
+                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F32x16>>::uninit();
+                // SAFETY: the caller's CPU has AVX-512 and its rows are valid; `pack` writes
+                // every coefficient of `out`.
+                unsafe {
+                    $crate::simd::transpose::avx512_f32::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                    out.assume_init()
+                }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows16(p: $t<$crate::simd::F32x16>, rows: [*mut Self; 16]) {
+                // SAFETY: as in `pack_rows16`.
+                unsafe { $crate::simd::transpose::avx512_f32::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+            }
+        });
     )*};
+    (@by_value $t:ident $e:ident { $($rows:tt)* }) => {
+        impl $crate::simd::Lanes for $t<$e> {
+            type Element = $e;
+            type Over<L: $crate::simd::Lane> = $t<L>;
+            #[inline(always)]
+            fn pack_lanes<L: $crate::simd::Lane>(x: &[Self]) -> $t<L> {
+                let a: [[$e; Self::BLADES.len()]; 16] = core::array::from_fn(|l| x.get(l).map_or([0.0; Self::BLADES.len()], |v| v.to_array()));
+                $t::from_array(core::array::from_fn(|k| L::from_fn(|l| $crate::Real::to_f64(a[l][k]))))
+            }
+            #[inline(always)]
+            fn unpack_lanes<L: $crate::simd::Lane>(p: $t<L>, out: &mut [Self]) {
+                let a = p.to_array();
+                for (l, o) in out.iter_mut().enumerate().take(L::LANES) {
+                    // Exact: the lanes hold values of `$e`.
+                    *o = $t::from_array(core::array::from_fn(|k| <$e as $crate::Real>::from_f64(a[k].lane(l))));
+                }
+            }
+            #[inline(always)]
+            fn pack_filler() -> Self {
+                $t::zero()
+            }
+            $($rows)*
+        }
+    };
 }
 macro_rules! tuple_lanes {
     ($($x:ident $k:tt),*) => {
         /// Tuples pack element by element.
-        impl<$($x: Lanes),*> Lanes for ($($x,)*) {
+        /// Of one scalar: each element goes into the same lanes.
+        impl<E: Element, $($x: Lanes<Element = E>),*> Lanes for ($($x,)*) {
+            type Element = E;
             type Over<L: Lane> = ($($x::Over<L>,)*);
             #[inline(always)]
             fn pack_lanes<L: Lane>(x: &[Self]) -> Self::Over<L> {
                 ($({
-                    let part: [$x; 8] = core::array::from_fn(|l| x.get(l).map_or($x::pack_filler(), |t| t.$k));
+                    let part: [$x; 16] = core::array::from_fn(|l| x.get(l).map_or($x::pack_filler(), |t| t.$k));
                     $x::pack_lanes::<L>(&part[..L::LANES])
                 },)*)
             }
             #[inline(always)]
             fn unpack_lanes<L: Lane>(p: Self::Over<L>, out: &mut [Self]) {
                 $({
-                    let mut part = [$x::pack_filler(); 8];
+                    let mut part = [$x::pack_filler(); 16];
                     $x::unpack_lanes::<L>(p.$k, &mut part[..L::LANES]);
                     for (o, v) in out.iter_mut().zip(part) {
                         o.$k = v;
@@ -185,6 +295,30 @@ macro_rules! tuple_lanes {
             unsafe fn unpack_rows8(p: Self::Over<F64x8>, rows: [*mut Self; 8]) {
                 // SAFETY: as in `pack_rows8`.
                 unsafe { $($x::unpack_rows8(p.$k, rows.map(|r| &raw mut (*r).$k));)* }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows_f32x8(rows: [*const Self; 8]) -> Self::Over<F32x8> {
+                // SAFETY: the caller's CPU has AVX and its pointers are valid.
+                unsafe { ($($x::pack_rows_f32x8(rows.map(|r| &raw const (*r).$k)),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows_f32x8(p: Self::Over<F32x8>, rows: [*mut Self; 8]) {
+                // SAFETY: as in `pack_rows_f32x8`.
+                unsafe { $($x::unpack_rows_f32x8(p.$k, rows.map(|r| &raw mut (*r).$k));)* }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn pack_rows16(rows: [*const Self; 16]) -> Self::Over<F32x16> {
+                // SAFETY: the caller's CPU has AVX-512 and its pointers are valid.
+                unsafe { ($($x::pack_rows16(rows.map(|r| &raw const (*r).$k)),)*) }
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[inline(always)]
+            unsafe fn unpack_rows16(p: Self::Over<F32x16>, rows: [*mut Self; 16]) {
+                // SAFETY: as in `pack_rows16`.
+                unsafe { $($x::unpack_rows16(p.$k, rows.map(|r| &raw mut (*r).$k));)* }
             }
         }
     };

@@ -1,5 +1,5 @@
-//! The lane types: [`F64x4`] and [`F64x8`], f64 lanes that are a [`Real`] and a
-//! [`Select`](crate::Select), written once by one macro.
+//! The lane types: [`F64x4`] and [`F64x8`] (f64 lanes), [`F32x8`] and [`F32x16`] (f32
+//! lanes), each a [`Real`] and a [`Select`](crate::Select), written once by one macro.
 //!
 //! The lanes are a plain array that LLVM vectorises, not a SIMD crate's type: `wide` (tried
 //! first) picks its width when it is compiled, so under run-time dispatch it stays at two
@@ -11,8 +11,9 @@ use crate::{Real, Select};
 use core::cmp::Ordering;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A lane type the generated types run on in [`super::run`]: so many f64 lanes, a
-/// [`Select`] (lane-wise choice) and a [`Real`] (lane-wise arithmetic).
+/// A lane type the generated types run on in [`super::run`]: so many f64 or f32 lanes, a
+/// [`Select`] (lane-wise choice) and a [`Real`] (lane-wise arithmetic). Lanes are read and
+/// built as f64, which holds every f32 exactly: f32 values go in and come out unchanged.
 pub trait Lane: Select + Default {
     /// How many lanes.
     const LANES: usize;
@@ -41,49 +42,66 @@ impl Lane for f64 {
     }
 }
 
+/// One f32 value is one lane.
+impl Lane for f32 {
+    const LANES: usize = 1;
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f64) -> Self {
+        f(0) as f32
+    }
+    #[inline(always)]
+    fn lane(self, _: usize) -> f64 {
+        self.into()
+    }
+    #[inline(always)]
+    fn mask_lane(mask: bool, _: usize) -> bool {
+        mask
+    }
+}
+
 macro_rules! wide {
-    ($(#[$doc:meta])* $t:ident, $(#[$mask_doc:meta])* $mask:ident, $n:literal, [$($l:literal)*], $align:literal) => {
+    ($(#[$doc:meta])* $t:ident, $(#[$mask_doc:meta])* $mask:ident, $e:ident, $bits:ident, $n:literal, [$($l:literal)*], $align:literal) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, Default, PartialEq)]
         #[repr(C, align($align))]
-        pub struct $t(pub [f64; $n]);
+        pub struct $t(pub [$e; $n]);
 
         impl $t {
             /// The lanes `[a₀, a₁, …]`.
             #[inline(always)]
-            pub fn new(lanes: [f64; $n]) -> Self {
+            pub fn new(lanes: [$e; $n]) -> Self {
                 $t(lanes)
             }
 
             /// The same value in every lane.
             #[inline(always)]
-            pub fn splat(x: f64) -> Self {
+            pub fn splat(x: $e) -> Self {
                 $t([x; $n])
             }
 
             /// The lanes as an array.
             #[inline(always)]
-            pub fn to_array(self) -> [f64; $n] {
+            pub fn to_array(self) -> [$e; $n] {
                 self.0
             }
 
             /// `f` applied lane by lane.
             #[inline(always)]
-            fn map(self, f: impl Fn(f64) -> f64) -> Self {
+            fn map(self, f: impl Fn($e) -> $e) -> Self {
                 $t(self.0.map(f))
             }
 
             /// `f` of the two lanes `l`, lane by lane (written out lane by lane: the form
             /// LLVM turns into one vector instruction).
             #[inline(always)]
-            fn zip(self, other: Self, f: impl Fn(f64, f64) -> f64) -> Self {
+            fn zip(self, other: Self, f: impl Fn($e, $e) -> $e) -> Self {
                 let (a, b) = (self.0, other.0);
                 $t([$(f(a[$l], b[$l])),*])
             }
 
             /// Whether `f` holds in every lane (each lane compared, no early exit).
             #[inline(always)]
-            fn every(self, other: Self, f: impl Fn(f64, f64) -> bool) -> bool {
+            fn every(self, other: Self, f: impl Fn($e, $e) -> bool) -> bool {
                 let (a, b) = (self.0, other.0);
                 true $(& f(a[$l], b[$l]))*
             }
@@ -171,21 +189,21 @@ macro_rules! wide {
             }
             #[inline(always)]
             fn from_f64(x: f64) -> Self {
-                $t::splat(x)
+                $t::splat(Real::from_f64(x))
             }
             /// Lane 0 (a scalar view of many values has no better meaning; use `to_array`
             /// for the lanes).
             #[inline]
             fn to_f64(self) -> f64 {
-                self.0[0]
+                self.0[0].to_f64()
             }
             #[inline(always)]
             fn sqrt(self) -> Self {
-                self.map(f64::sqrt)
+                self.map($e::sqrt)
             }
             #[inline(always)]
             fn abs(self) -> Self {
-                self.map(f64::abs)
+                self.map($e::abs)
             }
             /// Whether every lane is finite.
             #[inline(always)]
@@ -195,43 +213,43 @@ macro_rules! wide {
             }
             #[inline]
             fn epsilon() -> Self {
-                $t::splat(f64::EPSILON)
+                $t::splat($e::EPSILON)
             }
             #[inline]
             fn sin(self) -> Self {
-                self.map(f64::sin)
+                self.map($e::sin)
             }
             #[inline]
             fn cos(self) -> Self {
-                self.map(f64::cos)
+                self.map($e::cos)
             }
             #[inline]
             fn atan2(self, x: Self) -> Self {
-                self.zip(x, f64::atan2)
+                self.zip(x, $e::atan2)
             }
             #[inline]
             fn exp(self) -> Self {
-                self.map(f64::exp)
+                self.map($e::exp)
             }
             #[inline]
             fn ln(self) -> Self {
-                self.map(f64::ln)
+                self.map($e::ln)
             }
             #[inline]
             fn sinh(self) -> Self {
-                self.map(f64::sinh)
+                self.map($e::sinh)
             }
             #[inline]
             fn cosh(self) -> Self {
-                self.map(f64::cosh)
+                self.map($e::cosh)
             }
             #[inline]
             fn ln_1p(self) -> Self {
-                self.map(f64::ln_1p)
+                self.map($e::ln_1p)
             }
             #[inline]
             fn min_positive() -> Self {
-                $t::splat(f64::MIN_POSITIVE)
+                $t::splat($e::MIN_POSITIVE)
             }
             /// Lane by lane.
             #[inline]
@@ -245,13 +263,13 @@ macro_rules! wide {
         /// Each lane is all ones or all zeros, as a vector comparison leaves it, so that
         /// comparisons, `&`, `|`, `!` and [`Select::select`] stay in vector registers.
         #[derive(Clone, Copy, Default, PartialEq, Eq)]
-        pub struct $mask([u64; $n]);
+        pub struct $mask([$bits; $n]);
 
         impl $mask {
             /// The mask with lane `l` set where `lanes[l]` is.
             #[inline(always)]
             pub fn new(lanes: [bool; $n]) -> Self {
-                $mask(lanes.map(|b| (b as u64).wrapping_neg()))
+                $mask(lanes.map(|b| (b as $bits).wrapping_neg()))
             }
 
             /// Whether lane `l` is set.
@@ -269,9 +287,9 @@ macro_rules! wide {
             /// All ones where `f` of the lanes holds (written out lane by lane: the form
             /// LLVM turns into one vector comparison).
             #[inline(always)]
-            fn compare(a: $t, b: $t, f: impl Fn(f64, f64) -> bool) -> Self {
+            fn compare(a: $t, b: $t, f: impl Fn($e, $e) -> bool) -> Self {
                 let (a, b) = (a.0, b.0);
-                $mask([$((f(a[$l], b[$l]) as u64).wrapping_neg()),*])
+                $mask([$((f(a[$l], b[$l]) as $bits).wrapping_neg()),*])
             }
         }
 
@@ -318,13 +336,13 @@ macro_rules! wide {
             }
             #[inline(always)]
             fn finite(self) -> $mask {
-                $mask::compare(self.abs(), $t::splat(f64::INFINITY), |x, inf| x < inf)
+                $mask::compare(self.abs(), $t::splat($e::INFINITY), |x, inf| x < inf)
             }
             /// Bitwise: `(a & m) | (b & !m)` (LLVM's blend).
             #[inline(always)]
             fn select(mask: $mask, if_true: Self, if_false: Self) -> Self {
                 let (m, a, b) = (mask.0, if_true.0, if_false.0);
-                $t([$(f64::from_bits((a[$l].to_bits() & m[$l]) | (b[$l].to_bits() & !m[$l]))),*])
+                $t([$($e::from_bits((a[$l].to_bits() & m[$l]) | (b[$l].to_bits() & !m[$l]))),*])
             }
             #[inline(always)]
             fn any(mask: $mask) -> bool {
@@ -334,19 +352,19 @@ macro_rules! wide {
             #[inline(always)]
             fn all(mask: $mask) -> bool {
                 let m = mask.0;
-                (u64::MAX $(& m[$l])*) == u64::MAX
+                ($bits::MAX $(& m[$l])*) == $bits::MAX
             }
         }
 
         impl Lane for $t {
             const LANES: usize = $n;
             #[inline(always)]
-            fn from_fn(f: impl FnMut(usize) -> f64) -> Self {
-                $t(core::array::from_fn(f))
+            fn from_fn(mut f: impl FnMut(usize) -> f64) -> Self {
+                $t(core::array::from_fn(|l| Real::from_f64(f(l))))
             }
             #[inline(always)]
             fn lane(self, l: usize) -> f64 {
-                self.0[l]
+                self.0[l].to_f64()
             }
             #[inline(always)]
             fn mask_lane(mask: $mask, l: usize) -> bool {
@@ -361,6 +379,8 @@ wide!(
     F64x4,
     /// A truth value per lane of an [`F64x4`] ([`Select`]).
     Mask4,
+    f64,
+    u64,
     4,
     [0 1 2 3],
     32
@@ -371,7 +391,33 @@ wide!(
     F64x8,
     /// A truth value per lane of an [`F64x8`] ([`Select`]).
     Mask8,
+    f64,
+    u64,
     8,
     [0 1 2 3 4 5 6 7],
+    64
+);
+wide!(
+    /// Eight f32 lanes, a [`Real`] whose arithmetic is lane-wise: one AVX2 register, what
+    /// [`super::run`] uses for f32 values where the CPU has AVX2.
+    F32x8,
+    /// A truth value per lane of an [`F32x8`] ([`Select`]).
+    Mask32x8,
+    f32,
+    u32,
+    8,
+    [0 1 2 3 4 5 6 7],
+    32
+);
+wide!(
+    /// Sixteen f32 lanes, a [`Real`] whose arithmetic is lane-wise: one AVX-512 register,
+    /// what [`super::run`] uses for f32 values where the CPU has AVX-512.
+    F32x16,
+    /// A truth value per lane of an [`F32x16`] ([`Select`]).
+    Mask32x16,
+    f32,
+    u32,
+    16,
+    [0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15],
     64
 );
