@@ -35,14 +35,12 @@ for _ in $(seq "$rounds"); do
     "$out/versor-native-f32" | sed 's/ / versor-native-f32 /' >> "$out/raw.txt"
 done
 echo "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, $("$cxx" --version | head -1), $(rustc --version)"
-python3 - "$out/raw.txt" <<'PY'
-import sys, statistics, collections
-t = collections.defaultdict(list)
-for line in open(sys.argv[1]):
-    op, form, ns = line.split()
-    t[(op, form)].append(float(ns))
-m = {k: statistics.median(v) for k, v in t.items()}
-ops = [op for op in dict.fromkeys(op for op, _ in t) if op != "multiply"]
+python3 - "$out/raw.txt" "$here" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from medians import read
+ops, m = read(sys.argv[1])
+ops = [op for op in ops if op != "multiply"]
 print("| operation | ours scalar | ours batch | ours packets | Versor x86-64 | Versor native | native / packets | native / batch | multiplications | floor | native / floor | Versor native f32 |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|")
 for op in ops:

@@ -27,17 +27,15 @@ for _ in $(seq "$rounds"); do
     "$out/klein" >> "$out/raw.txt"
 done
 echo "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, $("$cxx" --version | head -1), $(rustc --version)"
-python3 - "$out/raw.txt" <<'PY'
-import sys, statistics, collections
-t = collections.defaultdict(list)
-for line in open(sys.argv[1]):
-    op, form, ns = line.split()
-    t[(op, form)].append(float(ns))
-m = {k: statistics.median(v) for k, v in t.items()}
+python3 - "$out/raw.txt" "$here" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from medians import read
+ops, m = read(sys.argv[1])
 print("| operation | klein f32 | ours f32 | ours f32 lanes | ours f64 | ours f64 lanes | f32 / klein | f64 / klein |")
 print("|---|---|---|---|---|---|---|---|")
 fmt = lambda v: f"{v:.3f}" if v is not None else "–"
-for op in dict.fromkeys(op for op, _ in t):
+for op in ops:
     k = m[(op, "klein")]
     a, al, b, bl = (m.get((op, f)) for f in ("f32", "f32-lanes", "f64", "f64-lanes"))
     best32 = min(v for v in (a, al) if v is not None)

@@ -103,6 +103,8 @@ pub trait Kernel {
     fn apply<L: Lane>(&self, x: Over<Self::Input, L>) -> Over<Self::Output, L>;
 }
 
+#[cfg(target_arch = "x86_64")]
+use rows::Transposed;
 use rows::{Op, Rows as _};
 
 /// A kernel at whichever lanes a loop takes.
@@ -191,59 +193,71 @@ mod rows {
         unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]);
     }
 
-    impl Rows for F64x4 {
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX2.
-            unsafe { super::rows_avx2(f, input, out) }
-        }
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX-512.
-            unsafe { super::rows4_avx512(f, input, out) }
-        }
+    /// Each width's loops: by in-place transposes where a level has them for its rows (four
+    /// f64 or eight f32 with AVX, eight f64 or sixteen f32 with AVX-512), by value where it
+    /// has not (eight f64 or sixteen f32 lanes are two AVX2 registers).
+    macro_rules! rows {
+        ($($t:ident: $avx2:ident;)*) => {$(
+            impl Rows for $t {
+                #[cfg(target_arch = "x86_64")]
+                unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+                    // SAFETY: the caller's CPU has AVX2, which the transposes on these lanes need.
+                    unsafe { super::$avx2(f, input, out) }
+                }
+                #[cfg(target_arch = "x86_64")]
+                unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+                    // SAFETY: the caller's CPU has AVX-512.
+                    unsafe { super::transposed_avx512(f, input, out) }
+                }
+            }
+        )*};
+    }
+    rows! {
+        F64x4: transposed_avx2;
+        F64x8: by_value_avx2;
+        F32x8: transposed_avx2;
+        F32x16: by_value_avx2;
     }
 
-    impl Rows for F64x8 {
-        /// Eight lanes are two AVX2 registers: packed by value (no eight-row transposes
-        /// without AVX-512).
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX2.
-            unsafe { super::by_value_avx2(f, input, out) }
-        }
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX-512.
-            unsafe { super::rows8_avx512(f, input, out) }
-        }
+    /// Lanes that values move into and out of by transposes in place (`Lanes`' row moves
+    /// of their width).
+    #[cfg(target_arch = "x86_64")]
+    pub trait Transposed: Lane {
+        /// Rows `first .. first + LANES` of `input`, in lanes.
+        ///
+        /// # Safety
+        /// The CPU must have the transposes' level (AVX for four f64 or eight f32 lanes,
+        /// AVX-512 F and DQ for eight f64 or sixteen f32), and the rows must exist.
+        unsafe fn pack<S: Columns>(input: &S, first: usize) -> Over<S::Item, Self>;
+        /// The lanes of `p` to the `LANES` values from `rows`.
+        ///
+        /// # Safety
+        /// As for [`Transposed::pack`], the values writable.
+        unsafe fn unpack<X: Lanes>(p: Over<X, Self>, rows: *mut X);
     }
 
-    impl Rows for F32x8 {
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX2.
-            unsafe { super::rows_f32x8_avx2(f, input, out) }
-        }
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX-512.
-            unsafe { super::rows_f32x8_avx512(f, input, out) }
-        }
+    macro_rules! transposed {
+        ($($t:ident: $pack:ident, $unpack:ident;)*) => {$(
+            #[cfg(target_arch = "x86_64")]
+            impl Transposed for $t {
+                #[inline(always)]
+                unsafe fn pack<S: Columns>(input: &S, first: usize) -> Over<S::Item, Self> {
+                    // SAFETY: the caller's.
+                    unsafe { input.$pack(first) }
+                }
+                #[inline(always)]
+                unsafe fn unpack<X: Lanes>(p: Over<X, Self>, rows: *mut X) {
+                    // SAFETY: the caller's.
+                    unsafe { X::$unpack(p, core::array::from_fn(|i| rows.add(i))) }
+                }
+            }
+        )*};
     }
-
-    impl Rows for F32x16 {
-        /// Sixteen f32 lanes are two AVX2 registers: packed by value.
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx2<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX2.
-            unsafe { super::by_value_avx2(f, input, out) }
-        }
-        #[cfg(target_arch = "x86_64")]
-        unsafe fn rows_avx512<F: Op<Self>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-            // SAFETY: the caller's CPU has AVX-512.
-            unsafe { super::rows16_avx512(f, input, out) }
-        }
+    transposed! {
+        F64x4: pack_rows, unpack_rows;
+        F64x8: pack_rows8, unpack_rows8;
+        F32x8: pack_rows_f32x8, unpack_rows_f32x8;
+        F32x16: pack_rows16, unpack_rows16;
     }
 }
 
@@ -410,14 +424,6 @@ fn run_at<K: Kernel, S: Columns<Item = K::Input>>(
     Some(())
 }
 
-/// The four-lane loop compiled with AVX2 and FMA enabled.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn rows_avx2<F: Op<F64x4>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    // SAFETY: the CPU has AVX2.
-    unsafe { rows4(f, input, out) }
-}
-
 /// The by-value loop compiled with AVX2 and FMA enabled (eight lanes as two registers).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
@@ -425,111 +431,50 @@ unsafe fn by_value_avx2<L: Lane, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, i
     by_value(f, input, out)
 }
 
-/// The four-lane loop compiled with AVX-512 enabled: a closure on four lanes with the 32
-/// vector registers AVX-512 gives (fewer spills than AVX2's 16).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-unsafe fn rows4_avx512<F: Op<F64x4>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    // SAFETY: AVX-512 implies AVX.
-    unsafe { rows4(f, input, out) }
-}
-
-/// Four at a time by AVX transposes in place, the tail by value.
-///
-/// # Safety
-/// The CPU must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn rows4<F: Op<F64x4>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    let whole = out.len() / 4 * 4;
-    for (c, y) in out[..whole].chunks_exact_mut(4).enumerate() {
-        let rows = y.as_mut_ptr();
-        // SAFETY: the CPU has AVX; the input has as many rows as `out` (checked by the
-        // caller), so rows `4c .. 4c + 4` exist, and the output's are the chunk's four.
-        unsafe {
-            let lanes = input.pack_rows(4 * c);
-            F::Output::unpack_rows(f.op(lanes), [0, 1, 2, 3].map(|i| rows.add(i)));
-        }
-        not_across_iterations();
-    }
-    by_value::<F64x4, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
-}
-
-/// Eight at a time on [`F64x8`] by AVX-512 transposes in place, compiled with AVX-512
-/// enabled, a tail of fewer than eight padded by value ([`run`]'s loop there, and
-/// [`map`]'s on eight lanes).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-unsafe fn rows8_avx512<F: Op<F64x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    let whole = out.len() / 8 * 8;
-    for (c, y) in out[..whole].chunks_exact_mut(8).enumerate() {
-        let rows = y.as_mut_ptr();
-        // SAFETY: the CPU has AVX-512 F and DQ; the input has as many rows as `out`
-        // (checked by the caller), so rows `8c .. 8c + 8` exist.
-        unsafe {
-            let lanes = input.pack_rows8(8 * c);
-            F::Output::unpack_rows8(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
-        }
-        not_across_iterations();
-    }
-    by_value::<F64x8, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
-}
-
-/// Eight f32 values at a time on [`F32x8`] by AVX transposes in place, compiled with AVX2
-/// and FMA enabled.
+/// The transposing loop compiled with AVX2 and FMA enabled (four f64 or eight f32 lanes).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn rows_f32x8_avx2<F: Op<F32x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    // SAFETY: the CPU has AVX2.
-    unsafe { rows_f32x8(f, input, out) }
+unsafe fn transposed_avx2<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(
+    f: &F,
+    input: S,
+    out: &mut [F::Output],
+) {
+    // SAFETY: the caller's lanes have AVX transposes, and the CPU has AVX.
+    unsafe { transposed(f, input, out) }
 }
 
-/// [`rows_f32x8_avx2`] compiled with AVX-512 enabled ([`map`] on eight f32 lanes).
+/// The transposing loop compiled with AVX-512 enabled: [`run`]'s widest lanes, or a closure
+/// on narrower ones with the 32 vector registers AVX-512 gives (fewer spills than AVX2's 16).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-unsafe fn rows_f32x8_avx512<F: Op<F32x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    // SAFETY: AVX-512 implies AVX.
-    unsafe { rows_f32x8(f, input, out) }
+unsafe fn transposed_avx512<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(
+    f: &F,
+    input: S,
+    out: &mut [F::Output],
+) {
+    // SAFETY: the CPU has AVX-512, which every lanes' transposes need at most.
+    unsafe { transposed(f, input, out) }
 }
 
-/// Eight f32 values at a time by AVX transposes in place, the tail by value.
+/// `L::LANES` rows at a time by transposes in place, a tail of fewer padded by value.
 ///
 /// # Safety
-/// The CPU must have AVX.
+/// The CPU must have the level `L`'s transposes need.
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-unsafe fn rows_f32x8<F: Op<F32x8>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    let whole = out.len() / 8 * 8;
-    for (c, y) in out[..whole].chunks_exact_mut(8).enumerate() {
-        let rows = y.as_mut_ptr();
-        // SAFETY: the CPU has AVX; the input has as many rows as `out` (checked by the
-        // caller), so rows `8c .. 8c + 8` exist, and the output's are the chunk's eight.
+unsafe fn transposed<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
+    let n = L::LANES;
+    let whole = out.len() / n * n;
+    for (c, y) in out[..whole].chunks_exact_mut(n).enumerate() {
+        // SAFETY: the caller's CPU level; the input has as many rows as `out` (checked by
+        // the caller), so rows `nc .. nc + n` exist, and the output's are the chunk's.
         unsafe {
-            let lanes = input.pack_rows_f32x8(8 * c);
-            F::Output::unpack_rows_f32x8(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
+            let lanes = L::pack(&input, n * c);
+            L::unpack::<F::Output>(f.op(lanes), y.as_mut_ptr());
         }
         not_across_iterations();
     }
-    by_value::<F32x8, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
-}
-
-/// Sixteen f32 values at a time on [`F32x16`] by AVX-512 transposes in place, compiled
-/// with AVX-512 enabled, a tail of fewer than sixteen padded by value.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
-unsafe fn rows16_avx512<F: Op<F32x16>, S: Columns<Item = F::Input>>(f: &F, input: S, out: &mut [F::Output]) {
-    let whole = out.len() / 16 * 16;
-    for (c, y) in out[..whole].chunks_exact_mut(16).enumerate() {
-        let rows = y.as_mut_ptr();
-        // SAFETY: the CPU has AVX-512 F and DQ; the input has as many rows as `out`
-        // (checked by the caller), so rows `16c .. 16c + 16` exist.
-        unsafe {
-            let lanes = input.pack_rows16(16 * c);
-            F::Output::unpack_rows16(f.op(lanes), core::array::from_fn(|i| rows.add(i)));
-        }
-        not_across_iterations();
-    }
-    by_value::<F32x16, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
+    by_value::<L, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
 }
 
 /// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),

@@ -38,8 +38,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn pack_rows(rows: [*const Self; 4]) -> Self::Over<F64x4> {
-        // SAFETY: the caller's pointers are valid.
-        Self::pack(rows.map(|r| unsafe { *r }))
+        // SAFETY: the caller's.
+        unsafe { read_rows(rows) }
     }
     /// [`Lanes::unpack`] into the values at `rows`, written in place by AVX shuffles where
     /// the type allows.
@@ -49,10 +49,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn unpack_rows(p: Self::Over<F64x4>, rows: [*mut Self; 4]) {
-        for (r, v) in rows.into_iter().zip(Self::unpack(p)) {
-            // SAFETY: the caller's pointers are valid.
-            unsafe { *r = v };
-        }
+        // SAFETY: the caller's.
+        unsafe { write_rows(p, rows) }
     }
     /// The eight values at `rows` in eight lanes, read in place by AVX-512 shuffles.
     ///
@@ -61,8 +59,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn pack_rows8(rows: [*const Self; 8]) -> Self::Over<F64x8> {
-        // SAFETY: the caller's pointers are valid.
-        Self::pack_lanes(&rows.map(|r| unsafe { *r }))
+        // SAFETY: the caller's.
+        unsafe { read_rows(rows) }
     }
     /// The inverse of [`Lanes::pack_rows8`], written in place.
     ///
@@ -71,12 +69,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn unpack_rows8(p: Self::Over<F64x8>, rows: [*mut Self; 8]) {
-        let mut values = [Self::pack_filler(); 8];
-        Self::unpack_lanes(p, &mut values);
-        for (r, v) in rows.into_iter().zip(values) {
-            // SAFETY: the caller's pointers are valid.
-            unsafe { *r = v };
-        }
+        // SAFETY: the caller's.
+        unsafe { write_rows(p, rows) }
     }
     /// The eight values at `rows` in eight f32 lanes, read in place by AVX shuffles where
     /// the type allows.
@@ -86,8 +80,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn pack_rows_f32x8(rows: [*const Self; 8]) -> Self::Over<F32x8> {
-        // SAFETY: the caller's pointers are valid.
-        Self::pack_lanes(&rows.map(|r| unsafe { *r }))
+        // SAFETY: the caller's.
+        unsafe { read_rows(rows) }
     }
     /// The inverse of [`Lanes::pack_rows_f32x8`], written in place.
     ///
@@ -96,12 +90,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn unpack_rows_f32x8(p: Self::Over<F32x8>, rows: [*mut Self; 8]) {
-        let mut values = [Self::pack_filler(); 8];
-        Self::unpack_lanes(p, &mut values);
-        for (r, v) in rows.into_iter().zip(values) {
-            // SAFETY: the caller's pointers are valid.
-            unsafe { *r = v };
-        }
+        // SAFETY: the caller's.
+        unsafe { write_rows(p, rows) }
     }
     /// The sixteen values at `rows` in sixteen f32 lanes, read in place by AVX-512 shuffles
     /// where the type allows.
@@ -111,8 +101,8 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn pack_rows16(rows: [*const Self; 16]) -> Self::Over<F32x16> {
-        // SAFETY: the caller's pointers are valid.
-        Self::pack_lanes(&rows.map(|r| unsafe { *r }))
+        // SAFETY: the caller's.
+        unsafe { read_rows(rows) }
     }
     /// The inverse of [`Lanes::pack_rows16`], written in place.
     ///
@@ -121,12 +111,32 @@ pub trait Lanes: Copy {
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn unpack_rows16(p: Self::Over<F32x16>, rows: [*mut Self; 16]) {
-        let mut values = [Self::pack_filler(); 16];
-        Self::unpack_lanes(p, &mut values);
-        for (r, v) in rows.into_iter().zip(values) {
-            // SAFETY: the caller's pointers are valid.
-            unsafe { *r = v };
-        }
+        // SAFETY: the caller's.
+        unsafe { write_rows(p, rows) }
+    }
+}
+
+/// The values at `rows` packed by value: what the in-place transposes default to.
+///
+/// # Safety
+/// `rows` must point to valid values.
+#[inline(always)]
+unsafe fn read_rows<X: Lanes, L: Lane, const N: usize>(rows: [*const X; N]) -> X::Over<L> {
+    // SAFETY: the caller's pointers are valid.
+    X::pack_lanes(&rows.map(|r| unsafe { *r }))
+}
+
+/// The inverse of [`read_rows`]: lane `k` written to `rows[k]`.
+///
+/// # Safety
+/// `rows` must point to writable values.
+#[inline(always)]
+unsafe fn write_rows<X: Lanes, L: Lane, const N: usize>(p: X::Over<L>, rows: [*mut X; N]) {
+    let mut values = [X::pack_filler(); N];
+    X::unpack_lanes(p, &mut values);
+    for (r, v) in rows.into_iter().zip(values) {
+        // SAFETY: the caller's pointers are valid.
+        unsafe { *r = v };
     }
 }
 
@@ -137,88 +147,44 @@ pub fn splat<X: Lanes, L: Lane>(x: X) -> X::Over<L> {
     X::pack_lanes(&[x; 16][..L::LANES])
 }
 
-/// `Lanes` for the named generated types over `f64`: what `algebra!` emits for an algebra that
+/// `Lanes` for the named generated types over `f64` and `f32`: what `algebra!` emits for an algebra that
 /// asks for it (`lanes = cga_core::simd;`), spelled through `$crate` so that it expands in any
 /// crate.
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __simd_lanes {
     ($($t:ident),*) => {$(
+        // The generated types are `#[repr(C)]` structs of their coefficients in field order:
+        // a value is `[T; N]` in memory, a packed one `[F64x4; N]`.
         $crate::__simd_lanes!(@by_value $t f64 {
-            // The generated types are `#[repr(C)]` structs of their coefficients in field
-            // order: a value is `[T; N]` in memory, a packed one `[F64x4; N]`.
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn pack_rows(rows: [*const Self; 4]) -> $t<$crate::simd::F64x4> {
-                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F64x4>>::uninit();
-                // SAFETY: the caller's CPU has AVX and its rows are valid; `pack` writes
-                // every coefficient of `out`.
-                unsafe {
-                    $crate::simd::transpose::avx::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
-                    out.assume_init()
-                }
-            }
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn unpack_rows(p: $t<$crate::simd::F64x4>, rows: [*mut Self; 4]) {
-                // SAFETY: as in `pack_rows`.
-                unsafe { $crate::simd::transpose::avx::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
-            }
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn pack_rows8(rows: [*const Self; 8]) -> $t<$crate::simd::F64x8> {
-                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F64x8>>::uninit();
-                // SAFETY: the caller's CPU has AVX-512 and its rows are valid; `pack` writes
-                // every coefficient of `out`.
-                unsafe {
-                    $crate::simd::transpose::avx512::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
-                    out.assume_init()
-                }
-            }
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn unpack_rows8(p: $t<$crate::simd::F64x8>, rows: [*mut Self; 8]) {
-                // SAFETY: as in `pack_rows8`.
-                unsafe { $crate::simd::transpose::avx512::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
-            }
+            $crate::__simd_lanes!(@rows $t avx F64x4 4 pack_rows unpack_rows);
+            $crate::__simd_lanes!(@rows $t avx512 F64x8 8 pack_rows8 unpack_rows8);
         });
         $crate::__simd_lanes!(@by_value $t f32 {
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn pack_rows_f32x8(rows: [*const Self; 8]) -> $t<$crate::simd::F32x8> {
-                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F32x8>>::uninit();
-                // SAFETY: the caller's CPU has AVX and its rows are valid; `pack` writes
-                // every coefficient of `out`.
-                unsafe {
-                    $crate::simd::transpose::avx_f32::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
-                    out.assume_init()
-                }
-            }
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn unpack_rows_f32x8(p: $t<$crate::simd::F32x8>, rows: [*mut Self; 8]) {
-                // SAFETY: as in `pack_rows_f32x8`.
-                unsafe { $crate::simd::transpose::avx_f32::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
-            }
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn pack_rows16(rows: [*const Self; 16]) -> $t<$crate::simd::F32x16> {
-                let mut out = core::mem::MaybeUninit::<$t<$crate::simd::F32x16>>::uninit();
-                // SAFETY: the caller's CPU has AVX-512 and its rows are valid; `pack` writes
-                // every coefficient of `out`.
-                unsafe {
-                    $crate::simd::transpose::avx512_f32::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
-                    out.assume_init()
-                }
-            }
-            #[cfg(target_arch = "x86_64")]
-            #[inline(always)]
-            unsafe fn unpack_rows16(p: $t<$crate::simd::F32x16>, rows: [*mut Self; 16]) {
-                // SAFETY: as in `pack_rows16`.
-                unsafe { $crate::simd::transpose::avx512_f32::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
-            }
+            $crate::__simd_lanes!(@rows $t avx_f32 F32x8 8 pack_rows_f32x8 unpack_rows_f32x8);
+            $crate::__simd_lanes!(@rows $t avx512_f32 F32x16 16 pack_rows16 unpack_rows16);
         });
     )*};
+    // The transposes of `simd::transpose::$module` as `Lanes`' in-place moves on `$n` rows.
+    (@rows $t:ident $module:ident $lanes:ident $n:literal $pack:ident $unpack:ident) => {
+        #[cfg(target_arch = "x86_64")]
+        #[inline(always)]
+        unsafe fn $pack(rows: [*const Self; $n]) -> $t<$crate::simd::$lanes> {
+            let mut out = core::mem::MaybeUninit::<$t<$crate::simd::$lanes>>::uninit();
+            // SAFETY: the caller's CPU has the transposes' level and its rows are valid;
+            // `pack` writes every coefficient of `out`.
+            unsafe {
+                $crate::simd::transpose::$module::pack::<{ Self::BLADES.len() }>(rows.map(|r| r.cast()), out.as_mut_ptr().cast());
+                out.assume_init()
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        #[inline(always)]
+        unsafe fn $unpack(p: $t<$crate::simd::$lanes>, rows: [*mut Self; $n]) {
+            // SAFETY: as in the pack.
+            unsafe { $crate::simd::transpose::$module::unpack::<{ Self::BLADES.len() }>((&raw const p).cast(), rows.map(|r| r.cast())) }
+        }
+    };
     (@by_value $t:ident $e:ident { $($rows:tt)* }) => {
         impl $crate::simd::Lanes for $t<$e> {
             type Element = $e;
