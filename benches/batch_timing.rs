@@ -38,7 +38,8 @@ fn point(i: usize, seed: f64) -> Vector {
 /// printing each; every form gives the bits of one at a time.
 fn both<K: Kernel + Default>(name: &str, input: &[K::Input], op: impl Fn(K::Input) -> K::Output)
 where
-    K::Output: Default + PartialEq + std::fmt::Debug,
+    K::Input: Lanes<Element = f64>,
+    K::Output: Lanes<Element = f64> + Default + PartialEq + std::fmt::Debug,
 {
     let one_at_a_time: Vec<K::Output> = input.iter().map(|&x| op(x)).collect();
     let mut scalar_out = vec![K::Output::default(); input.len()];

@@ -49,7 +49,6 @@ mod error;
 mod exp_log;
 mod metric;
 mod motor;
-mod vec3;
 
 pub use error::PgaError;
 

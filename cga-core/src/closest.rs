@@ -32,7 +32,7 @@
 
 use crate::conformal::Result;
 use crate::euclid::{E3, add, cross, dot, norm, perpendicular, scale, sub};
-use crate::measure::{Closest, distance};
+use crate::measure::{Closest, Nearest as _, distance};
 use crate::{Circle, Dual, Line, Real};
 
 /// Samples of `θ` over the full turn.
@@ -136,7 +136,7 @@ impl<T: Real> Circle<T> {
         };
         let (theta, flat) = minimise(f, flat_tolerance(size));
         let on_self = circle.at(theta);
-        let on_other = add(p, scale(d, dot(sub(on_self, p), d)));
+        let on_other = line.nearest_point(on_self)?;
         Ok(Closest { on_self, on_other, distance: distance(on_self, on_other), parallel: flat })
     }
 

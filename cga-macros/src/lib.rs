@@ -33,8 +33,9 @@
 //! `ln_1p` (`cga_core::Real` documents each); it needs `Copy + PartialEq + PartialOrd + Add +
 //! Sub + Mul + Div + Neg` (all with `Output = Self`) and `Debug`: declare those in the trait
 //! (`cga_core::Real` does). A trait that lacks one of those functions gets one error per
-//! missing function at the `scalar` item (“cannot find method … `to_f64` in trait …”,
-//! `ui/fail/scalar_trait_lacks_a_method.rs`), the compiler's follow-on errors after them.
+//! missing function spanned on the `scalar` item (“cannot find method … `to_f64` in trait
+//! …”, `ui/fail/scalar_trait_lacks_a_method.rs`), besides the compiler's own errors at the
+//! uses, which are spanned on the whole invocation.
 //!
 //! `scalars` (optional) lists concrete coefficient types (`f32`, `f64`, any type that
 //! implements the `scalar` trait) that get the operators with the scalar on the left: the
@@ -42,11 +43,12 @@
 //! macro emits `S * X<S>`, and where `X + s` exists (below) `S + X<S>` and `S − X<S>`.
 //!
 //! `lanes` (optional) names cga-core's `simd` module: every type, declared or generated,
-//! then implements `cga_core::simd::Lanes` over `f64` (packing, the AVX and AVX-512
+//! then implements `cga_core::simd::Lanes` over `f64` and `f32` (packing, the AVX and AVX-512
 //! transposes, `splat`), so `simd::run`, `run_packed`, `run_columns` and `map` batch the
-//! algebra's products four or eight at a time with the bits of one at a time, as they do
-//! cga-core's own types. It needs the `scalar` trait implemented by the lanes `F64x4` and
-//! `F64x8` (`cga_core::Real` is).
+//! algebra's products four or eight f64 values at a time, eight or sixteen f32 ones, with
+//! the bits of one at a time, as they do cga-core's own types. It needs the `scalar` trait
+//! implemented by `f32` and by the lanes `F64x4`, `F64x8`, `F32x8` and `F32x16`
+//! (`cga_core::Real` is).
 //!
 //! `prelude` (optional) names a scalar: a module `prelude` then holds every type at it
 //! (`prelude::Circle` is `Circle<f64>`, aliases and the dense type included) and every

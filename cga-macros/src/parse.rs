@@ -32,7 +32,7 @@ pub struct Scalars {
 /// gate them behind a feature):
 /// - `#[cfg(…)] approx = path::to::approx;`: the `approx` crate's comparison traits for every
 ///   type;
-/// - `lanes = cga_core::simd;`: `cga_core::simd::Lanes` for every type over `f64`, so that
+/// - `lanes = cga_core::simd;`: `cga_core::simd::Lanes` for every type over `f64` and `f32`, so that
 ///   `simd::run`, `run_packed`, `run_columns` and `map` batch them (the path names
 ///   cga-core's `simd` module);
 /// - `prelude = f64;`: a module `prelude` of every type at that scalar (`Circle` for

@@ -189,9 +189,10 @@ def distance(a, b):
 def project(x, onto):
     """Orthogonal projections, as klein's ``kln::project``: a point onto a plane or a line,
     ``(P · X) ∧ X``; a line onto a plane, ``(L · p) ∧ p``; a line or a plane onto a point, the
-    one through it parallel, ``−(X · P) · P`` (keeping the orientation). Rust:
-    ``Point::project_onto_plane``, ``project_onto_line``, ``Line::project_onto_plane``,
-    ``project_onto_point``, ``Plane::project_onto_point``."""
+    one through it parallel, ``−(X · P) · P`` (keeping the orientation). Computed here from the
+    bound products (arrays included), by the formulas of Rust's ``Point::project_onto_plane``,
+    ``project_onto_line``, ``Line::project_onto_plane``, ``project_onto_point`` and
+    ``Plane::project_onto_point``."""
     kinds = (type(x).__name__, type(onto).__name__)
     if kinds in (("Point", "Plane"), ("Point", "Line"), ("Line", "Plane")):
         return (x | onto) ^ onto

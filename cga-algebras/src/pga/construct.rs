@@ -8,9 +8,9 @@
 //!   direction `(e032, e013, e021)`.
 
 use super::error::{PgaError, finite};
-use super::vec3::{cross, dot, norm, scale};
 use super::{Line, Plane, Point};
 use crate::Real;
+use cga_core::euclid::{cross, dot, norm, scale};
 
 impl<T: Real> Plane<T> {
     /// The plane of the points `x` with `n̂ · x = d`, `n̂ = n / |n|`: `n̂₁ e1 + n̂₂ e2 + n̂₃ e3

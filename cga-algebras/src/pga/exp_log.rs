@@ -23,26 +23,10 @@
 //! kingdon's screws).
 
 use super::error::{PgaError, finite};
-use super::vec3::norm;
 use super::{GeometricProduct, Line, Motor, Pseudoscalar};
 use crate::Real;
-
-/// `sin a / a` (1 at 0).
-fn sinc<T: Real>(a: T) -> T {
-    if a == T::zero() { T::one() } else { a.sin() / a }
-}
-
-/// `f(a) = (sin a − a cos a) / a³`: `1/3 − a²/30 + a⁴/840 − a⁶/45360 + a⁸/3991680` below
-/// `a = 0.1` (the next term is below 2e-19 of it there; the quotient would lose `ε / a²`).
-fn f<T: Real>(a: T) -> T {
-    if a.abs() < T::from_f64(0.1) {
-        let a2 = a * a;
-        let c = |x: f64| T::from_f64(x);
-        c(1.0 / 3.0) - a2 * (c(1.0 / 30.0) - a2 * (c(1.0 / 840.0) - a2 * (c(1.0 / 45360.0) - a2 * c(1.0 / 3991680.0))))
-    } else {
-        (a.sin() - a * a.cos()) / (a * a * a)
-    }
-}
+use cga_core::euclid::norm;
+use cga_core::versor::sinc_terms;
 
 /// The Euclidean part `u` of a line (`e12, e31, e23`).
 fn euclidean<T: Real>(l: Line<T>) -> Line<T> {
@@ -63,8 +47,9 @@ impl<T: Real> Line<T> {
         let a = norm(self.direction());
         let p = self.gp(self).e0123;
         let half_p = T::from_f64(0.5) * p;
-        let sa = sinc(a);
-        let iu: Line<T> = Pseudoscalar { e0123: half_p * f(a) } * u;
+        // sinc_terms gives ½ f(a).
+        let (sa, half_f) = sinc_terms(a);
+        let iu: Line<T> = Pseudoscalar { e0123: p * half_f } * u;
         let m = Motor { s: a.cos(), e0123: half_p * sa, ..Motor::zero() } + Motor::from(self.scale(sa) + iu);
         finite(m, &m.to_array())
     }
@@ -86,8 +71,8 @@ impl<T: Real> Motor<T> {
             return Err(PgaError::FullTurn);
         }
         let a = sin_a.atan2(m.s);
-        let sa = sinc(a);
-        let iu: Line<T> = Pseudoscalar { e0123: -m.e0123 * f(a) / (sa * sa * sa) } * euclidean(b);
+        let (sa, half_f) = sinc_terms(a);
+        let iu: Line<T> = Pseudoscalar { e0123: -m.e0123 * (half_f + half_f) / (sa * sa * sa) } * euclidean(b);
         let l = b.scale(T::one() / sa) + iu;
         finite(l, &l.to_array())
     }

@@ -9,9 +9,9 @@
 //! - projections: `(X · Y) Y`-type products, as klein's `kln::project`.
 
 use super::error::{PgaError, finite};
-use super::vec3::{cross, dot, norm, sub};
 use super::{InnerProduct, Line, Plane, Point};
 use crate::Real;
+use cga_core::euclid::{cross, dot, norm, sub};
 
 /// `|w|`, or `IdealPoint` for `w = 0`.
 fn weight<T: Real>(p: Point<T>) -> Result<T, PgaError> {

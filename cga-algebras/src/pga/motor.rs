@@ -12,9 +12,9 @@
 //!   (`I = e0123`; `I L̂ = −d · (e01, e02, e03)` for direction `d`).
 
 use super::error::{PgaError, finite};
-use super::vec3::norm;
 use super::{Line, Motor, Pseudoscalar, Sandwich};
 use crate::Real;
+use cga_core::euclid::norm;
 
 impl<T: Real> Motor<T> {
     /// The identity motor `1`.

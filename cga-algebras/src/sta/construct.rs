@@ -16,27 +16,18 @@ use super::{Bivector, Pseudoscalar, Rotor, Vector};
 use crate::Real;
 
 /// Why an STA constructor has no answer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum StaError {
     /// A direction or axis of length zero.
+    #[error("sta: a direction or axis of length zero")]
     ZeroVector,
     /// A speed `|v| ≥ 1` (or a vector not timelike and future-pointing, read back).
+    #[error("sta: a speed of 1 or more, or a vector that is not timelike and future-pointing")]
     NotTimelike,
     /// An input or the result is not finite.
+    #[error("sta: an input or the result is not finite")]
     NonFinite,
 }
-
-impl core::fmt::Display for StaError {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(match self {
-            StaError::ZeroVector => "sta: a direction or axis of length zero",
-            StaError::NotTimelike => "sta: a speed of 1 or more, or a vector that is not timelike and future-pointing",
-            StaError::NonFinite => "sta: an input or the result is not finite",
-        })
-    }
-}
-
-impl std::error::Error for StaError {}
 
 fn finite<T: Real, X>(x: X, values: &[T]) -> Result<X, StaError> {
     if values.iter().all(|v| v.is_finite()) { Ok(x) } else { Err(StaError::NonFinite) }
@@ -45,11 +36,8 @@ fn finite<T: Real, X>(x: X, values: &[T]) -> Result<X, StaError> {
 /// `(a / |a|, |a|)`, or `ZeroVector`.
 fn unit<T: Real>(a: [T; 3]) -> Result<([T; 3], T), StaError> {
     finite((), &a)?;
-    let len = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-    if len == T::zero() {
-        return Err(StaError::ZeroVector);
-    }
-    Ok((a.map(|c| c / len), len))
+    let u = cga_core::euclid::unit(a).ok_or(StaError::ZeroVector)?;
+    Ok((u, cga_core::euclid::norm(a)))
 }
 
 /// `γₖ`, `k = 0..3`.

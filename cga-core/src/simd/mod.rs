@@ -9,11 +9,12 @@
 //! - [`run_packed`]: over packets (`&[Line<F64x4>]`…), the form a ray tracer keeps its
 //!   packets in;
 //! - [`run`]: over slices of ordinary values, transposed into lanes and back in place:
-//!   eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on [`F64x4`]
-//!   with AVX2 (benches/README.md times both against Versor);
+//!   f64 values eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on
+//!   [`F64x4`] with AVX2 (benches/README.md times both against Versor), f32 values sixteen
+//!   or eight at a time on [`F32x16`] or [`F32x8`];
 //! - [`run_columns`]: the same over operands kept in separate arrays (a tuple of slices),
 //!   read in place;
-//! - [`map`]: the same with an `#[inline(always)]` closure on four or eight lanes.
+//! - [`map`]: the same with an `#[inline(always)]` closure on lanes of the values' scalar.
 //!
 //! `run` and `run_packed` take the operation as a [`Kernel`] and compile it for each level
 //! the CPU may have (AVX-512, AVX2 + FMA, the baseline SSE2), choosing at run time: no
@@ -133,13 +134,33 @@ impl<L: Lane, I: Lanes, R: Lanes, F: Fn(Over<I, L>) -> Over<R, L>> Op<L> for Clo
 
 /// The lanes [`map`] runs a closure on: [`F64x4`] or [`F64x8`] for f64 values, [`F32x8`]
 /// or [`F32x16`] for f32 ones (sealed: no others), each moved into and out of lanes by the
-/// transposes its CPU level has (f32 values by value).
-pub trait Width: Lane + rows::Rows {}
+/// transposes its CPU level has.
+pub trait Width: Lane + rows::Rows {
+    /// The scalar of the values these lanes take: a closure on f32 lanes cannot be handed
+    /// f64 values (it would round them).
+    ///
+    /// ```compile_fail,E0271
+    /// use cga_core::simd::{F32x8, map};
+    /// use cga_core::Vector;
+    /// let points = vec![Vector::<f64>::zero(); 9];
+    /// let mut out = points.clone();
+    /// map(&points, &mut out, |x: Vector<F32x8>| x);
+    /// ```
+    type Element: Element;
+}
 
-impl Width for F64x4 {}
-impl Width for F64x8 {}
-impl Width for F32x8 {}
-impl Width for F32x16 {}
+impl Width for F64x4 {
+    type Element = f64;
+}
+impl Width for F64x8 {
+    type Element = f64;
+}
+impl Width for F32x8 {
+    type Element = f32;
+}
+impl Width for F32x16 {
+    type Element = f32;
+}
 
 /// The scalar of the values [`run`] takes, and the lanes it runs them on: f64 on [`F64x4`]
 /// (one AVX2 register, and the baseline loop) or [`F64x8`] (one AVX-512 register), f32 on
@@ -262,7 +283,8 @@ mod rows {
 }
 
 /// `out[k] = f(input[k])` for every `k`, `L::LANES` at a time on the lanes the closure
-/// takes ([`F64x4`] or [`F64x8`]; a tail is padded with copies of the last input),
+/// takes ([`F64x4`] or [`F64x8`] for f64 values, [`F32x8`] or [`F32x16`] for f32 ones: the
+/// lanes' scalar is the values'; a tail is padded with copies of the last input),
 /// dispatched at run time to a loop compiled for AVX-512 or AVX2 and FMA as [`run`] is,
 /// with the same bits. `None`, and nothing written, where the lengths differ.
 ///
@@ -287,7 +309,7 @@ mod rows {
 /// assert_eq!(moved[8], m.sandwich(points[8]));
 /// ```
 #[inline]
-pub fn map<L: Width, I: Lanes, R: Lanes>(
+pub fn map<L: Width, I: Lanes<Element = L::Element>, R: Lanes<Element = L::Element>>(
     input: &[I],
     out: &mut [R],
     f: impl Fn(Over<I, L>) -> Over<R, L>,
@@ -297,7 +319,7 @@ pub fn map<L: Width, I: Lanes, R: Lanes>(
 
 /// [`map`] at a given level (the tests run each one the CPU has).
 #[inline(always)]
-fn map_at<L: Width, I: Lanes, R: Lanes>(
+fn map_at<L: Width, I: Lanes<Element = L::Element>, R: Lanes<Element = L::Element>>(
     level: Level,
     input: &[I],
     out: &mut [R],
@@ -338,10 +360,10 @@ fn by_value<L: Lane, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, input: S, out
     }
 }
 
-/// `out[k] = K(input[k])` for every `k`: eight at a time on [`F64x8`] where the CPU has
-/// AVX-512 (F, DQ and VL), four at a time on [`F64x4`] with AVX2 and FMA, four at a time
-/// in baseline code otherwise (detected once, at run time: the build stays baseline
-/// x86-64). The values go into and out of lanes by transposes in place. The results are
+/// `out[k] = K(input[k])` for every `k`: f64 values eight at a time on [`F64x8`] where the
+/// CPU has AVX-512 (F, DQ and VL), four at a time on [`F64x4`] with AVX2 and FMA, four at a
+/// time in baseline code otherwise (detected once, at run time: the build stays baseline
+/// x86-64); f32 values likewise sixteen at a time on [`F32x16`], eight on [`F32x8`]. The values go into and out of lanes by transposes in place. The results are
 /// the same bits at every level (no multiply–add is contracted). `None`, and nothing
 /// written, where the lengths differ.
 pub fn run<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
@@ -477,10 +499,13 @@ unsafe fn transposed<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(f: &F
     by_value::<L, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
 }
 
-/// [`run`] on operands already in lanes (packets, as a ray tracer keeps them: no packing),
-/// `out[k] = K(input[k])`; dispatched to AVX2 and FMA the same way. `None`, and nothing
-/// written, where the lengths differ.
-pub fn run_packed<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()> {
+/// [`run`] on f64 operands already in lanes (packets of four, as a ray tracer keeps them:
+/// no packing), `out[k] = K(input[k])`; dispatched to AVX2 and FMA the same way. `None`,
+/// and nothing written, where the lengths differ.
+pub fn run_packed<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()>
+where
+    K::Input: Lanes<Element = f64>,
+{
     if input.len() != out.len() {
         return None;
     }

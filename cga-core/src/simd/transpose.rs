@@ -1,7 +1,7 @@
 //! Transposes between values as they lie in memory (rows: one value's coefficients, in
 //! field order, since the generated types are `#[repr(C)]`) and lanes (columns: one
-//! coefficient of every value), read and written in place: four rows with AVX, eight with
-//! AVX-512.
+//! coefficient of every value), read and written in place: four f64 or eight f32 rows with
+//! AVX, eight f64 or sixteen f32 rows with AVX-512.
 //!
 //! Each transposed register passes through an empty `asm!` that LLVM cannot look into:
 //! given the lanes of a transpose, it otherwise folds the shuffles into scalar loads and
@@ -498,9 +498,9 @@ pub mod avx512_f32 {
             for (j, v) in z.into_iter().enumerate() {
                 let v = opaque(v);
                 _mm_storeu_ps(rows[j].add(c), _mm512_castps512_ps128(v));
-                _mm_storeu_ps(rows[j + 4].add(c), _mm512_extractf32x4_ps::<1>(v));
-                _mm_storeu_ps(rows[j + 8].add(c), _mm512_extractf32x4_ps::<2>(v));
-                _mm_storeu_ps(rows[j + 12].add(c), _mm512_extractf32x4_ps::<3>(v));
+                _mm512_mask_storeu_ps(rows[j + 4].add(c).wrapping_sub(4), 0x00f0, v);
+                _mm512_mask_storeu_ps(rows[j + 8].add(c).wrapping_sub(8), 0x0f00, v);
+                _mm512_mask_storeu_ps(rows[j + 12].add(c).wrapping_sub(12), 0xf000, v);
             }
         }
     }
@@ -557,12 +557,13 @@ pub mod avx512_f32 {
     }
 }
 
-/// 8-row transposes of f32 values with AVX2: a block of eight coefficients is the 8 × 8
+/// 8-row transposes of f32 values with AVX: a block of eight coefficients is the 8 × 8
 /// transpose (`vunpcklps`/`vunpckhps`, `vunpcklpd`/`vunpckhpd` on pairs, `vperm2f128` for
 /// the halves: 24 shuffles, its own inverse); a block of four puts rows `j` and `j + 4` in
 /// the halves of register `j` and transposes each half as a 4 × 4 (8 shuffles, its own
-/// inverse); a pair is read as one f64 per row and split by `vshufps` and a lane permute; a
-/// single coefficient is gathered and scattered one by one.
+/// inverse); a pair is read as one f64 per row (rows 0, 1, 4, 5 in one register, 2, 3, 6, 7
+/// in the other) and split into its two coefficients by one `vshufps` each; a single
+/// coefficient is gathered and scattered one by one.
 pub mod avx_f32 {
     use super::super::F32x8;
     use core::arch::x86_64::*;

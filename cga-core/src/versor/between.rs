@@ -10,7 +10,7 @@
 
 use super::{VersorError, VersorResult};
 use crate::euclid::{E3, cross, dot, sub};
-use crate::{Bivector, Circle, Even, Line, Motor, Plane, Real, Rotor, ScalarQuadvector, Sphere};
+use crate::{Bivector, Circle, Even, Line, Motor, Plane, Real, Rotor, ScalarProduct as _, ScalarQuadvector, Sphere};
 
 /// A frame: an origin and three orthonormal axes (as rows), for [`Motor::between_frames`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -148,7 +148,7 @@ macro_rules! versor_between {
             fn versor_to(&self, other: &Self) -> VersorResult<Even<T>> {
                 let x1 = self.try_normalise().ok_or(VersorError::ZeroAxis)?;
                 let x2 = other.try_normalise().ok_or(VersorError::ZeroAxis)?;
-                let gamma = Even::from_storage(&(x1 * x1).to_storage()).s;
+                let gamma = x1.scalar_product(x1);
                 let gamma = if gamma < T::zero() { -T::one() } else { T::one() };
                 let y = Even { s: T::one(), ..Even::zero() } + Even::from_storage(&(x2 * x1).to_storage()).scale(gamma);
                 let k = ScalarQuadvector::from_storage(&(y * y.reverse()).to_storage());
@@ -171,7 +171,7 @@ macro_rules! versor_between {
             }
 
             fn moved_by(&self, v: &Even<T>) -> Self {
-                let norm = Even::from_storage(&(*v * v.reverse()).to_storage()).s;
+                let norm = v.scalar_product(v.reverse());
                 $ty::from_storage(&(*v * *self * v.reverse()).to_storage()).scale(T::one() / norm)
             }
         }

@@ -124,8 +124,9 @@ fn pseudo_infinity<T: Real>() -> Motor<T> {
 /// `(sin φ / φ, (sin φ − φ cos φ) / (2φ³))`. Below `φ = 1` the second is summed as its
 /// series `Σ_{k≥1} (−1)^{k+1} k φ^{2k−2} / (2k+1)!` (ten terms: the closed form cancels to a
 /// relative `ε/φ²` there, which left drifted motors at `φ ≈ 1e-4`), the first as
-/// `Σ (−1)^k φ^{2k} / (2k+1)!` (exact at `φ = 0`).
-fn sinc_terms<T: Real>(phi: T) -> (T, T) {
+/// `Σ (−1)^k φ^{2k} / (2k+1)!` (exact at `φ = 0`). The exponentials of screws use it, in
+/// this algebra and in cga-algebras' PGA.
+pub fn sinc_terms<T: Real>(phi: T) -> (T, T) {
     let p2 = phi * phi;
     if phi.abs() < T::one() {
         let (mut c1, mut dc) = (T::zero(), T::zero());

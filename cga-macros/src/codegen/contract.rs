@@ -1,7 +1,8 @@
 //! The scalar trait's contract, checked once where `scalar = …` names it: a trait written
 //! to an earlier contract, lacking a method the generated code calls, gets one error per
-//! missing method at that item (`cannot find method … in trait`) instead of one spanned on
-//! the whole invocation at the first of its uses.
+//! missing method spanned on that item (`cannot find method … in trait`), which names every
+//! missing method; the compiler's own errors at the uses, spanned on the whole invocation,
+//! still come beside them.
 
 use super::*;
 use quote::quote_spanned;

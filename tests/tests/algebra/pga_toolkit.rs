@@ -406,3 +406,21 @@ impl OnPlane for Plane<f64> {
         p.distance_to_plane(self).unwrap().abs() <= 1e-12
     }
 }
+
+/// The Plücker defect `d · m` vanishes for a line joined from two points wherever they lie,
+/// and is half the pseudoscalar of `B ∧ B` for a general bivector (a screw's generator, the
+/// log of a screw), up to its sign convention.
+#[test]
+fn the_plucker_defect_is_zero_for_lines_and_half_b_wedge_b_otherwise() {
+    for (p, q) in [([1.0, 2.0, 3.0], [-4.0, 0.5, 2.0]), ([1e6, -3e6, 2e6], [1e6 + 1.0, -3e6, 2e6 + 2.0])] {
+        let l: Line<f64> = Line::through(p, q).unwrap();
+        let scale = l.to_array().iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        assert!(l.plucker_defect().abs() <= 16.0 * f64::EPSILON * scale * scale, "{l:?}");
+    }
+    let axis: Line<f64> = Line::through([0.0, 1.0, 0.0], [1.0, 1.0, 1.0]).unwrap();
+    let b = Motor::screw(axis, 0.8, 0.5).unwrap().log().unwrap();
+    let defect = b.plucker_defect();
+    let wedge = (b ^ b).e0123;
+    assert!(defect.abs() > 1e-3, "a screw's generator is not a line: {defect}");
+    assert!((wedge.abs() - 2.0 * defect.abs()).abs() < 1e-12, "{wedge} {defect}");
+}
