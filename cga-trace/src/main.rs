@@ -79,6 +79,11 @@ struct Render {
     /// Samples per pixel, stratified (overrides the scene; 1 = the pixel centre).
     #[arg(long)]
     spp: Option<u32>,
+    /// Adaptive anti-aliasing, POV-Ray's +A: --spp becomes a maximum, taken only by pixels
+    /// whose first 4 samples (the scene's adaptive min_spp) differ by more than this contrast
+    /// (Σ over R, G, B of max − min of what the picture shows, 0 to 3; POV-Ray's default 0.3).
+    #[arg(long, value_name = "THRESHOLD")]
+    adaptive: Option<f64>,
     /// Render only the window x0,x1,y0,y1 (fractions of the image, y from the top, as
     /// pbrt's --cropwindow); windows of one frame assemble into it byte for byte.
     #[arg(long, value_name = "X0,X1,Y0,Y1", value_parser = parse_crop, allow_hyphen_values = true)]
@@ -387,6 +392,7 @@ fn view(args: &Render) -> View {
         height: args.height,
         fov: args.fov,
         spp: args.spp,
+        adaptive: args.adaptive,
         max_depth: args.max_depth,
         exposure: args.exposure,
         tone_map: args.tone_map,
@@ -398,7 +404,7 @@ fn flagged(e: RenderError) -> anyhow::Error {
     let (flag, inner): (&str, anyhow::Error) = match e {
         RenderError::View(ViewError::Fov(e)) => ("--fov", e.into()),
         RenderError::View(ViewError::Size(e)) => ("--width/--height", e.into()),
-        RenderError::View(ViewError::Settings(e)) => ("--max-depth/--spp/--exposure", e.into()),
+        RenderError::View(ViewError::Settings(e)) => ("--max-depth/--spp/--adaptive/--exposure", e.into()),
         RenderError::Crop(e) => ("--crop", anyhow::Error::msg(e)),
         RenderError::Backend(e) => ("--backend", anyhow::Error::msg(e)),
         e => return e.into(),

@@ -24,6 +24,7 @@ use crate::invalid::Invalid;
 use crate::label::{Label, draw_labels};
 use crate::output::{OutputFile, OutputFileError};
 use crate::scene::Scene;
+use crate::settings::Adaptive;
 use std::borrow::Cow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -39,8 +40,10 @@ pub struct View {
     pub height: Option<u32>,
     /// Horizontal field of view in degrees (`x_max = 2 f tan(fov/2)`; `y_max` follows).
     pub fov: Option<f64>,
-    /// Samples per pixel.
+    /// Samples per pixel (the most a pixel takes where sampling is adaptive).
     pub spp: Option<u32>,
+    /// Adaptive sampling's contrast threshold ([`Adaptive`], with the scene's `min_spp`, or 4).
+    pub adaptive: Option<f64>,
     /// Reflection depth.
     pub max_depth: Option<u32>,
     /// Exposure of PNG output in stops.
@@ -60,6 +63,10 @@ impl View {
         let s = &mut scene.settings;
         s.max_depth = self.max_depth.unwrap_or(s.max_depth);
         s.spp = self.spp.unwrap_or(s.spp);
+        if let Some(threshold) = self.adaptive {
+            let min_spp = s.adaptive.map_or(Adaptive::MIN_SPP, |a| a.min_spp);
+            s.adaptive = Some(Adaptive { threshold, min_spp });
+        }
         s.exposure = self.exposure.unwrap_or(s.exposure);
         s.tone_map = self.tone_map.unwrap_or(s.tone_map);
         s.check().map_err(ViewError::Settings)?;
@@ -76,8 +83,8 @@ pub enum ViewError {
     /// The width or height.
     #[error("width/height: {0}")]
     Size(#[source] CameraError),
-    /// Depth, samples or exposure out of their range.
-    #[error("max_depth/spp/exposure: {0}")]
+    /// Depth, samples, adaptive threshold or exposure out of their range.
+    #[error("max_depth/spp/adaptive/exposure: {0}")]
     Settings(#[source] Invalid),
 }
 

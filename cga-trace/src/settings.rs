@@ -18,6 +18,45 @@ pub enum Reflection {
     Conserving,
 }
 
+/// Adaptive anti-aliasing: `spp` becomes a maximum. Each pixel first takes `min_spp` of its
+/// samples (a prefix of its stratified sequence, so spread over the pixel); only where their
+/// contrast exceeds `threshold` does it take the rest. The contrast is POV-Ray's colour
+/// distance (`+A0.3`) over the samples: `Σ_c (max_s d_c − min_s d_c)` over R, G, B of the
+/// samples' values as the picture shows them, `d = clamp(2^exposure · colour, 0, 1)`
+/// (pbrt-v2's adaptive sampler decides the same way, from `minsamples` to `maxsamples`). A
+/// pixel's result depends on its own samples alone: any thread count or crop gives the same
+/// bytes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Adaptive {
+    /// The contrast above which a pixel takes all its samples, in [0, 3] (POV-Ray's default
+    /// is 0.3; 0: every pixel whose first samples differ at all).
+    pub threshold: f64,
+    /// The samples every pixel takes first, 2 to [`MAX_SPP`] (at least `spp`: nothing adapts).
+    pub min_spp: u32,
+}
+
+impl Adaptive {
+    /// The first samples a pixel takes where a scene gives only the threshold: 4, one in each
+    /// quarter of the pixel.
+    pub const MIN_SPP: u32 = 4;
+
+    /// The threshold with the default first samples.
+    pub fn threshold(threshold: f64) -> Self {
+        Adaptive { threshold, min_spp: Self::MIN_SPP }
+    }
+
+    /// `threshold` finite in [0, 3], `min_spp` in 2 ..= [`MAX_SPP`].
+    pub fn check(&self) -> Result<(), Invalid> {
+        if !(0.0..=3.0).contains(&self.threshold) {
+            return Err(Invalid::Value("the adaptive threshold must lie in [0, 3] (POV-Ray's default is 0.3)"));
+        }
+        if !(2..=MAX_SPP).contains(&self.min_spp) {
+            return Err(Invalid::Value("adaptive min_spp must be 2 to 4096"));
+        }
+        Ok(())
+    }
+}
+
 /// Exposure, in stops, a scene or the command line may set: 2^±64 spans any range of
 /// linear values a picture needs.
 pub const MAX_EXPOSURE: f64 = 64.0;
@@ -27,8 +66,11 @@ pub const MAX_EXPOSURE: f64 = 64.0;
 pub struct Settings {
     /// Reflection depth: bounces after the first hit (at most [`MAX_DEPTH`]).
     pub max_depth: u32,
-    /// Samples per pixel, stratified over the pixel (at most [`MAX_SPP`]; 1: the centre).
+    /// Samples per pixel, stratified over the pixel (at most [`MAX_SPP`]; 1: the centre); the
+    /// most a pixel takes where `adaptive` is set.
     pub spp: u32,
+    /// Adaptive anti-aliasing (`None`: every pixel takes `spp` samples).
+    pub adaptive: Option<Adaptive>,
     /// Colour of rays that hit nothing.
     pub background: [f64; 3],
     /// Ambient light intensity (times `k_a` and the colour).
@@ -53,14 +95,15 @@ pub struct Settings {
     pub surface_method: Method,
 }
 
-/// What a scene gets where it sets nothing: 5 bounces, one sample per pixel (the centre), a
-/// black background, ambient 0.3, hard shadows, no attenuation, sRGB, the hybrid surface
-/// method.
+/// What a scene gets where it sets nothing: 5 bounces, one sample per pixel (the centre), no
+/// adaptive sampling, a black background, ambient 0.3, hard shadows, no attenuation, sRGB,
+/// the hybrid surface method.
 impl Default for Settings {
     fn default() -> Self {
         Settings {
             max_depth: 5,
             spp: 1,
+            adaptive: None,
             background: [0.0; 3],
             ambient: 0.3,
             shadow_transmission: 0.0,
@@ -98,6 +141,9 @@ impl Settings {
         }
         if !(1..=MAX_SPP).contains(&s.spp) {
             return Err(Invalid::Value("spp (samples per pixel) must be 1 to 4096"));
+        }
+        if let Some(a) = &s.adaptive {
+            a.check()?;
         }
         if s.ambient < 0.0 || s.background.iter().any(|&c| c < 0.0) {
             return Err(Invalid::Value("ambient and background must be ≥ 0"));

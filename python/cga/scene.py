@@ -100,7 +100,7 @@ class Scene:
         return self
 
     def settings(self, **fields):
-        """The ``[render]`` table: ``spp``, ``ambient``, ``background``, ``max_depth``, …"""
+        """The ``[render]`` table: ``spp``, ``adaptive``, ``ambient``, ``background``, ``max_depth``, …"""
         self._render.update(fields)
         return self
 

@@ -96,3 +96,16 @@ def test_objects_draw_as_pictures():
         cga.draw([sphere, "not a blade"])
     with pytest.raises(cga.SceneError, match="colour"):
         cga.draw([sphere], colours=["no such colour"])
+
+
+def test_adaptive_sampling_takes_the_first_samples_or_all():
+    scene = cga.Scene.parse(FIRST)
+    first, every = scene.render(spp=4).linear, scene.render(spp=16).linear
+    adaptive = scene.render(spp=16, adaptive=0.3).linear
+    took_first = np.all(adaptive == first, axis=-1)
+    took_all = np.all(adaptive == every, axis=-1)
+    # Each pixel is its first 4 samples' mean or all 16's; the sphere's edge takes all.
+    assert np.all(took_first | took_all)
+    assert 0 < np.count_nonzero(~took_first) < took_first.size // 4
+    with pytest.raises(cga.ValueError, match=r"adaptive.*\[0, 3\]"):
+        scene.render(spp=16, adaptive=4.0)

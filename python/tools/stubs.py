@@ -187,6 +187,7 @@ class Scene:
         height: Optional[int] = None,
         fov: Optional[float] = None,
         spp: Optional[int] = None,
+        adaptive: Optional[float] = None,
         max_depth: Optional[int] = None,
         exposure: Optional[float] = None,
         tone_map: Optional[str] = None,

@@ -5,9 +5,11 @@
 
 use super::numbers::{numbers, some_number, some_numbers};
 use crate::material::Material;
-use crate::settings::{Encoding, Reflection, Settings, ToneMap};
+use crate::settings::{Adaptive, Encoding, Reflection, Settings, ToneMap};
 use crate::surface::Method;
 use serde::Deserialize;
+use serde::de::{Deserializer, Error, MapAccess, Visitor};
+use std::fmt;
 
 /// A `[render]` table.
 #[derive(Clone, Copy, Debug, Deserialize)]
@@ -15,6 +17,7 @@ use serde::Deserialize;
 pub(crate) struct SettingsSpec {
     max_depth: Option<u32>,
     spp: Option<u32>,
+    adaptive: Option<AdaptiveSpec>,
     #[serde(default, deserialize_with = "some_numbers")]
     background: Option<[f64; 3]>,
     #[serde(default, deserialize_with = "some_number")]
@@ -30,6 +33,44 @@ pub(crate) struct SettingsSpec {
     tone_map: Option<ToneMapSpec>,
     reflection: Option<ReflectionSpec>,
     surface_method: Option<Method>,
+}
+
+/// `adaptive = 0.3` (the threshold, the first samples [`Adaptive::MIN_SPP`]) or
+/// `adaptive = { threshold = 0.3, min_spp = 8 }`, checked as read.
+#[derive(Clone, Copy, Debug)]
+struct AdaptiveSpec(Adaptive);
+
+impl<'de> Deserialize<'de> for AdaptiveSpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Spec;
+        impl<'de> Visitor<'de> for Spec {
+            type Value = Adaptive;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a contrast threshold (a number such as 0.3) or { threshold = 0.3, min_spp = 4 }")
+            }
+            fn visit_f64<E: Error>(self, threshold: f64) -> Result<Adaptive, E> {
+                Ok(Adaptive::threshold(threshold))
+            }
+            fn visit_i64<E: Error>(self, threshold: i64) -> Result<Adaptive, E> {
+                Ok(Adaptive::threshold(threshold as f64))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Adaptive, A::Error> {
+                let (mut threshold, mut min_spp) = (None, None);
+                while let Some(key) = map.next_key::<String>()? {
+                    match key.as_str() {
+                        "threshold" => threshold = Some(map.next_value::<f64>()?),
+                        "min_spp" => min_spp = Some(map.next_value::<u32>()?),
+                        other => return Err(A::Error::unknown_field(other, &["threshold", "min_spp"])),
+                    }
+                }
+                let threshold = threshold.ok_or_else(|| A::Error::missing_field("threshold"))?;
+                Ok(Adaptive { threshold, min_spp: min_spp.unwrap_or(Adaptive::MIN_SPP) })
+            }
+        }
+        let a = d.deserialize_any(Spec)?;
+        a.check().map_err(D::Error::custom)?;
+        Ok(AdaptiveSpec(a))
+    }
 }
 
 /// `reflection = "additive" | "conserving"`.
@@ -62,6 +103,7 @@ impl From<SettingsSpec> for Settings {
         Settings {
             max_depth: s.max_depth.unwrap_or(d.max_depth),
             spp: s.spp.unwrap_or(d.spp),
+            adaptive: s.adaptive.map(|a| a.0).or(d.adaptive),
             background: s.background.unwrap_or(d.background),
             ambient: s.ambient.unwrap_or(d.ambient),
             shadow_transmission: s.shadow_transmission.unwrap_or(d.shadow_transmission),

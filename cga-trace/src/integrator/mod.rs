@@ -14,6 +14,7 @@
 //! - `aov.rs`: what an image shows ([`Aov`]);
 //! - `counts.rs`: the rays cast ([`RayCounts`]).
 
+mod adaptive;
 mod aov;
 #[cfg(target_arch = "x86_64")]
 mod avx;
@@ -231,6 +232,10 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// position alone, so windows of a frame rendered anywhere assemble into the frame,
     /// byte for byte, and any thread count gives the same bytes.
     pub fn render_window(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
+        let settings = &self.scene.settings;
+        if let Some(a) = settings.adaptive.filter(|a| aov == Aov::Shaded && settings.spp > a.min_spp) {
+            return self.render_adaptive(a, window, on_row);
+        }
         let (width, height) = (window.columns.len(), window.rows.len());
         // One allocation, each row written in place by whichever thread renders it.
         let mut pixels = vec![[0.0; 3]; width * height];

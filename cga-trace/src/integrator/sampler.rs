@@ -38,36 +38,88 @@ impl<B: Backend> Renderer<'_, B> {
         aov: Aov,
         cast: &mut RayCounts,
     ) -> Option<[[f64; 3]; W]> {
+        let mut taken = [Taken::default(); W];
+        self.take::<R, W>(i0, j, aov, Stage::All, &mut taken, cast)?;
+        Some(taken.map(|t| t.mean()))
+    }
+
+    /// Adds to `taken` the samples `stage` names of the `W` pixels `(i₀ + k, j)`, in sample
+    /// order; `None` where the camera forms no ray (nothing is counted then). One sample a
+    /// pixel (and every sample of the subset) is the pixel's centre.
+    #[inline(always)]
+    pub(crate) fn take<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        i0: u32,
+        j: u32,
+        aov: Aov,
+        stage: Stage<W>,
+        taken: &mut [Taken; W],
+        cast: &mut RayCounts,
+    ) -> Option<()> {
         let spp = self.scene.settings.spp.max(1);
         let (first, step) = self.subset;
         let mut counted = RayCounts::default();
-        let key = |k: usize, s: u32| SampleKey::new(i0 + k as u32, j, s, spp);
-        let colours = if spp == 1 && step == 1 {
-            let u = core::array::from_fn(|k| f64::from(i0 + k as u32) + 0.5);
-            self.samples::<R, W>(u, [f64::from(j) + 0.5; W], core::array::from_fn(|k| key(k, 0)), aov, &mut counted)?
-        } else {
-            let mut sum = [[0.0; 3]; W];
-            let mut taken = 0u32;
-            for s in (first..spp).step_by(step.max(1) as usize) {
-                let (mut u, mut v) = ([0.0; W], [0.0; W]);
-                for k in 0..W {
-                    let (du, dv) = sample_offset(i0 + k as u32, j, s);
-                    (u[k], v[k]) = (f64::from(i0 + k as u32) + du, f64::from(j) + dv);
+        let samples = (first..spp).step_by(step.max(1) as usize);
+        match stage {
+            _ if spp == 1 && step == 1 => {
+                if !matches!(stage, Stage::Rest(..)) {
+                    let u = core::array::from_fn(|k| f64::from(i0 + k as u32) + 0.5);
+                    self.add::<R, W>(taken, (i0, j, 0), (u, [f64::from(j) + 0.5; W]), aov, &mut counted)?;
                 }
-                let colours = self.samples::<R, W>(u, v, core::array::from_fn(|k| key(k, s)), aov, &mut counted)?;
-                for (sum, c) in sum.iter_mut().zip(colours) {
-                    *sum = [sum[0] + c[0], sum[1] + c[1], sum[2] + c[2]];
+            }
+            Stage::All => {
+                for s in samples {
+                    self.add::<R, W>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
                 }
-                taken += 1;
             }
-            let n = f64::from(taken.max(1));
-            for c in &mut sum {
-                *c = [c[0] / n, c[1] / n, c[2] / n];
+            Stage::First(n) => {
+                for s in samples.take(n) {
+                    self.add::<R, W>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
+                }
             }
-            sum
-        };
+            Stage::Rest(n, more) if more.iter().all(|&m| m) => {
+                for s in samples.skip(n) {
+                    self.add::<R, W>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
+                }
+            }
+            Stage::Rest(n, more) => {
+                // The lanes that go on do so one ray at a time: the same bits as in a packet.
+                for k in (0..W).filter(|&k| more[k]) {
+                    let mut one = [taken[k]];
+                    self.take::<Ray<B::Carrier>, 1>(
+                        i0 + k as u32,
+                        j,
+                        aov,
+                        Stage::Rest(n, [true]),
+                        &mut one,
+                        &mut counted,
+                    )?;
+                    taken[k] = one[0];
+                }
+            }
+        }
         cast.add(&counted);
-        Some(colours)
+        Some(())
+    }
+
+    /// Sample `s` of the `W` pixels `(i₀ + k, j)`, seen at `(u_k, v_k)`, added to `taken`.
+    /// A method, not a closure: a closure is not compiled for the caller's AVX2.
+    #[inline(always)]
+    fn add<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        taken: &mut [Taken; W],
+        (i0, j, s): (u32, u32, u32),
+        (u, v): ([f64; W], [f64; W]),
+        aov: Aov,
+        counted: &mut RayCounts,
+    ) -> Option<()> {
+        let spp = self.scene.settings.spp.max(1);
+        let keys = core::array::from_fn(|k| SampleKey::new(i0 + k as u32, j, s, spp));
+        let colours = self.samples::<R, W>(u, v, keys, aov, counted)?;
+        for (taken, c) in taken.iter_mut().zip(colours) {
+            taken.add(c);
+        }
+        Some(())
     }
 
     /// The colours (or AOVs, lane by lane) seen at continuous pixel coordinates
@@ -125,19 +177,114 @@ impl<B: Backend> Renderer<'_, B> {
     /// deepest bounce up and mean over samples. Compiled for AVX2 and FMA where the CPU has
     /// them (the lanes then run in one register each).
     pub(super) fn pixels4(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
+        let mut taken = [Taken::default(); 4];
+        self.take4(i0, j, Stage::All, &mut taken, cast)?;
+        Some(taken.map(|t| t.mean()))
+    }
+
+    /// [`Renderer::take`] of four neighbouring pixels through packets ([`Renderer::pixels4`]).
+    pub(super) fn take4(
+        &self,
+        i0: u32,
+        j: u32,
+        stage: Stage<4>,
+        taken: &mut [Taken; 4],
+        cast: &mut RayCounts,
+    ) -> Option<()> {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 && avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.pixels4_avx2(i0, j, cast) };
+            return unsafe { self.take4_avx2(i0, j, stage, taken, cast) };
         }
-        self.pixels::<Packet<B>, 4>(i0, j, Aov::Shaded, cast)
+        self.take::<Packet<B>, 4>(i0, j, Aov::Shaded, stage, taken, cast)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn pixels4_avx2(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        self.pixels::<Packet<B, Ymm>, 4>(i0, j, Aov::Shaded, cast)
+    unsafe fn take4_avx2(
+        &self,
+        i0: u32,
+        j: u32,
+        stage: Stage<4>,
+        taken: &mut [Taken; 4],
+        cast: &mut RayCounts,
+    ) -> Option<()> {
+        self.take::<Packet<B, Ymm>, 4>(i0, j, Aov::Shaded, stage, taken, cast)
     }
+}
+
+/// Which of a pixel's samples (of the renderer's subset) to take.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Stage<const W: usize> {
+    /// All of them.
+    All,
+    /// The first `n`.
+    First(usize),
+    /// Those after the first `n`, for the lanes marked.
+    Rest(usize, [bool; W]),
+}
+
+/// Sample `s` of the `W` pixels `(i₀ + k, j)`: their continuous pixel coordinates.
+#[inline(always)]
+fn offsets<const W: usize>(i0: u32, j: u32, s: u32) -> ([f64; W], [f64; W]) {
+    let (mut u, mut v) = ([0.0; W], [0.0; W]);
+    for k in 0..W {
+        let (du, dv) = sample_offset(i0 + k as u32, j, s);
+        (u[k], v[k]) = (f64::from(i0 + k as u32) + du, f64::from(j) + dv);
+    }
+    (u, v)
+}
+
+/// A pixel's samples so far: their sum (in sample order, so the mean has the same bits
+/// however they were traced), their number, and each channel's range as the picture shows it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Taken {
+    sum: [f64; 3],
+    n: u32,
+    low: [f64; 3],
+    high: [f64; 3],
+}
+
+impl Default for Taken {
+    fn default() -> Self {
+        Taken { sum: [0.0; 3], n: 0, low: [f64::INFINITY; 3], high: [f64::NEG_INFINITY; 3] }
+    }
+}
+
+impl Taken {
+    #[inline(always)]
+    fn add(&mut self, c: [f64; 3]) {
+        self.sum = [self.sum[0] + c[0], self.sum[1] + c[1], self.sum[2] + c[2]];
+        self.n += 1;
+        let (l, h) = (self.low, self.high);
+        self.low = [l[0].min(c[0]), l[1].min(c[1]), l[2].min(c[2])];
+        self.high = [h[0].max(c[0]), h[1].max(c[1]), h[2].max(c[2])];
+    }
+
+    /// POV-Ray's colour distance over the samples, `Σ_c (max d_c − min d_c)`, of the values
+    /// shown, `d = clamp(scale · colour, 0, 1)` (a NaN sample counts as the most contrast).
+    pub(crate) fn contrast(&self, scale: f64) -> f64 {
+        let c: f64 = (0..3).map(|k| shown(self.high[k], scale) - shown(self.low[k], scale)).sum();
+        if c.is_nan() || self.sum.iter().any(|x| x.is_nan()) { f64::INFINITY } else { c }
+    }
+
+    /// POV-Ray's colour distance between two colours as shown, `Σ_c |d_c(a) − d_c(b)|`
+    /// (a NaN counts as the most distance).
+    pub(crate) fn distance(a: [f64; 3], b: [f64; 3], scale: f64) -> f64 {
+        let d: f64 = (0..3).map(|k| (shown(a[k], scale) - shown(b[k], scale)).abs()).sum();
+        if d.is_nan() { f64::INFINITY } else { d }
+    }
+
+    /// The mean of the samples taken (zero for none).
+    pub(crate) fn mean(&self) -> [f64; 3] {
+        let n = f64::from(self.n.max(1));
+        self.sum.map(|x| x / n)
+    }
+}
+
+/// A linear value as a picture shows it: scaled by its exposure, clipped to [0, 1].
+fn shown(x: f64, scale: f64) -> f64 {
+    (scale * x).clamp(0.0, 1.0)
 }
 
 /// Where sample `s` of pixel `(i, j)` falls, as an offset in `[0, 1)²` from the pixel's

@@ -155,6 +155,26 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:8:", "light 1", "`colour`", "≥ 0"],
         ),
         ("bad encoding", format!("{CAMERA}[render]\nencoding = \"gamma\"\n"), vec!["bad.toml:7:", "gamma"]),
+        (
+            "adaptive threshold out of range",
+            format!("{CAMERA}[render]\nspp = 16\nadaptive = 4.0\n"),
+            vec!["bad.toml:8:", "adaptive", "[0, 3]", "0.3"],
+        ),
+        (
+            "adaptive as a word",
+            format!("{CAMERA}[render]\nadaptive = \"on\"\n"),
+            vec!["bad.toml:7:", "adaptive", "a contrast threshold", "min_spp"],
+        ),
+        (
+            "adaptive min_spp of one",
+            format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, min_spp = 1 }}\n"),
+            vec!["bad.toml:7:", "adaptive", "min_spp must be 2 to 4096"],
+        ),
+        (
+            "adaptive with an unknown field",
+            format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, first = 4 }}\n"),
+            vec!["bad.toml:7:", "adaptive", "`first`", "min_spp"],
+        ),
         // Counts and sizes beyond crate::limits.
         ("deep mirrors", format!("{CAMERA}[render]\nmax_depth = 5000\n"), vec!["render", "5000 bounces", "1024"]),
         (
