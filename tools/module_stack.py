@@ -82,7 +82,7 @@ def paths(text: str) -> list:
 # draws them): a module imports only from its own layer and those below.
 LAYERS = {
     "cga-trace/src": [
-        ("basics", ["limits", "ray", "frame", "bvh", "output", "input", "lanes", "film"]),
+        ("basics", ["limits", "ray", "frame", "bvh", "output", "input", "lanes", "film", "hash"]),
         ("geometry", ["shapes", "camera", "light", "shutter", "surface", "drawing", "label"]),
         ("checked values", ["invalid", "material", "picture", "settings", "import", "environment", "texture", "object"]),
         ("scene", ["scene"]),

@@ -16,6 +16,7 @@ pub mod figure;
 pub mod film;
 pub mod format;
 pub mod frame;
+mod hash;
 pub mod import;
 pub mod input;
 pub mod integrator;

@@ -5,7 +5,7 @@ use cga_trace::film::Output;
 use cga_trace::integrator::RayCounts;
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
-use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, passes, scale_path, window};
+use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, scale_path, window};
 use cga_trace::settings::ToneMap;
 use cga_trace::{Aov, BackendKind, Encoding, Scene};
 use clap::{Parser, Subcommand};
@@ -343,7 +343,7 @@ fn render_frame(
         encoding: args.encoding,
     };
     let rows = window(&scene, &options).map_err(flagged)?.rows.len();
-    let bar = indicatif::ProgressBar::new((rows * passes(&scene, time)) as u64).with_style(
+    let bar = indicatif::ProgressBar::new(rows as u64).with_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );

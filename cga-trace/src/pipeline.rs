@@ -25,6 +25,7 @@ use crate::label::{Label, draw_labels};
 use crate::output::{OutputFile, OutputFileError};
 use crate::scene::Scene;
 use crate::settings::Adaptive;
+use crate::shutter::Sample;
 use std::borrow::Cow;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -210,9 +211,9 @@ impl Pipeline {
     }
 
     /// The picture of `scene` (this pipeline's, at `options.time`): through its shutter
-    /// where it has one, each instant taking its share of every pixel's samples with the
-    /// objects that move placed anew (those that stay, and their hierarchy, are kept from
-    /// the instant before); `on_row` is called as each row of each instant is done.
+    /// where it has one, each pixel sample at its own instant ([`crate::shutter`]), with the
+    /// objects that move placed anew at each (those that stay, and their hierarchy, are kept
+    /// from the instant before); `on_row` is called once a row, as the picture goes.
     pub fn render(
         &mut self,
         scene: &Scene,
@@ -222,14 +223,19 @@ impl Pipeline {
         let window = window(scene, options)?;
         let start = std::time::Instant::now();
         let (film, counts) = match scene.shutter {
-            None => render_on(scene, options, window, (0, 1), on_row, (self.pictures > 0).then_some(&mut self.kept))?,
+            None => {
+                let kept = (self.pictures > 0).then_some(&mut self.kept);
+                let (done, counts) = render_on(scene, options, Job::Window(window, on_row), kept)?;
+                (done.film(), counts)
+            }
             Some(shutter) => {
                 let mut counts = RayCounts::default();
-                let film = shutter.expose(options.time, scene.settings.spp, |t, subset| {
+                let pixels = (window.columns.clone(), window.rows.clone());
+                let film = shutter.expose(options.time, scene.settings.spp, pixels, on_row, |t, samples| {
                     let at = self.scene(t).map_err(|e| RenderError::Instant { time: t, source: Box::new(e) })?;
-                    let (film, cast) = render_on(&at, options, window.clone(), subset, on_row, Some(&mut self.kept))?;
+                    let (done, cast) = render_on(&at, options, Job::Samples(samples), Some(&mut self.kept))?;
                     counts.add(&cast);
-                    Ok::<_, RenderError>(film)
+                    Ok::<_, RenderError>(done.colours())
                 })?;
                 (film, counts)
             }
@@ -237,11 +243,6 @@ impl Pipeline {
         self.pictures += 1;
         Ok(Rendered::new(scene, options, film, counts, start.elapsed().as_secs_f64()))
     }
-}
-
-/// How many times a picture of `scene` at `time` renders its rows: once per shutter instant.
-pub fn passes(scene: &Scene, time: f64) -> usize {
-    scene.shutter.map_or(1, |s| s.instants(time, scene.settings.spp).len())
 }
 
 /// The picture of a scene that does not move (one built in code, or placed by its
@@ -252,8 +253,8 @@ pub fn render(scene: &Scene, options: &Options, on_row: &(dyn Fn() + Sync)) -> R
     }
     let window = window(scene, options)?;
     let start = std::time::Instant::now();
-    let (film, counts) = render_on(scene, options, window, (0, 1), on_row, None)?;
-    Ok(Rendered::new(scene, options, film, counts, start.elapsed().as_secs_f64()))
+    let (done, counts) = render_on(scene, options, Job::Window(window, on_row), None)?;
+    Ok(Rendered::new(scene, options, done.film(), counts, start.elapsed().as_secs_f64()))
 }
 
 /// The window `options` crops the scene's image to, or the whole image.
@@ -265,21 +266,46 @@ pub fn window(scene: &Scene, options: &Options) -> Result<Window, RenderError> {
     }
 }
 
-/// The film and the rays cast on the options' back end, taking the samples `first, first +
-/// step, …` of each pixel; what was prepared of the objects for the last picture taken from
-/// `kept` (and left there) where given.
+/// What a renderer is asked for: a window of the picture, or the colours of some samples.
+enum Job<'a> {
+    Window(Window, &'a (dyn Fn() + Sync)),
+    Samples(&'a [Sample]),
+}
+
+/// What a [`Job`] gives.
+enum Done {
+    Film(Film),
+    Colours(Vec<[f64; 3]>),
+}
+
+impl Done {
+    fn film(self) -> Film {
+        match self {
+            Done::Film(f) => f,
+            Done::Colours(_) => unreachable!("a window's job gives a film"),
+        }
+    }
+
+    fn colours(self) -> Vec<[f64; 3]> {
+        match self {
+            Done::Colours(c) => c,
+            Done::Film(_) => unreachable!("a samples' job gives colours"),
+        }
+    }
+}
+
+/// `job` done on the options' back end, and the rays cast; what was prepared of the objects
+/// for the last picture taken from `kept` (and left there) where given.
 fn render_on(
     scene: &Scene,
     options: &Options,
-    window: Window,
-    subset: (u32, u32),
-    on_row: &(dyn Fn() + Sync),
+    job: Job<'_>,
     kept: Option<&mut Kept>,
-) -> Result<(Film, RayCounts), RenderError> {
+) -> Result<(Done, RayCounts), RenderError> {
     match options.backend {
-        BackendKind::Sparse => render_with::<Sparse>(scene, options, window, subset, on_row, kept),
-        BackendKind::Dense => render_with::<Dense>(scene, options, window, subset, on_row, kept),
-        BackendKind::Plain => render_with::<Plain>(scene, options, window, subset, on_row, kept),
+        BackendKind::Sparse => render_with::<Sparse>(scene, options, job, kept),
+        BackendKind::Dense => render_with::<Dense>(scene, options, job, kept),
+        BackendKind::Plain => render_with::<Plain>(scene, options, job, kept),
     }
 }
 
@@ -287,17 +313,14 @@ fn render_on(
 fn render_with<B: Backend>(
     scene: &Scene,
     options: &Options,
-    window: Window,
-    (first, step): (u32, u32),
-    on_row: &(dyn Fn() + Sync),
+    job: Job<'_>,
     kept: Option<&mut Kept>,
-) -> Result<(Film, RayCounts), RenderError> {
+) -> Result<(Done, RayCounts), RenderError> {
     // What is prepared is kept for the next picture only where something moves.
     let mut renderer = match kept.filter(|_| scene.objects.iter().any(|o| o.moving)) {
         Some(kept) => Renderer::<B>::keeping(scene, kept),
         None => Renderer::<B>::with_backend(scene),
-    }
-    .sample_subset(first, step);
+    };
     renderer.holds().map_err(RenderError::Backend)?;
     if !options.packets {
         renderer = renderer.without_packets();
@@ -305,8 +328,11 @@ fn render_with<B: Backend>(
     if !options.avx2 {
         renderer = renderer.without_avx2();
     }
-    let film = renderer.render_window(options.aov, window, on_row);
-    Ok((film, renderer.counts()))
+    let done = match job {
+        Job::Window(window, on_row) => Done::Film(renderer.render_window(options.aov, window, on_row)),
+        Job::Samples(samples) => Done::Colours(renderer.render_samples(options.aov, samples)),
+    };
+    Ok((done, renderer.counts()))
 }
 
 /// A rendered picture: the film as rendered (linear; in false colour for a scalar AOV, with

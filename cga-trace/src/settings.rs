@@ -24,8 +24,8 @@ pub enum Reflection {
 /// distance (`+A0.3`) over the samples: `Σ_c (max_s d_c − min_s d_c)` over R, G, B of the
 /// samples' values as the picture shows them, `d = clamp(2^exposure · colour, 0, 1)`
 /// (pbrt-v2's adaptive sampler decides the same way, from `minsamples` to `maxsamples`). A
-/// pixel's result depends on its own samples alone: any thread count or crop gives the same
-/// bytes.
+/// pixel's result depends on the pixels around it alone: any thread count or crop gives the
+/// same bytes. A shutter takes every sample (each at its own instant).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Adaptive {
     /// The contrast above which a pixel takes all its samples, in [0, 3] (POV-Ray's default

@@ -46,7 +46,7 @@ pub(crate) struct CameraSpec {
     focus_distance: Option<Spanned<Num>>,
     /// The times, relative to the frame's, over which the shutter is open (motion blur).
     shutter: Option<Spanned<Nums<2>>>,
-    /// The instants the shutter is sampled at; default the pixel samples (`spp`).
+    /// The instants the shutter is cut into, at least (default 256; each pixel sample at its own).
     time_samples: Option<Spanned<u32>>,
 }
 

@@ -37,6 +37,7 @@ pub(crate) use sampler::{Dimension, SampleKey, disk};
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Layers;
 use crate::film::Film;
+use crate::ray::Ray;
 use crate::scene::Scene;
 use cga_core::euclid::E3;
 use rayon::prelude::*;
@@ -92,9 +93,6 @@ pub struct Renderer<'a, B: Backend = Sparse> {
     /// bounding sphere (a disk lying on a floor shows, as a decal does); last, the object
     /// declared first.
     pub(crate) tie: Cow<'a, [(bool, f64, usize)]>,
-    /// The samples of each pixel taken, `(first, step)`: `first, first + step, …` below the
-    /// scene's `spp` ([`Renderer::sample_subset`]).
-    pub(crate) subset: (u32, u32),
     /// Rays cast so far, `[primary, shadow, reflection]`: each thread adds its row's
     /// [`RayCounts`] once.
     counted: [AtomicU64; 3],
@@ -155,7 +153,6 @@ impl<'a, B: Backend> Renderer<'a, B> {
             errors,
             largest_error,
             tie,
-            subset: (0, 1),
             counted: Default::default(),
         }
     }
@@ -189,14 +186,6 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// (to compare the two lane types).
     pub fn without_avx2(mut self) -> Self {
         self.avx2 = false;
-        self
-    }
-
-    /// The same renderer taking of each pixel's `spp` samples only `first, first + step, …`
-    /// (their mean): what one instant of a shutter takes ([`crate::shutter`]), so that the
-    /// instants together take each sample once. `step` is at least 1.
-    pub fn sample_subset(mut self, first: u32, step: u32) -> Self {
-        self.subset = (first, step.max(1));
         self
     }
 
@@ -258,6 +247,34 @@ impl<'a, B: Backend> Renderer<'a, B> {
             on_row();
         });
         Film { width: width as u32, height: height as u32, pixels }
+    }
+}
+
+impl<B: Backend> Renderer<'_, B> {
+    /// The colour (or AOV) of each of `samples` (pixel `(i, j)`'s sample `s`, placed as in
+    /// [`Renderer::render_window`]), in parallel on rayon's pool, neighbours of the list four
+    /// at a time through packets: what one instant of a shutter takes ([`crate::shutter`]).
+    pub fn render_samples(&self, aov: Aov, samples: &[[u32; 3]]) -> Vec<[f64; 3]> {
+        const CHUNK: usize = 256;
+        let mut colours = vec![[0.0; 3]; samples.len()];
+        colours.par_chunks_mut(CHUNK).zip(samples.par_chunks(CHUNK)).for_each(|(out, samples)| {
+            let mut cast = RayCounts::default();
+            let mut done = 0;
+            if aov == Aov::Shaded && self.packets {
+                for (four, samples) in out.chunks_exact_mut(4).zip(samples.chunks_exact(4)) {
+                    let Some(c) = self.listed4(samples.try_into().expect("four"), &mut cast) else { break };
+                    four.copy_from_slice(&c);
+                    done += 4;
+                }
+            }
+            for (colour, &sample) in out.iter_mut().zip(samples).skip(done) {
+                *colour = self
+                    .listed::<Ray<B::Carrier>, 1>([sample], aov, &mut cast)
+                    .map_or(self.scene.settings.background, |[c]| c);
+            }
+            self.count(&cast);
+        });
+        colours
     }
 }
 

@@ -7,6 +7,7 @@ use super::avx::Ymm;
 use super::{Aov, RayCounts, Renderer};
 use crate::backend::{Backend, Packet, RayLanes, lanes3};
 use crate::camera::Lens;
+use crate::hash::{self, hash};
 use crate::ray::Ray;
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
@@ -27,8 +28,7 @@ impl<B: Backend> Renderer<'_, B> {
     }
 
     /// `W` neighbouring pixels of a row, `(i₀ + k, j)`, each averaged over the scene's
-    /// `spp` samples (those of the renderer's [subset](Renderer::sample_subset)), sample `s`
-    /// of the `W` pixels cast as one set of rays in lanes; `None` where the camera forms no
+    /// `spp` samples, sample `s` of the `W` pixels cast as one set of rays in lanes; `None` where the camera forms no
     /// ray (nothing is counted then).
     #[inline(always)]
     pub(crate) fn pixels<R: RayLanes<B, W>, const W: usize>(
@@ -45,7 +45,7 @@ impl<B: Backend> Renderer<'_, B> {
 
     /// Adds to `taken` the samples `stage` names of the `W` pixels `(i₀ + k, j)`, in sample
     /// order; `None` where the camera forms no ray (nothing is counted then). One sample a
-    /// pixel (and every sample of the subset) is the pixel's centre.
+    /// pixel is the pixel's centre.
     #[inline(always)]
     pub(crate) fn take<R: RayLanes<B, W>, const W: usize>(
         &self,
@@ -57,11 +57,10 @@ impl<B: Backend> Renderer<'_, B> {
         cast: &mut RayCounts,
     ) -> Option<()> {
         let spp = self.scene.settings.spp.max(1);
-        let (first, step) = self.subset;
         let mut counted = RayCounts::default();
-        let samples = (first..spp).step_by(step.max(1) as usize);
+        let samples = 0..spp;
         match stage {
-            _ if spp == 1 && step == 1 => {
+            _ if spp == 1 => {
                 if !matches!(stage, Stage::Rest(..)) {
                     let u = core::array::from_fn(|k| f64::from(i0 + k as u32) + 0.5);
                     self.add::<R, W>(taken, (i0, j, 0), (u, [f64::from(j) + 0.5; W]), aov, &mut counted)?;
@@ -100,6 +99,45 @@ impl<B: Backend> Renderer<'_, B> {
         }
         cast.add(&counted);
         Some(())
+    }
+
+    /// The colours (or AOVs) of `W` samples of any pixels, `[i, j, s]` each (the centre where
+    /// the scene takes one sample a pixel); `None` where the camera forms no ray (nothing is
+    /// counted then).
+    #[inline(always)]
+    pub(super) fn listed<R: RayLanes<B, W>, const W: usize>(
+        &self,
+        samples: [[u32; 3]; W],
+        aov: Aov,
+        cast: &mut RayCounts,
+    ) -> Option<[[f64; 3]; W]> {
+        let spp = self.scene.settings.spp.max(1);
+        let (mut u, mut v) = ([0.0; W], [0.0; W]);
+        for (k, &[i, j, s]) in samples.iter().enumerate() {
+            let (du, dv) = if spp == 1 { (0.5, 0.5) } else { sample_offset(i, j, s) };
+            (u[k], v[k]) = (f64::from(i) + du, f64::from(j) + dv);
+        }
+        let keys = samples.map(|[i, j, s]| SampleKey::new(i, j, s, spp));
+        let mut counted = RayCounts::default();
+        let colours = self.samples::<R, W>(u, v, keys, aov, &mut counted)?;
+        cast.add(&counted);
+        Some(colours)
+    }
+
+    /// [`Renderer::listed`] four at a time through packets ([`Renderer::pixels4`]).
+    pub(super) fn listed4(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 && avx2() {
+            // SAFETY: the CPU has the features the function is compiled for.
+            return unsafe { self.listed4_avx2(samples, cast) };
+        }
+        self.listed::<Packet<B>, 4>(samples, Aov::Shaded, cast)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn listed4_avx2(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
+        self.listed::<Packet<B, Ymm>, 4>(samples, Aov::Shaded, cast)
     }
 
     /// Sample `s` of the `W` pixels `(i₀ + k, j)`, seen at `(u_k, v_k)`, added to `taken`.
@@ -213,7 +251,7 @@ impl<B: Backend> Renderer<'_, B> {
     }
 }
 
-/// Which of a pixel's samples (of the renderer's subset) to take.
+/// Which of a pixel's samples to take.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Stage<const W: usize> {
     /// All of them.
@@ -294,7 +332,7 @@ fn shown(x: f64, scale: f64) -> f64 {
 /// that stratification and decorrelates neighbouring pixels). Deterministic: the same for
 /// any thread count or crop.
 pub fn sample_offset(i: u32, j: u32, s: u32) -> (f64, f64) {
-    let pixel = hash(i ^ hash(j ^ 0x9e37_79b9));
+    let pixel = hash::pixel(i, j, 0x9e37_79b9);
     let x = s.reverse_bits() ^ hash(pixel ^ 0x68bc_21eb);
     let y = sobol_second(s) ^ hash(pixel ^ 0x02e5_be93);
     let unit = |bits: u32| f64::from(bits) / 4_294_967_296.0;
@@ -335,7 +373,7 @@ impl SampleKey {
     /// points of every dimension are stratified over the pixel's samples and uncorrelated with
     /// where in the pixel each sample falls (pbrt's padded Sobol' sampler).
     pub(crate) fn point(&self, dimension: Dimension, k: u32, n: u32) -> (f64, f64) {
-        let pixel = hash(self.i ^ hash(self.j ^ 0x85eb_ca6b));
+        let pixel = hash::pixel(self.i, self.j, 0x85eb_ca6b);
         let seed = hash(pixel ^ (dimension as u32).wrapping_mul(0x9e37_79b9));
         let s = permute(self.index, self.count.max(1), seed).wrapping_mul(n).wrapping_add(k);
         let x = s.reverse_bits() ^ hash(seed ^ 0x68bc_21eb);
@@ -410,15 +448,6 @@ fn sobol_second(mut s: u32) -> u32 {
         v ^= v >> 1;
     }
     y
-}
-
-/// A 32-bit integer hash with good avalanche (two multiply–xorshift rounds).
-fn hash(mut x: u32) -> u32 {
-    x ^= x >> 16;
-    x = x.wrapping_mul(0x7feb_352d);
-    x ^= x >> 15;
-    x = x.wrapping_mul(0x846c_a68b);
-    x ^ (x >> 16)
 }
 
 #[cfg(test)]

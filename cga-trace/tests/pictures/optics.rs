@@ -1,6 +1,8 @@
 //! Lenses, area lights, the shutter and glass against their textbook formulas: an
 //! orthographic view's constant scale, a thin lens's circle of confusion, a disk light's
-//! penumbra, motion blur's coverage, and a glass ball's focal point (the ball-lens formula).
+//! penumbra, motion blur's coverage (smooth at four samples a pixel, the average of many
+//! frames, a still scene's own picture), and a glass ball's focal point (the ball-lens
+//! formula).
 
 use cga_trace::integrator::Window;
 use cga_trace::ray::Ray;
@@ -151,8 +153,97 @@ fn a_shutter_blurs_a_moving_sphere_over_its_path() {
         worst = worst.max((film.pixels[row + i as usize][0] - want).abs());
     }
     println!("coverage along the path: largest difference {worst:.3}");
-    // 64 instants (1/64 each) and the pixel's width (1/20 of a unit, 1/80 of the path).
+    // A pixel's 64 samples one in each 1/64 of the shutter, and the pixel's width (1/20 of a
+    // unit, 1/80 of the path).
     assert!(worst < 1.0 / 64.0 + 1.0 / 80.0 + 1e-3, "{worst}");
+}
+
+/// A picture through `text`'s shutter by its pipeline.
+fn shuttered(text: &str) -> (Scene, Film) {
+    let mut pipeline = cga_trace::Pipeline::parse(text, "optics.toml", cga_trace::View::default()).unwrap();
+    let scene = pipeline.scene(0.0).unwrap();
+    assert!(scene.shutter.is_some(), "a shutter");
+    let film = pipeline.render(&scene, &cga_trace::Options::default(), &|| {}).unwrap().film;
+    (scene, film)
+}
+
+#[test]
+fn a_shutter_blurs_smoothly_at_four_samples_a_pixel() {
+    // A tall bar of width 1 crossing from x = −2 to x = 2 (an orthographic view, 20 pixels a
+    // unit, 4 samples a pixel): every row sees the same motion, so a column's mean over the
+    // rows is its coverage, |[x − ½, x + ½] ∩ [−2, 2]| / 4, to the noise of 4 · 48 samples.
+    // Were every pixel's samples taken at the same 4 instants, the bar would leave 4 copies:
+    // a staircase up to 1/8 off that ramp in every row alike.
+    let (width, height) = (160, 48);
+    let text = format!(
+        "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nprojection = \"orthographic\"\nview_width = 8.0\nwidth = {width}\nheight = {height}\n\
+         shutter = [0.0, 1.0]\n[render]\nambient = 1.0\nspp = 4\n\
+         [[objects]]\ntype = \"box\"\nmin = [-2.5, -0.5, -5.0]\nmax = [-1.5, 0.5, 5.0]\n{WHITE}\nmotion = [[1, 0, 0, 0, 0, 0, 0, 0], [1, 0, 0, 0, -2, 0, 0, 0]]\n"
+    );
+    let (_, film) = shuttered(&text);
+    let mut worst: f64 = 0.0;
+    for i in 0..width {
+        let x = -4.0 + (f64::from(i) + 0.5) / 20.0;
+        let want = ((x + 0.5).min(2.0) - (x - 0.5).max(-2.0)).max(0.0) / 4.0;
+        let mean = (0..height).map(|j| film.pixels[(j * width + i) as usize][0]).sum::<f64>() / f64::from(height);
+        worst = worst.max((mean - want).abs());
+    }
+    println!("coverage along the path, the mean of {height} rows at 4 samples: largest difference {worst:.3}");
+    assert!(worst < 0.06, "{worst}");
+}
+
+#[test]
+fn a_shutter_gives_the_average_of_many_frames_and_a_still_scene_its_still_picture() {
+    // motion.toml's ring and ball at 48 × 36, 16 samples a pixel: through the shutter (256
+    // instants), against the mean of 64 frames at the middles of 64 equal parts of the
+    // interval, each at 16 samples.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("motion.toml");
+    let text = std::fs::read_to_string(&path)
+        .unwrap()
+        .replace("width = 320", "width = 48")
+        .replace("height = 240", "height = 36")
+        .replace("spp = 32", "spp = 16");
+    let (scene, blurred) = shuttered(&text);
+    let mut frames = cga_trace::Pipeline::parse(
+        &text.replace("shutter = [0.0, 1.0]\n", ""),
+        "motion.toml",
+        cga_trace::View::default(),
+    )
+    .unwrap();
+    let mut mean = vec![[0.0; 3]; blurred.pixels.len()];
+    for k in 0..64 {
+        let at = frames.scene((f64::from(k) + 0.5) / 64.0).unwrap();
+        for (m, p) in mean.iter_mut().zip(render(&at).pixels) {
+            *m = [0, 1, 2].map(|c| m[c] + p[c] / 64.0);
+        }
+    }
+    let difference = |a: &[[f64; 3]], b: &[[f64; 3]]| {
+        a.iter()
+            .zip(b)
+            .map(|(p, q)| (0..3).map(|c| (p[c].min(1.0) - q[c].min(1.0)).abs()).sum::<f64>() / 3.0)
+            .sum::<f64>()
+            / a.len() as f64
+    };
+    let against_frames = difference(&blurred.pixels, &mean);
+    let still = render(&frames.scene(0.0).unwrap());
+    println!(
+        "mean |shutter − mean of 64 frames| {against_frames:.4}; against one frame {:.4}",
+        difference(&still.pixels, &mean)
+    );
+    assert!(against_frames < 0.01 && difference(&still.pixels, &mean) > 5.0 * against_frames, "{against_frames}");
+    // Nothing moves: the shutter gives the still picture (sums in another order: to rounding).
+    let standing = text.replace("motion = ", "# motion = ");
+    let (standing_scene, through) = shuttered(&standing);
+    let plain = render(&standing_scene);
+    let worst = through
+        .pixels
+        .iter()
+        .flatten()
+        .zip(plain.pixels.iter().flatten())
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-12, "{worst}");
+    assert_eq!(through.to_rgb8(scene.settings.encoding).into_raw(), plain.to_rgb8(scene.settings.encoding).into_raw());
 }
 
 #[test]
@@ -419,15 +510,14 @@ fn a_shutter_places_only_what_moves_and_renders_as_if_each_instant_were_loaded_a
     let scene = pipeline.scene(0.0).unwrap();
     let kept = pipeline.render(&scene, &cga_trace::Options::default(), &|| {}).unwrap().film;
     // The same picture with every instant loaded, built and its hierarchy made anew.
+    let c = &scene.camera;
     let anew = scene
         .shutter
         .unwrap()
-        .expose(0.0, scene.settings.spp, |t, (first, step)| {
+        .expose(0.0, scene.settings.spp, (0..c.width, 0..c.height), &|| {}, |t, samples| {
             let mut fresh = cga_trace::Pipeline::parse(&text, "shutter.toml", cga_trace::View::default()).unwrap();
             let at = fresh.scene(t).unwrap();
-            let c = &at.camera;
-            let window = Window::full(c.width, c.height);
-            Ok::<_, ()>(Renderer::new(&at).sample_subset(first, step).render_window(Aov::Shaded, window, &|| {}))
+            Ok::<_, ()>(Renderer::new(&at).render_samples(Aov::Shaded, samples))
         })
         .unwrap();
     assert!(kept.pixels == anew.pixels, "the kept objects change the picture");
