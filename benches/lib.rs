@@ -1,5 +1,6 @@
 //! The benchmarks live beside this file (`products.rs`, `render.rs`, `peers.rs`,
-//! `batch_timing.rs`, `pga_timing.rs`); this library only holds what they share.
+//! `batch_timing.rs`, `pga_timing.rs`, `surface_rays.rs`); this library only holds what they
+//! share.
 
 /// A shipped scene file of cga-trace, by name (`primitives`, `surface`, `combined`).
 pub fn scene_path(name: &str) -> std::path::PathBuf {
