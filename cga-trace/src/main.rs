@@ -84,6 +84,10 @@ struct Render {
     /// (Σ over R, G, B of max − min of what the picture shows, 0 to 3; POV-Ray's default 0.3).
     #[arg(long, value_name = "THRESHOLD")]
     adaptive: Option<f64>,
+    /// The samples every pixel takes first under adaptive sampling, 1 to 4096 (overrides the
+    /// scene's min_spp; default 4; 1 is POV-Ray's method 1: the neighbours alone decide).
+    #[arg(long, value_name = "N")]
+    adaptive_min: Option<u32>,
     /// Render only the window x0,x1,y0,y1 (fractions of the image, y from the top, as
     /// pbrt's --cropwindow); windows of one frame assemble into it byte for byte.
     #[arg(long, value_name = "X0,X1,Y0,Y1", value_parser = parse_crop, allow_hyphen_values = true)]
@@ -393,6 +397,7 @@ fn view(args: &Render) -> View {
         fov: args.fov,
         spp: args.spp,
         adaptive: args.adaptive,
+        adaptive_min: args.adaptive_min,
         max_depth: args.max_depth,
         exposure: args.exposure,
         tone_map: args.tone_map,
@@ -404,7 +409,9 @@ fn flagged(e: RenderError) -> anyhow::Error {
     let (flag, inner): (&str, anyhow::Error) = match e {
         RenderError::View(ViewError::Fov(e)) => ("--fov", e.into()),
         RenderError::View(ViewError::Size(e)) => ("--width/--height", e.into()),
-        RenderError::View(ViewError::Settings(e)) => ("--max-depth/--spp/--adaptive/--exposure", e.into()),
+        RenderError::View(ViewError::Settings(e)) => {
+            ("--max-depth/--spp/--adaptive/--adaptive-min/--exposure", e.into())
+        }
         RenderError::Crop(e) => ("--crop", anyhow::Error::msg(e)),
         RenderError::Backend(e) => ("--backend", anyhow::Error::msg(e)),
         e => return e.into(),

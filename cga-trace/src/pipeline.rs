@@ -45,6 +45,9 @@ pub struct View {
     pub spp: Option<u32>,
     /// Adaptive sampling's contrast threshold ([`Adaptive`], with the scene's `min_spp`, or 4).
     pub adaptive: Option<f64>,
+    /// Adaptive sampling's first samples a pixel (with the scene's threshold, or 0.3 where it
+    /// gives none).
+    pub adaptive_min: Option<u32>,
     /// Reflection depth.
     pub max_depth: Option<u32>,
     /// Exposure of PNG output in stops.
@@ -64,9 +67,10 @@ impl View {
         let s = &mut scene.settings;
         s.max_depth = self.max_depth.unwrap_or(s.max_depth);
         s.spp = self.spp.unwrap_or(s.spp);
-        if let Some(threshold) = self.adaptive {
-            let min_spp = s.adaptive.map_or(Adaptive::MIN_SPP, |a| a.min_spp);
-            s.adaptive = Some(Adaptive { threshold, min_spp });
+        if self.adaptive.is_some() || self.adaptive_min.is_some() {
+            let given = s.adaptive.unwrap_or(Adaptive::threshold(Adaptive::THRESHOLD));
+            let threshold = self.adaptive.unwrap_or(given.threshold);
+            s.adaptive = Some(Adaptive { threshold, min_spp: self.adaptive_min.unwrap_or(given.min_spp) });
         }
         s.exposure = self.exposure.unwrap_or(s.exposure);
         s.tone_map = self.tone_map.unwrap_or(s.tone_map);

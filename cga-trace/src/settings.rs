@@ -31,7 +31,8 @@ pub struct Adaptive {
     /// The contrast above which a pixel takes all its samples, in [0, 3] (POV-Ray's default
     /// is 0.3; 0: every pixel whose first samples differ at all).
     pub threshold: f64,
-    /// The samples every pixel takes first, 2 to [`MAX_SPP`] (at least `spp`: nothing adapts).
+    /// The samples every pixel takes first, 1 to [`MAX_SPP`] (at least `spp`: nothing adapts;
+    /// 1: POV-Ray's method 1, the neighbours alone decide).
     pub min_spp: u32,
 }
 
@@ -40,18 +41,21 @@ impl Adaptive {
     /// quarter of the pixel.
     pub const MIN_SPP: u32 = 4;
 
+    /// POV-Ray's default threshold (`+A` alone), where only the first samples are given.
+    pub const THRESHOLD: f64 = 0.3;
+
     /// The threshold with the default first samples.
     pub fn threshold(threshold: f64) -> Self {
         Adaptive { threshold, min_spp: Self::MIN_SPP }
     }
 
-    /// `threshold` finite in [0, 3], `min_spp` in 2 ..= [`MAX_SPP`].
+    /// `threshold` finite in [0, 3], `min_spp` in 1 ..= [`MAX_SPP`].
     pub fn check(&self) -> Result<(), Invalid> {
         if !(0.0..=3.0).contains(&self.threshold) {
             return Err(Invalid::Value("the adaptive threshold must lie in [0, 3] (POV-Ray's default is 0.3)"));
         }
-        if !(2..=MAX_SPP).contains(&self.min_spp) {
-            return Err(Invalid::Value("adaptive min_spp must be 2 to 4096"));
+        if !(1..=MAX_SPP).contains(&self.min_spp) {
+            return Err(Invalid::Value("adaptive min_spp must be 1 to 4096"));
         }
         Ok(())
     }

@@ -61,8 +61,9 @@ impl Scene {
     /// shaded, normal, alpha, gaussian, mean, k1, k2, postulate; `backend` sparse, dense or
     /// plain; `crop` four fractions `[x0, x1, y0, y1]` (y from the top); `time` the motion's
     /// time in [0, 1]; `adaptive` a contrast threshold (POV-Ray's `+A`, 0 to 3) that makes
-    /// `spp` a maximum, taken only where a pixel's first samples differ by more.
-    #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, max_depth = None,
+    /// `spp` a maximum, taken only where a pixel's first samples (`adaptive_min`, default 4)
+    /// or its neighbours' differ by more.
+    #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, adaptive_min = None, max_depth = None,
         exposure = None, tone_map = None, time = 0.0, aov = "shaded", backend = "sparse", crop = None, labels = true))]
     #[allow(clippy::too_many_arguments)]
     fn render(
@@ -73,6 +74,7 @@ impl Scene {
         fov: Option<f64>,
         spp: Option<u32>,
         adaptive: Option<f64>,
+        adaptive_min: Option<u32>,
         max_depth: Option<u32>,
         exposure: Option<f64>,
         tone_map: Option<&str>,
@@ -85,7 +87,7 @@ impl Scene {
         let tone_map = tone_map
             .map(|t| choose("tone_map", t, &[("none", ToneMap::None), ("filmic", ToneMap::Filmic)]))
             .transpose()?;
-        let view = View { width, height, fov, spp, adaptive, max_depth, exposure, tone_map };
+        let view = View { width, height, fov, spp, adaptive, adaptive_min, max_depth, exposure, tone_map };
         let aov = choose(
             "aov",
             aov,

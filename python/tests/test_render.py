@@ -109,3 +109,5 @@ def test_adaptive_sampling_takes_the_first_samples_or_all():
     assert 0 < np.count_nonzero(~took_first) < took_first.size // 4
     with pytest.raises(cga.ValueError, match=r"adaptive.*\[0, 3\]"):
         scene.render(spp=16, adaptive=4.0)
+    # First samples as many as spp: nothing adapts.
+    assert np.array_equal(scene.render(spp=16, adaptive=0.3, adaptive_min=16).linear, every)

@@ -188,6 +188,7 @@ class Scene:
         fov: Optional[float] = None,
         spp: Optional[int] = None,
         adaptive: Optional[float] = None,
+        adaptive_min: Optional[int] = None,
         max_depth: Optional[int] = None,
         exposure: Optional[float] = None,
         tone_map: Optional[str] = None,

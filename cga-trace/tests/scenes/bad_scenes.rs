@@ -166,9 +166,9 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:7:", "adaptive", "a contrast threshold", "min_spp"],
         ),
         (
-            "adaptive min_spp of one",
-            format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, min_spp = 1 }}\n"),
-            vec!["bad.toml:7:", "adaptive", "min_spp must be 2 to 4096"],
+            "adaptive min_spp of none",
+            format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, min_spp = 0 }}\n"),
+            vec!["bad.toml:7:", "adaptive", "min_spp must be 1 to 4096"],
         ),
         (
             "adaptive with an unknown field",
