@@ -80,12 +80,14 @@ struct Render {
     #[arg(long)]
     spp: Option<u32>,
     /// Adaptive anti-aliasing, POV-Ray's +A: --spp becomes a maximum, taken only by pixels
-    /// whose first 4 samples (the scene's adaptive min_spp) differ by more than this contrast
-    /// (Σ over R, G, B of max − min of what the picture shows, 0 to 3; POV-Ray's default 0.3).
+    /// whose first 4 samples (--adaptive-min), or whose mean against a neighbour's, differ by
+    /// more than this contrast (Σ over R, G, B of the differences of what a PNG shows, 0 to 3;
+    /// POV-Ray's default 0.3).
     #[arg(long, value_name = "THRESHOLD")]
     adaptive: Option<f64>,
     /// The samples every pixel takes first under adaptive sampling, 1 to 4096 (overrides the
     /// scene's min_spp; default 4; 1 is POV-Ray's method 1: the neighbours alone decide).
+    /// Given alone, it turns adaptive sampling on at the scene's threshold or 0.3.
     #[arg(long, value_name = "N")]
     adaptive_min: Option<u32>,
     /// Render only the window x0,x1,y0,y1 (fractions of the image, y from the top, as

@@ -79,7 +79,24 @@ impl Scene {
             })
             .into_iter()
             .chain(dark)
+            .chain(self.adaptive_note())
             .collect()
+    }
+
+    /// Why adaptive sampling, where set, takes every sample: a shutter, or `spp` not above
+    /// the first samples.
+    fn adaptive_note(&self) -> Option<String> {
+        let (a, spp) = (self.settings.adaptive?, self.settings.spp);
+        if self.shutter.is_some() {
+            Some("adaptive sampling does not apply under a shutter: every pixel takes all its samples".into())
+        } else if spp <= a.min_spp {
+            Some(format!(
+                "adaptive sampling takes every sample: spp ({spp}) is not above the first samples each pixel takes (min_spp {}); raise spp (--spp)",
+                a.min_spp
+            ))
+        } else {
+            None
+        }
     }
 
     /// The image resized to `width × height`; given one, the other follows at the image's

@@ -19,13 +19,14 @@ pub enum Reflection {
 }
 
 /// Adaptive anti-aliasing: `spp` becomes a maximum. Each pixel first takes `min_spp` of its
-/// samples (a prefix of its stratified sequence, so spread over the pixel); only where their
-/// contrast exceeds `threshold` does it take the rest. The contrast is POV-Ray's colour
-/// distance (`+A0.3`) over the samples: `Σ_c (max_s d_c − min_s d_c)` over R, G, B of the
-/// samples' values as the picture shows them, `d = clamp(2^exposure · colour, 0, 1)`
-/// (pbrt-v2's adaptive sampler decides the same way, from `minsamples` to `maxsamples`). A
-/// pixel's result depends on the pixels around it alone: any thread count or crop gives the
-/// same bytes. A shutter takes every sample (each at its own instant).
+/// samples (a prefix of its stratified sequence, so spread over the pixel); it takes the rest
+/// only where their contrast, or the distance between its mean and a neighbour's (left,
+/// right, below, above), exceeds `threshold`. Both are POV-Ray's colour distance (`+A0.3`):
+/// `Σ_c (max_s d_c − min_s d_c)` over R, G, B of the samples, `Σ_c |d_c(a) − d_c(b)|` between
+/// two means, of the values as a PNG of the picture shows them, `d = clamp(T(2^exposure ·
+/// colour), 0, 1)` with `T` its tone map. A pixel's result depends on its own samples and its
+/// neighbours' first ones alone: any thread count or crop gives the same bytes. The shaded
+/// picture only; AOVs, and a picture through a shutter, take every sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Adaptive {
     /// The contrast above which a pixel takes all its samples, in [0, 3] (POV-Ray's default

@@ -1,8 +1,8 @@
 //! Motion blur: a shutter open over an interval of the motion's time, every sample of a pixel
 //! at its own instant. The interval is cut into `N = m · spp` instants; a pixel's `spp`
-//! samples lie one in each of `spp` strata of `m` instants (stratified in time), sample `s` in
-//! stratum `(s + o) mod spp` at instant `r` of it, with `o` and `r` drawn by a hash of the
-//! pixel. Neighbouring pixels so see a motion at different instants, and a moving object blurs
+//! samples lie one in each of `spp` strata of `m` instants (stratified in time): stratum `q`
+//! takes sample `π(q)` at its instant `r`, `π` a permutation of the samples and `r` drawn by
+//! hashes of the pixel (so that a sample's time is not tied to where in the pixel it falls). Neighbouring pixels so see a motion at different instants, and a moving object blurs
 //! smoothly at any `spp` instead of leaving `spp` copies of itself. Each instant places the
 //! scene anew by its keyframed motors (the same screw interpolation as `--frames`) and takes
 //! the samples that fall on it, so a blurred picture casts the rays a still one of the same
@@ -21,7 +21,8 @@ pub struct Shutter {
     pub open: f64,
     /// When it closes, relative to the frame's time (at least `open`).
     pub close: f64,
-    /// The instants it is cut into at least (`time_samples`); `None`: [`Shutter::INSTANTS`].
+    /// The instants it is cut into (`time_samples`; `None`: [`Shutter::INSTANTS`]), rounded up
+    /// to a multiple of the samples a pixel takes ([`Shutter::instants`]).
     pub samples: Option<u32>,
 }
 
@@ -35,14 +36,17 @@ impl Shutter {
     pub const INSTANTS: u32 = 256;
 
     /// Instants per stratum, `m = ⌈samples / spp⌉`, at least 1 and, where `spp` allows, with
-    /// `m · spp` at most [`MAX_TIME_SAMPLES`].
+    /// `m · spp` at most [`MAX_TIME_SAMPLES`] (so that `m = 1` where `spp` is more than half
+    /// of it).
     pub fn per_stratum(&self, spp: u32) -> u32 {
         let spp = spp.max(1);
         let wanted = self.samples.unwrap_or(Self::INSTANTS).div_ceil(spp);
         wanted.min(MAX_TIME_SAMPLES / spp).max(1)
     }
 
-    /// The instants, `N = m · spp`.
+    /// The instants, `N = m · spp`: never fewer than `spp` (each sample its own instant), and
+    /// `time_samples` rounded up to a multiple of `spp` where that stays within
+    /// [`MAX_TIME_SAMPLES`].
     pub fn instants(&self, spp: u32) -> u32 {
         self.per_stratum(spp) * spp.max(1)
     }
@@ -53,24 +57,34 @@ impl Shutter {
         time + self.open + (f64::from(k) + 0.5) * (self.close - self.open) / f64::from(n)
     }
 
-    /// Pixel `(i, j)`'s rotation of its strata, `o ∈ [0, spp)`, and its instant within each,
-    /// `r ∈ [0, m)`: hashes of the pixel.
-    fn scramble(i: u32, j: u32, spp: u32, m: u32) -> (u32, u32) {
-        (hash::pixel(i, j, 0x2545_f491) % spp, hash::pixel(i, j, 0x6c8e_9cf5) % m)
+    /// Pixel `(i, j)`'s instant within each stratum, `r ∈ [0, m)`, and the seed of its
+    /// permutation of samples to strata: hashes of the pixel.
+    fn scramble(i: u32, j: u32, m: u32) -> (u32, u32) {
+        (hash::pixel(i, j, 0x6c8e_9cf5) % m, hash::pixel(i, j, 0x2545_f491))
     }
 
-    /// The instant sample `s` of pixel `(i, j)` is taken at, `((s + o) mod spp) · m + r`.
+    /// The sample of pixel `(i, j)` that stratum `q` takes, `π(q)`.
+    fn sample_of(i: u32, j: u32, q: u32, spp: u32, seed: u32) -> Sample {
+        [i, j, hash::permute(q, spp, seed)]
+    }
+
+    /// The instant sample `s` of pixel `(i, j)` is taken at, `q · m + r` with `π(q) = s`.
     pub fn instant_of(&self, spp: u32, [i, j, s]: Sample) -> u32 {
         let (spp, m) = (spp.max(1), self.per_stratum(spp));
-        let (o, r) = Self::scramble(i, j, spp, m);
-        (s + o) % spp * m + r
+        let (r, seed) = Self::scramble(i, j, m);
+        let q = (0..spp).find(|&q| Self::sample_of(i, j, q, spp, seed)[2] == s).expect("π is a permutation");
+        q * m + r
     }
 
     /// The picture of the pixels `columns × rows` of a frame at `time` with `spp` samples a
     /// pixel: `picture(t, samples)` renders the scene placed at instant `t` and gives the
     /// colour of each of `samples` (pixel and sample number, [`Shutter::instant_of`] them all
-    /// `t`'s), and each pixel is the mean of its samples. Instants that take no sample are
-    /// not placed. `on_row` is called `rows.len()` times in all, as the instants go by.
+    /// `t`'s), and each pixel is the mean of its samples (summed in the order of their
+    /// instants, so a scene that does not move gives its still picture to rounding). Instants
+    /// that take no sample are not placed. `on_row` is called `rows.len()` times in all, as
+    /// the instants go by. Beside the film it holds 4 bytes a pixel, and one instant's
+    /// samples and colours, 36 bytes for each pixel the instant takes (every pixel where
+    /// `m = 1`).
     pub fn expose<E>(
         &self,
         time: f64,
@@ -82,25 +96,27 @@ impl Shutter {
         let (spp, m) = (spp.max(1), self.per_stratum(spp));
         let n = m * spp;
         let width = columns.len();
-        // The pixels by their instant within each stratum, with their rotations.
-        let mut classes: Vec<Vec<[u32; 3]>> = vec![Vec::new(); m as usize];
-        for j in rows.clone() {
-            for i in columns.clone() {
-                let (o, r) = Self::scramble(i, j, spp, m);
-                classes[r as usize].push([i, j, o]);
-            }
+        // The pixels by their instant within each stratum (4 bytes a pixel: the place in the
+        // window; the rest is hashed again).
+        let mut classes: Vec<Vec<u32>> = vec![Vec::new(); m as usize];
+        for (p, (j, i)) in rows.clone().flat_map(|j| columns.clone().map(move |i| (j, i))).enumerate() {
+            classes[Self::scramble(i, j, m).0 as usize].push(p as u32);
         }
+        let at = |p: u32| (columns.start + p % width as u32, rows.start + p / width as u32);
         let mut sum = vec![[0.0; 3]; width * rows.len()];
         let mut samples: Vec<Sample> = Vec::new();
         let (mut reported, height) = (0, rows.len() as u64);
         for k in 0..n {
             let (q, r) = (k / m, k % m);
             samples.clear();
-            samples.extend(classes[r as usize].iter().map(|&[i, j, o]| [i, j, (q + spp - o) % spp]));
+            samples.extend(classes[r as usize].iter().map(|&p| {
+                let (i, j) = at(p);
+                Self::sample_of(i, j, q, spp, Self::scramble(i, j, m).1)
+            }));
             if !samples.is_empty() {
                 let colours = picture(self.time(time, k, n), &samples)?;
-                for (&[i, j, _], c) in samples.iter().zip(colours) {
-                    let p = &mut sum[(j - rows.start) as usize * width + (i - columns.start) as usize];
+                for (&p, c) in classes[r as usize].iter().zip(colours) {
+                    let p = &mut sum[p as usize];
                     *p = [p[0] + c[0], p[1] + c[1], p[2] + c[2]];
                 }
             }

@@ -61,8 +61,9 @@ impl Scene {
     /// shaded, normal, alpha, gaussian, mean, k1, k2, postulate; `backend` sparse, dense or
     /// plain; `crop` four fractions `[x0, x1, y0, y1]` (y from the top); `time` the motion's
     /// time in [0, 1]; `adaptive` a contrast threshold (POV-Ray's `+A`, 0 to 3) that makes
-    /// `spp` a maximum, taken only where a pixel's first samples (`adaptive_min`, default 4)
-    /// or its neighbours' differ by more.
+    /// `spp` a maximum, taken only where a pixel's first samples (`adaptive_min`, default 4;
+    /// given alone, it turns adaptive sampling on at the scene's threshold or 0.3) or its
+    /// neighbours' differ by more.
     #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, adaptive_min = None, max_depth = None,
         exposure = None, tone_map = None, time = 0.0, aov = "shaded", backend = "sparse", crop = None, labels = true))]
     #[allow(clippy::too_many_arguments)]

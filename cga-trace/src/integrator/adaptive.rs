@@ -6,10 +6,11 @@
 //!
 //! The picture goes by bands of rows: the first samples of the band and of the pixels around
 //! it (one more row and column on each side, within the image), then the rest. A pixel's
-//! result depends only on the pixels around it, all placed by their position: any thread
-//! count or crop window gives the same bytes.
+//! result depends only on its own samples and its neighbours' first ones, all placed by their
+//! position: any thread count or crop window gives the same bytes. A pixel whose camera
+//! forms no ray shows the background, as in a picture without adaptive sampling.
 
-use super::sampler::{Stage, Taken};
+use super::sampler::{Shown, Stage, Taken};
 use super::{RayCounts, Renderer, Window};
 use crate::backend::Backend;
 use crate::film::Film;
@@ -18,10 +19,10 @@ use crate::settings::Adaptive;
 use rayon::prelude::*;
 use std::ops::Range;
 
-/// Rows a band holds: their first samples are kept, `(BAND + 2) × (width + 2)` of them at 80
-/// bytes (at most 100 MB for the widest image), and a band's border rows cost 2/32 more first
-/// samples.
-const BAND: u32 = 32;
+/// The bytes of first samples a band keeps: its rows are as many as fit, from 16 (a band's two
+/// border rows then cost an eighth more first samples) to 256. At most 104 MB, for the widest
+/// image's 18 rows of 65,538 pixels at 88 bytes.
+const BAND_BYTES: usize = 64 << 20;
 
 /// A pixel's first samples, `None` where the camera forms no ray there.
 type First = Option<Taken>;
@@ -33,9 +34,10 @@ impl<B: Backend> Renderer<'_, B> {
         let (width, height) = (window.columns.len(), window.rows.len());
         let mut pixels = vec![[0.0; 3]; width * height];
         let columns = window.columns.start.saturating_sub(1)..(window.columns.end + 1).min(camera.width);
+        let band_rows = (BAND_BYTES / (size_of::<First>() * columns.len())).clamp(18, 258) - 2;
         let mut rows = pixels.chunks_mut(width).zip(window.rows.clone()).peekable();
         while rows.peek().is_some() {
-            let band: Vec<(&mut [[f64; 3]], u32)> = rows.by_ref().take(BAND as usize).collect();
+            let band: Vec<(&mut [[f64; 3]], u32)> = rows.by_ref().take(band_rows).collect();
             let (first_row, last_row) = (band[0].1, band[band.len() - 1].1);
             let around = first_row.saturating_sub(1)..(last_row + 2).min(camera.height);
             let firsts = self.firsts(a, columns.clone(), around.clone());
@@ -133,16 +135,16 @@ impl<B: Backend> Renderer<'_, B> {
     /// image), exceeds the threshold, both in POV-Ray's measure ([`Taken::contrast`]).
     fn refines<'f>(&self, a: Adaptive, i: u32, j: u32, at: &impl Fn(u32, u32) -> &'f First) -> bool {
         let camera = &self.scene.camera;
-        let scale = self.scene.settings.exposure.exp2();
+        let shown = Shown::of(&self.scene.settings);
         let Some(own) = at(i, j) else { return false };
-        if own.contrast(scale) > a.threshold {
+        if own.contrast(shown) > a.threshold {
             return true;
         }
         let mean = own.mean();
         let neighbours = [(i.wrapping_sub(1), j), (i + 1, j), (i, j.wrapping_sub(1)), (i, j + 1)];
         neighbours.into_iter().filter(|&(x, y)| x < camera.width && y < camera.height).any(|(x, y)| {
             let other = at(x, y).map_or(self.scene.settings.background, |t| t.mean());
-            Taken::distance(mean, other, scale) > a.threshold
+            Taken::distance(mean, other, shown) > a.threshold
         })
     }
 }

@@ -218,8 +218,9 @@ impl<'a, B: Backend> Renderer<'a, B> {
     }
 
     /// The pixels of `window` only, as an image of its size. Every pixel depends on its
-    /// position alone, so windows of a frame rendered anywhere assemble into the frame,
-    /// byte for byte, and any thread count gives the same bytes.
+    /// position alone (and, under adaptive sampling, its neighbours' first samples, placed by
+    /// theirs), so windows of a frame rendered anywhere assemble into the frame, byte for
+    /// byte, and any thread count gives the same bytes.
     pub fn render_window(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
         let settings = &self.scene.settings;
         if let Some(a) = settings.adaptive.filter(|a| aov == Aov::Shaded && settings.spp > a.min_spp) {

@@ -7,8 +7,9 @@ use super::avx::Ymm;
 use super::{Aov, RayCounts, Renderer};
 use crate::backend::{Backend, Packet, RayLanes, lanes3};
 use crate::camera::Lens;
-use crate::hash::{self, hash};
+use crate::hash::{self, hash, permute};
 use crate::ray::Ray;
+use crate::settings::{Settings, ToneMap};
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
 
@@ -27,9 +28,9 @@ impl<B: Backend> Renderer<'_, B> {
         self.pixels::<Ray<B::Carrier>, 1>(i, j, aov, cast).map_or(self.scene.settings.background, |[c]| c)
     }
 
-    /// `W` neighbouring pixels of a row, `(i₀ + k, j)`, each averaged over the scene's
-    /// `spp` samples, sample `s` of the `W` pixels cast as one set of rays in lanes; `None` where the camera forms no
-    /// ray (nothing is counted then).
+    /// `W` neighbouring pixels of a row, `(i₀ + k, j)`, each averaged over the scene's `spp`
+    /// samples, sample `s` of the `W` pixels cast as one set of rays in lanes; `None` where the
+    /// camera forms no ray (nothing is counted then).
     #[inline(always)]
     pub(crate) fn pixels<R: RayLanes<B, W>, const W: usize>(
         &self,
@@ -274,7 +275,7 @@ fn offsets<const W: usize>(i0: u32, j: u32, s: u32) -> ([f64; W], [f64; W]) {
 }
 
 /// A pixel's samples so far: their sum (in sample order, so the mean has the same bits
-/// however they were traced), their number, and each channel's range as the picture shows it.
+/// however they were traced), their number, and each channel's range (linear).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Taken {
     sum: [f64; 3],
@@ -300,16 +301,17 @@ impl Taken {
     }
 
     /// POV-Ray's colour distance over the samples, `Σ_c (max d_c − min d_c)`, of the values
-    /// shown, `d = clamp(scale · colour, 0, 1)` (a NaN sample counts as the most contrast).
-    pub(crate) fn contrast(&self, scale: f64) -> f64 {
-        let c: f64 = (0..3).map(|k| shown(self.high[k], scale) - shown(self.low[k], scale)).sum();
+    /// shown, `d` ([`Shown`]: increasing, so it keeps the range's ends; a NaN sample counts as
+    /// the most contrast).
+    pub(crate) fn contrast(&self, shown: Shown) -> f64 {
+        let c: f64 = (0..3).map(|k| shown.value(self.high[k]) - shown.value(self.low[k])).sum();
         if c.is_nan() || self.sum.iter().any(|x| x.is_nan()) { f64::INFINITY } else { c }
     }
 
     /// POV-Ray's colour distance between two colours as shown, `Σ_c |d_c(a) − d_c(b)|`
     /// (a NaN counts as the most distance).
-    pub(crate) fn distance(a: [f64; 3], b: [f64; 3], scale: f64) -> f64 {
-        let d: f64 = (0..3).map(|k| (shown(a[k], scale) - shown(b[k], scale)).abs()).sum();
+    pub(crate) fn distance(a: [f64; 3], b: [f64; 3], shown: Shown) -> f64 {
+        let d: f64 = (0..3).map(|k| (shown.value(a[k]) - shown.value(b[k])).abs()).sum();
         if d.is_nan() { f64::INFINITY } else { d }
     }
 
@@ -320,9 +322,22 @@ impl Taken {
     }
 }
 
-/// A linear value as a picture shows it: scaled by its exposure, clipped to [0, 1].
-fn shown(x: f64, scale: f64) -> f64 {
-    (scale * x).clamp(0.0, 1.0)
+/// How a PNG of the picture shows a linear value: times `2^exposure`, tone-mapped, clipped to
+/// [0, 1] (before its encoding), which adaptive sampling measures contrast in.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Shown {
+    scale: f64,
+    tone_map: ToneMap,
+}
+
+impl Shown {
+    pub(crate) fn of(settings: &Settings) -> Self {
+        Shown { scale: settings.exposure.exp2(), tone_map: settings.tone_map }
+    }
+
+    fn value(self, x: f64) -> f64 {
+        self.tone_map.apply(self.scale * x).clamp(0.0, 1.0)
+    }
 }
 
 /// Where sample `s` of pixel `(i, j)` falls, as an offset in `[0, 1)²` from the pixel's
@@ -396,44 +411,6 @@ pub(crate) fn disk((x, y): (f64, f64)) -> (f64, f64) {
         (b, std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a / b))
     };
     (r * theta.cos(), r * theta.sin())
-}
-
-/// Element `i` of a pseudo-random permutation of `0 .. n` chosen by `seed`: Kensler's
-/// hash-based permutation ("Correlated Multi-Jittered Sampling", 2013), cycle-walking to
-/// stay below `n`.
-fn permute(mut i: u32, n: u32, seed: u32) -> u32 {
-    if n <= 1 {
-        return 0;
-    }
-    let mut w = n - 1;
-    w |= w >> 1;
-    w |= w >> 2;
-    w |= w >> 4;
-    w |= w >> 8;
-    w |= w >> 16;
-    loop {
-        i ^= seed;
-        i = i.wrapping_mul(0xe170_893d);
-        i ^= seed >> 16;
-        i ^= (i & w) >> 4;
-        i ^= seed >> 8;
-        i = i.wrapping_mul(0x0929_eb3f);
-        i ^= seed >> 23;
-        i ^= (i & w) >> 1;
-        i = i.wrapping_mul(1 | seed >> 27);
-        i = i.wrapping_mul(0x6935_fa69);
-        i ^= (i & w) >> 11;
-        i = i.wrapping_mul(0x74dc_b303);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0x9e50_1cc3);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0xc860_a3df);
-        i &= w;
-        i ^= i >> 5;
-        if i < n {
-            return (i.wrapping_add(seed)) % n;
-        }
-    }
 }
 
 /// The second dimension of the Sobol' sequence (primitive polynomial `x + 1`): direction

@@ -180,7 +180,15 @@ fn a_shutter_blurs_smoothly_at_four_samples_a_pixel() {
          shutter = [0.0, 1.0]\n[render]\nambient = 1.0\nspp = 4\n\
          [[objects]]\ntype = \"box\"\nmin = [-2.5, -0.5, -5.0]\nmax = [-1.5, 0.5, 5.0]\n{WHITE}\nmotion = [[1, 0, 0, 0, 0, 0, 0, 0], [1, 0, 0, 0, -2, 0, 0, 0]]\n"
     );
-    let (_, film) = shuttered(&text);
+    let (scene, film) = shuttered(&text);
+    // The samples of an instant through packets give the bits of one ray at a time.
+    let mut pipeline = cga_trace::Pipeline::parse(&text, "optics.toml", cga_trace::View::default()).unwrap();
+    for options in [
+        cga_trace::Options { packets: false, ..Default::default() },
+        cga_trace::Options { avx2: false, ..Default::default() },
+    ] {
+        assert!(pipeline.render(&scene, &options, &|| {}).unwrap().film.pixels == film.pixels);
+    }
     let mut worst: f64 = 0.0;
     for i in 0..width {
         let x = -4.0 + (f64::from(i) + 0.5) / 20.0;
