@@ -145,6 +145,11 @@ impl Shape for ConeShape {
         facing(n, ray.dir)
     }
 
+    /// With its caps, the solid between them.
+    fn closed(&self) -> bool {
+        self.caps
+    }
+
     fn bounds(&self) -> Option<(E3, f64)> {
         let r = self.radii[0].max(self.radii[1]);
         Some((self.mid, (self.half * self.half + r * r).sqrt()))

@@ -88,6 +88,15 @@ impl Shape for BoxShape {
         Some((self.centre, dot(self.half, self.half).sqrt()))
     }
 
+    fn closed(&self) -> bool {
+        true
+    }
+
+    /// Between the slabs' last entry and first exit.
+    fn spans(&self, ray: &Ray) -> super::Spans {
+        self.span(ray).filter(|(a, b)| a.0 < b.0).map(|((a, _), (b, _))| (a, b)).into_iter().collect()
+    }
+
     /// The rounding of its faces' offsets from the camera: `64 ε (|c| + |h|)`.
     fn crossing_error(&self) -> f64 {
         rounding(largest(self.centre) + largest(self.half))

@@ -11,6 +11,7 @@
 //! ([`crate::format`]); see ARCHITECTURE.md, "Adding a shape".
 
 mod cone;
+mod csg;
 mod cuboid;
 mod disk;
 mod plane;
@@ -24,6 +25,7 @@ use cga_core::euclid::{E3, dot};
 pub use cone::ConeShape;
 use core::any::Any;
 use core::fmt::Debug;
+pub use csg::{Clipped, Csg, CsgError, CsgPart, MAX_CROSSINGS, Node, Operation, Spans, spans_by_crossings};
 pub use cuboid::BoxShape;
 pub use disk::DiskShape;
 pub use plane::PlaneShape;
@@ -129,6 +131,18 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// ([`crate::texture`]), and what they measure; `None` where the shape has none.
     fn uv(&self, _crossing: &Crossing) -> Option<([f64; 2], Unit)> {
         None
+    }
+
+    /// Whether the shape bounds a solid on its own, which CSG and clipping take: a sphere, a
+    /// box, a capped cylinder or cone, a torus, and a plane (the half-space behind its normal).
+    fn closed(&self) -> bool {
+        false
+    }
+
+    /// Where the ray's whole line lies inside the solid a [closed](Shape::closed) shape
+    /// bounds: by default read off its crossings in turn ([`spans_by_crossings`]).
+    fn spans(&self, ray: &Ray) -> Spans {
+        spans_by_crossings(self, ray)
     }
 
     /// The nearest crossing and its normal.

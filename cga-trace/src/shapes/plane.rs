@@ -56,6 +56,23 @@ impl Shape for PlaneShape {
         flat_normal(ray, self.normal)
     }
 
+    /// The half-space behind its normal, `n · (x − p) ≤ 0` (POV-Ray's inside of a plane).
+    fn closed(&self) -> bool {
+        true
+    }
+
+    /// The line's part behind the plane: all of it, none, or from or up to its crossing.
+    fn spans(&self, ray: &Ray) -> super::Spans {
+        let (side, speed) = (dot(sub(ray.origin, self.anchor), self.normal), dot(ray.dir, self.normal));
+        let cross = -side / speed;
+        let span = match speed {
+            s if s > 0.0 => Some((f64::NEG_INFINITY, cross)),
+            s if s < 0.0 => Some((cross, f64::INFINITY)),
+            _ => (side <= 0.0).then_some((f64::NEG_INFINITY, f64::INFINITY)),
+        };
+        span.into_iter().collect()
+    }
+
     fn bounds(&self) -> Option<(E3, f64)> {
         None
     }

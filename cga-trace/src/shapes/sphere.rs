@@ -111,6 +111,25 @@ impl Shape for SphereShape {
         Some((self.centre, self.radius))
     }
 
+    fn closed(&self) -> bool {
+        true
+    }
+
+    /// `|o + t d − c|² = r²` between its roots (the larger in magnitude directly, the other
+    /// from their product: no cancellation); none where the line only touches or misses.
+    fn spans(&self, ray: &Ray) -> super::Spans {
+        let oc = sub(ray.origin, self.centre);
+        let (b, cc) = (dot(oc, ray.dir), dot(oc, oc) - self.radius * self.radius);
+        let disc = b * b - cc;
+        let mut spans = super::Spans::new();
+        if disc > 0.0 {
+            let far = if b > 0.0 { -b - disc.sqrt() } else { -b + disc.sqrt() };
+            let near = if far != 0.0 { cc / far } else { 0.0 };
+            spans.push((near.min(far), near.max(far)));
+        }
+        spans
+    }
+
     /// `64 ε r (1 + ρ)²`, `ρ = |c|/r`: the meet's points carry the null basis's `ε ρ²` of
     /// the radius (`RoundMeet::new`; measured at 3 ε (1 + ρ)² in `tests/tests/geometry/precision.rs`).
     fn crossing_error(&self) -> f64 {

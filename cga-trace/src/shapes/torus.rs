@@ -190,6 +190,10 @@ impl Shape for TorusShape {
         facing(n, ray.dir)
     }
 
+    fn closed(&self) -> bool {
+        true
+    }
+
     fn bounds(&self) -> Option<(E3, f64)> {
         Some((self.centre, self.extent()))
     }

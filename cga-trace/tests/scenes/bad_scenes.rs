@@ -681,6 +681,52 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             ],
         ),
         (
+            "a CSG part that bounds no solid",
+            with_object(
+                "type = \"csg\"\noperation = \"union\"\nobjects = [{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.0 }, { type = \"disk\", centre = [0.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }]\n",
+            ),
+            vec!["bad.toml:11:", "`thing`", "`objects`: object 2", "bounds a solid"],
+        ),
+        (
+            "a CSG operation misspelt",
+            with_object("type = \"csg\"\noperation = \"minus\"\nobjects = []\n"),
+            vec!["bad.toml:10:", "`operation`", "`union`, `intersection`, `difference`"],
+        ),
+        (
+            "a CSG tree of one object",
+            with_object(
+                "type = \"csg\"\noperation = \"union\"\nobjects = [{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.0 }]\n",
+            ),
+            vec!["bad.toml:11:", "`objects`", "two or more"],
+        ),
+        (
+            "a CSG part with a bad material",
+            with_object(
+                "type = \"csg\"\noperation = \"union\"\nobjects = [{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.0 }, { type = \"sphere\", centre = [1.0, 0.0, 0.0], radius = 1.0, material = \"gold\" }]\n",
+            ),
+            vec!["bad.toml:11:", "object 2", "no material `gold`"],
+        ),
+        (
+            "too many CSG objects",
+            with_object(&format!(
+                "type = \"csg\"\noperation = \"union\"\nobjects = [{}]\n",
+                vec!["{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.0 }"; 65].join(", ")
+            )),
+            vec!["bad.toml:11:", "65 objects in one CSG tree exceed the limit of 64"],
+        ),
+        (
+            "a capped clip of an open object",
+            with_object(
+                "type = \"disk\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.0, 1.0]\nradius = 1.0\nclip = { plane = { point = [0.0, 0.0, 0.0], normal = [1.0, 0.0, 0.0] }, capped = true }\n",
+            ),
+            vec!["bad.toml:13:", "`clip`", "a capped clip needs a closed object"],
+        ),
+        (
+            "a clip without a region",
+            with_object("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\nclip = { capped = true }\n"),
+            vec!["bad.toml:12:", "`clip`", "a clip takes `plane"],
+        ),
+        (
             "a label too long",
             with_object(&format!("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nlabel = \"{}\"\n", "x".repeat(65))),
             vec!["bad.toml:11:", "`label`: 65 characters exceed the limit of 64"],

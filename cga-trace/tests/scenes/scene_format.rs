@@ -379,3 +379,28 @@ fn blades_named_in_either_basis_draw_the_object_they_spell() {
     let circle = "type = \"circle\"\ncentre = [0.0, 0.0, 0.0]\nnormal = [0.0, 0.3, 1.0]\nradius = 3.0\n";
     assert!(differing(&image(circle), &image(&format!("{circle}tube = {:?}\n", 3.0 / 150.0))) <= 9);
 }
+
+/// A `csg` object is one scene object per part, each in its own material (a part without one
+/// takes the tree's), its parts moved by their own motors before the tree's; a glass tree is
+/// one solid (its parts share the medium light enters and leaves).
+#[test]
+fn csg_parts_keep_their_materials_and_glass_is_one_body() {
+    let text = format!(
+        "{CAMERA}[[objects]]\nname = \"cut\"\ntype = \"csg\"\noperation = \"difference\"\nmaterial = {{ colour = [1.0, 0.0, 0.0] }}\n\
+         objects = [{{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.0 }}, \
+         {{ type = \"box\", min = [0.0, -2.0, 0.0], max = [2.0, 2.0, 2.0], material = {{ colour = [0.0, 0.0, 1.0] }} }}]\n\
+         [[objects]]\nname = \"lens\"\ntype = \"csg\"\noperation = \"intersection\"\nmaterial = {{ colour = [1.0, 1.0, 1.0], ior = 1.5 }}\n\
+         objects = [{{ type = \"sphere\", centre = [3.0, 0.0, 0.0], radius = 1.0 }}, {{ type = \"sphere\", centre = [3.5, 0.0, 0.0], radius = 1.0 }}]\n"
+    );
+    let scene = Scene::parse(&text, "csg.toml").unwrap();
+    let colours: Vec<[f64; 3]> =
+        scene.objects.iter().filter(|o| &*o.name == "cut").map(|o| o.material.colour).collect();
+    assert_eq!(colours, [[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
+    let lens: Vec<_> = scene.objects.iter().filter(|o| &*o.name == "lens").collect();
+    assert_eq!(lens.len(), 2);
+    assert!(
+        lens[0].solid.is_some() && lens[0].solid == lens[1].solid,
+        "{:?}",
+        lens.iter().map(|o| o.solid).collect::<Vec<_>>()
+    );
+}

@@ -419,3 +419,25 @@ fn povray(pov: &str) -> Vec<[f64; 3]> {
     assert!(ppm.starts_with(b"P6") && ppm.len() > 3 * W * H);
     ppm[ppm.len() - 3 * W * H..].chunks(3).map(|p| [0, 1, 2].map(|k| p[k] as f64 / 255.0)).collect()
 }
+
+/// CSG and clips against POV-Ray's `difference`, `intersection`, `union` and `clipped_by`:
+/// a sphere bored through along the view (the hole shows the background), a lens of two
+/// spheres, a box and a sphere joined, a sphere cut open by a plane (seen into the bowl), and
+/// a torus cut by a plane and capped.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test shapes silhouettes:: -- --ignored --nocapture"]
+fn csg() {
+    let toml = tables(&[
+        "type = \"csg\"\noperation = \"difference\"\nobjects = [{ type = \"sphere\", centre = [-3.0, 0.0, 0.0], radius = 2.2 }, { type = \"cylinder\", p1 = [-3.0, -7.0, 2.5], p2 = [-3.0, 7.0, -2.5], radius = 0.8 }]",
+        "type = \"csg\"\noperation = \"intersection\"\nobjects = [{ type = \"sphere\", centre = [2.5, 0.0, 1.5], radius = 1.6 }, { type = \"sphere\", centre = [3.5, 0.0, 1.5], radius = 1.6 }]",
+        "type = \"csg\"\noperation = \"union\"\nobjects = [{ type = \"box\", min = [1.5, -1.0, -3.0], max = [4.0, 1.0, -1.5] }, { type = \"sphere\", centre = [4.0, 0.0, -1.5], radius = 1.0 }]",
+        "type = \"sphere\"\ncentre = [0.0, 2.0, -2.0]\nradius = 1.5\nclip = { plane = { point = [0.0, 2.0, -2.0], normal = [0.0, 0.0, 1.0] } }",
+        "type = \"torus\"\ncentre = [0.0, 0.0, 3.0]\nnormal = [0.0, 0.0, 1.0]\nradius = 1.6\ntube = 0.5\nclip = { plane = { point = [0.3, 0.0, 3.0], normal = [1.0, 0.0, 0.0] }, capped = true }",
+    ]);
+    let pov = "difference { sphere { <-3,0,0>, 2.2 } cylinder { <-3,-7,2.5>, <-3,7,-2.5>, 0.8 } }\n\
+               intersection { sphere { <2.5,0,1.5>, 1.6 } sphere { <3.5,0,1.5>, 1.6 } }\n\
+               union { box { <1.5,-1,-3>, <4,1,-1.5> } sphere { <4,0,-1.5>, 1 } }\n\
+               sphere { <0,2,-2>, 1.5 clipped_by { plane { z, -2 } } }\n\
+               intersection { torus { 1.6, 0.5 Reorient_Trans(y, z) translate <0,0,3> } plane { x, 0.3 } }\n";
+    check("csg", &toml, pov);
+}

@@ -47,6 +47,10 @@ pub enum Role {
     Motor,
     /// Keyframe motors, each conjugated.
     Motion,
+    /// Object tables (a CSG tree's), each moved as an object.
+    Objects,
+    /// A clip's region (`plane`, `sphere`, `box` tables): its points and lengths moved.
+    Clip,
     /// A list of transform steps (rotations about points, translations, motors).
     Transform,
     /// Unchanged by moving the scene: a flag, a count, a name, a file, a material.
@@ -69,6 +73,13 @@ pub(crate) struct At<'a> {
     pub frame: &'a Frame,
     pub marks: &'a Marks,
     pub assets: &'a Assets,
+}
+
+impl<'a> At<'a> {
+    /// Where objects are built in `frame`, placed by no motor.
+    pub fn new(method: Method, frame: &'a Frame, marks: &'a Marks, assets: &'a Assets) -> Self {
+        At { place: Placement::new(None, frame), method, frame, marks, assets }
+    }
 }
 
 /// The fields an object kind's table gave, with their spans (written by [`spec!`]).
@@ -106,6 +117,11 @@ pub(crate) trait Geometry: Fields + Send + Sync {
     /// Whether it draws a CGA object (its marks are sized by the scene).
     fn draws(&self) -> bool {
         false
+    }
+
+    /// A CSG tree's operation (or why it has none), where it is one.
+    fn operation(&self) -> Option<Result<crate::shapes::Operation, Invalid>> {
+        None
     }
 }
 

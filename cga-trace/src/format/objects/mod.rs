@@ -10,7 +10,9 @@
 mod blade;
 mod circle;
 mod circles;
+mod clip;
 mod cone;
+mod csg;
 mod cuboid;
 mod cylinder;
 mod disk;
@@ -39,9 +41,11 @@ use crate::drawing::Marks;
 use crate::frame::Frame;
 use crate::invalid::Invalid;
 use crate::label::{Label, MAX_LABEL_CHARS};
+use crate::material::Material;
 use crate::object::Object;
-use crate::shapes::Shape;
+use crate::shapes::{Clipped, Csg, CsgPart, Node, Operation, Shape};
 use crate::surface::Method;
+use crate::texture::Texture;
 use cga_core::euclid::{E3, norm, sub};
 use cga_core::{GeometryError, Motor};
 use kind::{At, Geometry, Kind};
@@ -63,6 +67,7 @@ pub const COMMON: &[Field] = &[
     Field { name: "transform", role: Role::Transform },
     Field { name: "motion", role: Role::Motion },
     Field { name: "template", role: Role::Other },
+    Field { name: "clip", role: Role::Clip },
 ];
 
 /// The fields an object of type `kind` takes ([`COMMON`] and its own), with their roles;
@@ -96,6 +101,8 @@ pub(crate) struct Common {
     motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
     /// Drawn only as instances (`instance.rs`).
     pub(crate) template: Option<Spanned<bool>>,
+    /// The region it is cut to.
+    clip: Option<Spanned<clip::ClipSpec>>,
 }
 
 /// An object's `type`, looked up in the registry.
@@ -132,18 +139,30 @@ pub(crate) struct ObjectSpec {
     pub(crate) time: f64,
     /// An instance's motor, applied after the object's own (not in the file).
     pub(crate) outer: Option<Motor>,
+    /// A CSG tree's objects, read.
+    parts: Vec<ObjectSpec>,
+    /// A CSG part that gave no `material`: it takes the tree's.
+    inherits: bool,
 }
 
 impl ObjectSpec {
     /// An object's table read whole: a field no kind takes is an error here, one another
     /// kind takes when it is built ([`build_object`]), after its material.
     pub(crate) fn read(value: Spanned<DeValue<'_>>) -> Result<ObjectSpec, toml::de::Error> {
-        Self::split(value, true)
+        Self::split(value, true, None)
     }
 
-    /// The table's common fields and its kind's own; with `whole`, the others checked.
-    fn split(value: Spanned<DeValue<'_>>, whole: bool) -> Result<ObjectSpec, toml::de::Error> {
+    /// The table's common fields and its kind's own; with `whole`, the others checked. A CSG
+    /// part (`part`: its depth and the parts counted so far in its tree) may leave out its
+    /// `material`.
+    fn split(
+        value: Spanned<DeValue<'_>>,
+        whole: bool,
+        part: Option<(usize, &mut usize)>,
+    ) -> Result<ObjectSpec, toml::de::Error> {
         let span = value.span();
+        let inherits = part.is_some() && matches!(value.get_ref(), DeValue::Table(t) if !t.contains_key("material"));
+        let value = if inherits { with_placeholder_material(value) } else { value };
         let DeValue::Table(table) = value.get_ref() else {
             // Not a table: serde says what it is instead, at it.
             let refused = HashMap::<String, IgnoredAny>::deserialize(value.into_deserializer()).err();
@@ -170,8 +189,40 @@ impl ObjectSpec {
         }
         let common = Common::deserialize(Spanned::new(span.clone(), DeValue::Table(common)).into_deserializer())?;
         let kind = common.kind.0;
+        let parts = match (kind.name, own.get("objects")) {
+            ("csg", Some(objects)) => Self::parts(objects, whole, part)?,
+            _ => Vec::new(),
+        };
         let geometry = (kind.read)(Spanned::new(span, DeValue::Table(own)))?;
-        Ok(ObjectSpec { common, kind, geometry, stray, time: 0.0, outer: None })
+        Ok(ObjectSpec { common, kind, geometry, stray, time: 0.0, outer: None, parts, inherits })
+    }
+
+    /// A CSG tree's `objects`, each read as an object table, within [`csg::MAX_PARTS`] and
+    /// [`csg::MAX_DEPTH`].
+    fn parts(
+        objects: &Spanned<DeValue<'_>>,
+        whole: bool,
+        part: Option<(usize, &mut usize)>,
+    ) -> Result<Vec<ObjectSpec>, toml::de::Error> {
+        let limit = |what: &str, found: usize, limit: usize| {
+            refused(objects.span(), format!("{found} {what} exceed the limit of {limit}"))
+        };
+        let mut own_count = 0;
+        let (depth, count) = match part {
+            Some((depth, count)) => (depth + 1, count),
+            None => (1, &mut own_count),
+        };
+        if depth > csg::MAX_DEPTH {
+            return Err(limit("levels of CSG", depth, csg::MAX_DEPTH));
+        }
+        let DeValue::Array(items) = objects.get_ref() else {
+            return Err(refused(objects.span(), "`objects` is a list of object tables".into()));
+        };
+        *count += items.len();
+        if *count > csg::MAX_PARTS {
+            return Err(limit("objects in one CSG tree", *count, csg::MAX_PARTS));
+        }
+        items.iter().map(|item| Self::split(item.clone(), whole, Some((depth, &mut *count)))).collect()
     }
 
     /// Where the object is and how large, in world coordinates, for sizing the scene's frame,
@@ -186,28 +237,45 @@ impl ObjectSpec {
         if !matches!(value.get_ref(), DeValue::Table(_)) {
             return Ok((None, 0));
         }
-        let mut spec = Self::split(value.clone(), false)?;
+        let mut spec = Self::split(value.clone(), false, None)?;
         (spec.time, spec.outer) = (time, outer);
         Ok((spec.extent(assets), spec.geometry.triangles(assets).unwrap_or(0)))
     }
 
     /// A point of the object (moved by its motor) and its extent, if the file says.
     fn extent(&self, assets: &Assets) -> Option<(E3, f64)> {
+        self.extent_at(assets, self.time, self.outer)
+    }
+
+    /// [`ObjectSpec::extent`] at frame time `time` after the motor `outer`; a CSG tree's
+    /// holds its parts'.
+    fn extent_at(&self, assets: &Assets, time: f64, outer: Option<Motor>) -> Option<(E3, f64)> {
+        let motor = self.placed_motor(time, outer).ok().flatten();
+        if self.geometry.operation().is_some() {
+            let extents: Vec<(E3, f64)> = self.parts.iter().filter_map(|p| p.extent_at(assets, time, motor)).collect();
+            let (first, _) = *extents.first()?;
+            return Some((first, extents.iter().map(|(p, r)| norm(sub(*p, first)) + r).fold(0.0, f64::max)));
+        }
         let (point, extent) = self.geometry.extent(assets)?;
-        let motor = self.world_motor().ok().flatten();
         Some((motor.map_or(point, |m| m.move_point(point)), extent))
     }
 
     /// The object's world motor at its frame time: its `motor` or `transform`, then its
     /// `motion` at that time, then an instance's motor.
     fn world_motor(&self) -> Result<Option<Motor>, Invalid> {
+        self.placed_motor(self.time, self.outer)
+    }
+
+    /// [`ObjectSpec::world_motor`] at frame time `time`, after the motor `outer` (an
+    /// instance's, or the CSG tree's a part is in).
+    fn placed_motor(&self, time: f64, outer: Option<Motor>) -> Result<Option<Motor>, Invalid> {
         let c = &self.common;
         let own = world_motor(c.motor.as_ref(), c.transform.as_ref())?;
         let moved = match &c.motion {
-            Some(keys) => Some(motion_at(keys, self.time)? * own.unwrap_or(Motor::identity())),
+            Some(keys) => Some(motion_at(keys, time)? * own.unwrap_or(Motor::identity())),
             None => own,
         };
-        Ok(match (self.outer, moved) {
+        Ok(match (outer, moved) {
             (Some(outer), Some(m)) => Some(outer * m),
             (outer, m) => outer.or(m),
         })
@@ -223,15 +291,131 @@ impl ObjectSpec {
         self.common.name.clone().unwrap_or_else(|| format!("object {}", index + 1))
     }
 
-    /// The shapes, in `frame`: a field its kind does not take refused with what it takes,
-    /// then built, a geometry error placed at the field it is about ([`ObjectSpec::locate`]).
-    fn shapes(&self, method: Method, frame: &Frame, marks: &Marks, assets: &Assets) -> Result<Parts, Invalid> {
+    /// The shapes under the world motor `motor` (`at`'s placement unused): a field its kind
+    /// does not take refused with what it takes, then built, a geometry error placed at the
+    /// field it is about ([`ObjectSpec::locate`]).
+    fn shapes_at(&self, motor: Option<Motor>, at: &At) -> Result<Parts, Invalid> {
         if let Some((field, span)) = &self.stray {
             return Err(Invalid::at(field, span.clone(), Invalid::Form(self.kind.takes)));
         }
-        let place = Placement::new(self.world_motor()?, frame);
-        let at = At { place, method, frame, marks, assets };
+        let at = At { place: Placement::new(motor, at.frame), ..*at };
         self.geometry.build(&at).map_err(|e| self.locate(e))
+    }
+
+    /// A CSG tree's leaves (shape and look, appended to `leaves` in order) and its nodes,
+    /// built under the world motor `motor` at frame time `time`; a part's error placed at its
+    /// tree's `objects` as `object N`.
+    fn tree(
+        &self,
+        (motor, time): (Option<Motor>, f64),
+        look: &Look,
+        at: &At,
+        leaves: &mut Vec<(Arc<dyn Shape>, Look)>,
+    ) -> Result<Node, Invalid> {
+        let operation = self.geometry.operation().ok_or(Invalid::Form(self.kind.takes))??;
+        let at_objects = |e: Invalid| match self.geometry.span("objects") {
+            Some(span) => Invalid::at("objects", span, e),
+            None => e,
+        };
+        if self.parts.len() < 2 {
+            return Err(at_objects(Invalid::Form(csg::TAKES)));
+        }
+        let mut children = Vec::with_capacity(self.parts.len());
+        for (k, part) in self.parts.iter().enumerate() {
+            let indexed = |e| at_objects(Invalid::Indexed { what: "object", index: k + 1, reason: Box::new(e) });
+            let child = (|| {
+                if part.common.label.is_some() || part.common.clip.is_some() {
+                    return Err(Invalid::Form("a CSG part takes no `label` or `clip`: give them to the whole tree"));
+                }
+                let own = if part.inherits { look.clone() } else { at.assets.resolve(&part.common.material)? };
+                let placed = part.placed_motor(time, motor)?;
+                if part.geometry.operation().is_some() {
+                    return part.tree((placed, time), &own, at, leaves);
+                }
+                let (shapes, _) = part.shapes_at(placed, at)?;
+                let [shape] = <[Arc<dyn Shape>; 1]>::try_from(shapes)
+                    .map_err(|_| Invalid::Form("a CSG part is one closed shape (not a mesh or a drawing)"))?;
+                if !shape.closed() {
+                    return Err(Invalid::Form(csg::OPEN));
+                }
+                leaves.push((shape, own));
+                Ok(Node::Leaf(leaves.len() - 1))
+            })();
+            children.push(child.map_err(indexed)?);
+        }
+        Ok(Node::Op(operation, children))
+    }
+
+    /// The object's parts, each with its look (`look`, but for a CSG part's own), cut by its
+    /// `clip`, and where a drawing's label goes.
+    fn looks(&self, look: &Look, at: &At) -> Result<Looks, Invalid> {
+        let motor = self.world_motor()?;
+        let (mut parts, anchor, tree) = if self.geometry.operation().is_some() {
+            let mut leaves = Vec::new();
+            let root = self.tree((motor, self.time), look, at, &mut leaves)?;
+            (leaves, None, Some(root))
+        } else {
+            let (shapes, anchor) = self.shapes_at(motor, at)?;
+            (shapes.into_iter().map(|s| (s, look.clone())).collect(), anchor, None)
+        };
+        let clip = match &self.common.clip {
+            Some(clip) => {
+                let region = clip
+                    .get_ref()
+                    .region(&Placement::new(motor, at.frame))
+                    .map_err(|e| Invalid::at("clip", clip.span(), e))?;
+                Some((region, clip.get_ref().capped(), clip.span()))
+            }
+            None => None,
+        };
+        let csg_error = |span: Option<Range<usize>>, field: &'static str| {
+            move |e: crate::shapes::CsgError| {
+                let e = Invalid::Range(e.to_string());
+                match span.clone() {
+                    Some(span) => Invalid::at(field, span, e),
+                    None => e,
+                }
+            }
+        };
+        let tree = match (tree, clip) {
+            (tree, Some((region, false, span))) => {
+                let clipped = |(shape, look): (Arc<dyn Shape>, Look)| {
+                    Clipped::new(shape, region.clone()).map(|c| (Arc::new(c) as Arc<dyn Shape>, look))
+                };
+                if let Some(root) = tree {
+                    let shapes = parts.iter().map(|(s, _)| s.clone()).collect();
+                    let looks: Vec<Look> = parts.iter().map(|(_, l)| l.clone()).collect();
+                    let csg = Csg::new(shapes, root).map_err(csg_error(self.geometry.span("objects"), "objects"))?;
+                    parts = CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect();
+                }
+                parts =
+                    parts.into_iter().map(clipped).collect::<Result<_, _>>().map_err(csg_error(Some(span), "clip"))?;
+                None
+            }
+            (tree, Some((region, true, span))) => {
+                let root = match tree {
+                    Some(root) => root,
+                    None if parts.len() == 1 && parts[0].0.closed() => Node::Leaf(0),
+                    None => return Err(Invalid::at("clip", span, Invalid::Form(clip::CAPPED_OPEN))),
+                };
+                let first = parts.len();
+                parts.extend(region.into_iter().map(|r| (r, look.clone())));
+                let cut = (first..parts.len()).map(Node::Leaf);
+                Some((
+                    Node::Op(Operation::Intersection, std::iter::once(root).chain(cut).collect()),
+                    Some(span),
+                    "clip",
+                ))
+            }
+            (Some(root), None) => Some((root, self.geometry.span("objects"), "objects")),
+            (None, None) => None,
+        };
+        if let Some((root, span, field)) = tree {
+            let looks: Vec<Look> = parts.iter().map(|(_, l)| l.clone()).collect();
+            let csg = Csg::new(parts.into_iter().map(|(s, _)| s).collect(), root).map_err(csg_error(span, field))?;
+            parts = CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect();
+        }
+        Ok((parts, anchor))
     }
 
     /// A geometry error about one field, placed at that field when the object gives it: a
@@ -302,6 +486,22 @@ use super::marks::Parts;
 /// An object's parts and its label.
 pub(crate) type Built = (Vec<Object>, Option<Label>);
 
+/// A part's material and texture.
+type Look = (Material, Option<Arc<Texture>>);
+
+/// An object's parts with their looks, and where a drawing's label goes.
+type Looks = (Vec<(Arc<dyn Shape>, Look)>, Option<(E3, f64)>);
+
+/// A placeholder `material` for a CSG part that gives none (it takes its tree's, and the
+/// placeholder is never resolved).
+fn with_placeholder_material(value: Spanned<DeValue<'_>>) -> Spanned<DeValue<'_>> {
+    let span = value.span();
+    let DeValue::Table(mut table) = value.into_inner() else { unreachable!("checked to be a table") };
+    let key = Spanned::new(span.clone(), std::borrow::Cow::Borrowed("material"));
+    table.insert(key, Spanned::new(span.clone(), DeValue::String(std::borrow::Cow::Borrowed(""))));
+    Spanned::new(span, DeValue::Table(table))
+}
+
 /// The object, built in `frame` (a drawing's parts as objects of one name), its label if it
 /// has one, and its name (for errors, control characters escaped).
 pub(crate) fn build_object(
@@ -314,18 +514,48 @@ pub(crate) fn build_object(
 ) -> (Result<Built, Invalid>, String) {
     let name = spec.name_or(index);
     let shown = name.escape_debug().to_string();
-    let built = assets.resolve(&spec.common.material).and_then(|(material, texture)| {
-        let (shapes, anchor) = spec.shapes(method, frame, marks, assets)?;
-        let label = spec.label(&shapes, anchor, material.colour)?;
-        // A closed glass mesh is one solid: light enters at one triangle and leaves at another.
-        let solid = (material.dielectric() && spec.geometry.closed(assets)?).then_some(index);
+    let built = assets.resolve(&spec.common.material).and_then(|look| {
+        let at = At::new(method, frame, marks, assets);
+        let (parts, anchor) = spec.looks(&look, &at)?;
+        let shapes: Vec<Arc<dyn Shape>> = parts.iter().map(|(s, _)| s.clone()).collect();
+        let label = spec.label(&shapes, anchor, look.0.colour)?;
+        // A closed glass mesh, or a CSG body, is one solid: light enters at one part and
+        // leaves at another.
+        let closed = spec.geometry.operation().is_some() || spec.geometry.closed(assets)?;
         let name: Arc<str> = name.as_str().into();
-        let object =
-            |shape| Object { name: name.clone(), shape, material, texture: texture.clone(), solid, moving: false };
-        let objects = shapes.into_iter().map(object).collect();
-        Ok((objects, label))
+        let object = |(shape, (material, texture)): (Arc<dyn Shape>, Look)| {
+            let solid = (material.dielectric() && closed).then_some(index);
+            Object { name: name.clone(), shape, material, texture, solid, moving: false }
+        };
+        Ok((parts.into_iter().map(object).collect(), label))
     });
     (built, shown)
+}
+
+/// An error saying `why`, at `span`.
+fn refused(span: Range<usize>, why: String) -> toml::de::Error {
+    /// Refuses whatever it reads, saying why: the error then carries the value's span.
+    struct Refuse(String);
+    impl<'de> serde::de::DeserializeSeed<'de> for Refuse {
+        type Value = ();
+        fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+            /// The visitor that refuses.
+            struct Never(String);
+            impl Visitor<'_> for Never {
+                type Value = ();
+                fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                    f.write_str(&self.0)
+                }
+                fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<(), E> {
+                    Err(E::custom(self.0))
+                }
+            }
+            d.deserialize_bool(Never(self.0))
+        }
+    }
+    let value = Spanned::new(span, DeValue::Boolean(true));
+    let seed = serde::de::DeserializeSeed::deserialize(Refuse(why.clone()), value.into_deserializer());
+    seed.err().unwrap_or_else(|| toml::de::Error::custom(why))
 }
 
 /// The error for a field no object kind takes, at its key, listing those the format knows.
@@ -381,7 +611,7 @@ mod tests {
     /// Every common field is one [`super::Common`] reads, and no kind declares one again.
     #[test]
     fn the_common_fields_are_read_and_no_kind_repeats_them() {
-        let text = "type = \"sphere\"\nname = \"n\"\nlabel = \"l\"\nmaterial = \"m\"\nmotor = [1, 0, 0, 0, 0, 0, 0, 0]\ntransform = []\nmotion = []\ntemplate = false\n";
+        let text = "type = \"sphere\"\nname = \"n\"\nlabel = \"l\"\nmaterial = \"m\"\nmotor = [1, 0, 0, 0, 0, 0, 0, 0]\ntransform = []\nmotion = []\ntemplate = false\nclip = { sphere = { centre = [0, 0, 0], radius = 1 } }\n";
         let table: toml::de::DeTable = toml::de::DeTable::parse(text).expect("TOML").into_inner();
         assert_eq!(table.len(), super::COMMON.len());
         for field in super::COMMON {

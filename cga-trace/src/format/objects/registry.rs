@@ -24,6 +24,7 @@ pub(crate) const KINDS: &[&Kind] = &[
     &super::circle::KIND,
     &super::plane_patch::KIND,
     &super::blade::KIND,
+    &super::csg::KIND,
 ];
 
 /// An instance's `type`: it copies an earlier object (`format/instance.rs`), so it has no
