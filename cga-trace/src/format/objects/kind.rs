@@ -45,7 +45,8 @@ pub enum Role {
     Scale,
     /// A motor (eight coefficients): conjugated, `S M S⁻¹`.
     Motor,
-    /// Keyframe motors, each conjugated.
+    /// Keyframes (motors as coefficients here; poses and steps are the scene format's too),
+    /// each conjugated.
     Motion,
     /// A list of transform steps (rotations about points, translations, motors).
     Transform,
