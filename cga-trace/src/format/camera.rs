@@ -2,8 +2,9 @@
 //! shutter.
 
 use super::given::first_given;
+use super::motion::{CameraMotion, motion_at};
 use super::numbers::{Num, Nums, V3};
-use super::transform::{motion_at, rigid};
+use super::transform::rigid;
 use crate::camera::{Camera, CameraError, Lens};
 use crate::invalid::Invalid;
 use crate::limits::{MAX_SIDE, MAX_TIME_SAMPLES};
@@ -30,8 +31,9 @@ pub(crate) struct CameraSpec {
     y_max: Option<Spanned<Num>>,
     /// Horizontal field of view in degrees, instead of `x_max`: `x_max = 2 f tan(fov/2)`.
     fov: Option<Spanned<Num>>,
-    /// Keyframe motors over the frame times 0 … 1, moving the pose (camera frame → world).
-    motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
+    /// Keyframes over the frame times 0 … 1, moving the pose (camera frame → world): motors,
+    /// or the camera's poses at those times.
+    motion: Option<Spanned<CameraMotion>>,
     /// Pixels; may be left out when the caller gives the size (`--width` and `--height`).
     width: Option<Spanned<u32>>,
     height: Option<Spanned<u32>>,
@@ -99,7 +101,7 @@ impl CameraSpec {
         };
         let (pose, position) = match &self.motion {
             Some(keys) => {
-                let m = motion_at(keys, time)?;
+                let m = motion_at(keys, time, Some(&pose))?;
                 (m * pose, m.move_point(position))
             }
             None => (pose, position),

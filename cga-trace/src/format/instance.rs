@@ -6,9 +6,10 @@
 //! `template = true` is only instanced, never drawn itself.
 
 use super::MaterialRef;
+use super::motion::{ObjectMotion, motion_at};
 use super::numbers::Nums;
 use super::objects::ObjectSpec;
-use super::transform::{Step, motion_at, world_motor};
+use super::transform::{Step, world_motor};
 use crate::invalid::Invalid;
 use cga_core::Motor;
 use serde::Deserialize;
@@ -28,7 +29,7 @@ pub(crate) struct InstanceSpec {
     pub(crate) material: Option<Spanned<MaterialRef>>,
     motor: Option<Spanned<Nums<8>>>,
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
-    motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
+    motion: Option<Spanned<ObjectMotion>>,
 }
 
 impl InstanceSpec {
@@ -36,7 +37,7 @@ impl InstanceSpec {
     pub(crate) fn motor(&self, time: f64) -> Result<Option<Motor>, Invalid> {
         let own = world_motor(self.motor.as_ref(), self.transform.as_ref())?;
         Ok(match &self.motion {
-            Some(keys) => Some(motion_at(keys, time)? * own.unwrap_or(Motor::identity())),
+            Some(keys) => Some(motion_at(keys, time, None)? * own.unwrap_or(Motor::identity())),
             None => own,
         })
     }

@@ -4,8 +4,8 @@
 //! Unknown fields are errors; every number is checked where it is read (`numbers.rs`), so
 //! that its error points at it. Each table has its file: `camera.rs`, `light.rs`,
 //! `environment.rs`, `specs.rs` (`[render]`, materials) and `objects/`, one file per object
-//! kind. `load.rs` reads a file with its includes, images and meshes and places it at any
-//! time of its motion.
+//! kind; `transform.rs` reads motors and steps, `motion.rs` keyframes. `load.rs` reads a file
+//! with its includes, images and meshes and places it at any time of its motion.
 
 mod assets;
 mod blade;
@@ -18,6 +18,7 @@ mod instance;
 mod light;
 mod load;
 mod marks;
+mod motion;
 mod numbers;
 pub mod objects;
 mod sections;
@@ -27,9 +28,9 @@ mod transform;
 pub(crate) use assets::Assets;
 pub use error::SceneError;
 pub use load::Source;
+pub use motion::MAX_KEYS;
 pub use objects::{COMMON, Field, Role, fields, kinds};
 pub(crate) use specs::{MaterialRef, MaterialSpec, SettingsSpec};
-pub use transform::MAX_KEYS;
 
 // What a scene built in code (`Figure`) shares with a file's: the camera, a drawing's
 // shapes and label, placed in the frame.

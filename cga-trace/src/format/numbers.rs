@@ -44,27 +44,39 @@ pub(crate) fn numbers<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result
         fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
             write!(f, "an array of {N} numbers")
         }
-        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<[f64; N], A::Error> {
-            let mut out = [0.0; N];
-            for (k, slot) in out.iter_mut().enumerate() {
-                let x: f64 =
-                    seq.next_element()?.ok_or_else(|| A::Error::custom(format!("expected {N} numbers, found {k}")))?;
-                if let Some(why) = refuse(x) {
-                    return Err(A::Error::custom(format!("element {}: {why}", k + 1)));
-                }
-                *slot = x;
-            }
-            let mut extra = 0;
-            while seq.next_element::<IgnoredAny>()?.is_some() {
-                extra += 1;
-            }
-            if extra > 0 {
-                return Err(A::Error::custom(format!("expected {N} numbers, found {}", N + extra)));
-            }
-            Ok(out)
+        fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<[f64; N], A::Error> {
+            exactly::<A, f64, N>(seq)
         }
     }
     d.deserialize_seq(Exactly::<N>)
+}
+
+/// Exactly `N` numbers from an array being read, each read as a `T` (whose type error says
+/// what an element must be) and checked ([`refuse`]).
+pub(crate) fn exactly<'de, A, T, const N: usize>(mut seq: A) -> Result<[f64; N], A::Error>
+where
+    A: SeqAccess<'de>,
+    T: Deserialize<'de> + Into<f64>,
+{
+    let mut out = [0.0; N];
+    for (k, slot) in out.iter_mut().enumerate() {
+        let x: f64 = seq
+            .next_element::<T>()?
+            .ok_or_else(|| A::Error::custom(format!("expected {N} numbers, found {k}")))?
+            .into();
+        if let Some(why) = refuse(x) {
+            return Err(A::Error::custom(format!("element {}: {why}", k + 1)));
+        }
+        *slot = x;
+    }
+    let mut extra = 0;
+    while seq.next_element::<IgnoredAny>()?.is_some() {
+        extra += 1;
+    }
+    if extra > 0 {
+        return Err(A::Error::custom(format!("expected {N} numbers, found {}", N + extra)));
+    }
+    Ok(out)
 }
 
 /// A checked number, for the file's own types.

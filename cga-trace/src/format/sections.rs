@@ -53,11 +53,16 @@ struct Header {
 
 /// The sections of `text` ([`Sections`]); `Err` for a table under `objects` written away
 /// from its object (after another table, or before any `[[objects]]`) (TOML allows it; this reader keeps each object's
-/// tables together).
+/// tables together), and for an `include` after the first table header (TOML reads it as
+/// a field of that table).
 pub(crate) fn split(text: &str) -> Result<Sections, Misplaced> {
     let mut objects: Vec<Range<usize>> = Vec::new();
     let mut open: Option<usize> = None;
-    let (headers, unclosed) = headers(text);
+    let Scan { headers, unclosed, include } = scan(text);
+    if let Some(at) = include {
+        let message = "`include` comes before the first table (`[camera]`, `[render]`, `[[lights]]`, `[[objects]]`, `[materials.NAME]`, …): after a table's header it is read as a field of that table; move it to the top of the file".into();
+        return Err(Misplaced { at, message });
+    }
     let root_end = headers.first().map_or(text.len(), |h| h.start);
     for header in headers {
         // (A lone `[objects]` before any object is left for the reader's own message.)
@@ -101,12 +106,24 @@ pub(crate) fn significant_tokens(text: &str) -> usize {
     Source::new(text).lex().filter(|t| !trivia(t.kind())).count()
 }
 
+/// What [`scan`] finds in a file.
+struct Scan {
+    /// The top-level table headers, in order.
+    headers: Vec<Header>,
+    /// Where the outermost bracket or brace left open at the end opened, if one was.
+    unclosed: Option<usize>,
+    /// Where the first key `include` after a table header starts, if one does.
+    include: Option<usize>,
+}
+
 /// The top-level table headers of `text`, in order: a `[` at the start of a line outside
-/// any value (brackets and braces of values counted, strings and comments whole tokens); and
-/// where the outermost bracket left open at the end opened.
-fn headers(text: &str) -> (Vec<Header>, Option<usize>) {
+/// any value (brackets and braces of values counted, strings and comments whole tokens);
+/// where the outermost bracket left open at the end opened; and the first `include = …`
+/// after a header.
+fn scan(text: &str) -> Scan {
     let source = Source::new(text);
-    let mut out = Vec::new();
+    let mut out: Vec<Header> = Vec::new();
+    let mut include = None;
     let (mut depth, mut line_start, mut opened) = (0usize, true, 0usize);
     let mut tokens = source.lex().peekable();
     while let Some(token) = tokens.next() {
@@ -138,6 +155,18 @@ fn headers(text: &str) -> (Vec<Header>, Option<usize>) {
                 out.push(Header { start, array, objects, only });
                 line_start = false;
             }
+            TokenKind::Atom | TokenKind::BasicString | TokenKind::LiteralString
+                if depth == 0 && line_start && !out.is_empty() && include.is_none() =>
+            {
+                let (start, end) = (token.span().start(), token.span().end());
+                let key = text.get(start..end).unwrap_or("").trim_matches(['"', '\'']);
+                let assigned =
+                    text.get(end..).is_some_and(|after| after.trim_start_matches([' ', '\t']).starts_with('='));
+                if key == "include" && assigned {
+                    include = Some(start);
+                }
+                line_start = false;
+            }
             TokenKind::LeftSquareBracket | TokenKind::LeftCurlyBracket => {
                 if depth == 0 {
                     opened = token.span().start();
@@ -152,7 +181,7 @@ fn headers(text: &str) -> (Vec<Header>, Option<usize>) {
             _ => line_start = false,
         }
     }
-    (out, (depth > 0).then_some(opened))
+    Scan { headers: out, unclosed: (depth > 0).then_some(opened), include }
 }
 
 #[cfg(test)]
@@ -186,5 +215,24 @@ mod tests {
         assert_eq!(split(first).err().map(|m| m.at), Some(0));
         let open = "[camera]\nx = [1,\n[[objects]]\n";
         assert_eq!(split(open).ok().unwrap().unclosed, open.find("[1"));
+    }
+
+    #[test]
+    fn an_include_after_a_table_is_refused_where_it_is() {
+        for late in ["[camera]\nwidth = 8\n  include = [\"a.toml\"]\n", "[[objects]]\n\"include\" = []\n"] {
+            let at = late.find("include").map(|k| k - usize::from(late.contains("\"include\"")));
+            let refused = split(late).err();
+            assert_eq!(refused.as_ref().map(|m| m.at), at, "{late}");
+            assert!(refused.is_some_and(|m| m.message.contains("before the first table")));
+        }
+        // Before any table, in a value, a comment or a string, or as part of a dotted key, it is no include after a table.
+        for fine in [
+            "include = [\"a.toml\"]\n[camera]\n",
+            "[camera]\nx = [\ninclude]\n",
+            "[camera]\n# include = []\nname = \"\"\"\ninclude = 1\"\"\"\n",
+            "[camera]\ninclude.x = 1\n",
+        ] {
+            assert!(split(fine).is_ok(), "{fine}");
+        }
     }
 }

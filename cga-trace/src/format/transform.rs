@@ -11,7 +11,10 @@ use crate::frame::Frame;
 use crate::invalid::Invalid;
 use cga_core::euclid::{E3, norm};
 use cga_core::{Motor, Rotor, Sandwich, Translator, Vector};
-use serde::Deserialize;
+use serde::de::value::MapAccessDeserializer;
+use serde::de::{Error as _, MapAccess, SeqAccess, Visitor};
+use serde::{Deserialize, Deserializer};
+use std::fmt;
 use toml::Spanned;
 
 /// One step of a `transform` list: exactly one of `rotate`, `translate`, `motor`.
@@ -27,11 +30,62 @@ pub(crate) struct Step {
 /// origin or through `about`.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Rotation {
+struct Turn {
     axis: V3,
     degrees: Option<Num>,
     radians: Option<Num>,
     about: Option<V3>,
+}
+
+/// A `rotate` as read: a [`Turn`]'s table. An array, as POV-Ray writes Euler angles, is
+/// refused with the steps that say it here.
+pub(crate) struct Rotation(Turn);
+
+impl<'de> Deserialize<'de> for Rotation {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        /// A turn's table, or the angles of an array, read to quote them back.
+        struct Table;
+        impl<'de> Visitor<'de> for Table {
+            type Value = Rotation;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a turn, `{ axis = [x, y, z], degrees = θ }`")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Rotation, A::Error> {
+                Turn::deserialize(MapAccessDeserializer::new(map)).map(Rotation)
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Rotation, A::Error> {
+                let mut angles = Vec::new();
+                while let Ok(Some(x)) = seq.next_element::<f64>() {
+                    angles.push(x);
+                    if angles.len() > 3 {
+                        break;
+                    }
+                }
+                Err(A::Error::custom(euler_angles(&angles)))
+            }
+        }
+        d.deserialize_any(Table)
+    }
+}
+
+/// What to write for POV-Ray's `rotate <x, y, z>` (`angles`, if three numbers): a turn
+/// about x, then about y, then about z, as steps; the turns of 0 left out.
+fn euler_angles(angles: &[f64]) -> String {
+    let three = angles.len() == 3;
+    let still = three && angles.iter().all(|a| *a == 0.0);
+    let turns: Vec<String> = (0..3)
+        .filter(|&k| !three || still || angles[k] != 0.0)
+        .map(|k| {
+            let degrees = if three { angles[k].to_string() } else { ["x", "y", "z"][k].to_string() };
+            let mut axis = ["0"; 3];
+            axis[k] = "1";
+            format!("{{ rotate = {{ axis = [{}], degrees = {degrees} }} }}", axis.join(", "))
+        })
+        .collect();
+    format!(
+        "`rotate` takes one turn, `{{ axis = [x, y, z], degrees = θ }}` (or `radians`, and `about = [x, y, z]`); POV-Ray's `rotate <x, y, z>` is three turns, about x, then y, then z: write the steps `transform = [{}]`",
+        turns.join(", ")
+    )
 }
 
 /// How far a motor may be from rigid, relative to its translation: the `e123i` part of
@@ -42,6 +96,19 @@ const RIGID_TOLERANCE: f64 = 1e-6;
 /// rebuilt as `T R` exactly. Refused if it has no rotation part or is not rigid: a motor
 /// `M = T R` has `M R̃ = 1 − ½ t ei`, with no `e123i` part.
 pub(crate) fn rigid(c: [f64; 8]) -> Result<Motor, Invalid> {
+    rebuild(c, RIGID_TOLERANCE)
+}
+
+/// A motor composed of rigid ones (a pose's turn and move, steps, one pose relative to
+/// another), rebuilt as `T R` as [`rigid`] rebuilds one read from a file. It is rigid to
+/// its rounding, which for a motion near the identity is not small beside its translation
+/// (itself of the size of the rounding), so it is not checked.
+pub(crate) fn rebuilt(m: Motor) -> Result<Motor, Invalid> {
+    rebuild(m.to_array(), f64::INFINITY)
+}
+
+/// [`rigid`] with `M R̃`'s `e123i` part allowed up to `tolerance` times `|t|/2`.
+fn rebuild(c: [f64; 8], tolerance: f64) -> Result<Motor, Invalid> {
     let m = Motor::from_array(c);
     let rotor = Rotor { s: m.s, e12: m.e12, e13: m.e13, e23: m.e23 };
     let weight = norm([rotor.e12, rotor.e13, rotor.e23]).hypot(rotor.s);
@@ -51,7 +118,8 @@ pub(crate) fn rigid(c: [f64; 8]) -> Result<Motor, Invalid> {
     let (m, rotor) = (m.scale(1.0 / weight), rotor.scale(1.0 / weight));
     let p = m * rotor.reverse();
     let t = [p.e1i, p.e2i, p.e3i].map(|x| -2.0 * x);
-    if p.e123i.abs() > RIGID_TOLERANCE * norm(t) / 2.0 {
+    // (∞ · 0 is NaN, which passes: no tolerance, nothing refused.)
+    if p.e123i.abs() > tolerance * norm(t) / 2.0 {
         return Err(Invalid::Value("the motor is not rigid: M R̃ has an e123i part (a motor is T R, T = 1 − ½ t ei)"));
     }
     Ok(Motor::from_rotor_translator(rotor, Translator::from_vector(t)))
@@ -62,7 +130,7 @@ impl Step {
     fn motor(&self) -> Result<Motor, Invalid> {
         match (&self.rotate, self.translate, self.motor) {
             (Some(r), None, None) => r.motor(),
-            (None, Some(t), None) => Ok(Motor::from(Translator::from_vector(t.0))),
+            (None, Some(t), None) => Ok(shift(t.0)),
             (None, None, Some(m)) => rigid(m.0),
             _ => Err(Invalid::Value("a transform step takes exactly one of `rotate`, `translate`, `motor`")),
         }
@@ -70,18 +138,18 @@ impl Step {
 }
 
 impl Rotation {
-    fn motor(&self) -> Result<Motor, Invalid> {
-        let angle = match (self.degrees, self.radians) {
+    /// This turn as a world motor.
+    pub(crate) fn motor(&self) -> Result<Motor, Invalid> {
+        let Rotation(turn) = self;
+        let angle = match (turn.degrees, turn.radians) {
             (Some(d), None) => d.0.to_radians(),
             (None, Some(r)) => r.0,
             _ => return Err(Invalid::Value("a rotation takes exactly one of `degrees`, `radians`")),
         };
-        let r = Motor::from(Rotor::from_axis_angle(self.axis.0, angle)?);
-        Ok(match self.about {
+        let r = Motor::from(Rotor::from_axis_angle(turn.axis.0, angle)?);
+        Ok(match turn.about {
             // About an axis through p: shift p to the origin, turn, shift back.
-            Some(p) => {
-                Motor::from(Translator::from_vector(p.0)) * r * Motor::from(Translator::from_vector(p.0.map(|x| -x)))
-            }
+            Some(p) => shift(p.0) * r * shift(p.0.map(|x| -x)),
             None => r,
         })
     }
@@ -98,11 +166,8 @@ pub(crate) fn world_motor(
         (None, None) => Ok(None),
         (Some(m), None) => rigid(m.get_ref().0).map(Some).map_err(at(m.span(), "motor")),
         (None, Some(steps)) => {
-            let mut v = Motor::from(Rotor { s: 1.0, ..Rotor::zero() });
-            for step in steps.get_ref() {
-                v = step.get_ref().motor().map_err(at(step.span(), "transform"))? * v;
-            }
-            Ok(Some(v))
+            compose(steps.get_ref().iter().map(|step| step.get_ref().motor().map_err(at(step.span(), "transform"))))
+                .map(Some)
         }
         (Some(m), Some(_)) => {
             Err(Invalid::at("motor", m.span(), Invalid::Value("give `motor` or `transform`, not both")))
@@ -110,32 +175,19 @@ pub(crate) fn world_motor(
     }
 }
 
-/// Keyframes a `motion` list holds at most.
-pub const MAX_KEYS: usize = 4096;
+/// Motors composed in the order given (the first acts first), `V = V_n ⋯ V_1`: a
+/// `transform`'s steps, and a pose's turn, then its move.
+pub(crate) fn compose(steps: impl IntoIterator<Item = Result<Motor, Invalid>>) -> Result<Motor, Invalid> {
+    let mut v = Motor::from(Rotor { s: 1.0, ..Rotor::zero() });
+    for step in steps {
+        v = step? * v;
+    }
+    Ok(v)
+}
 
-/// The motor of a `motion` list at `time` in [0, 1]: rigid keyframe motors evenly spaced over
-/// the frame times, `M(t)` the screw motion between the two keys about `t`
-/// (`Motor::interpolate`: constant screw velocity, through each key).
-pub(crate) fn motion_at(keys: &Spanned<Vec<Spanned<Nums<8>>>>, time: f64) -> Result<Motor, Invalid> {
-    let at = |reason| Invalid::at("motion", keys.span(), reason);
-    let list = keys.get_ref();
-    if list.is_empty() {
-        return Err(at(Invalid::Value("a motion needs at least one keyframe motor")));
-    }
-    if list.len() > MAX_KEYS {
-        return Err(at(Invalid::Limit { what: "keyframes", found: list.len() as u64, limit: MAX_KEYS as u64 }));
-    }
-    let motors: Vec<Motor> = list
-        .iter()
-        .map(|k| rigid(k.get_ref().0).map_err(|e| Invalid::at("motion", k.span(), e)))
-        .collect::<Result<_, _>>()?;
-    if motors.len() == 1 {
-        return Ok(motors[0]);
-    }
-    let x = time.clamp(0.0, 1.0) * (motors.len() - 1) as f64;
-    let k = (x.floor() as usize).min(motors.len() - 2);
-    Motor::interpolate(&motors[k], &motors[k + 1], x - k as f64)
-        .map_err(|e| at(Invalid::Range(format!("keyframes {} and {} cannot be interpolated: {e}", k + 1, k + 2))))
+/// The translation by `t`, as a motor: `T = 1 − ½ t ei`.
+pub(crate) fn shift(t: E3) -> Motor {
+    Motor::from(Translator::from_vector(t))
 }
 
 /// Where an object's world coordinates go: its rigid world motor (if any) `x ↦ R x + t`,

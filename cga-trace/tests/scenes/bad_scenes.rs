@@ -672,6 +672,135 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:6:", "`motion`", "expected 8 numbers, found 7"],
         ),
         (
+            "POV-Ray's Euler angles as a rotate step",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\ntransform = [{ rotate = [0.0, 45.0, 30.0] }]\n"),
+            vec![
+                "bad.toml:11:25:",
+                "`rotate` takes one turn, `{ axis = [x, y, z], degrees = θ }`",
+                "POV-Ray's `rotate <x, y, z>` is three turns",
+                "`transform = [{ rotate = { axis = [0, 1, 0], degrees = 45 } }, { rotate = { axis = [0, 0, 1], degrees = 30 } }]`",
+            ],
+        ),
+        (
+            "POV-Ray's Euler angles in a pose key",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [{ rotate = [90, 0, 0] }]\n"),
+            vec![
+                "bad.toml:11:22:",
+                "POV-Ray's `rotate <x, y, z>`",
+                "{ rotate = { axis = [1, 0, 0], degrees = 90 } }]`",
+            ],
+        ),
+        (
+            "an include after a table",
+            format!("{CAMERA}include = [\"parts.toml\"]\n"),
+            vec!["bad.toml:6:1:", "`include` comes before the first table", "`[camera]`", "move it to the top"],
+        ),
+        (
+            "an include in an object",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\ninclude = [\"parts.toml\"]\n"),
+            vec!["bad.toml:11:1:", "`include` comes before the first table", "`[[objects]]`"],
+        ),
+        (
+            "a motion key of a number",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [3.0]\n"),
+            vec![
+                "bad.toml:11:",
+                "`motion`",
+                "expected a keyframe: a motor of 8 numbers `[s, e12, e13, e23, e1i, e2i, e3i, e123i]`",
+                "a pose `{ position = [x, y, z], rotate = { axis = [x, y, z], degrees = θ } }`",
+                "`{ transform = [steps] }` or `{ motor = [8 numbers] }`",
+            ],
+        ),
+        (
+            "a camera's motion key of a string",
+            format!("{CAMERA}motion = [\"left\"]\n"),
+            vec![
+                "bad.toml:6:",
+                "`motion`",
+                "{ transform = [steps] }",
+                "the camera's pose `{ position = [x, y, z], look_at",
+            ],
+        ),
+        (
+            "a motion key of transform steps in an array",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [[{ translate = [1.0, 0.0, 0.0] }]]\n"),
+            vec![
+                "bad.toml:11:",
+                "`motion`",
+                "a keyframe written as an array is a motor of 8 numbers",
+                "{ transform = [steps] }",
+            ],
+        ),
+        (
+            "a motion key with a field no key takes",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [{ translate = [1.0, 0.0, 0.0] }]\n"),
+            vec!["bad.toml:11:13:", "unknown field `translate` in a keyframe", "a pose `{ position = [x, y, z]"],
+        ),
+        (
+            "an object's key as a camera pose",
+            with_object(
+                "type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [{ position = [0.0, 0.0, 1.0], look_at = [0.0, 1.0, 0.0] }]\n",
+            ),
+            vec!["bad.toml:11:41:", "`look_at` is the camera's", "an object's is a motor of 8 numbers"],
+        ),
+        (
+            "a key both a pose and a motor",
+            with_object(
+                "type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [[1, 0, 0, 0, 0, 0, 0, 0], { position = [1.0, 0.0, 0.0], motor = [1, 0, 0, 0, 0, 0, 0, 0] }]\n",
+            ),
+            vec![
+                "bad.toml:11:50:",
+                "`thing`",
+                "`motion`: keyframe 2: `position`",
+                "a pose (`position`, `rotate`) or `transform` or `motor`",
+            ],
+        ),
+        (
+            "a key's transform step of two kinds",
+            with_object(
+                "type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = [{ transform = [{ translate = [1.0, 0.0, 0.0], motor = [1, 0, 0, 0, 0, 0, 0, 0] }] }]\n",
+            ),
+            vec![
+                "bad.toml:11:26:",
+                "`motion`: keyframe 1: `transform`",
+                "exactly one of `rotate`, `translate`, `motor`",
+            ],
+        ),
+        (
+            "a camera pose key looking at itself",
+            format!(
+                "{CAMERA}motion = [[1, 0, 0, 0, 0, 0, 0, 0], {{ position = [0.0, 1.0, 0.0], look_at = [0.0, 1.0, 0.0] }}]\n"
+            ),
+            vec![
+                "bad.toml:6:",
+                "camera",
+                "`motion`: keyframe 2: `look_at`",
+                "the camera position equals the look-at point",
+            ],
+        ),
+        (
+            "a camera pose key without a position",
+            format!("{CAMERA}motion = [{{ look_at = [0.0, 1.0, 0.0] }}]\n"),
+            vec!["bad.toml:6:23:", "`motion`: keyframe 1: `look_at`", "needs `position` as well as `look_at`"],
+        ),
+        (
+            "a camera pose key turned as well",
+            format!(
+                "{CAMERA}motion = [{{ position = [0.0, 1.0, 0.0], look_at = [0.0, 2.0, 0.0], rotate = {{ axis = [0.0, 0.0, 1.0], degrees = 5.0 }} }}]\n"
+            ),
+            vec!["bad.toml:6:", "keyframe 1: `rotate`", "leave out `rotate`"],
+        ),
+        (
+            "an up without a look_at in a camera key",
+            format!("{CAMERA}motion = [{{ position = [0.0, 1.0, 0.0], up = [0.0, 0.0, 1.0] }}]\n"),
+            vec!["bad.toml:6:", "keyframe 1: `up`", "`up` goes with `look_at`"],
+        ),
+        (
+            "a motion without keys",
+            with_object("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nmotion = []\n"),
+            vec!["bad.toml:11:10:", "`thing`", "`motion`: a motion needs at least one keyframe"],
+        ),
+        (
             "more shadow rays a hit than the limit",
             format!("{CAMERA}{}", "[[lights]]\nposition = [0.0, 0.0, 5.0]\nsphere = 0.5\nsamples = 4096\n".repeat(17)),
             vec![

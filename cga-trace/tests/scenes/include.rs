@@ -57,7 +57,7 @@ fn errors_name_the_included_file_and_its_own_line() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let scene = |parts: &str| format!("include = [\"{parts}\"]\n{CAMERA}{MATERIALS}");
-    let cases: [(&str, String, String); 9] = [
+    let cases: [(&str, String, String); 10] = [
         // A bad radius on the fifth line of the included file.
         ("bad.toml", BALL.replace("radius = 1.0", "radius = -1.0"), "bad.toml:5:".into()),
         ("typo.toml", BALL.replace("centre", "center"), "typo.toml:4:".into()),
@@ -78,6 +78,12 @@ fn errors_name_the_included_file_and_its_own_line() {
             "adds.toml:1:1: a table under `objects` away from its object".into(),
         ),
         ("dotted.toml", "materials.red = { colour = [1.0, 0.0, 0.0] }\n".into(), "dotted.toml:1:1: `materials`".into()),
+        // An include after a table would be a field of that table.
+        (
+            "late.toml",
+            format!("{MATERIALS}include = [\"fine.toml\"]\n"),
+            "late.toml:4:1: `include` comes before the first table".into(),
+        ),
     ];
     for (name, text, says) in cases {
         write(d, name, &text);

@@ -1,6 +1,6 @@
 //! Scene files and the command: the format's fields and messages (every bad scene named by
-//! file, line and field), includes, instances, imported meshes, textures, outputs that are
-//! never inputs, the CLI, and the hostile-input fuzz. One module a subject; `cargo test -p
+//! file, line and field), includes, instances, keyframes, imported meshes, textures, outputs
+//! that are never inputs, the CLI, and the hostile-input fuzz. One module a subject; `cargo test -p
 //! cga-trace --test scenes -- MODULE::` runs one.
 
 mod bad_scenes;
@@ -11,6 +11,7 @@ mod fuzz;
 mod import;
 mod include;
 mod instances;
+mod keyframes;
 mod outputs;
 mod scene_format;
 mod textures;

@@ -45,7 +45,8 @@ pub enum Role {
     Scale,
     /// A motor (eight coefficients): conjugated, `S M S⁻¹`.
     Motor,
-    /// Keyframe motors, each conjugated.
+    /// Keyframes (motors as coefficients here; poses and steps are the scene format's too),
+    /// each conjugated.
     Motion,
     /// Object tables (a CSG tree's), each moved as an object.
     Objects,

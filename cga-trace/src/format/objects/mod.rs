@@ -34,8 +34,9 @@ mod triangle;
 
 pub use kind::{Field, Role};
 
+use super::motion::{ObjectMotion, motion_at};
 use super::numbers::Nums;
-use super::transform::{Placement, Step, motion_at, world_motor};
+use super::transform::{Placement, Step, world_motor};
 use super::{Assets, MaterialRef};
 use crate::drawing::Marks;
 use crate::frame::Frame;
@@ -97,8 +98,9 @@ pub(crate) struct Common {
     pub(crate) material: Spanned<MaterialRef>,
     motor: Option<Spanned<Nums<8>>>,
     transform: Option<Spanned<Vec<Spanned<Step>>>>,
-    /// Keyframe motors over the frame times 0 … 1, applied after `motor`/`transform`.
-    motion: Option<Spanned<Vec<Spanned<Nums<8>>>>>,
+    /// Keyframes over the frame times 0 … 1 (motors, poses or steps), applied after
+    /// `motor`/`transform`.
+    motion: Option<Spanned<ObjectMotion>>,
     /// Drawn only as instances (`instance.rs`).
     pub(crate) template: Option<Spanned<bool>>,
     /// The region it is cut to.
@@ -272,7 +274,7 @@ impl ObjectSpec {
         let c = &self.common;
         let own = world_motor(c.motor.as_ref(), c.transform.as_ref())?;
         let moved = match &c.motion {
-            Some(keys) => Some(motion_at(keys, time)? * own.unwrap_or(Motor::identity())),
+            Some(keys) => Some(motion_at(keys, time, None)? * own.unwrap_or(Motor::identity())),
             None => own,
         };
         Ok(match (outer, moved) {
