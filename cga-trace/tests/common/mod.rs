@@ -153,74 +153,99 @@ impl Similarity {
                 }
             }
         }
-        // Absorption is per unit length.
-        let absorbing = |m: &mut Value| {
-            if let Some(Value::Array(a)) = m.get_mut("absorption") {
-                a.iter_mut().for_each(|x| *x = Value::Float(x.as_float().expect("a number") / self.scale));
-            }
-        };
         for (_, m) in scene.get_mut("materials").and_then(Value::as_table_mut).into_iter().flatten() {
-            absorbing(m);
+            Self::absorbing(self.scale, m);
         }
         for object in scene.get_mut("objects").and_then(Value::as_array_mut).into_iter().flatten() {
-            let object = object.as_table_mut().expect("an object table");
-            if let Some(m) = object.get_mut("material").filter(|m| m.is_table()) {
-                absorbing(m);
+            self.object(object.as_table_mut().expect("an object table"));
+        }
+    }
+
+    /// Absorption is per unit length.
+    fn absorbing(scale: f64, m: &mut Value) {
+        if let Some(Value::Array(a)) = m.get_mut("absorption") {
+            a.iter_mut().for_each(|x| *x = Value::Float(x.as_float().expect("a number") / scale));
+        }
+    }
+
+    /// One object's table moved, field by field as the format declares its role (a CSG
+    /// tree's objects each in turn).
+    fn object(&self, object: &mut Table) {
+        let absorbing = |m: &mut Value| Self::absorbing(self.scale, m);
+        if let Some(m) = object.get_mut("material").filter(|m| m.is_table()) {
+            absorbing(m);
+        }
+        // A plane's texture is laid out in lengths: as many cells per scaled unit.
+        if object.get("type").and_then(Value::as_str) == Some("plane")
+            && let Some(texture) =
+                object.get_mut("material").and_then(|m| m.get_mut("texture")).and_then(Value::as_table_mut)
+        {
+            let repeat = texture.entry("repeat").or_insert(Value::Array(vec![Value::Float(1.0), Value::Float(1.0)]));
+            for r in repeat.as_array_mut().expect("repeat = [u, v]") {
+                *r = Value::Float(r.as_float().expect("a number") / self.scale);
             }
-            // A plane's texture is laid out in lengths: as many cells per scaled unit.
-            if object.get("type").and_then(Value::as_str) == Some("plane")
-                && let Some(texture) =
-                    object.get_mut("material").and_then(|m| m.get_mut("texture")).and_then(Value::as_table_mut)
-            {
-                let repeat =
-                    texture.entry("repeat").or_insert(Value::Array(vec![Value::Float(1.0), Value::Float(1.0)]));
-                for r in repeat.as_array_mut().expect("repeat = [u, v]") {
-                    *r = Value::Float(r.as_float().expect("a number") / self.scale);
+        }
+        // Each field as the format declares its role.
+        let kind = object.get("type").and_then(Value::as_str).unwrap_or("").to_string();
+        let fields = cga_trace::format::fields(&kind).unwrap_or_else(|| panic!("no object kind `{kind}`"));
+        let mesh = fields.iter().any(|f| f.role == Role::Scale);
+        if mesh || kind == "instance" {
+            self.conjugate_steps(object, mesh);
+        }
+        for (key, value) in object.iter_mut() {
+            let role = fields.iter().find(|f| f.name == key.as_str()).map(|f| f.role);
+            match role.unwrap_or_else(|| panic!("`{key}` is no field of a {kind}")) {
+                Role::Point => self.point(value),
+                Role::Points => value.as_array_mut().expect("points").iter_mut().for_each(|p| self.point(p)),
+                Role::Length => self.length(value),
+                Role::Circle => self.circle(value.as_table_mut().expect("a circle table")),
+                Role::Circles => value
+                    .as_array_mut()
+                    .expect("circles")
+                    .iter_mut()
+                    .for_each(|c| self.circle(c.as_table_mut().expect("a circle"))),
+                Role::Line => self.point(value.get_mut("point").expect("point")),
+                Role::Bound => {
+                    self.point(value.get_mut("centre").expect("centre"));
+                    self.length(value.get_mut("radius").expect("radius"));
                 }
-            }
-            // Each field as the format declares its role.
-            let kind = object.get("type").and_then(Value::as_str).unwrap_or("").to_string();
-            let fields = cga_trace::format::fields(&kind).unwrap_or_else(|| panic!("no object kind `{kind}`"));
-            let mesh = fields.iter().any(|f| f.role == Role::Scale);
-            if mesh || kind == "instance" {
-                self.conjugate_steps(object, mesh);
-            }
-            for (key, value) in object.iter_mut() {
-                let role = fields.iter().find(|f| f.name == key.as_str()).map(|f| f.role);
-                match role.unwrap_or_else(|| panic!("`{key}` is no field of a {kind}")) {
-                    Role::Point => self.point(value),
-                    Role::Points => value.as_array_mut().expect("points").iter_mut().for_each(|p| self.point(p)),
-                    Role::Length => self.length(value),
-                    Role::Circle => self.circle(value.as_table_mut().expect("a circle table")),
-                    Role::Circles => value
-                        .as_array_mut()
-                        .expect("circles")
-                        .iter_mut()
-                        .for_each(|c| self.circle(c.as_table_mut().expect("a circle"))),
-                    Role::Line => self.point(value.get_mut("point").expect("point")),
-                    Role::Bound => {
-                        self.point(value.get_mut("centre").expect("centre"));
-                        self.length(value.get_mut("radius").expect("radius"));
-                    }
-                    // A circle's ten orthonormal coefficients are read as centre and radius.
-                    Role::Blade if value.is_table() => self.blade(value),
-                    Role::Motor => self.motor(value),
-                    Role::Motion => value.as_array_mut().expect("motors").iter_mut().for_each(|m| self.motor(m)),
-                    // Rotations about a point of the object move with it (a mesh's and an
-                    // instance's steps are conjugated above).
-                    Role::Transform if !mesh && kind != "instance" => {
-                        for step in value.as_array_mut().expect("steps") {
-                            assert!(
-                                step.get("translate").is_none(),
-                                "shipped objects move by rotations about their own points"
-                            );
-                            if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
-                                self.point(about);
-                            }
+                // A circle's ten orthonormal coefficients are read as centre and radius.
+                Role::Blade if value.is_table() => self.blade(value),
+                Role::Motor => self.motor(value),
+                Role::Objects => value
+                    .as_array_mut()
+                    .expect("objects")
+                    .iter_mut()
+                    .for_each(|o| self.object(o.as_table_mut().expect("an object table"))),
+                Role::Clip => {
+                    let clip = value.as_table_mut().expect("a clip table");
+                    for (region, key, role) in [
+                        ("plane", "point", 0),
+                        ("sphere", "centre", 0),
+                        ("sphere", "radius", 1),
+                        ("box", "min", 0),
+                        ("box", "max", 0),
+                    ] {
+                        if let Some(v) = clip.get_mut(region).and_then(|r| r.get_mut(key)) {
+                            if role == 0 { self.point(v) } else { self.length(v) }
                         }
                     }
-                    _ => {}
                 }
+                Role::Motion => value.as_array_mut().expect("motors").iter_mut().for_each(|m| self.motor(m)),
+                // Rotations about a point of the object move with it (a mesh's and an
+                // instance's steps are conjugated above).
+                Role::Transform if !mesh && kind != "instance" => {
+                    for step in value.as_array_mut().expect("steps") {
+                        assert!(
+                            step.get("translate").is_none(),
+                            "shipped objects move by rotations about their own points"
+                        );
+                        if let Some(about) = step.get_mut("rotate").and_then(|r| r.get_mut("about")) {
+                            self.point(about);
+                        }
+                    }
+                }
+                _ => {}
             }
         }
     }

@@ -107,10 +107,11 @@ fn plain_pictures_do_not_depend_on_place_or_scale() {
     check::<Plain>(96, 72);
 }
 
-/// The spline and ruled scenes (smaller: a debug build intersects their surfaces slowly).
+/// The spline, ruled and cut-away scenes (smaller: a debug build intersects their surfaces
+/// slowly).
 #[test]
 fn spline_and_ruled_pictures_do_not_depend_on_place_or_scale() {
-    check_scenes::<Sparse>(&["fig3b.toml", "ruled.toml"], 48, 36);
+    check_scenes::<Sparse>(&["fig3b.toml", "ruled.toml", "cutaway.toml"], 48, 36);
 }
 
 /// The dense back end, slower, in two halves that the test threads share.
