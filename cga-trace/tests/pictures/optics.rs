@@ -532,3 +532,31 @@ fn a_shutter_places_only_what_moves_and_renders_as_if_each_instant_were_loaded_a
     // The ball and its copy blur: the picture differs from the still start.
     assert!(kept.pixels != render(&scene).pixels);
 }
+
+/// Light passes through a glass CSG body as through the solid it bounds: a glass ball in
+/// front of a checkered wall, and the same ball as the union of itself with a smaller ball
+/// inside (whose surface is no boundary of the union), render the same picture, the wall
+/// seen through the ball.
+#[test]
+fn glass_through_a_csg_body_is_glass_through_its_solid() {
+    let scene = |ball: &str| {
+        parse(&format!(
+            "[camera]\nposition = [0.0, -10.0, 0.0]\nlook_at = [0.0, 0.0, 0.0]\nfov = 20.0\nwidth = 48\nheight = 48\n\
+             [render]\nambient = 0.3\n[[lights]]\nposition = [-3.0, -8.0, 6.0]\n\
+             [[objects]]\ntype = \"plane\"\npoint = [0.0, 4.0, 0.0]\nnormal = [0.0, -1.0, 0.0]\n\
+             material = {{ colour = [0.9, 0.2, 0.1], texture = {{ pattern = \"checker\", colour = [0.1, 0.3, 0.9] }} }}\n\
+             [[objects]]\n{ball}\nmaterial = {{ colour = [0.0, 0.0, 0.0], ka = 0.0, kd = 0.0, ks = 1.0, q = 300.0, ior = 1.5 }}\n"
+        ))
+    };
+    let plain = render(&scene("type = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.2"));
+    let union = render(&scene(
+        "type = \"csg\"\noperation = \"union\"\nobjects = [{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.2 }, \
+         { type = \"sphere\", centre = [0.2, 0.0, 0.1], radius = 0.5 }]",
+    ));
+    let largest = plain.pixels.iter().zip(&union.pixels).flat_map(|(a, b)| (0..3).map(move |k| (a[k] - b[k]).abs()));
+    let largest = largest.fold(0.0, f64::max);
+    assert!(largest < 1e-6, "the union differs by {largest}");
+    // The wall seen through the ball, bent: not the ball's own black.
+    let centre = plain.pixels[24 * 48 + 24];
+    assert!(centre.iter().sum::<f64>() > 0.1, "{centre:?}");
+}
