@@ -312,7 +312,7 @@ impl ObjectSpec {
         (motor, time): (Option<Motor>, f64),
         look: &Look,
         at: &At,
-        leaves: &mut Vec<(Arc<dyn Shape>, Look)>,
+        leaves: &mut Looked,
     ) -> Result<Node, Invalid> {
         let operation = self.geometry.operation().ok_or(Invalid::Form(self.kind.takes))??;
         let at_objects = |e: Invalid| match self.geometry.span("objects") {
@@ -352,7 +352,7 @@ impl ObjectSpec {
     /// `clip`, and where a drawing's label goes.
     fn looks(&self, look: &Look, at: &At) -> Result<Looks, Invalid> {
         let motor = self.world_motor()?;
-        let (mut parts, anchor, tree) = if self.geometry.operation().is_some() {
+        let (parts, anchor, tree) = if self.geometry.operation().is_some() {
             let mut leaves = Vec::new();
             let root = self.tree((motor, self.time), look, at, &mut leaves)?;
             (leaves, None, Some(root))
@@ -360,64 +360,42 @@ impl ObjectSpec {
             let (shapes, anchor) = self.shapes_at(motor, at)?;
             (shapes.into_iter().map(|s| (s, look.clone())).collect(), anchor, None)
         };
-        let clip = match &self.common.clip {
-            Some(clip) => {
-                let region = clip
-                    .get_ref()
-                    .region(&Placement::new(motor, at.frame))
-                    .map_err(|e| Invalid::at("clip", clip.span(), e))?;
-                Some((region, clip.get_ref().capped(), clip.span()))
-            }
-            None => None,
+        let objects = self.geometry.span("objects");
+        let Some(clip) = &self.common.clip else {
+            let parts = match tree {
+                Some(root) => solid(parts, root, (objects, "objects"))?,
+                None => parts,
+            };
+            return Ok((parts, anchor));
         };
-        let csg_error = |span: Option<Range<usize>>, field: &'static str| {
-            move |e: crate::shapes::CsgError| {
-                let e = Invalid::Range(e.to_string());
-                match span.clone() {
-                    Some(span) => Invalid::at(field, span, e),
-                    None => e,
-                }
-            }
-        };
-        let tree = match (tree, clip) {
-            (tree, Some((region, false, span))) => {
-                let clipped = |(shape, look): (Arc<dyn Shape>, Look)| {
-                    Clipped::new(shape, region.clone()).map(|c| (Arc::new(c) as Arc<dyn Shape>, look))
-                };
-                if let Some(root) = tree {
-                    let shapes = parts.iter().map(|(s, _)| s.clone()).collect();
-                    let looks: Vec<Look> = parts.iter().map(|(_, l)| l.clone()).collect();
-                    let csg = Csg::new(shapes, root).map_err(csg_error(self.geometry.span("objects"), "objects"))?;
-                    parts = CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect();
-                }
-                parts =
-                    parts.into_iter().map(clipped).collect::<Result<_, _>>().map_err(csg_error(Some(span), "clip"))?;
-                None
-            }
-            (tree, Some((region, true, span))) => {
-                let root = match tree {
-                    Some(root) => root,
-                    None if parts.len() == 1 && parts[0].0.closed() => Node::Leaf(0),
-                    None => return Err(Invalid::at("clip", span, Invalid::Form(clip::CAPPED_OPEN))),
-                };
-                let first = parts.len();
-                parts.extend(region.into_iter().map(|r| (r, look.clone())));
-                let cut = (first..parts.len()).map(Node::Leaf);
-                Some((
-                    Node::Op(Operation::Intersection, std::iter::once(root).chain(cut).collect()),
-                    Some(span),
-                    "clip",
-                ))
-            }
-            (Some(root), None) => Some((root, self.geometry.span("objects"), "objects")),
-            (None, None) => None,
-        };
-        if let Some((root, span, field)) = tree {
-            let looks: Vec<Look> = parts.iter().map(|(_, l)| l.clone()).collect();
-            let csg = Csg::new(parts.into_iter().map(|(s, _)| s).collect(), root).map_err(csg_error(span, field))?;
-            parts = CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect();
+        let region =
+            clip.get_ref().region(&Placement::new(motor, at.frame)).map_err(|e| Invalid::at("clip", clip.span(), e))?;
+        let at_clip = (Some(clip.span()), "clip");
+        if !clip.get_ref().capped() {
+            // Open: the tree (if any) first, then each part cut.
+            let parts = match tree {
+                Some(root) => solid(parts, root, (objects, "objects"))?,
+                None => parts,
+            };
+            let cut = |(shape, look): (Arc<dyn Shape>, Look)| {
+                Clipped::new(shape, region.clone()).map(|c| (Arc::new(c) as Arc<dyn Shape>, look))
+            };
+            return Ok((parts.into_iter().map(cut).collect::<Result<_, _>>().map_err(csg_error(at_clip))?, anchor));
         }
-        Ok((parts, anchor))
+        // Capped: the solid intersected with the region, whose surface takes the object's look.
+        let root = match tree {
+            Some(root) => root,
+            None if parts.len() == 1 && parts[0].0.closed() => Node::Leaf(0),
+            None => return Err(Invalid::at("clip", clip.span(), Invalid::Form(clip::CAPPED_OPEN))),
+        };
+        let mut parts = parts;
+        let first = parts.len();
+        parts.extend(region.into_iter().map(|r| (r, look.clone())));
+        let root = Node::Op(
+            Operation::Intersection,
+            std::iter::once(root).chain((first..parts.len()).map(Node::Leaf)).collect(),
+        );
+        Ok((solid(parts, root, at_clip)?, anchor))
     }
 
     /// A geometry error about one field, placed at that field when the object gives it: a
@@ -491,8 +469,34 @@ pub(crate) type Built = (Vec<Object>, Option<Label>);
 /// A part's material and texture.
 type Look = (Material, Option<Arc<Texture>>);
 
+/// Shapes, each with its look.
+type Looked = Vec<(Arc<dyn Shape>, Look)>;
+
 /// An object's parts with their looks, and where a drawing's label goes.
-type Looks = (Vec<(Arc<dyn Shape>, Look)>, Option<(E3, f64)>);
+type Looks = (Looked, Option<(E3, f64)>);
+
+/// The CSG tree `root` over `leaves` as parts, each in its leaf's look; an error placed at
+/// `field` (its span where given).
+fn solid(
+    leaves: Vec<(Arc<dyn Shape>, Look)>,
+    root: Node,
+    field: (Option<Range<usize>>, &'static str),
+) -> Result<Looked, Invalid> {
+    let (shapes, looks): (Vec<_>, Vec<_>) = leaves.into_iter().unzip();
+    let csg = Csg::new(shapes, root).map_err(csg_error(field))?;
+    Ok(CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect())
+}
+
+/// A CSG error as a value error at `field` (its span where given).
+fn csg_error((span, field): (Option<Range<usize>>, &'static str)) -> impl Fn(crate::shapes::CsgError) -> Invalid {
+    move |e| {
+        let e = Invalid::Range(e.to_string());
+        match span.clone() {
+            Some(span) => Invalid::at(field, span, e),
+            None => e,
+        }
+    }
+}
 
 /// A placeholder `material` for a CSG part that gives none (it takes its tree's, and the
 /// placeholder is never resolved).
