@@ -331,8 +331,10 @@ impl Texture {
     }
 }
 
-/// The step of a height's central difference in a pattern's coordinates: `2⁻¹²` of a cell.
-const DIFFERENCE: f64 = 1.0 / 4096.0;
+/// The step of a procedural height's central difference in a pattern's coordinates: `1/64`
+/// of a cell, so that the edges of a checker's, stripes' or bricks' cells show as bevels
+/// `1/32` of a cell wide (a step's slope is nowhere else).
+const DIFFERENCE: f64 = 1.0 / 64.0;
 
 impl Pattern {
     /// The pattern's value `t` in `[0, 1]` at its coordinates `q`: the weight of its own
@@ -363,14 +365,19 @@ impl Pattern {
         }
     }
 
-    /// `∂t/∂q_k` at `q` by a central difference of [`DIFFERENCE`].
+    /// `∂t/∂q_k` at `q` by a central difference: of a pixel for an image, of [`DIFFERENCE`]
+    /// for the others.
     fn slope(&self, q: [f64; 2], k: usize, v_up: bool) -> f64 {
+        let step = match self {
+            Pattern::Image(p) => 1.0 / f64::from(if k == 0 { p.width } else { p.height }),
+            _ => DIFFERENCE,
+        };
         let at = |d: f64| {
             let mut p = q;
             p[k] += d;
             self.value(p, v_up)
         };
-        (at(DIFFERENCE) - at(-DIFFERENCE)) / (2.0 * DIFFERENCE)
+        (at(step) - at(-step)) / (2.0 * step)
     }
 }
 

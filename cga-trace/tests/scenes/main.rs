@@ -14,3 +14,4 @@ mod instances;
 mod outputs;
 mod scene_format;
 mod textures;
+mod texturing;
