@@ -295,7 +295,8 @@ impl Texture {
     /// `(u, v)` are read from `uv` one step along two tangents `t₁, t₂` ([`orthonormal`] to
     /// the normal), the step `2⁻²⁰` of the shape's bounding radius (of the point's distance
     /// from the camera, for an unbounded shape); a fraction's jump across its seam is taken
-    /// the short way round.
+    /// the short way round. A swept surface's `α` is its crossing's own, kept by the steps:
+    /// there the bump tilts the normal along the second parameter only.
     pub fn shading_normal(&self, shape: &dyn Shape, crossing: &Crossing, normal: E3, lengths: f64) -> E3 {
         let Some(bump) = &self.bump else { return normal };
         let Some((uv, unit_of)) = shape.uv(crossing) else { return normal };
