@@ -34,6 +34,11 @@ pub const MAX_LIGHTS: usize = 1024;
 /// Points of an area light that light each hit (`samples`): each is a shadow ray.
 pub const MAX_LIGHT_SAMPLES: u32 = 4096;
 
+/// Octaves of a noise or marble texture (`octaves`): each is a lookup of four hashed lattice
+/// values at every textured hit, so the limit bounds the time a lookup takes (beyond 16 the
+/// finest octave is 2¹⁵ times finer than the first, far below a pixel).
+pub const MAX_OCTAVES: u32 = 16;
+
 /// Shadow rays one hit may cast: a point, spot or directional light casts one, an area light
 /// its `samples`, summed over the scene's lights. 2¹⁶ bounds the time one pixel can take
 /// (1,024 lights of 4,096 samples each would be 4.2 million shadow rays at every hit).

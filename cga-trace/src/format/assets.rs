@@ -1,18 +1,17 @@
 //! The scene's shared assets: named materials and the files its objects read.
 
 use super::MaterialRef;
-use super::specs::{MaterialSpec, PatternSpec, TextureSpec};
+use super::specs::{AxisSpec, FlipSpec, MaterialSpec, PatternSpec, TextureSpec};
 use crate::import::TriangleMesh;
 use crate::input::{Identity, Input, open_regular};
 use crate::invalid::Invalid;
-use crate::limits::{MAX_IMAGES, MAX_MESH_FILES, MAX_SCENE_IMAGE_PIXELS};
+use crate::limits::{MAX_IMAGES, MAX_MESH_FILES, MAX_OCTAVES, MAX_SCENE_IMAGE_PIXELS};
 use crate::material::Material;
 use crate::picture::Picture;
-use crate::texture::{Pattern, Texture};
+use crate::texture::{Axis, Bump, Noise, Pattern, Placement, Texture};
 use cga_core::euclid::E3;
 use std::cell::{Cell, RefCell};
 use std::collections::BTreeMap;
-use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use toml::Spanned;
@@ -83,43 +82,72 @@ impl Assets {
         Ok(())
     }
 
-    /// A material table as a checked material and its texture.
+    /// A material table as a checked material and its texture: its `texture`, with its
+    /// `bump` (a bump alone wears the material's own colour).
     pub(crate) fn build(&self, spec: &MaterialSpec) -> Result<(Material, Option<Arc<Texture>>), Invalid> {
         let material = Material::from(spec);
         material.check()?;
-        let texture = spec.texture.as_ref().map(|t| self.texture(t)).transpose()?;
-        Ok((material, texture))
+        let texture = spec.texture.as_ref().map(|t| self.texture(t, false)).transpose()?;
+        let texture = match spec.bump.as_ref() {
+            None => texture,
+            Some(b) => {
+                let strength = b.get_ref().strength.unwrap_or(1.0);
+                let bump = Bump { heights: self.texture(b, true)?, strength };
+                Some(texture.unwrap_or_else(|| Texture::new(Pattern::Plain)).bump(bump))
+            }
+        };
+        Ok((material, texture.map(Arc::new)))
     }
 
-    /// A texture table, checked: a pattern and its colour, or an image; positive repeats.
-    pub(crate) fn texture(&self, spec: &Spanned<TextureSpec>) -> Result<Arc<Texture>, Invalid> {
+    /// A texture table (a `bump`'s where `bump`), checked: a pattern and its colour (none in
+    /// a bump), or an image; positive repeats and scales; each pattern's own fields only on
+    /// it, in range; `strength` only in a bump.
+    fn texture(&self, spec: &Spanned<TextureSpec>, bump: bool) -> Result<Texture, Invalid> {
         let t = spec.get_ref();
-        let why = |field, span: Range<usize>, reason| Invalid::at(field, span, Invalid::Value(reason));
+        let why = |field, reason: String| Invalid::at(field, spec.span(), Invalid::Range(reason));
+        if !bump && t.strength.is_some() {
+            return Err(why(
+                "strength",
+                "`strength` is a `bump`'s (a texture's colours do not tilt the normal)".into(),
+            ));
+        }
         let repeat = t.repeat.unwrap_or([1.0, 1.0]);
         if !repeat.iter().all(|&r| r > 0.0) {
-            return Err(why("repeat", spec.span(), "a texture's repeats must be > 0"));
+            return Err(why("repeat", "a texture's repeats must be > 0".into()));
         }
+        let scale = t.scale.unwrap_or([1.0, 1.0]);
+        if !scale.iter().all(|&r| r > 0.0) {
+            return Err(why("scale", "a texture's scale must be > 0 (`flip` mirrors it)".into()));
+        }
+        let flip = match t.flip {
+            None => [false, false],
+            Some(FlipSpec::U) => [true, false],
+            Some(FlipSpec::V) => [false, true],
+            Some(FlipSpec::Both) => [true, true],
+        };
+        let place = Placement { scale, rotate: t.rotate.unwrap_or(0.0), offset: t.offset.unwrap_or([0.0, 0.0]), flip };
         let pattern = match (&t.pattern, &t.image) {
-            (Some(p), None) => {
-                let colour = t.colour.ok_or(why("pattern", p.span(), "a pattern needs its second `colour`"))?;
-                if colour.iter().any(|&c| c < 0.0) {
-                    return Err(why("colour", spec.span(), "a texture's colour must be ≥ 0"));
-                }
-                match p.get_ref() {
-                    PatternSpec::Checker => Pattern::Checker(colour),
-                    PatternSpec::Stripes => Pattern::Stripes(colour),
-                }
-            }
+            (Some(p), None) => procedural(t, *p.get_ref(), bump).map_err(|(field, reason)| match field {
+                "pattern" => Invalid::at(field, p.span(), Invalid::Range(reason)),
+                _ => why(field, reason),
+            })?,
             (None, Some(file)) => {
                 if t.colour.is_some() {
-                    return Err(why("colour", spec.span(), "an image texture takes its colours from the image"));
+                    return Err(why("colour", "an image texture takes its colours from the image".into()));
                 }
+                only_for(t, None).map_err(|(field, reason)| why(field, reason))?;
                 Pattern::Image(self.image(file, "texture")?)
             }
-            (Some(p), Some(_)) => return Err(why("pattern", p.span(), "give a `pattern` or an `image`, not both")),
-            (None, None) => return Err(why("texture", spec.span(), "a texture needs a `pattern` or an `image`")),
+            (Some(p), Some(_)) => {
+                return Err(Invalid::at(
+                    "pattern",
+                    p.span(),
+                    Invalid::Value("give a `pattern` or an `image`, not both"),
+                ));
+            }
+            (None, None) => return Err(why("texture", "a texture needs a `pattern` or an `image`".into())),
         };
-        Ok(Arc::new(Texture { pattern, repeat }))
+        Ok(Texture { pattern, repeat, place, bump: None })
     }
 
     /// The image `file` names (relative to the scene's folder), read once; `role` says what
@@ -216,4 +244,70 @@ impl Assets {
             }),
         }
     }
+}
+
+/// The procedural pattern `pattern` of texture table `t` (a bump's where `bump`: heights,
+/// no colour), its fields checked; else the field at fault and why.
+fn procedural(t: &TextureSpec, pattern: PatternSpec, bump: bool) -> Result<Pattern, (&'static str, String)> {
+    let colour = match (t.colour, bump) {
+        (Some(_), true) => {
+            return Err(("colour", "a bump's heights are its pattern's own values: it takes no `colour`".into()));
+        }
+        (None, true) => [1.0; 3],
+        (Some(c), false) => c,
+        (None, false) => return Err(("pattern", "a pattern needs its second `colour`".into())),
+    };
+    if colour.iter().any(|&c| c < 0.0) {
+        return Err(("colour", "a texture's colour must be ≥ 0".into()));
+    }
+    only_for(t, Some(pattern))?;
+    let octaves = t.octaves.unwrap_or(Noise::default().octaves);
+    if !(1..=MAX_OCTAVES).contains(&octaves) {
+        return Err(("octaves", format!("a noise's octaves must be 1 to {MAX_OCTAVES}, not {octaves}")));
+    }
+    let noise = Noise { seed: t.seed.unwrap_or(0), octaves };
+    Ok(match pattern {
+        PatternSpec::Checker => Pattern::Checker(colour),
+        PatternSpec::Stripes => Pattern::Stripes(colour),
+        PatternSpec::Gradient => {
+            Pattern::Gradient(colour, if t.along == Some(AxisSpec::V) { Axis::V } else { Axis::U })
+        }
+        PatternSpec::Noise => Pattern::Noise(colour, noise),
+        PatternSpec::Marble => {
+            let turbulence = t.turbulence.unwrap_or(1.0);
+            if turbulence < 0.0 {
+                return Err(("turbulence", "marble's turbulence must be ≥ 0".into()));
+            }
+            Pattern::Marble { colour, noise, turbulence }
+        }
+        PatternSpec::Bricks => {
+            let (brick, mortar) = (t.brick.unwrap_or([1.0, 0.5]), t.mortar.unwrap_or(0.05));
+            if !brick.iter().all(|&b| b > 0.0) {
+                return Err(("brick", "a brick's length and height must be > 0".into()));
+            }
+            if !(mortar >= 0.0 && mortar < brick[0].min(brick[1])) {
+                return Err(("mortar", "mortar must be ≥ 0 and narrower than a brick's length and height".into()));
+            }
+            Pattern::Bricks { colour, brick, mortar }
+        }
+    })
+}
+
+/// Refuses a pattern's own field given to another pattern (`None`: an image, which has none).
+fn only_for(t: &TextureSpec, pattern: Option<PatternSpec>) -> Result<(), (&'static str, String)> {
+    use PatternSpec::{Bricks, Gradient, Marble, Noise};
+    let owners: [(&'static str, bool, &[PatternSpec], &str); 6] = [
+        ("along", t.along.is_some(), &[Gradient], "a gradient's"),
+        ("turbulence", t.turbulence.is_some(), &[Marble], "marble's"),
+        ("octaves", t.octaves.is_some(), &[Noise, Marble], "noise's and marble's"),
+        ("seed", t.seed.is_some(), &[Noise, Marble], "noise's and marble's"),
+        ("brick", t.brick.is_some(), &[Bricks], "bricks'"),
+        ("mortar", t.mortar.is_some(), &[Bricks], "bricks'"),
+    ];
+    for (field, given, patterns, whose) in owners {
+        if given && !pattern.is_some_and(|p| patterns.contains(&p)) {
+            return Err((field, format!("`{field}` is {whose} alone")));
+        }
+    }
+    Ok(())
 }

@@ -156,11 +156,16 @@ pub(crate) struct MaterialSpec {
     /// A texture in place of `colour`.
     #[serde(default)]
     pub texture: Option<toml::Spanned<TextureSpec>>,
+    /// A texture's values as heights that tilt the shading normal, with its `strength`.
+    #[serde(default)]
+    pub bump: Option<toml::Spanned<TextureSpec>>,
 }
 
-/// A material's `texture`: `pattern = "checker"` or `"stripes"` with the second `colour`,
-/// or an `image` file; `repeat = [u, v]` (default 1, 1) cells or copies per unit of the
-/// surface's `(u, v)`.
+/// A material's `texture` (or `bump`): a `pattern` (`"checker"`, `"stripes"`, `"gradient"`,
+/// `"noise"`, `"marble"`, `"bricks"`) with the second `colour`, or an `image` file; its
+/// placement (`scale`, `rotate`, `offset`, `flip`) and `repeat = [u, v]` (default 1, 1) cells
+/// or copies per unit of the surface's `(u, v)`; the patterns' own parameters (`along`,
+/// `turbulence`, `octaves`, `seed`, `brick`, `mortar`); a bump's `strength`.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct TextureSpec {
@@ -170,6 +175,35 @@ pub(crate) struct TextureSpec {
     pub image: Option<toml::Spanned<String>>,
     #[serde(default, deserialize_with = "some_numbers")]
     pub repeat: Option<[f64; 2]>,
+    /// How much larger the pattern is along `u` and `v`.
+    #[serde(default, deserialize_with = "some_numbers")]
+    pub scale: Option<[f64; 2]>,
+    /// Degrees, counter-clockwise from `u` towards `v`.
+    #[serde(default, deserialize_with = "some_number")]
+    pub rotate: Option<f64>,
+    /// Where the pattern's origin lies in `(u, v)`.
+    #[serde(default, deserialize_with = "some_numbers")]
+    pub offset: Option<[f64; 2]>,
+    /// Which parameters it is mirrored along.
+    pub flip: Option<FlipSpec>,
+    /// A gradient's direction.
+    pub along: Option<AxisSpec>,
+    /// How far noise bends marble's veins.
+    #[serde(default, deserialize_with = "some_number")]
+    pub turbulence: Option<f64>,
+    /// Octaves of noise or marble.
+    pub octaves: Option<u32>,
+    /// Which noise.
+    pub seed: Option<u32>,
+    /// A brick's length and height.
+    #[serde(default, deserialize_with = "some_numbers")]
+    pub brick: Option<[f64; 2]>,
+    /// Bricks' mortar width.
+    #[serde(default, deserialize_with = "some_number")]
+    pub mortar: Option<f64>,
+    /// A bump's slope per unit of height and cell.
+    #[serde(default, deserialize_with = "some_number")]
+    pub strength: Option<f64>,
 }
 
 /// A texture's `pattern`.
@@ -180,6 +214,39 @@ pub(crate) enum PatternSpec {
     Checker,
     /// Bands of two colours along `u`.
     Stripes,
+    /// From one colour to the other along `u` or `v`.
+    Gradient,
+    /// Value noise.
+    Noise,
+    /// Veins bent by noise.
+    Marble,
+    /// Bricks in mortar.
+    Bricks,
+}
+
+/// A texture's `flip`.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+pub(crate) enum FlipSpec {
+    /// `u ↦ −u`.
+    #[serde(rename = "u")]
+    U,
+    /// `v ↦ −v`.
+    #[serde(rename = "v")]
+    V,
+    /// Both.
+    #[serde(rename = "uv")]
+    Both,
+}
+
+/// A gradient's `along`.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+pub(crate) enum AxisSpec {
+    /// Along `u`.
+    #[serde(rename = "u")]
+    U,
+    /// Along `v`.
+    #[serde(rename = "v")]
+    V,
 }
 
 /// An object's `material`: a table, or the name of one of the file's `[materials.NAME]`

@@ -10,6 +10,7 @@ use crate::material::{Material, Reflectance, shine};
 use crate::ray::{leaving_origin, offset};
 use crate::shapes::ShadingPoint;
 use crate::shapes::Unit;
+use crate::texture::Pattern;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::Lane;
 use cga_core::{Real, Select};
@@ -75,11 +76,12 @@ impl<B: Backend> Renderer<'_, B> {
             [by_lane(hits, |h, _| h.point[0]), by_lane(hits, |h, _| h.point[1]), by_lane(hits, |h, _| h.point[2])];
         let n: E3<R::T> =
             [by_lane(hits, |h, _| h.normal[0]), by_lane(hits, |h, _| h.normal[1]), by_lane(hits, |h, _| h.normal[2])];
+        let shading = if self.textured { self.bumped(hits) } else { None };
         let v = rays.dir().map(|d| -d);
         let own: [Option<usize>; W] = core::array::from_fn(|l| hits[l].as_ref().and_then(|(_, k)| self.skip_own(*k)));
         let offset = offset(x, rays.origin(), by_lane(hits, |_, k| self.errors[k]));
         let hit: [bool; W] = core::array::from_fn(|l| hits[l].is_some());
-        let hits_at = Hits { x, n, v, m: &m, hit: &hit, own: &own, offset };
+        let hits_at = Hits { x, n, shading, v, m: &m, hit: &hit, own: &own, offset };
         for light in &self.scene.lights {
             match light.samples() {
                 None => self.add_light::<R, W>(&mut colours, light, light.toward(x), None, &hits_at, cast),
@@ -118,6 +120,12 @@ impl<B: Backend> Renderer<'_, B> {
         else {
             return;
         };
+        // A bump tilts the normal the light's terms see; which lanes it lights and where
+        // their shadow rays start stay the surface's own.
+        let (diffuse, specular) = match at.shading {
+            Some(n) => (dot(n, l), shine(at.m, n, add(l, at.v))),
+            None => (diffuse, specular),
+        };
         let mut s = R::T::one();
         if settings.shadows {
             cast.shadow += lit.iter().filter(|&&b| b).count() as u64;
@@ -148,14 +156,33 @@ impl<B: Backend> Renderer<'_, B> {
     /// parameters there (lengths in world units).
     fn textured_colour(&self, hit: &ShadingPoint, k: usize) -> Option<[f64; 3]> {
         let object = &self.scene.objects[k];
-        let texture = object.texture.as_ref()?;
+        let texture = object.texture.as_ref().filter(|t| !matches!(t.pattern, Pattern::Plain))?;
         let crossing = crate::shapes::Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
         let (uv, unit) = object.shape.uv(&crossing)?;
         let uv = match unit {
             Unit::Fraction => uv,
             Unit::Length => uv.map(|x| self.scene.frame.world_length(x)),
         };
-        Some(texture.colour(object.material.colour, uv))
+        Some(texture.colour_on(object.material.colour, uv, object.shape.v_up()))
+    }
+
+    /// The shading normals of the hits where some lane's texture has a bump
+    /// ([`crate::texture::Texture::shading_normal`]; the others' own normals); `None` where
+    /// none has.
+    fn bumped<T: Lane, const W: usize>(&self, hits: &[Option<(ShadingPoint, usize)>; W]) -> Option<E3<T>> {
+        let bumps = |k: usize| self.scene.objects[k].texture.as_ref().filter(|t| t.bump.is_some());
+        if !hits.iter().flatten().any(|(_, k)| bumps(*k).is_some()) {
+            return None;
+        }
+        let normal = |l: usize| match &hits[l] {
+            Some((hit, k)) => bumps(*k).map_or(hit.normal, |texture| {
+                let object = &self.scene.objects[*k];
+                let crossing = crate::shapes::Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
+                texture.shading_normal(&*object.shape, &crossing, hit.normal, self.scene.frame.scale)
+            }),
+            None => [0.0; 3],
+        };
+        Some(lanes3::<T, W>(core::array::from_fn(normal)))
     }
 
     /// One light's term, `s f_att (c k_d max(n·l, 0) + k_s spec) L`, at `distance` (frame
@@ -177,12 +204,14 @@ impl<B: Backend> Renderer<'_, B> {
     }
 }
 
-/// The hits in lanes that shading lights: points, unit normals, directions to the eye,
+/// The hits in lanes that shading lights: points, unit normals (and bumped ones), directions to the eye,
 /// materials, which lanes hit, the objects their shadow rays skip, and how far off the
 /// surfaces those start.
 pub(crate) struct Hits<'a, T, const W: usize> {
     x: E3<T>,
     n: E3<T>,
+    /// The normals lights see where a bump tilts them ([`Renderer::bumped`]).
+    shading: Option<E3<T>>,
     v: E3<T>,
     m: &'a [&'a Material; W],
     hit: &'a [bool; W],

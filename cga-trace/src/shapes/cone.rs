@@ -4,7 +4,8 @@
 //! ray's point nearest the axis's midpoint in units of the cone's size (the stable form of the
 //! quadratic formula); the caps are the end planes within their radii.
 
-use super::{Crossing, Shape, crossing_at, facing, largest, rounding};
+use super::{Crossing, Shape, Unit, crossing_at, facing, largest, rounding};
+use crate::light::orthonormal;
 use crate::ray::{Ray, in_range};
 use cga_core::GeometryError;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub, unit};
@@ -54,6 +55,18 @@ impl ConeShape {
     fn radius_law(&self, size: f64) -> (f64, f64) {
         let mean = 0.5 * (self.radii[0] + self.radii[1]) / size;
         (mean, (self.radii[1] - self.radii[0]) / (2.0 * self.half))
+    }
+
+    /// A point's coordinate along the axis from the midpoint, its part across the axis, and
+    /// whether it lies on a cap: nearer a cap's plane than the side.
+    fn place(&self, point: E3) -> (f64, E3, bool) {
+        let rel = sub(point, self.mid);
+        let u = dot(rel, self.axis);
+        let perp = sub(rel, scale(self.axis, u));
+        let (mean, slope) = self.radius_law(1.0);
+        let side_gap = (norm(perp) - (mean + slope * u)).abs() / (1.0 + slope * slope).sqrt();
+        let cap_gap = if self.caps { (u.abs() - self.half).abs() } else { f64::INFINITY };
+        (u, perp, cap_gap < side_gap)
     }
 
     /// The ray parameters where the ray's line crosses the side and the caps (unsorted).
@@ -130,19 +143,31 @@ impl Shape for ConeShape {
     /// On a cap, the axis; on the side, `x⊥/|x⊥| − r′ a` normalised (the gradient of
     /// `|x⊥| − r(u)`): whichever surface the point is nearer to.
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
-        let rel = sub(crossing.point, self.mid);
-        let u = dot(rel, self.axis);
-        let perp = sub(rel, scale(self.axis, u));
-        let (mean, slope) = self.radius_law(1.0);
-        let side_gap = (norm(perp) - (mean + slope * u)).abs() / (1.0 + slope * slope).sqrt();
-        let cap_gap = if self.caps { (u.abs() - self.half).abs() } else { f64::INFINITY };
-        let n = if cap_gap < side_gap {
+        let (_, perp, cap) = self.place(crossing.point);
+        let n = if cap {
             self.axis
         } else {
             let radial = unit(perp).unwrap_or(self.axis);
-            unit(sub(radial, scale(self.axis, slope))).unwrap_or(self.axis)
+            unit(sub(radial, scale(self.axis, self.radius_law(1.0).1))).unwrap_or(self.axis)
         };
         facing(n, ray.dir)
+    }
+
+    /// On the side, the angle about the axis as a fraction of a turn, `u = ½ + atan2(x·b,
+    /// x·a)/2π` (`(a, b)` [`orthonormal`] to the axis: counter-clockwise seen from `p2`, as a
+    /// sphere's longitude about its z), and the place along the axis down from `p2`, `v = ½ −
+    /// (x·axis)/(2h)` (0 at `p2`, 1 at `p1`; `x` from the midpoint, `2h` the axis's length):
+    /// seen from outside with `p2` up, an image reads as drawn. On a cap, a disk's: the same
+    /// angle, and `r/R` out from the axis.
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
+        let (along, perp, cap) = self.place(c.point);
+        let (a, b) = orthonormal(self.axis);
+        let angle = 0.5 + dot(perp, b).atan2(dot(perp, a)) / std::f64::consts::TAU;
+        let v = match cap {
+            true => norm(perp) / self.radii[usize::from(along > 0.0)],
+            false => 0.5 - along / (2.0 * self.half),
+        };
+        Some(([angle, v], Unit::Fraction))
     }
 
     /// With its caps, the solid between them.

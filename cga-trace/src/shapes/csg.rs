@@ -285,6 +285,10 @@ impl Shape for CsgPart {
     fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], super::Unit)> {
         self.shape().uv(crossing)
     }
+
+    fn v_up(&self) -> bool {
+        self.shape().v_up()
+    }
 }
 
 /// A shape cut to a region: its crossings that lie in every one of `region`'s closed shapes
@@ -369,6 +373,10 @@ impl Shape for Clipped {
 
     fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], super::Unit)> {
         self.shape.uv(crossing)
+    }
+
+    fn v_up(&self) -> bool {
+        self.shape.v_up()
     }
 }
 

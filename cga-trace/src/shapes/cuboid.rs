@@ -2,7 +2,7 @@
 //! corners turned by the object's motor). A ray is inside a slab between two parameters; it
 //! meets the box where it has entered all three and left none (the slab test).
 
-use super::{Crossing, Shape, crossing_at, facing, largest, rounding};
+use super::{Crossing, Shape, Unit, crossing_at, facing, largest, rounding};
 use crate::ray::{Ray, in_range};
 use cga_core::GeometryError;
 use cga_core::euclid::{E3, dot, sub, unit};
@@ -66,6 +66,13 @@ impl BoxShape {
         }
         (enter.0 <= leave.0).then_some((enter, leave))
     }
+
+    /// The axis of the face a point `rel` (from the centre) lies on: the one along which it
+    /// is farthest out, relative to the half extent.
+    fn face(&self, rel: E3) -> usize {
+        let out = |k: usize| dot(rel, self.axes[k]).abs() / self.half[k];
+        (0..3).max_by(|&a, &b| out(a).total_cmp(&out(b))).unwrap_or(0)
+    }
 }
 
 impl Shape for BoxShape {
@@ -78,10 +85,28 @@ impl Shape for BoxShape {
     /// The axis of the face the crossing lies on: the one along which the point is farthest
     /// out, relative to the half extent.
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
-        let rel = sub(crossing.point, self.centre);
-        let out = |k: usize| dot(rel, self.axes[k]).abs() / self.half[k];
-        let k = (0..3).max_by(|&a, &b| out(a).total_cmp(&out(b))).unwrap_or(0);
+        let k = self.face(sub(crossing.point, self.centre));
         facing(self.axes[k], ray.dir)
+    }
+
+    /// Each face's own fractions, reading as drawn seen from outside with `v` down a page:
+    /// up is the box's own `+z` on its four sides, `+y` on its top (`+z`) and `−y` on its
+    /// bottom (as the top shows when the box is turned over about `x`); right is `up × n`.
+    /// `u = ½ + (x·right)/(2 h_right)`, `v = ½ − (x·up)/(2 h_up)`, `x` from the centre and
+    /// `h` the half extents: each in `[0, 1]` across the face.
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
+        let rel = sub(c.point, self.centre);
+        let k = self.face(rel);
+        let out = dot(rel, self.axes[k]) > 0.0;
+        let sign = |positive: bool| if positive { 1.0 } else { -1.0 };
+        // (axis, sign) of up and of right = up × n, in the box's own right-handed axes.
+        let ((up, su), (right, sr)) = match k {
+            0 => ((2, 1.0), (1, sign(out))),
+            1 => ((2, 1.0), (0, -sign(out))),
+            _ => ((1, sign(out)), (0, 1.0)),
+        };
+        let along = |axis: usize, s: f64| s * dot(rel, self.axes[axis]) / (2.0 * self.half[axis]);
+        Some(([0.5 + along(right, sr), 0.5 - along(up, su)], Unit::Fraction))
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {

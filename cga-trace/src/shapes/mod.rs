@@ -133,6 +133,15 @@ pub trait Shape: Send + Sync + Debug + Any {
         None
     }
 
+    /// Whether the shape's `(u, v)` turn about its normal `n` as a map's east and north do,
+    /// `u × v = n` (a plane's): an image laid on them is read with `v` up (its bottom row at
+    /// `v = 0`) so that, seen from the side `n` faces, it reads as drawn. `false` where `v`
+    /// already runs down an image as down a page seen from outside (a sphere's colatitude, a
+    /// box's faces, a mesh's coordinates as files count them).
+    fn v_up(&self) -> bool {
+        false
+    }
+
     /// Whether the shape bounds a solid on its own, which CSG and clipping take: a sphere, a
     /// box, a capped cylinder or cone, a torus, and a plane (the half-space behind its normal).
     fn closed(&self) -> bool {

@@ -40,11 +40,18 @@ pub(super) fn flat_normal(ray: &Ray, normal: E3) -> E3 {
 }
 
 impl Shape for PlaneShape {
-    /// Lengths along the plane from its anchor, on the axes [`orthonormal`] to its normal.
+    /// Lengths along the plane from its anchor, `u = (x − p)·a`, `v = (x − p)·b`, on the axes
+    /// `(a, b)` [`orthonormal`] to its normal `n` (`a × b = n`: for `n = +z`, `a = +x` and
+    /// `b = +y`; for a horizontal `n`, `b = +z`).
     fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
         let (a, b) = orthonormal(self.normal);
         let d = sub(c.point, self.anchor);
         Some(([dot(d, a), dot(d, b)], Unit::Length))
+    }
+
+    /// `a × b = n`: `v` runs up an image seen from the side the normal faces.
+    fn v_up(&self) -> bool {
+        true
     }
 
     #[inline]

@@ -4,7 +4,8 @@
 //! where the roots are isolated between the critical points (those of the derivative, a
 //! cubic, isolated the same way) and each is found by Newton steps kept inside its bracket.
 
-use super::{Crossing, Shape, crossing_at, facing, largest, rounding};
+use super::{Crossing, Shape, Unit, crossing_at, facing, largest, rounding};
+use crate::light::orthonormal;
 use crate::ray::{Ray, in_range};
 use cga_core::euclid::{E3, add, dot, scale, sub, unit};
 use cga_core::{Circle, GeometryError};
@@ -188,6 +189,22 @@ impl Shape for TorusShape {
         let m = unit(radial).map_or(self.centre, |u| add(self.centre, scale(u, self.radius)));
         let n = unit(sub(crossing.point, m)).unwrap_or(self.normal);
         facing(n, ray.dir)
+    }
+
+    /// Two angles as fractions of a turn: about the axis, `u = ½ + atan2(x·b, x·a)/2π`
+    /// (`(a, b)` [`orthonormal`] to the normal, as a cylinder's), and about the tube from its
+    /// top outwards and down, `v = (¼ − φ/2π) mod 1`, `φ = atan2(h, ρ′)` with `h` the height
+    /// over the core's plane and `ρ′` the distance from the axis less `R`: 0 on top, ¼ on the
+    /// outer equator, ½ below, ¾ on the inner one (`v` runs down the outside, as down a page).
+    fn uv(&self, c: &Crossing) -> Option<([f64; 2], Unit)> {
+        let p = sub(c.point, self.centre);
+        let h = dot(p, self.normal);
+        let radial = sub(p, scale(self.normal, h));
+        let (a, b) = orthonormal(self.normal);
+        let turn = std::f64::consts::TAU;
+        let u = 0.5 + dot(radial, b).atan2(dot(radial, a)) / turn;
+        let out = dot(radial, radial).sqrt() - self.radius;
+        Some(([u, (0.25 - h.atan2(out) / turn).rem_euclid(1.0)], Unit::Fraction))
     }
 
     fn closed(&self) -> bool {

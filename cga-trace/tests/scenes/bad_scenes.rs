@@ -15,6 +15,14 @@ fn with_object(body: &str) -> String {
     format!("{CAMERA}[[objects]]\nname = \"thing\"\n{MATERIAL}{body}")
 }
 
+/// A sphere whose material (line 11) holds `fields` after its colour.
+fn textured(fields: &str) -> String {
+    format!(
+        "{CAMERA}[[objects]]\nname = \"thing\"\ntype = \"sphere\"\ncentre = [0.0, 0.0, 0.0]\nradius = 1.0\n\
+         material = {{ colour = [1.0, 0.0, 0.0], {fields} }}\n"
+    )
+}
+
 /// A circle of radius `r` about the z axis at height `z`, as scene files write it.
 #[cfg(feature = "evolved")]
 fn circle_at(z: f64, r: f64) -> String {
@@ -859,6 +867,81 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             "a label too long",
             with_object(&format!("type = \"point\"\npoint = [0.0, 0.0, 0.0]\nlabel = \"{}\"\n", "x".repeat(65))),
             vec!["bad.toml:11:", "`label`: 65 characters exceed the limit of 64"],
+        ),
+        (
+            "a texture scaled by zero",
+            textured("texture = { pattern = \"checker\", colour = [0.0, 0.0, 0.0], scale = [0.0, 1.0] }"),
+            vec!["bad.toml:11:", "`thing`", "`scale`", "must be > 0"],
+        ),
+        (
+            "a texture flipped along w",
+            textured("texture = { pattern = \"checker\", colour = [0.0, 0.0, 0.0], flip = \"w\" }"),
+            vec!["bad.toml:11:", "`w`", "`uv`"],
+        ),
+        (
+            "a texture turned by a string",
+            textured("texture = { pattern = \"checker\", colour = [0.0, 0.0, 0.0], rotate = \"left\" }"),
+            vec!["bad.toml:11:", "invalid type"],
+        ),
+        (
+            "an unknown pattern",
+            textured("texture = { pattern = \"wood\", colour = [0.0, 0.0, 0.0] }"),
+            vec!["bad.toml:11:", "`wood`", "`marble`", "`bricks`"],
+        ),
+        (
+            "noise of too many octaves",
+            textured("texture = { pattern = \"noise\", colour = [0.0, 0.0, 0.0], octaves = 17 }"),
+            vec!["bad.toml:11:", "`thing`", "`octaves`", "1 to 16, not 17"],
+        ),
+        (
+            "a negative seed",
+            textured("texture = { pattern = \"noise\", colour = [0.0, 0.0, 0.0], seed = -1 }"),
+            vec!["bad.toml:11:", "-1"],
+        ),
+        (
+            "octaves on a checker",
+            textured("texture = { pattern = \"checker\", colour = [0.0, 0.0, 0.0], octaves = 3 }"),
+            vec!["bad.toml:11:", "`octaves`", "noise's and marble's alone"],
+        ),
+        (
+            "a gradient along w",
+            textured("texture = { pattern = \"gradient\", colour = [0.0, 0.0, 0.0], along = \"w\" }"),
+            vec!["bad.toml:11:", "`w`"],
+        ),
+        (
+            "negative turbulence",
+            textured("texture = { pattern = \"marble\", colour = [0.0, 0.0, 0.0], turbulence = -1.0 }"),
+            vec!["bad.toml:11:", "`turbulence`", "≥ 0"],
+        ),
+        (
+            "mortar wider than a brick",
+            textured("texture = { pattern = \"bricks\", colour = [0.0, 0.0, 0.0], brick = [1.0, 0.5], mortar = 0.5 }"),
+            vec!["bad.toml:11:", "`mortar`", "narrower than a brick"],
+        ),
+        (
+            "a brick of no height",
+            textured("texture = { pattern = \"bricks\", colour = [0.0, 0.0, 0.0], brick = [1.0, 0.0] }"),
+            vec!["bad.toml:11:", "`brick`", "> 0"],
+        ),
+        (
+            "a texture's strength",
+            textured("texture = { pattern = \"noise\", colour = [0.0, 0.0, 0.0], strength = 2.0 }"),
+            vec!["bad.toml:11:", "`strength`", "a `bump`'s"],
+        ),
+        (
+            "a bump with a colour",
+            textured("bump = { pattern = \"noise\", colour = [0.0, 0.0, 0.0], strength = 2.0 }"),
+            vec!["bad.toml:11:", "`colour`", "takes no `colour`"],
+        ),
+        (
+            "a bump of an infinite strength",
+            textured("bump = { pattern = \"noise\", strength = inf }"),
+            vec!["bad.toml:11:", "inf is not finite"],
+        ),
+        (
+            "a bump image that is not there",
+            textured("bump = { image = \"no-such-map.png\", strength = 0.5 }"),
+            vec!["bad.toml:11:", "no-such-map.png"],
         ),
     ]
 }

@@ -15,3 +15,4 @@ mod keyframes;
 mod outputs;
 mod scene_format;
 mod textures;
+mod texturing;
