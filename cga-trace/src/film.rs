@@ -1,23 +1,49 @@
-//! The film: linear RGB pixels, `(0, 0)` bottom-left, written as an 8- or 16-bit PNG (with
-//! the sRGB transfer curve, or clipped linear values) or as linear floating point in
-//! OpenEXR or Radiance HDR, the format chosen by the file's extension; the encodings, tone maps
-//! and the sRGB curve both ways.
+//! The film: linear RGB pixels, `(0, 0)` bottom-left, and where the background is
+//! transparent each pixel's coverage; written as an 8- or 16-bit PNG (with the sRGB transfer
+//! curve, or clipped linear values; RGBA with straight colours where there is coverage) or as
+//! linear floating point in OpenEXR (RGBA, premultiplied, where there is coverage) or Radiance
+//! HDR (no alpha), the format chosen by the file's extension; the encodings, tone maps and the
+//! sRGB curve both ways.
 
-use image::{ImageBuffer, ImageFormat, Rgb};
+use image::{ImageBuffer, ImageFormat, Pixel, Rgb, Rgba};
 use rayon::prelude::*;
 use std::io::{Seek, Write};
 use std::path::Path;
 use std::sync::OnceLock;
 
-/// A rendered image in linear RGB.
+/// A rendered image in linear RGB, with its coverage where the background is transparent.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Film {
     /// Width in pixels.
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
-    /// Row-major from the bottom row up.
+    /// Row-major from the bottom row up; premultiplied by `coverage` where there is one.
     pub pixels: Vec<[f64; 3]>,
+    /// Each pixel's coverage in [0, 1], the fraction of its samples whose camera ray met
+    /// something (an alpha channel), as `pixels`; `None` for an opaque picture.
+    pub coverage: Option<Vec<f64>>,
+}
+
+/// A pixel as a renderer gives it: linear RGB (an opaque picture), or RGB premultiplied by
+/// the pixel's coverage and the coverage (a picture over a transparent background); its
+/// values, RGB first, as a slice.
+pub trait Channels: Copy + Default + Send + Sync + AsRef<[f64]> + AsMut<[f64]> {
+    /// The film of `pixels` (row-major from the bottom row up).
+    fn film(width: u32, height: u32, pixels: Vec<Self>) -> Film;
+}
+
+impl Channels for [f64; 3] {
+    fn film(width: u32, height: u32, pixels: Vec<Self>) -> Film {
+        Film { width, height, pixels, coverage: None }
+    }
+}
+
+impl Channels for [f64; 4] {
+    fn film(width: u32, height: u32, pixels: Vec<Self>) -> Film {
+        let coverage = Some(pixels.iter().map(|p| p[3]).collect());
+        Film { width, height, pixels: pixels.into_iter().map(|[r, g, b, _]| [r, g, b]).collect(), coverage }
+    }
 }
 
 /// How an image file stores the film.
@@ -47,6 +73,16 @@ pub enum OutputError {
         /// The format.
         format: &'static str,
     },
+    /// A picture with coverage (a transparent background) asked of a format without alpha.
+    #[error(
+        "`{file}`: {format} has no alpha channel for `background = \"transparent\"`: write .png or .exr, or give the background a colour"
+    )]
+    NoAlpha {
+        /// The output, as given.
+        file: String,
+        /// The format.
+        format: &'static str,
+    },
     /// Encoding failed.
     #[error(transparent)]
     Image(#[from] image::ImageError),
@@ -67,6 +103,20 @@ impl Output {
             _ => return Err(OutputError::Extension(path.display().to_string())),
         })
     }
+
+    /// Whether the format stores an alpha channel (PNG and EXR do; Radiance HDR does not).
+    pub fn has_alpha(self) -> bool {
+        self != Output::Hdr
+    }
+
+    /// Refuses a picture with coverage (`transparent`) where the format (of `path`) has no
+    /// alpha channel, rather than drop it.
+    pub fn check_alpha(self, path: &Path, transparent: bool) -> Result<(), OutputError> {
+        match transparent && !self.has_alpha() {
+            true => Err(OutputError::NoAlpha { file: path.display().to_string(), format: "Radiance HDR (.hdr)" }),
+            false => Ok(()),
+        }
+    }
 }
 
 impl Film {
@@ -79,29 +129,101 @@ impl Film {
     fn image<P>(&self, f: impl Fn(f64) -> P + Sync) -> ImageBuffer<Rgb<P>, Vec<P>>
     where
         P: Default + Clone + Send,
-        Rgb<P>: image::Pixel<Subpixel = P>,
+        Rgb<P>: Pixel<Subpixel = P>,
     {
-        // Rows in parallel (8-bit encoding of a large frame is otherwise a tenth of a
-        // two-thread render); image rows run top-down, the film's bottom-up.
-        let (w, h) = (self.width as usize, self.height as usize);
-        let mut data = vec![P::default(); 3 * w * h];
-        data.par_chunks_mut(3 * w).enumerate().for_each(|(y, row)| {
-            let film_row = &self.pixels[(h - 1 - y) * w..(h - y) * w];
-            for (out, pixel) in row.chunks_exact_mut(3).zip(film_row) {
+        self.image_of(|pixels, _, row: &mut [P]| {
+            for (out, pixel) in row.chunks_exact_mut(3).zip(pixels) {
                 for (o, &v) in out.iter_mut().zip(pixel) {
                     *o = f(v);
                 }
             }
+        })
+    }
+
+    /// An image of the film with its coverage as alpha, top row first: each pixel's colour
+    /// straight (unassociated: divided by its coverage; black where that is 0), each channel
+    /// mapped by `f`, the coverage by `alpha`.
+    fn image_rgba<P>(
+        &self,
+        f: impl Fn(f64) -> P + Sync,
+        alpha: impl Fn(f64) -> P + Sync,
+    ) -> ImageBuffer<Rgba<P>, Vec<P>>
+    where
+        P: Default + Clone + Send,
+        Rgba<P>: Pixel<Subpixel = P>,
+    {
+        self.image_of(|pixels, coverage, row: &mut [P]| {
+            for ((out, pixel), a) in row.chunks_exact_mut(4).zip(pixels).zip(alphas(coverage)) {
+                let straight = unpremultiplied(*pixel, a);
+                for (o, &v) in out.iter_mut().zip(&straight) {
+                    *o = f(v);
+                }
+                out[3] = alpha(a);
+            }
+        })
+    }
+
+    /// An image whose rows `put(film row, its coverage, subpixels)` writes, top row first.
+    fn image_of<Q, P>(&self, put: impl Fn(&[[f64; 3]], Option<&[f64]>, &mut [P]) + Sync) -> ImageBuffer<Q, Vec<P>>
+    where
+        P: Default + Clone + Send,
+        Q: Pixel<Subpixel = P>,
+    {
+        // Rows in parallel (8-bit encoding of a large frame is otherwise a tenth of a
+        // two-thread render); image rows run top-down, the film's bottom-up.
+        let (w, h, n) = (self.width as usize, self.height as usize, usize::from(Q::CHANNEL_COUNT));
+        let mut data = vec![P::default(); n * w * h];
+        data.par_chunks_mut(n * w).enumerate().for_each(|(y, row)| {
+            let at = (h - 1 - y) * w..(h - y) * w;
+            put(&self.pixels[at.clone()], self.coverage.as_ref().map(|c| &c[at]), row);
         });
-        ImageBuffer::from_raw(self.width, self.height, data).expect("3 w h subpixels")
+        ImageBuffer::from_raw(self.width, self.height, data).expect("n w h subpixels")
     }
 
     /// The film as a PNG shows it: each linear value times `2^exposure`, then tone-mapped
-    /// (still linear; the encoding comes after).
+    /// (still linear; the encoding comes after). Where there is coverage, the straight colours
+    /// are developed (a tone map is not linear) and premultiplied again.
     pub fn developed(&self, exposure: f64, tone_map: ToneMap) -> Film {
         let gain = exposure.exp2();
-        let pixels = self.pixels.iter().map(|p| p.map(|v| tone_map.apply(v * gain))).collect();
-        Film { width: self.width, height: self.height, pixels }
+        let develop = |p: &[f64; 3]| p.map(|v| tone_map.apply(v * gain));
+        let pixels = match &self.coverage {
+            None => self.pixels.iter().map(develop).collect(),
+            Some(coverage) => self
+                .pixels
+                .iter()
+                .zip(coverage)
+                .map(|(p, &a)| develop(&unpremultiplied(*p, a)).map(|v| v * a))
+                .collect(),
+        };
+        Film { width: self.width, height: self.height, pixels, coverage: self.coverage.clone() }
+    }
+
+    /// 8-bit RGBA, top row first: straight colours encoded, the coverage as alpha (1 where the
+    /// film has none), as a PNG stores them.
+    pub fn to_rgba8(&self, encoding: Encoding) -> image::RgbaImage {
+        let alpha = |a: f64| level8(a, Encoding::Linear);
+        match encoding {
+            Encoding::Srgb => self.image_rgba(srgb8, alpha),
+            Encoding::Linear => self.image_rgba(|v| level8(v, encoding), alpha),
+        }
+    }
+
+    /// 16-bit RGBA, top row first, as [`Film::to_rgba8`].
+    pub fn to_rgba16(&self, encoding: Encoding) -> ImageBuffer<Rgba<u16>, Vec<u16>> {
+        let level = |v: f64, encoding| (encode(v, encoding) * 65535.0 + 0.5) as u16;
+        self.image_rgba(|v| level(v, encoding), |a| level(a, Encoding::Linear))
+    }
+
+    /// Linear 32-bit floats with the coverage as alpha, top row first: colours premultiplied
+    /// (associated alpha), as OpenEXR stores them; NaN and infinities as [`Film::to_rgb32f`].
+    pub fn to_rgba32f(&self) -> image::Rgba32FImage {
+        self.image_of(|pixels, coverage, row: &mut [f32]| {
+            for ((out, pixel), a) in row.chunks_exact_mut(4).zip(pixels).zip(alphas(coverage)) {
+                for (o, &v) in out.iter_mut().zip(pixel.iter().chain([&a])) {
+                    *o = float32(v);
+                }
+            }
+        })
     }
 
     /// 8-bit RGB, top row first, encoded.
@@ -120,15 +242,21 @@ impl Film {
     /// Linear 32-bit floats, top row first, unclipped (NaN as 0; infinities as the largest
     /// f32, since the formats store no infinity usefully).
     pub fn to_rgb32f(&self) -> image::Rgb32FImage {
-        self.image(|v| if v.is_nan() { 0.0 } else { (v as f32).clamp(-f32::MAX, f32::MAX) })
+        self.image(float32)
     }
 
-    /// Write the film in `output`'s format to `w` (`encoding` applies to PNG only).
+    /// Write the film in `output`'s format to `w` (`encoding` applies to PNG only): with its
+    /// coverage as alpha where it has one (PNG straight, EXR premultiplied), refused for HDR.
     pub fn write<W: Write + Seek>(&self, w: &mut W, output: Output, encoding: Encoding) -> Result<(), OutputError> {
+        let covered = self.coverage.is_some();
         match output {
+            Output::Png8 if covered => self.to_rgba8(encoding).write_to(w, ImageFormat::Png)?,
+            Output::Png16 if covered => self.to_rgba16(encoding).write_to(w, ImageFormat::Png)?,
+            Output::Exr if covered => self.to_rgba32f().write_to(w, ImageFormat::OpenExr)?,
             Output::Png8 => self.to_rgb8(encoding).write_to(w, ImageFormat::Png)?,
             Output::Png16 => self.to_rgb16(encoding).write_to(w, ImageFormat::Png)?,
             Output::Exr => self.to_rgb32f().write_to(w, ImageFormat::OpenExr)?,
+            Output::Hdr if covered => output.check_alpha(Path::new("the picture"), true)?,
             Output::Hdr => {
                 // Radiance stores no negative values.
                 let mut img = self.to_rgb32f();
@@ -175,6 +303,23 @@ impl ToneMap {
             }
         }
     }
+}
+
+/// A colour premultiplied by coverage `a` as a straight one: divided by `a`, black where `a`
+/// is 0 (nothing there).
+pub fn unpremultiplied(c: [f64; 3], a: f64) -> [f64; 3] {
+    if a > 0.0 { c.map(|v| v / a) } else { [0.0; 3] }
+}
+
+/// A row's coverage, or 1 for each pixel of an opaque film.
+fn alphas(coverage: Option<&[f64]>) -> impl Iterator<Item = f64> + '_ {
+    coverage.into_iter().flatten().copied().chain(std::iter::repeat(1.0))
+}
+
+/// A linear value as a 32-bit float: NaN as 0, infinities as the largest f32 (the formats
+/// store no infinity usefully).
+fn float32(v: f64) -> f32 {
+    if v.is_nan() { 0.0 } else { (v as f32).clamp(-f32::MAX, f32::MAX) }
 }
 
 /// An 8-bit sRGB channel as a linear value (the sRGB transfer curve inverted).
@@ -272,12 +417,40 @@ mod tests {
 
     #[test]
     fn overflowing_colours_are_white_and_nan_black() {
-        let film = Film { width: 3, height: 1, pixels: vec![[f64::INFINITY; 3], [f64::NAN; 3], [0.5, 2.0, -1.0]] };
+        let pixels = vec![[f64::INFINITY; 3], [f64::NAN; 3], [0.5, 2.0, -1.0]];
+        let film = Film { width: 3, height: 1, pixels, coverage: None };
         let img = film.to_rgb8(Encoding::Linear);
         assert_eq!(img.get_pixel(0, 0).0, [255; 3]);
         assert_eq!(img.get_pixel(1, 0).0, [0; 3]);
         assert_eq!(img.get_pixel(2, 0).0, [128, 255, 0]);
         assert_eq!(film.to_rgb16(Encoding::Linear).get_pixel(2, 0).0, [32768, 65535, 0]);
+    }
+
+    #[test]
+    fn coverage_is_written_as_alpha_straight_in_png_and_premultiplied_in_exr() {
+        // Half of an orange pixel, nothing, and a whole one.
+        let orange = [0.8, 0.4, 0.2];
+        let pixels = vec![orange.map(|c| c * 0.5), [0.0; 3], orange];
+        let film = Film { width: 3, height: 1, pixels, coverage: Some(vec![0.5, 0.0, 1.0]) };
+        let png = film.to_rgba8(Encoding::Linear);
+        assert_eq!(png.get_pixel(0, 0).0, [204, 102, 51, 128], "straight colour, alpha ½");
+        assert_eq!(png.get_pixel(1, 0).0, [0; 4]);
+        assert_eq!(png.get_pixel(2, 0).0, [204, 102, 51, 255]);
+        assert_eq!(film.to_rgba16(Encoding::Linear).get_pixel(0, 0).0, [52428, 26214, 13107, 32768]);
+        let exr = film.to_rgba32f();
+        assert_eq!(exr.get_pixel(0, 0).0, [0.4, 0.2, 0.1, 0.5], "premultiplied");
+        // Developing acts on the straight colour: the filmic map of 0.8, times ½.
+        let developed = film.developed(1.0, ToneMap::Filmic);
+        assert_eq!(developed.coverage, film.coverage);
+        let want = ToneMap::Filmic.apply(1.6) * 0.5;
+        assert!((developed.pixels[0][0] - want).abs() < 1e-15, "{:?}", developed.pixels[0]);
+        // An opaque film has no alpha: RGBA of it is opaque.
+        let opaque = Film { coverage: None, ..film.clone() };
+        assert_eq!(opaque.to_rgba8(Encoding::Linear).get_pixel(0, 0).0[3], 255);
+        // Radiance HDR has none: refused, not dropped.
+        let mut bytes = std::io::Cursor::new(Vec::new());
+        assert!(matches!(film.write(&mut bytes, Output::Hdr, Encoding::Srgb), Err(OutputError::NoAlpha { .. })));
+        assert!(opaque.write(&mut bytes, Output::Hdr, Encoding::Srgb).is_ok());
     }
 
     #[test]

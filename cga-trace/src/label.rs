@@ -1,6 +1,7 @@
 //! Labels written into a rendered picture beside their objects, in a bitmap font of
 //! `embedded-graphics` (ISO 8859-1: ASCII and the Latin-1 letters; other characters show as
-//! `?`), outlined in black so that they read on any background.
+//! `?`), outlined in black so that they read on any background; opaque where drawn over a
+//! transparent one (each pixel of text or outline takes coverage 1).
 
 use crate::camera::Camera;
 use crate::film::Film;
@@ -70,7 +71,12 @@ impl DrawTarget for Canvas<'_> {
         let (w, h) = (self.film.width as i32, self.film.height as i32);
         for Pixel(p, c) in pixels {
             if c.is_on() && (0..w).contains(&p.x) && (0..h).contains(&p.y) {
-                self.film.pixels[((h - 1 - p.y) * w + p.x) as usize] = self.paint;
+                let at = ((h - 1 - p.y) * w + p.x) as usize;
+                self.film.pixels[at] = self.paint;
+                // Covered whole, so the paint is its own premultiplied colour.
+                if let Some(coverage) = &mut self.film.coverage {
+                    coverage[at] = 1.0;
+                }
             }
         }
         Ok(())
@@ -84,7 +90,8 @@ fn font(width: u32) -> &'static MonoFont<'static> {
 
 /// Write `labels` into `film` (the whole picture `camera` takes), each to the right of its
 /// object's image at the height of its centre, or the nearest line above or below that no
-/// earlier label covers; a label whose object is behind the camera is left out.
+/// earlier label covers; a label whose object is behind the camera is left out. Where the film
+/// has coverage, the label's pixels are opaque.
 pub fn draw_labels(film: &mut Film, camera: &Camera, labels: &[Label]) {
     let font = font(film.width);
     let (cw, ch) = (font.character_size.width as i32, font.character_size.height as i32);

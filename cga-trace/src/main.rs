@@ -5,8 +5,8 @@ use cga_trace::film::Output;
 use cga_trace::integrator::RayCounts;
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
-use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, scale_path, window};
-use cga_trace::settings::ToneMap;
+use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, check_output, scale_path, window};
+use cga_trace::settings::{Background, ToneMap};
 use cga_trace::{Aov, BackendKind, Encoding, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
@@ -110,6 +110,11 @@ struct Render {
     /// Tone map of PNG output (overrides the scene): none (clip) or filmic (ACES).
     #[arg(long, value_enum)]
     tone_map: Option<ToneMap>,
+    /// What camera rays that meet nothing show (overrides the scene): `transparent` (an alpha
+    /// channel of each pixel's coverage: PNG straight, EXR premultiplied; not HDR) or a linear
+    /// colour R,G,B.
+    #[arg(long, value_name = "transparent|R,G,B", value_parser = parse_background)]
+    background: Option<Background>,
     /// Write a debug image instead of the shaded one: normals, α, or a curvature of swept
     /// surfaces in false colour (viridis; the scale is written to OUTPUT.scale.json).
     #[arg(long, value_enum, default_value_t = Aov::Shaded)]
@@ -160,6 +165,21 @@ fn numbered(path: &Path, frame: usize, frames: usize) -> PathBuf {
         None => format!("{stem}_{frame:0digits$}"),
     };
     path.with_file_name(name)
+}
+
+/// `transparent`, or `r,g,b`: three numbers (checked with the scene's settings).
+fn parse_background(s: &str) -> Result<Background, String> {
+    if s.trim() == "transparent" {
+        return Ok(Background::Transparent);
+    }
+    let numbers: Vec<f64> = s
+        .split(',')
+        .map(|x| x.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .map_err(|_| format!("`{s}`: give `transparent` or a linear colour R,G,B (three numbers)"))?;
+    let colour: [f64; 3] =
+        numbers.try_into().map_err(|v: Vec<f64>| format!("`transparent` or three numbers R,G,B, not {}", v.len()))?;
+    Ok(Background::Colour(colour))
 }
 
 /// `x0,x1,y0,y1`: four numbers.
@@ -348,6 +368,8 @@ fn render_frame(
         labels: !args.no_labels,
         encoding: args.encoding,
     };
+    // A transparent picture where the format has no alpha: refused before the render.
+    check_output(&scene, &options, output, output_path)?;
     let rows = window(&scene, &options).map_err(flagged)?.rows.len();
     let bar = indicatif::ProgressBar::new(rows as u64).with_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {per_sec}, {elapsed} gone, {eta} left")
@@ -403,6 +425,7 @@ fn view(args: &Render) -> View {
         max_depth: args.max_depth,
         exposure: args.exposure,
         tone_map: args.tone_map,
+        background: args.background,
     }
 }
 
@@ -412,7 +435,7 @@ fn flagged(e: RenderError) -> anyhow::Error {
         RenderError::View(ViewError::Fov(e)) => ("--fov", e.into()),
         RenderError::View(ViewError::Size(e)) => ("--width/--height", e.into()),
         RenderError::View(ViewError::Settings(e)) => {
-            ("--max-depth/--spp/--adaptive/--adaptive-min/--exposure", e.into())
+            ("--max-depth/--spp/--adaptive/--adaptive-min/--exposure/--background", e.into())
         }
         RenderError::Crop(e) => ("--crop", anyhow::Error::msg(e)),
         RenderError::Backend(e) => ("--backend", anyhow::Error::msg(e)),

@@ -2,7 +2,8 @@
 //! the tests and any program: a scene file read once ([`Source`]), placed at a time of its
 //! motion with a [`View`]'s changes, rendered on a back end through its shutter (each instant
 //! placed anew, never read again), false colour for a scalar AOV, and the picture developed
-//! (exposure, tone map), labelled and written atomically.
+//! (exposure, tone map), labelled and written atomically; over a transparent background with
+//! its coverage as alpha (PNG straight, EXR premultiplied; refused for HDR).
 //!
 //! ```no_run
 //! use cga_trace::pipeline::{Options, Pipeline, View};
@@ -24,7 +25,7 @@ use crate::invalid::Invalid;
 use crate::label::{Label, draw_labels};
 use crate::output::{OutputFile, OutputFileError};
 use crate::scene::Scene;
-use crate::settings::Adaptive;
+use crate::settings::{Adaptive, Background};
 use crate::shutter::Sample;
 use std::borrow::Cow;
 use std::io::Write;
@@ -54,6 +55,8 @@ pub struct View {
     pub exposure: Option<f64>,
     /// Tone map of PNG output.
     pub tone_map: Option<ToneMap>,
+    /// What camera rays that meet nothing show: a colour, or nothing (a transparent picture).
+    pub background: Option<Background>,
 }
 
 impl View {
@@ -74,6 +77,9 @@ impl View {
         }
         s.exposure = self.exposure.unwrap_or(s.exposure);
         s.tone_map = self.tone_map.unwrap_or(s.tone_map);
+        if let Some(background) = self.background {
+            s.set_background(background);
+        }
         s.check().map_err(ViewError::Settings)?;
         Ok(note)
     }
@@ -88,8 +94,8 @@ pub enum ViewError {
     /// The width or height.
     #[error("width/height: {0}")]
     Size(#[source] CameraError),
-    /// Depth, samples, adaptive threshold or exposure out of their range.
-    #[error("max_depth/spp/adaptive/exposure: {0}")]
+    /// Depth, samples, adaptive threshold, exposure or background out of their range.
+    #[error("max_depth/spp/adaptive/exposure/background: {0}")]
     Settings(#[source] Invalid),
 }
 
@@ -235,12 +241,18 @@ impl Pipeline {
             Some(shutter) => {
                 let mut counts = RayCounts::default();
                 let pixels = (window.columns.clone(), window.rows.clone());
-                let film = shutter.expose(options.time, scene.settings.spp, pixels, on_row, |t, samples| {
+                let (time, spp) = (options.time, scene.settings.spp);
+                let mut instant = |t: f64, samples: &[Sample]| {
                     let at = self.scene(t).map_err(|e| RenderError::Instant { time: t, source: Box::new(e) })?;
                     let (done, cast) = render_on(&at, options, Job::Samples(samples), Some(&mut self.kept))?;
                     counts.add(&cast);
-                    Ok::<_, RenderError>(done.colours())
-                })?;
+                    Ok::<_, RenderError>(done)
+                };
+                // The coverage too is averaged over the instants.
+                let film = match options.aov.covered(&scene.settings) {
+                    false => shutter.expose(time, spp, pixels, on_row, |t, s| instant(t, s).map(Done::colours))?,
+                    true => shutter.expose(time, spp, pixels, on_row, |t, s| instant(t, s).map(Done::covered))?,
+                };
                 (film, counts)
             }
         };
@@ -261,6 +273,13 @@ pub fn render(scene: &Scene, options: &Options, on_row: &(dyn Fn() + Sync)) -> R
     Ok(Rendered::new(scene, options, done.film(), counts, start.elapsed().as_secs_f64()))
 }
 
+/// Refuses `output` (at `path`) for the picture `options` take of `scene` where the picture
+/// carries a coverage the format cannot store (a transparent background to HDR): found before
+/// the render, not after it.
+pub fn check_output(scene: &Scene, options: &Options, output: Output, path: &Path) -> Result<(), RenderError> {
+    Ok(output.check_alpha(path, options.aov.covered(&scene.settings))?)
+}
+
 /// The window `options` crops the scene's image to, or the whole image.
 pub fn window(scene: &Scene, options: &Options) -> Result<Window, RenderError> {
     let (w, h) = (scene.camera.width, scene.camera.height);
@@ -276,24 +295,33 @@ enum Job<'a> {
     Samples(&'a [Sample]),
 }
 
-/// What a [`Job`] gives.
+/// What a [`Job`] gives: a film, or the samples' colours (with their coverage where the
+/// picture carries it, [`Aov::covered`]).
 enum Done {
     Film(Film),
     Colours(Vec<[f64; 3]>),
+    Covered(Vec<[f64; 4]>),
 }
 
 impl Done {
     fn film(self) -> Film {
         match self {
             Done::Film(f) => f,
-            Done::Colours(_) => unreachable!("a window's job gives a film"),
+            _ => unreachable!("a window's job gives a film"),
         }
     }
 
     fn colours(self) -> Vec<[f64; 3]> {
         match self {
             Done::Colours(c) => c,
-            Done::Film(_) => unreachable!("a samples' job gives colours"),
+            _ => unreachable!("an opaque picture's samples give colours"),
+        }
+    }
+
+    fn covered(self) -> Vec<[f64; 4]> {
+        match self {
+            Done::Covered(c) => c,
+            _ => unreachable!("a transparent picture's samples give their coverage"),
         }
     }
 }
@@ -334,6 +362,9 @@ fn render_with<B: Backend>(
     }
     let done = match job {
         Job::Window(window, on_row) => Done::Film(renderer.render_window(options.aov, window, on_row)),
+        Job::Samples(samples) if options.aov.covered(&scene.settings) => {
+            Done::Covered(renderer.render_covered_samples(options.aov, samples))
+        }
         Job::Samples(samples) => Done::Colours(renderer.render_samples(options.aov, samples)),
     };
     Ok((done, renderer.counts()))
@@ -383,8 +414,8 @@ impl Rendered {
 
     /// The picture as `output` stores it: a shaded PNG developed (`2^exposure`, then the tone
     /// map; EXR and HDR keep the linear values, other AOVs are as rendered), then the labels
-    /// written in, in their own colours. Borrowed as rendered where nothing changes it (no copy
-    /// of the film).
+    /// written in, in their own colours (opaque where drawn, over a transparent background).
+    /// Borrowed as rendered where nothing changes it (no copy of the film).
     pub fn image(&self, output: Output) -> Cow<'_, Film> {
         let png = matches!(output, Output::Png8 | Output::Png16);
         let mut film = match self.develop {
@@ -411,6 +442,7 @@ impl Rendered {
             let file = file.path().display().to_string();
             move |source| RenderError::Write { file, source }
         };
+        output.check_alpha(image.path(), self.film.coverage.is_some())?;
         self.image(output).write(image, output, self.encoding)?;
         if let (Some(file), Some(s)) = (scale, &self.scale) {
             let json = serde_json::to_string_pretty(s).expect("a scale serialises") + "\n";
@@ -425,6 +457,7 @@ impl Rendered {
     /// scene's files.
     pub fn save(&self, path: &Path, bits: Option<u8>) -> Result<(), RenderError> {
         let output = Output::for_path(path, bits)?;
+        output.check_alpha(path, self.film.coverage.is_some())?;
         let mut image = OutputFile::create(path, &[])?;
         image.refuse(&self.inputs)?;
         let beside = scale_path(path);

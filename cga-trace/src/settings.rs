@@ -1,5 +1,5 @@
-//! Render settings: depth, background, ambient light, shadows, attenuation, output
-//! encoding, and how evolved surfaces are intersected.
+//! Render settings: depth, background (a colour, or transparent), ambient light, shadows,
+//! attenuation, output encoding, and how evolved surfaces are intersected.
 
 pub use crate::film::{Encoding, ToneMap};
 use crate::invalid::Invalid;
@@ -62,6 +62,16 @@ impl Adaptive {
     }
 }
 
+/// What camera rays that meet nothing show, as a scene, the command line or a figure gives it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Background {
+    /// A linear RGB colour (the picture is opaque).
+    Colour([f64; 3]),
+    /// Nothing: the picture carries each pixel's coverage (an alpha channel), and what
+    /// reflected and refracted rays that leave the scene see is the environment, or black.
+    Transparent,
+}
+
 /// Exposure, in stops, a scene or the command line may set: 2^±64 spans any range of
 /// linear values a picture needs.
 pub const MAX_EXPOSURE: f64 = 64.0;
@@ -76,8 +86,12 @@ pub struct Settings {
     pub spp: u32,
     /// Adaptive anti-aliasing (`None`: every pixel takes `spp` samples).
     pub adaptive: Option<Adaptive>,
-    /// Colour of rays that hit nothing.
+    /// Colour of rays that hit nothing (black where `transparent`).
     pub background: [f64; 3],
+    /// Camera rays that meet nothing are transparent (`background = "transparent"`): the
+    /// picture carries each pixel's coverage, the fraction of its samples whose camera ray met
+    /// something, and its colours are premultiplied by it (misses add nothing).
+    pub transparent: bool,
     /// Ambient light intensity (times `k_a` and the colour).
     pub ambient: f64,
     /// Fraction of a light's diffuse and specular that passes a blocker (0: hard shadows).
@@ -101,7 +115,7 @@ pub struct Settings {
 }
 
 /// What a scene gets where it sets nothing: 5 bounces, one sample per pixel (the centre), no
-/// adaptive sampling, a black background, ambient 0.3, hard shadows, no attenuation, sRGB,
+/// adaptive sampling, a black (opaque) background, ambient 0.3, hard shadows, no attenuation, sRGB,
 /// the hybrid surface method.
 impl Default for Settings {
     fn default() -> Self {
@@ -110,6 +124,7 @@ impl Default for Settings {
             spp: 1,
             adaptive: None,
             background: [0.0; 3],
+            transparent: false,
             ambient: 0.3,
             shadow_transmission: 0.0,
             shadows: true,
@@ -124,6 +139,20 @@ impl Default for Settings {
 }
 
 impl Settings {
+    /// The background as given: its colour, or transparent.
+    pub fn background(&self) -> Background {
+        if self.transparent { Background::Transparent } else { Background::Colour(self.background) }
+    }
+
+    /// The background set to `background`: a transparent one is black to the rays that leave
+    /// the scene (where no environment is given), as nothing lies behind it.
+    pub fn set_background(&mut self, background: Background) {
+        (self.background, self.transparent) = match background {
+            Background::Colour(c) => (c, false),
+            Background::Transparent => ([0.0; 3], true),
+        };
+    }
+
     /// Values finite and in range, counts within [`crate::limits`], and a usable surface
     /// method.
     pub fn check(&self) -> Result<(), Invalid> {

@@ -8,7 +8,7 @@
 //! the samples that fall on it, so a blurred picture casts the rays a still one of the same
 //! `spp` does; what stands is kept from one instant to the next.
 
-use crate::film::Film;
+use crate::film::{Channels, Film};
 use crate::hash;
 use crate::limits::MAX_TIME_SAMPLES;
 use std::ops::Range;
@@ -84,14 +84,16 @@ impl Shutter {
     /// that take no sample are not placed. `on_row` is called `rows.len()` times in all, as
     /// the instants go by. Beside the film it holds 4 bytes a pixel, and one instant's
     /// samples and colours, 36 bytes for each pixel the instant takes (every pixel where
-    /// `m = 1`).
-    pub fn expose<E>(
+    /// `m = 1`). The samples' values are colours (`P = [f64; 3]`), or premultiplied colours
+    /// and coverage (`[f64; 4]`, a transparent background: the coverage too is the mean over
+    /// the shutter's instants).
+    pub fn expose<E, P: Channels>(
         &self,
         time: f64,
         spp: u32,
         (columns, rows): (Range<u32>, Range<u32>),
         on_row: &(dyn Fn() + Sync),
-        mut picture: impl FnMut(f64, &[Sample]) -> Result<Vec<[f64; 3]>, E>,
+        mut picture: impl FnMut(f64, &[Sample]) -> Result<Vec<P>, E>,
     ) -> Result<Film, E> {
         let (spp, m) = (spp.max(1), self.per_stratum(spp));
         let n = m * spp;
@@ -103,7 +105,7 @@ impl Shutter {
             classes[Self::scramble(i, j, m).0 as usize].push(p as u32);
         }
         let at = |p: u32| (columns.start + p % width as u32, rows.start + p / width as u32);
-        let mut sum = vec![[0.0; 3]; width * rows.len()];
+        let mut sum = vec![P::default(); width * rows.len()];
         let mut samples: Vec<Sample> = Vec::new();
         let (mut reported, height) = (0, rows.len() as u64);
         for k in 0..n {
@@ -116,8 +118,9 @@ impl Shutter {
             if !samples.is_empty() {
                 let colours = picture(self.time(time, k, n), &samples)?;
                 for (&p, c) in classes[r as usize].iter().zip(colours) {
-                    let p = &mut sum[p as usize];
-                    *p = [p[0] + c[0], p[1] + c[1], p[2] + c[2]];
+                    for (s, c) in sum[p as usize].as_mut().iter_mut().zip(c.as_ref()) {
+                        *s += c;
+                    }
                 }
             }
             let due = height * u64::from(k + 1) / u64::from(n);
@@ -126,8 +129,10 @@ impl Shutter {
             }
             reported = due;
         }
-        let pixels = sum.into_iter().map(|p| p.map(|c| c / f64::from(spp))).collect();
-        Ok(Film { width: width as u32, height: rows.len() as u32, pixels })
+        for p in &mut sum {
+            p.as_mut().iter_mut().for_each(|c| *c /= f64::from(spp));
+        }
+        Ok(P::film(width as u32, rows.len() as u32, sum))
     }
 }
 

@@ -100,7 +100,8 @@ class Scene:
         return self
 
     def settings(self, **fields):
-        """The ``[render]`` table: ``spp``, ``adaptive``, ``ambient``, ``background``, ``max_depth``, …"""
+        """The ``[render]`` table: ``spp``, ``adaptive``, ``ambient``, ``background`` (linear
+        ``[r, g, b]``, or ``"transparent"``: an RGBA picture), ``max_depth``, …"""
         self._render.update(fields)
         return self
 
@@ -184,7 +185,10 @@ class Scene:
 
     def render(self, **options):
         """The picture (a ``cga.Picture``: ``.linear``, ``.srgb``, ``.save(path)``), with the
-        options of ``cga._cga.Scene.render`` (``width``, ``spp``, ``exposure``, …)."""
+        options of ``cga._cga.Scene.render`` (``width``, ``spp``, ``exposure``,
+        ``background="transparent"``, …); over a transparent background ``.linear`` and
+        ``.srgb`` have a fourth channel, alpha (premultiplied linear, as EXR stores it;
+        straight 8-bit, as PNG stores it), and ``.coverage`` is the alpha as floats."""
         return self.build().render(**options)
 
 

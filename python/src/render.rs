@@ -1,12 +1,13 @@
 //! Scenes rendered to numpy arrays through cga-trace's pipeline: a scene file (or its text)
 //! read once, rendered with any of the command line's options (the GIL released while it
 //! renders), and its picture as linear values, as the 8-bit sRGB a PNG holds, in a notebook
-//! (`_repr_png_`), or written atomically.
+//! (`_repr_png_`), or written atomically; over a transparent background as RGBA (linear
+//! premultiplied, as EXR stores it; 8-bit straight, as PNG stores it).
 
 use crate::errors::SceneError;
 use cga_trace::film::Output;
 use cga_trace::pipeline::{Options, Pipeline, RenderError, Rendered, View};
-use cga_trace::settings::ToneMap;
+use cga_trace::settings::{Background, ToneMap};
 use cga_trace::{Aov, BackendKind};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::IntoPyObjectExt;
@@ -31,6 +32,23 @@ fn checked(py: Python<'_>, pipeline: Result<Pipeline, RenderError>) -> PyResult<
     let mut pipeline = pipeline.map_err(scene_error)?;
     py.detach(|| pipeline.scene(0.0).map(|_| ())).map_err(scene_error)?;
     Ok(Scene { pipeline: Mutex::new(pipeline) })
+}
+
+/// A `background` as Python gives it: `"transparent"`, a colour name or `"#rrggbb"` (sRGB, as
+/// a figure's colours), or three linear values `[r, g, b]` (as a scene file's).
+pub fn background_of(value: &Bound<'_, PyAny>) -> PyResult<Background> {
+    let refused = || {
+        SceneError::new_err(format!(
+            "background = {value}: give \"transparent\", a colour name or \"#rrggbb\", or linear [r, g, b]"
+        ))
+    };
+    if let Ok(name) = value.extract::<String>() {
+        return match name.as_str() {
+            "transparent" => Ok(Background::Transparent),
+            _ => cga_trace::figure::colour(&name).map(Background::Colour).ok_or_else(refused),
+        };
+    }
+    value.extract::<[f64; 3]>().map(Background::Colour).map_err(|_| refused())
 }
 
 /// An option's value among `choices`, refused by name otherwise.
@@ -58,14 +76,16 @@ impl Scene {
     }
 
     /// The scene's picture: the scene's own size and settings unless given. `aov` is one of
-    /// shaded, normal, alpha, gaussian, mean, k1, k2, postulate; `backend` sparse, dense or
+    /// shaded, normal, alpha, gaussian, mean, k1, k2, postulate, coverage; `backend` sparse, dense or
     /// plain; `crop` four fractions `[x0, x1, y0, y1]` (y from the top); `time` the motion's
     /// time in [0, 1]; `adaptive` a contrast threshold (POV-Ray's `+A`, 0 to 3) that makes
     /// `spp` a maximum, taken only where a pixel's first samples (`adaptive_min`, default 4;
     /// given alone, it turns adaptive sampling on at the scene's threshold or 0.3) or its
-    /// neighbours' differ by more.
+    /// neighbours' differ by more; `background` `"transparent"` (the picture is RGBA, alpha
+    /// each pixel's coverage), a colour name or `"#rrggbb"`, or linear `[r, g, b]`, in place of
+    /// the scene's.
     #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, adaptive_min = None, max_depth = None,
-        exposure = None, tone_map = None, time = 0.0, aov = "shaded", backend = "sparse", crop = None, labels = true))]
+        exposure = None, tone_map = None, time = 0.0, aov = "shaded", backend = "sparse", crop = None, labels = true, background = None))]
     #[allow(clippy::too_many_arguments)]
     fn render(
         &self,
@@ -84,11 +104,13 @@ impl Scene {
         backend: &str,
         crop: Option<[f64; 4]>,
         labels: bool,
+        background: Option<Bound<'_, PyAny>>,
     ) -> PyResult<Picture> {
         let tone_map = tone_map
             .map(|t| choose("tone_map", t, &[("none", ToneMap::None), ("filmic", ToneMap::Filmic)]))
             .transpose()?;
-        let view = View { width, height, fov, spp, adaptive, adaptive_min, max_depth, exposure, tone_map };
+        let background = background.as_ref().map(background_of).transpose()?;
+        let view = View { width, height, fov, spp, adaptive, adaptive_min, max_depth, exposure, tone_map, background };
         let aov = choose(
             "aov",
             aov,
@@ -101,6 +123,7 @@ impl Scene {
                 ("k1", Aov::K1),
                 ("k2", Aov::K2),
                 ("postulate", Aov::Postulate),
+                ("coverage", Aov::Coverage),
             ],
         )?;
         let backend = choose(
@@ -132,42 +155,66 @@ impl Picture {
         Picture { rendered }
     }
 
-    /// The picture as PNG bytes (8-bit, developed and labelled).
+    /// The picture as PNG bytes (8-bit, developed and labelled; RGBA over a transparent
+    /// background).
     pub fn png(&self) -> Result<Vec<u8>, cga_trace::film::OutputError> {
         let mut bytes = std::io::Cursor::new(Vec::new());
         self.rendered.image(Output::Png8).write(&mut bytes, Output::Png8, self.rendered.encoding)?;
         Ok(bytes.into_inner())
     }
 
-    /// The film's rows top to bottom as an (H, W, 3) array.
+    /// The film's rows top to bottom as an (H, W, 3) array, or (H, W, 4) with its coverage
+    /// (colours premultiplied, as rendered).
     fn rows<'py>(&self, py: Python<'py>, film: &cga_trace::Film) -> PyResult<Py<PyAny>> {
         let (w, h) = (film.width as usize, film.height as usize);
-        let mut flat = Vec::with_capacity(w * h * 3);
+        let n = if film.coverage.is_some() { 4 } else { 3 };
+        let mut flat = Vec::with_capacity(w * h * n);
         for j in (0..h).rev() {
-            for p in &film.pixels[j * w..(j + 1) * w] {
-                flat.extend_from_slice(p);
+            for i in j * w..(j + 1) * w {
+                flat.extend_from_slice(&film.pixels[i]);
+                if let Some(coverage) = &film.coverage {
+                    flat.push(coverage[i]);
+                }
             }
         }
-        PyArray1::from_vec(py, flat).reshape([h, w, 3])?.into_py_any(py)
+        PyArray1::from_vec(py, flat).reshape([h, w, n])?.into_py_any(py)
     }
 }
 
 #[pymethods]
 impl Picture {
     /// The linear values as rendered, an (H, W, 3) float array, the top row first (a scalar
-    /// AOV in false colour).
+    /// AOV in false colour); over a transparent background (H, W, 4), RGB premultiplied by
+    /// the alpha, each pixel's coverage (as an EXR stores them).
     #[getter]
     fn linear(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
         self.rows(py, &self.rendered.film)
     }
 
     /// The picture as an 8-bit PNG holds it (developed, labelled, encoded): an (H, W, 3)
-    /// uint8 array, the top row first.
+    /// uint8 array, the top row first; over a transparent background (H, W, 4), straight
+    /// (unassociated) colours and the coverage as alpha, labels opaque.
     #[getter]
     fn srgb(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        let image = self.rendered.image(Output::Png8).to_rgb8(self.rendered.encoding);
-        let (w, h) = (image.width() as usize, image.height() as usize);
-        PyArray1::from_vec(py, image.into_raw()).reshape([h, w, 3])?.into_py_any(py)
+        let image = self.rendered.image(Output::Png8);
+        let (w, h) = (image.width as usize, image.height as usize);
+        let (flat, n) = match image.coverage {
+            Some(_) => (image.to_rgba8(self.rendered.encoding).into_raw(), 4),
+            None => (image.to_rgb8(self.rendered.encoding).into_raw(), 3),
+        };
+        PyArray1::from_vec(py, flat).reshape([h, w, n])?.into_py_any(py)
+    }
+
+    /// Each pixel's coverage over a transparent background, the fraction of its samples whose
+    /// camera ray met something: an (H, W) float array, the top row first (labels not
+    /// written in); `None` for an opaque picture.
+    #[getter]
+    fn coverage(&self, py: Python<'_>) -> PyResult<Option<Py<PyAny>>> {
+        let film = &self.rendered.film;
+        let Some(coverage) = &film.coverage else { return Ok(None) };
+        let (w, h) = (film.width as usize, film.height as usize);
+        let rows: Vec<f64> = (0..h).rev().flat_map(|j| coverage[j * w..(j + 1) * w].iter().copied()).collect();
+        Ok(Some(PyArray1::from_vec(py, rows).reshape([h, w])?.into_py_any(py)?))
     }
 
     /// `(width, height)`.
@@ -185,7 +232,7 @@ impl Picture {
 
     /// Writes the picture to `path` (PNG, EXR or HDR by its extension; `bit_depth` 8 or 16
     /// for a PNG), to a temporary file renamed over the target once written; refused if it is
-    /// one of the scene's files.
+    /// one of the scene's files, or HDR for a transparent picture (HDR has no alpha).
     #[pyo3(signature = (path, bit_depth = None))]
     fn save(&self, py: Python<'_>, path: std::path::PathBuf, bit_depth: Option<u8>) -> PyResult<()> {
         py.detach(|| self.rendered.save(&path, bit_depth)).map_err(scene_error)

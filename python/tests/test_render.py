@@ -35,6 +35,13 @@ normal = [0.0, 0.0, 1.0]
 material = { colour = [0.6, 0.6, 0.6], kr = 0.3 }
 """
 
+SKY_BALL = """
+[[objects]]
+type = "sphere"
+centre = [2.0, 0.0, 2.8]
+radius = 0.5
+material = { colour = [0.2, 0.9, 0.2] }
+"""
 
 def test_a_scene_renders_to_arrays():
     picture = cga.Scene.parse(FIRST).render()
@@ -111,3 +118,55 @@ def test_adaptive_sampling_takes_the_first_samples_or_all():
         scene.render(spp=16, adaptive=4.0)
     # First samples as many as spp: nothing adapts.
     assert np.array_equal(scene.render(spp=16, adaptive=0.3, adaptive_min=16).linear, every)
+
+
+def test_a_transparent_background_gives_rgba(tmp_path):
+    # The first scene with a ball in the sky, whose edge is against nothing.
+    scene = cga.Scene.parse(FIRST + SKY_BALL)
+    opaque = scene.render(spp=16)
+    picture = scene.render(spp=16, background="transparent")
+    linear, srgb, alpha = picture.linear, picture.srgb, picture.coverage
+    assert linear.shape == (24, 32, 4) and srgb.shape == (24, 32, 4) and srgb.dtype == np.uint8
+    assert alpha.shape == (24, 32) and np.array_equal(linear[..., 3], alpha)
+    assert opaque.coverage is None and opaque.linear.shape == (24, 32, 3)
+    # The sky sees through; the balls and the floor are opaque; the sky ball's edge partly.
+    assert np.all(alpha[0] == 0) and np.all(linear[0] == 0) and np.all(srgb[0] == 0)
+    assert alpha[12, 16] == 1 and alpha[-1, 0] == 1
+    assert np.count_nonzero((alpha > 0) & (alpha < 1)) > 5
+    # Over black, premultiplied colours are the opaque picture's, to the bit.
+    assert np.array_equal(linear[..., :3], opaque.linear)
+    # The PNG's straight colours: where opaque, the opaque picture's; alpha the coverage.
+    whole = alpha == 1
+    assert np.array_equal(srgb[whole][:, :3], opaque.srgb[whole])
+    assert np.array_equal(srgb[..., 3], np.floor(alpha * 255 + 0.5).astype(np.uint8))
+    # The coverage AOV shows the same coverage.
+    assert np.array_equal(scene.render(spp=16, aov="coverage").linear[..., 0], alpha)
+    # Written with an alpha channel (PNG colour type 6, RGBA); HDR, which has none, refused.
+    png = tmp_path / "t.png"
+    picture.save(str(png))
+    assert png.read_bytes()[25] == 6 and picture._repr_png_()[25] == 6
+    picture.save(str(tmp_path / "t.exr"))
+    with pytest.raises(cga.SceneError, match=r"t\.hdr.*transparent"):
+        picture.save(str(tmp_path / "t.hdr"))
+    assert not (tmp_path / "t.hdr").exists()
+    with pytest.raises(cga.SceneError, match="transparent"):
+        scene.render(background="clear")
+    # A colour background in place of the scene's, as a name or linear values.
+    assert scene.render(background=[0.0, 0.0, 1.0]).linear[0, 3, 2] == 1.0
+    assert scene.render(background="white").srgb[0, 3, 0] == 240
+
+
+def test_scenes_and_figures_take_a_transparent_background():
+    built = cga.Scene().camera(position=[0.0, -8.0, 2.0], look_at=[0.0, 0.0, 0.5], width=32, height=24)
+    built.settings(background="transparent", spp=4).sphere(
+        centre=[0.0, 0.0, 1.0], radius=1.0, material={"colour": [0.9, 0.1, 0.1]}, label="S")
+    assert 'background = "transparent"' in built.toml()
+    picture = built.render()
+    assert picture.linear.shape == (24, 32, 4) and picture.coverage[0, 0] == 0
+    sphere = cga.Sphere.from_centre_radius([0, 0, 0.0], 1.0)
+    drawn = cga.draw([sphere], labels=["S"], width=64, height=48, background="transparent")
+    srgb = drawn.srgb
+    assert srgb.shape == (48, 64, 4) and srgb[0, 0, 3] == 0 and srgb[24, 32, 3] == 255
+    # The label is opaque where drawn: pixels outside the sphere's coverage with alpha 255.
+    assert np.count_nonzero((drawn.coverage == 0) & (srgb[..., 3] == 255)) > 10
+    assert cga.draw([sphere], width=16, height=12).srgb.shape == (12, 16, 3)

@@ -173,6 +173,7 @@ def draw(
     width: int = 640,
     height: int = 480,
     camera: Optional[tuple[ArrayLike, ArrayLike]] = None,
+    background: Optional[Union[str, ArrayLike]] = None,
 ) -> "Picture": ...
 
 class Scene:
@@ -197,6 +198,7 @@ class Scene:
         backend: str = "sparse",
         crop: Optional[tuple[float, float, float, float]] = None,
         labels: bool = True,
+        background: Optional[Union[str, ArrayLike]] = None,
     ) -> "Picture": ...
 
 class pga:
@@ -299,6 +301,8 @@ class Picture:
     def linear(self) -> NDArray[np.float64]: ...
     @property
     def srgb(self) -> NDArray[np.uint8]: ...
+    @property
+    def coverage(self) -> Optional[NDArray[np.float64]]: ...
     @property
     def size(self) -> tuple[int, int]: ...
     @property

@@ -19,7 +19,7 @@ use crate::material::Material;
 use crate::output::{OutputFile, OutputFileError};
 use crate::pipeline::{self, Options, RenderError, Rendered};
 use crate::scene::{Object, Scene};
-use crate::settings::Settings;
+use crate::settings::{Background, Settings};
 use cga_core::euclid::{E3, add, cross, norm, scale, sub, unit};
 use cga_core::{GeometryError, Kind, classify_storage};
 use std::fmt::Write as _;
@@ -157,7 +157,7 @@ pub struct Figure {
     camera: Option<(E3, E3)>,
     width: u32,
     height: u32,
-    background: [f64; 3],
+    background: Background,
 }
 
 impl Default for Figure {
@@ -169,7 +169,8 @@ impl Default for Figure {
 impl Figure {
     /// An empty figure: 800 × 600 pixels, a dark background, the camera framing the objects.
     pub fn new() -> Figure {
-        Figure { items: Vec::new(), camera: None, width: 800, height: 600, background: [0.02, 0.025, 0.035] }
+        let background = Background::Colour([0.02, 0.025, 0.035]);
+        Figure { items: Vec::new(), camera: None, width: 800, height: 600, background }
     }
 
     /// Add any cga-core object (a point, point pair, line, circle, plane, sphere, flat point,
@@ -220,6 +221,14 @@ impl Figure {
     /// Look from `position` at `look_at` (z up) instead of framing the objects.
     pub fn camera(mut self, position: E3, look_at: E3) -> Figure {
         self.camera = Some((position, look_at));
+        self
+    }
+
+    /// What the picture shows where there are no objects: a linear colour (by default a dark
+    /// blue-grey), or [`Background::Transparent`] (for a paper or a slide: PNG with alpha, or
+    /// EXR with premultiplied alpha; labels opaque).
+    pub fn background(mut self, background: Background) -> Figure {
+        self.background = background;
         self
     }
 
@@ -340,8 +349,8 @@ impl Figure {
                 reason: Invalid::Limit { what: "shapes", found, limit: MAX_OBJECTS as u64 },
             });
         }
-        let settings =
-            Settings { background: self.background, ambient: AMBIENT, shadows: false, ..Settings::default() };
+        let mut settings = Settings { ambient: AMBIENT, shadows: false, ..Settings::default() };
+        settings.set_background(self.background);
         Ok(Scene {
             frame,
             camera,
@@ -374,7 +383,10 @@ impl Figure {
             v(up),
             self.width,
             self.height,
-            v(self.background),
+            match self.background {
+                Background::Colour(c) => v(c),
+                Background::Transparent => "\"transparent\"".into(),
+            },
         );
         for (direction, colour) in LIGHTS {
             let _ = write!(out, "\n[[lights]]\ndirection = {}\ncolour = {}\n", v(direction), v(colour));
@@ -423,7 +435,7 @@ impl Figure {
     /// renamed on success.
     pub fn render(&self, path: impl AsRef<Path>) -> Result<(), FigureError> {
         let path = path.as_ref();
-        Output::for_path(path, None)?;
+        Output::for_path(path, None)?.check_alpha(path, self.background == Background::Transparent)?;
         Ok(self.rendered(&Options::default())?.save(path, None)?)
     }
 

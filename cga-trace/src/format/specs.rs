@@ -5,7 +5,7 @@
 
 use super::numbers::{numbers, some_number, some_numbers};
 use crate::material::Material;
-use crate::settings::{Adaptive, Encoding, Reflection, Settings, ToneMap};
+use crate::settings::{Adaptive, Background, Encoding, Reflection, Settings, ToneMap};
 use crate::surface::Method;
 use serde::Deserialize;
 use serde::de::{Deserializer, Error, MapAccess, Visitor};
@@ -18,8 +18,7 @@ pub(crate) struct SettingsSpec {
     max_depth: Option<u32>,
     spp: Option<u32>,
     adaptive: Option<AdaptiveSpec>,
-    #[serde(default, deserialize_with = "some_numbers")]
-    background: Option<[f64; 3]>,
+    background: Option<BackgroundSpec>,
     #[serde(default, deserialize_with = "some_number")]
     ambient: Option<f64>,
     #[serde(default, deserialize_with = "some_number")]
@@ -73,6 +72,33 @@ impl<'de> Deserialize<'de> for AdaptiveSpec {
     }
 }
 
+/// `background = [r, g, b]` (linear RGB, checked as read) or `background = "transparent"`.
+#[derive(Clone, Copy, Debug)]
+struct BackgroundSpec(Background);
+
+impl<'de> Deserialize<'de> for BackgroundSpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Spec;
+        impl<'de> Visitor<'de> for Spec {
+            type Value = Background;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a linear RGB colour [r, g, b] or \"transparent\"")
+            }
+            fn visit_str<E: Error>(self, v: &str) -> Result<Background, E> {
+                match v {
+                    "transparent" => Ok(Background::Transparent),
+                    _ => Err(E::invalid_value(serde::de::Unexpected::Str(v), &self)),
+                }
+            }
+            // The colour's own checks and messages (`expected 3 numbers, found 4`).
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(self, seq: A) -> Result<Background, A::Error> {
+                numbers(serde::de::value::SeqAccessDeserializer::new(seq)).map(Background::Colour)
+            }
+        }
+        d.deserialize_any(Spec).map(BackgroundSpec)
+    }
+}
+
 /// `reflection = "additive" | "conserving"`.
 #[derive(Clone, Copy, Debug, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -100,11 +126,12 @@ enum EncodingSpec {
 impl From<SettingsSpec> for Settings {
     fn from(s: SettingsSpec) -> Settings {
         let d = Settings::default();
-        Settings {
+        let mut settings = Settings {
             max_depth: s.max_depth.unwrap_or(d.max_depth),
             spp: s.spp.unwrap_or(d.spp),
             adaptive: s.adaptive.map(|a| a.0).or(d.adaptive),
-            background: s.background.unwrap_or(d.background),
+            background: d.background,
+            transparent: d.transparent,
             ambient: s.ambient.unwrap_or(d.ambient),
             shadow_transmission: s.shadow_transmission.unwrap_or(d.shadow_transmission),
             shadows: s.shadows.unwrap_or(d.shadows),
@@ -126,7 +153,11 @@ impl From<SettingsSpec> for Settings {
                 None => d.reflection,
             },
             surface_method: s.surface_method.unwrap_or(d.surface_method),
+        };
+        if let Some(BackgroundSpec(background)) = s.background {
+            settings.set_background(background);
         }
+        settings
     }
 }
 

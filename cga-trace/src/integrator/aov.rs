@@ -1,6 +1,7 @@
-//! What an image shows: the shaded colour or, per first hit, a normal, α or curvature (the
-//! values; `trace.rs` finds them along a ray).
+//! What an image shows: the shaded colour or, per first hit, a normal, α, curvature or
+//! coverage (the values; `trace.rs` finds them along a ray).
 
+use crate::settings::Settings;
 use cga_core::euclid::{E3, dot};
 
 /// What an image shows.
@@ -26,9 +27,18 @@ pub enum Aov {
     /// The angle (degrees) between `L_C` and the nearest principal direction: the paper's
     /// postulate holds where it is 0.
     Postulate,
+    /// The fraction of a pixel's samples whose camera ray meets something, in grey (white
+    /// where all do): what a transparent background's alpha channel holds.
+    Coverage,
 }
 
 impl Aov {
+    /// Whether a picture of this AOV under `settings` carries its coverage: the shaded one over
+    /// a transparent background (other AOVs are opaque).
+    pub fn covered(self, settings: &Settings) -> bool {
+        self == Aov::Shaded && settings.transparent
+    }
+
     /// Whether the AOV is a scalar shown in false colour ([`crate::colour`]).
     pub fn is_scalar(self) -> bool {
         matches!(self, Aov::Gaussian | Aov::Mean | Aov::K1 | Aov::K2 | Aov::Postulate)

@@ -8,6 +8,8 @@
 //!
 //! - this file: the [`Renderer`], the image and its rows ([`Window`]);
 //! - `sampler.rs`: pixels, their samples ([`sample_offset`]) and the camera rays;
+//! - `keep.rs`: what a pixel keeps of its samples (colours, and coverage over a transparent
+//!   background);
 //! - `trace.rs`: the bounce loop, the sum of layers;
 //! - `nearest.rs`: the nearest crossing and the shadow test;
 //! - `shade.rs`: the ambient and each light's term;
@@ -20,6 +22,7 @@ mod aov;
 mod avx;
 mod counts;
 mod glass;
+mod keep;
 mod media;
 mod nearest;
 mod prepared;
@@ -30,13 +33,14 @@ mod trace;
 pub use aov::Aov;
 pub use counts::RayCounts;
 pub use glass::{CUTOFF, fresnel};
+use keep::{Covered, Keep, Taken};
 pub use prepared::Kept;
 pub use sampler::sample_offset;
 pub(crate) use sampler::{Dimension, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Layers;
-use crate::film::Film;
+use crate::film::{Channels, Film};
 use crate::ray::Ray;
 use crate::scene::Scene;
 use cga_core::euclid::E3;
@@ -220,15 +224,25 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// The pixels of `window` only, as an image of its size. Every pixel depends on its
     /// position alone (and, under adaptive sampling, its neighbours' first samples, placed by
     /// theirs), so windows of a frame rendered anywhere assemble into the frame, byte for
-    /// byte, and any thread count gives the same bytes.
+    /// byte, and any thread count gives the same bytes. A shaded picture over a transparent
+    /// background carries its coverage ([`Aov::covered`]).
     pub fn render_window(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
+        // Chosen once: an opaque picture's samples keep only their colours.
+        match aov.covered(&self.scene.settings) {
+            false => self.render_kept::<Taken>(aov, window, on_row),
+            true => self.render_kept::<Covered>(aov, window, on_row),
+        }
+    }
+
+    /// [`Renderer::render_window`] with each pixel's samples kept by `K`.
+    fn render_kept<K: Keep>(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
         let settings = &self.scene.settings;
         if let Some(a) = settings.adaptive.filter(|a| aov == Aov::Shaded && settings.spp > a.min_spp) {
-            return self.render_adaptive(a, window, on_row);
+            return self.render_adaptive::<K>(a, window, on_row);
         }
         let (width, height) = (window.columns.len(), window.rows.len());
         // One allocation, each row written in place by whichever thread renders it.
-        let mut pixels = vec![[0.0; 3]; width * height];
+        let mut pixels = vec![K::Pixel::default(); width * height];
         // One row per task: rayon otherwise splits the image into few large pieces, and rows
         // differ in cost (mirrors, surfaces), so one thread idles at the end.
         pixels.par_chunks_mut(width).with_max_len(1).zip(window.rows.clone()).for_each(|(row, j)| {
@@ -236,18 +250,18 @@ impl<'a, B: Backend> Renderer<'a, B> {
             let mut done = 0;
             if aov == Aov::Shaded && self.packets {
                 for (four, i0) in row.chunks_exact_mut(4).zip(window.columns.clone().step_by(4)) {
-                    let Some(colours) = self.pixels4(i0, j, &mut cast) else { break };
+                    let Some(colours) = self.pixels4::<K>(i0, j, &mut cast) else { break };
                     four.copy_from_slice(&colours);
                     done += 4;
                 }
             }
             for (pixel, i) in row.iter_mut().zip(window.columns.clone()).skip(done) {
-                *pixel = self.pixel_counted(i, j, aov, &mut cast);
+                *pixel = self.pixel_counted::<K>(i, j, aov, &mut cast);
             }
             self.count(&cast);
             on_row();
         });
-        Film { width: width as u32, height: height as u32, pixels }
+        K::Pixel::film(width as u32, height as u32, pixels)
     }
 }
 
@@ -255,23 +269,38 @@ impl<B: Backend> Renderer<'_, B> {
     /// The colour (or AOV) of each of `samples` (pixel `(i, j)`'s sample `s`, placed as in
     /// [`Renderer::render_window`]), in parallel on rayon's pool, neighbours of the list four
     /// at a time through packets: what one instant of a shutter takes ([`crate::shutter`]).
+    /// Over a transparent background, the colours of samples that meet nothing are those
+    /// they would see (the environment, or black): [`Renderer::render_covered_samples`] gives
+    /// their coverage.
     pub fn render_samples(&self, aov: Aov, samples: &[[u32; 3]]) -> Vec<[f64; 3]> {
+        self.render_kept_samples::<Taken>(aov, samples)
+    }
+
+    /// [`Renderer::render_samples`] over a transparent background: each sample's colour
+    /// premultiplied by its coverage, and the coverage (1 where its camera ray met something,
+    /// 0 where it did not: then no colour).
+    pub fn render_covered_samples(&self, aov: Aov, samples: &[[u32; 3]]) -> Vec<[f64; 4]> {
+        self.render_kept_samples::<Covered>(aov, samples)
+    }
+
+    /// The values of `samples`, each as `K` gives one sample's.
+    fn render_kept_samples<K: Keep>(&self, aov: Aov, samples: &[[u32; 3]]) -> Vec<K::Pixel> {
         const CHUNK: usize = 256;
-        let mut colours = vec![[0.0; 3]; samples.len()];
+        let mut colours = vec![K::Pixel::default(); samples.len()];
         colours.par_chunks_mut(CHUNK).zip(samples.par_chunks(CHUNK)).for_each(|(out, samples)| {
             let mut cast = RayCounts::default();
             let mut done = 0;
             if aov == Aov::Shaded && self.packets {
                 for (four, samples) in out.chunks_exact_mut(4).zip(samples.chunks_exact(4)) {
-                    let Some(c) = self.listed4(samples.try_into().expect("four"), &mut cast) else { break };
+                    let Some(c) = self.listed4::<K>(samples.try_into().expect("four"), &mut cast) else { break };
                     four.copy_from_slice(&c);
                     done += 4;
                 }
             }
             for (colour, &sample) in out.iter_mut().zip(samples).skip(done) {
                 *colour = self
-                    .listed::<Ray<B::Carrier>, 1>([sample], aov, &mut cast)
-                    .map_or(self.scene.settings.background, |[c]| c);
+                    .listed::<Ray<B::Carrier>, 1, K>([sample], aov, &mut cast)
+                    .map_or(K::empty(self.scene.settings.background), |[c]| c);
             }
             self.count(&cast);
         });

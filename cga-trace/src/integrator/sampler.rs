@@ -1,60 +1,62 @@
 //! Pixels and their samples: where each sample falls ([`sample_offset`]), the camera rays
 //! through them, one pixel at a time or four neighbours of a row as a packet, and the mean
-//! over samples.
+//! over samples (as [`Keep`] keeps them).
 
 #[cfg(target_arch = "x86_64")]
 use super::avx::Ymm;
+use super::keep::{Keep, Taken};
 use super::{Aov, RayCounts, Renderer};
 use crate::backend::{Backend, Packet, RayLanes, lanes3};
 use crate::camera::Lens;
 use crate::hash::{self, hash, permute};
 use crate::ray::Ray;
-use crate::settings::{Settings, ToneMap};
 #[cfg(target_arch = "x86_64")]
 use cga_core::simd::avx2;
 
 impl<B: Backend> Renderer<'_, B> {
-    /// One pixel: the shaded colour or an AOV.
+    /// One pixel: the shaded colour or an AOV, with no coverage (over a transparent background
+    /// too, a sample that meets nothing counts what it would see, as over a colour:
+    /// [`Renderer::render_window`] gives the coverage).
     pub fn pixel(&self, i: u32, j: u32, aov: Aov) -> [f64; 3] {
         let mut cast = RayCounts::default();
-        let colour = self.pixel_counted(i, j, aov, &mut cast);
+        let colour = self.pixel_counted::<Taken>(i, j, aov, &mut cast);
         self.count(&cast);
         colour
     }
 
     /// One pixel, averaged over the scene's `spp` samples ([`sample_offset`]; the centre
-    /// alone for one sample); the background where the camera forms no ray.
-    pub(super) fn pixel_counted(&self, i: u32, j: u32, aov: Aov, cast: &mut RayCounts) -> [f64; 3] {
-        self.pixels::<Ray<B::Carrier>, 1>(i, j, aov, cast).map_or(self.scene.settings.background, |[c]| c)
+    /// alone for one sample) as `K` keeps them; the background where the camera forms no ray.
+    pub(super) fn pixel_counted<K: Keep>(&self, i: u32, j: u32, aov: Aov, cast: &mut RayCounts) -> K::Pixel {
+        self.pixels::<Ray<B::Carrier>, 1, K>(i, j, aov, cast).map_or(K::empty(self.scene.settings.background), |[c]| c)
     }
 
     /// `W` neighbouring pixels of a row, `(i₀ + k, j)`, each averaged over the scene's `spp`
-    /// samples, sample `s` of the `W` pixels cast as one set of rays in lanes; `None` where the
-    /// camera forms no ray (nothing is counted then).
+    /// samples as `K` keeps them, sample `s` of the `W` pixels cast as one set of rays in
+    /// lanes; `None` where the camera forms no ray (nothing is counted then).
     #[inline(always)]
-    pub(crate) fn pixels<R: RayLanes<B, W>, const W: usize>(
+    pub(crate) fn pixels<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
         i0: u32,
         j: u32,
         aov: Aov,
         cast: &mut RayCounts,
-    ) -> Option<[[f64; 3]; W]> {
-        let mut taken = [Taken::default(); W];
-        self.take::<R, W>(i0, j, aov, Stage::All, &mut taken, cast)?;
-        Some(taken.map(|t| t.mean()))
+    ) -> Option<[K::Pixel; W]> {
+        let mut taken = [K::default(); W];
+        self.take::<R, W, K>(i0, j, aov, Stage::All, &mut taken, cast)?;
+        Some(taken.map(|t| t.pixel()))
     }
 
     /// Adds to `taken` the samples `stage` names of the `W` pixels `(i₀ + k, j)`, in sample
     /// order; `None` where the camera forms no ray (nothing is counted then). One sample a
     /// pixel is the pixel's centre.
     #[inline(always)]
-    pub(crate) fn take<R: RayLanes<B, W>, const W: usize>(
+    pub(crate) fn take<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
         i0: u32,
         j: u32,
         aov: Aov,
         stage: Stage<W>,
-        taken: &mut [Taken; W],
+        taken: &mut [K; W],
         cast: &mut RayCounts,
     ) -> Option<()> {
         let spp = self.scene.settings.spp.max(1);
@@ -64,29 +66,29 @@ impl<B: Backend> Renderer<'_, B> {
             _ if spp == 1 => {
                 if !matches!(stage, Stage::Rest(..)) {
                     let u = core::array::from_fn(|k| f64::from(i0 + k as u32) + 0.5);
-                    self.add::<R, W>(taken, (i0, j, 0), (u, [f64::from(j) + 0.5; W]), aov, &mut counted)?;
+                    self.add::<R, W, K>(taken, (i0, j, 0), (u, [f64::from(j) + 0.5; W]), aov, &mut counted)?;
                 }
             }
             Stage::All => {
                 for s in samples {
-                    self.add::<R, W>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
+                    self.add::<R, W, K>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
                 }
             }
             Stage::First(n) => {
                 for s in samples.take(n) {
-                    self.add::<R, W>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
+                    self.add::<R, W, K>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
                 }
             }
             Stage::Rest(n, more) if more.iter().all(|&m| m) => {
                 for s in samples.skip(n) {
-                    self.add::<R, W>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
+                    self.add::<R, W, K>(taken, (i0, j, s), offsets(i0, j, s), aov, &mut counted)?;
                 }
             }
             Stage::Rest(n, more) => {
                 // The lanes that go on do so one ray at a time: the same bits as in a packet.
                 for k in (0..W).filter(|&k| more[k]) {
                     let mut one = [taken[k]];
-                    self.take::<Ray<B::Carrier>, 1>(
+                    self.take::<Ray<B::Carrier>, 1, K>(
                         i0 + k as u32,
                         j,
                         aov,
@@ -102,16 +104,17 @@ impl<B: Backend> Renderer<'_, B> {
         Some(())
     }
 
-    /// The colours (or AOVs) of `W` samples of any pixels, `[i, j, s]` each (the centre where
-    /// the scene takes one sample a pixel); `None` where the camera forms no ray (nothing is
-    /// counted then).
+    /// The values of `W` samples of any pixels, `[i, j, s]` each (the centre where the scene
+    /// takes one sample a pixel), as `K` gives one sample's: their colours (or AOVs), with their
+    /// coverage over a transparent background; `None` where the camera forms no ray (nothing
+    /// is counted then).
     #[inline(always)]
-    pub(super) fn listed<R: RayLanes<B, W>, const W: usize>(
+    pub(super) fn listed<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
         samples: [[u32; 3]; W],
         aov: Aov,
         cast: &mut RayCounts,
-    ) -> Option<[[f64; 3]; W]> {
+    ) -> Option<[K::Pixel; W]> {
         let spp = self.scene.settings.spp.max(1);
         let (mut u, mut v) = ([0.0; W], [0.0; W]);
         for (k, &[i, j, s]) in samples.iter().enumerate() {
@@ -120,33 +123,33 @@ impl<B: Backend> Renderer<'_, B> {
         }
         let keys = samples.map(|[i, j, s]| SampleKey::new(i, j, s, spp));
         let mut counted = RayCounts::default();
-        let colours = self.samples::<R, W>(u, v, keys, aov, &mut counted)?;
+        let (colours, met) = self.samples::<R, W, K>(u, v, keys, aov, &mut counted)?;
         cast.add(&counted);
-        Some(colours)
+        Some(K::samples(colours, met))
     }
 
     /// [`Renderer::listed`] four at a time through packets ([`Renderer::pixels4`]).
-    pub(super) fn listed4(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
+    pub(super) fn listed4<K: Keep>(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[K::Pixel; 4]> {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 && avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.listed4_avx2(samples, cast) };
+            return unsafe { self.listed4_avx2::<K>(samples, cast) };
         }
-        self.listed::<Packet<B>, 4>(samples, Aov::Shaded, cast)
+        self.listed::<Packet<B>, 4, K>(samples, Aov::Shaded, cast)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn listed4_avx2(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        self.listed::<Packet<B, Ymm>, 4>(samples, Aov::Shaded, cast)
+    unsafe fn listed4_avx2<K: Keep>(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[K::Pixel; 4]> {
+        self.listed::<Packet<B, Ymm>, 4, K>(samples, Aov::Shaded, cast)
     }
 
     /// Sample `s` of the `W` pixels `(i₀ + k, j)`, seen at `(u_k, v_k)`, added to `taken`.
     /// A method, not a closure: a closure is not compiled for the caller's AVX2.
     #[inline(always)]
-    fn add<R: RayLanes<B, W>, const W: usize>(
+    fn add<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
-        taken: &mut [Taken; W],
+        taken: &mut [K; W],
         (i0, j, s): (u32, u32, u32),
         (u, v): ([f64; W], [f64; W]),
         aov: Aov,
@@ -154,24 +157,25 @@ impl<B: Backend> Renderer<'_, B> {
     ) -> Option<()> {
         let spp = self.scene.settings.spp.max(1);
         let keys = core::array::from_fn(|k| SampleKey::new(i0 + k as u32, j, s, spp));
-        let colours = self.samples::<R, W>(u, v, keys, aov, counted)?;
-        for (taken, c) in taken.iter_mut().zip(colours) {
-            taken.add(c);
+        let (colours, met) = self.samples::<R, W, K>(u, v, keys, aov, counted)?;
+        for ((taken, c), met) in taken.iter_mut().zip(colours).zip(met) {
+            taken.add(c, met);
         }
         Some(())
     }
 
     /// The colours (or AOVs, lane by lane) seen at continuous pixel coordinates
-    /// `(u_k, v_k)` by the samples `keys`.
+    /// `(u_k, v_k)` by the samples `keys`, and whether each camera ray met anything where `K`
+    /// keeps it (an AOV's rays count as met: AOV pictures are opaque).
     #[inline(always)]
-    fn samples<R: RayLanes<B, W>, const W: usize>(
+    fn samples<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
         u: [f64; W],
         v: [f64; W],
         keys: [SampleKey; W],
         aov: Aov,
         cast: &mut RayCounts,
-    ) -> Option<[[f64; 3]; W]> {
+    ) -> Option<([[f64; 3]; W], [bool; W])> {
         if aov != Aov::Shaded {
             let mut out = [[0.0; 3]; W];
             for l in 0..W {
@@ -179,11 +183,11 @@ impl<B: Backend> Renderer<'_, B> {
                 cast.primary += 1;
                 out[l] = self.aov(&ray, aov);
             }
-            return Some(out);
+            return Some((out, [true; W]));
         }
         let rays = self.camera_rays::<R, W>(u, v, &keys)?;
         cast.primary += W as u64;
-        Some(self.trace_lanes(rays, 0, &keys, cast))
+        Some(self.trace_met::<R, W, K>(rays, 0, &keys, cast))
     }
 
     /// The camera rays through `(u_k, v_k)`: eq. 2's pinhole rays as the back end forms them,
@@ -215,19 +219,19 @@ impl<B: Backend> Renderer<'_, B> {
     /// [`Renderer::pixel`] gives its pixel: the same samples, meets, shading, sum from the
     /// deepest bounce up and mean over samples. Compiled for AVX2 and FMA where the CPU has
     /// them (the lanes then run in one register each).
-    pub(super) fn pixels4(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[[f64; 3]; 4]> {
-        let mut taken = [Taken::default(); 4];
+    pub(super) fn pixels4<K: Keep>(&self, i0: u32, j: u32, cast: &mut RayCounts) -> Option<[K::Pixel; 4]> {
+        let mut taken = [K::default(); 4];
         self.take4(i0, j, Stage::All, &mut taken, cast)?;
-        Some(taken.map(|t| t.mean()))
+        Some(taken.map(|t| t.pixel()))
     }
 
     /// [`Renderer::take`] of four neighbouring pixels through packets ([`Renderer::pixels4`]).
-    pub(super) fn take4(
+    pub(super) fn take4<K: Keep>(
         &self,
         i0: u32,
         j: u32,
         stage: Stage<4>,
-        taken: &mut [Taken; 4],
+        taken: &mut [K; 4],
         cast: &mut RayCounts,
     ) -> Option<()> {
         #[cfg(target_arch = "x86_64")]
@@ -235,20 +239,20 @@ impl<B: Backend> Renderer<'_, B> {
             // SAFETY: the CPU has the features the function is compiled for.
             return unsafe { self.take4_avx2(i0, j, stage, taken, cast) };
         }
-        self.take::<Packet<B>, 4>(i0, j, Aov::Shaded, stage, taken, cast)
+        self.take::<Packet<B>, 4, K>(i0, j, Aov::Shaded, stage, taken, cast)
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn take4_avx2(
+    unsafe fn take4_avx2<K: Keep>(
         &self,
         i0: u32,
         j: u32,
         stage: Stage<4>,
-        taken: &mut [Taken; 4],
+        taken: &mut [K; 4],
         cast: &mut RayCounts,
     ) -> Option<()> {
-        self.take::<Packet<B, Ymm>, 4>(i0, j, Aov::Shaded, stage, taken, cast)
+        self.take::<Packet<B, Ymm>, 4, K>(i0, j, Aov::Shaded, stage, taken, cast)
     }
 }
 
@@ -272,72 +276,6 @@ fn offsets<const W: usize>(i0: u32, j: u32, s: u32) -> ([f64; W], [f64; W]) {
         (u[k], v[k]) = (f64::from(i0 + k as u32) + du, f64::from(j) + dv);
     }
     (u, v)
-}
-
-/// A pixel's samples so far: their sum (in sample order, so the mean has the same bits
-/// however they were traced), their number, and each channel's range (linear).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Taken {
-    sum: [f64; 3],
-    n: u32,
-    low: [f64; 3],
-    high: [f64; 3],
-}
-
-impl Default for Taken {
-    fn default() -> Self {
-        Taken { sum: [0.0; 3], n: 0, low: [f64::INFINITY; 3], high: [f64::NEG_INFINITY; 3] }
-    }
-}
-
-impl Taken {
-    #[inline(always)]
-    fn add(&mut self, c: [f64; 3]) {
-        self.sum = [self.sum[0] + c[0], self.sum[1] + c[1], self.sum[2] + c[2]];
-        self.n += 1;
-        let (l, h) = (self.low, self.high);
-        self.low = [l[0].min(c[0]), l[1].min(c[1]), l[2].min(c[2])];
-        self.high = [h[0].max(c[0]), h[1].max(c[1]), h[2].max(c[2])];
-    }
-
-    /// POV-Ray's colour distance over the samples, `Σ_c (max d_c − min d_c)`, of the values
-    /// shown, `d` ([`Shown`]: increasing, so it keeps the range's ends; a NaN sample counts as
-    /// the most contrast).
-    pub(crate) fn contrast(&self, shown: Shown) -> f64 {
-        let c: f64 = (0..3).map(|k| shown.value(self.high[k]) - shown.value(self.low[k])).sum();
-        if c.is_nan() || self.sum.iter().any(|x| x.is_nan()) { f64::INFINITY } else { c }
-    }
-
-    /// POV-Ray's colour distance between two colours as shown, `Σ_c |d_c(a) − d_c(b)|`
-    /// (a NaN counts as the most distance).
-    pub(crate) fn distance(a: [f64; 3], b: [f64; 3], shown: Shown) -> f64 {
-        let d: f64 = (0..3).map(|k| (shown.value(a[k]) - shown.value(b[k])).abs()).sum();
-        if d.is_nan() { f64::INFINITY } else { d }
-    }
-
-    /// The mean of the samples taken (zero for none).
-    pub(crate) fn mean(&self) -> [f64; 3] {
-        let n = f64::from(self.n.max(1));
-        self.sum.map(|x| x / n)
-    }
-}
-
-/// How a PNG of the picture shows a linear value: times `2^exposure`, tone-mapped, clipped to
-/// [0, 1] (before its encoding), which adaptive sampling measures contrast in.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Shown {
-    scale: f64,
-    tone_map: ToneMap,
-}
-
-impl Shown {
-    pub(crate) fn of(settings: &Settings) -> Self {
-        Shown { scale: settings.exposure.exp2(), tone_map: settings.tone_map }
-    }
-
-    fn value(self, x: f64) -> f64 {
-        self.tone_map.apply(self.scale * x).clamp(0.0, 1.0)
-    }
 }
 
 /// Where sample `s` of pixel `(i, j)` falls, as an offset in `[0, 1)²` from the pixel's

@@ -1,6 +1,7 @@
 //! Tracing rays in lanes: the nearest hit, its normal and shading, the mirror bounces, and
 //! the sum of the layers from the deepest up; what each AOV shows along a ray.
 
+use super::keep::{Keep, Taken};
 use super::shade::lit;
 use super::{Aov, RayCounts, Renderer, SampleKey, Window};
 use crate::backend::{Backend, RayLanes, lanes3};
@@ -49,7 +50,7 @@ impl<B: Backend> Renderer<'_, B> {
     /// The colour seen along `ray`, `depth` bounces deep.
     pub fn trace(&self, ray: &Ray<B::Carrier>, depth: u32) -> [f64; 3] {
         let mut cast = RayCounts::default();
-        let [colour] = self.trace_lanes(*ray, depth, &[SampleKey::default()], &mut cast);
+        let ([colour], _) = self.trace_met::<_, 1, Taken>(*ray, depth, &[SampleKey::default()], &mut cast);
         self.count(&cast);
         colour
     }
@@ -86,14 +87,18 @@ impl<B: Backend> Renderer<'_, B> {
     /// stack: each hit's own colour and `k_r` are kept, and summed from the deepest up as
     /// recursion would, `I = I_local + k_r I_reflected` (the same operations in the same
     /// order, so the same bits).
+    ///
+    /// Beside the colours, whether each lane's ray met anything (its first crossing), where
+    /// `K` keeps it (a transparent background's coverage; all `false` otherwise, and nothing
+    /// done for it: an opaque picture's rays do what they did before).
     #[inline(always)]
-    pub(crate) fn trace_lanes<R: RayLanes<B, W>, const W: usize>(
+    pub(crate) fn trace_met<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
         mut rays: R,
         mut depth: u32,
         keys: &[SampleKey; W],
         cast: &mut RayCounts,
-    ) -> [[f64; 3]; W] {
+    ) -> ([[f64; 3]; W], [bool; W]) {
         let settings = &self.scene.settings;
         let mut active = [true; W];
         let mut deepest = [settings.background; W];
@@ -105,6 +110,7 @@ impl<B: Backend> Renderer<'_, B> {
             _ => [None; W],
         };
         let inside = start.iter().any(Option::is_some);
+        let (mut met, mut first) = ([false; W], true);
         while active.iter().any(|&a| a) {
             // An inactive lane's range is empty: it finds nothing. (`map`, not `from_fn`,
             // here and for `errors`: LLVM leaves `from_fn` over them out of line, 7 % more
@@ -117,6 +123,9 @@ impl<B: Backend> Renderer<'_, B> {
                     let normal = B::normal(&self.shapes[k], rays.ray(l), &c);
                     (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
                 });
+            }
+            if K::COVERS && first {
+                (met, first) = (nearest.map(|n| n.is_some()), false);
             }
             let errors: [f64; W] = nearest.map(|n| n.map_or(0.0, |(_, k)| self.errors[k]));
             if inside && depth == 0 {
@@ -159,10 +168,11 @@ impl<B: Backend> Renderer<'_, B> {
             depth += 1;
         }
         let seen: [[f64; 3]; W] = core::array::from_fn(|l| sum_layers(&layers[l], deepest[l]));
-        match inside {
+        let seen = match inside {
             false => seen,
             true => core::array::from_fn(|l| [0, 1, 2].map(|c| seen[l][c] * absorbed[l][c])),
-        }
+        };
+        (seen, met)
     }
 }
 
@@ -203,6 +213,10 @@ impl<B: Backend> Renderer<'_, B> {
             Aov::Normal => {
                 self.nearest(ray, 0.0, f64::INFINITY).map_or([0.0; 3], |(h, _)| h.normal.map(|x| 0.5 * (x + 1.0)))
             }
+            Aov::Coverage => match self.nearest(ray, 0.0, f64::INFINITY) {
+                Some(_) => [1.0; 3],
+                None => [0.0; 3],
+            },
             Aov::Alpha => match self.nearest(ray, 0.0, f64::INFINITY) {
                 Some((ShadingPoint { alpha: Some(a), .. }, _)) => [a, 0.2, 1.0 - a],
                 _ => [0.0; 3],

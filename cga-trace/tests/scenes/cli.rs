@@ -105,19 +105,21 @@ fn help_points_at_the_scene_format() {
     assert!(help.contains("docs/SCENES.md#scene-files") && help.contains("--spp") && help.contains("--crop"), "{help}");
 }
 
+/// `primitives.toml` rendered 32 pixels wide with `extra` to `dir/name`, and read back.
+fn primitives(dir: &Path, name: &str, extra: &[&str]) -> image::DynamicImage {
+    let (p, path) = (scene("primitives.toml"), dir.join(name));
+    let mut args = vec![p.to_str().unwrap(), "-o", path.to_str().unwrap(), "--width", "32"];
+    args.extend_from_slice(extra);
+    let out = render(&args);
+    assert!(out.status.success(), "{out:?}");
+    image::open(&path).unwrap()
+}
+
 #[test]
 fn formats_follow_the_extension() {
     let scratch_dir = scratch("formats");
     let dir = scratch_dir.path();
-    let p = scene("primitives.toml");
-    let run = |name: &str, extra: &[&str]| {
-        let path = dir.join(name);
-        let mut args = vec![p.to_str().unwrap(), "-o", path.to_str().unwrap(), "--width", "32", "--encoding", "linear"];
-        args.extend_from_slice(extra);
-        let out = render(&args);
-        assert!(out.status.success(), "{out:?}");
-        image::open(&path).unwrap()
-    };
+    let run = |name: &str, extra: &[&str]| primitives(dir, name, &[&["--encoding", "linear"], extra].concat());
     let png8 = run("a.png", &[]);
     let png16 = run("b.png", &["--bit-depth", "16"]);
     let exr = run("c.exr", &[]);
@@ -142,6 +144,36 @@ fn formats_follow_the_extension() {
         }
     }
     assert!(compared > 1000);
+}
+
+#[test]
+fn a_transparent_background_writes_alpha_and_hdr_is_refused_by_name() {
+    let scratch_dir = scratch("transparent");
+    let dir = scratch_dir.path();
+    let p = scene("primitives.toml");
+    let p = p.to_str().unwrap();
+    let run = |name: &str, extra: &[&str]| primitives(dir, name, extra);
+    let png = run("t.png", &["--background", "transparent"]);
+    assert_eq!(png.color(), image::ColorType::Rgba8);
+    let alpha: Vec<u8> = png.to_rgba8().pixels().map(|p| p.0[3]).collect();
+    // primitives.toml: the sky above the floor's horizon sees through, the floor is opaque.
+    assert!(alpha.contains(&0) && alpha.contains(&255), "{alpha:?}");
+    assert_eq!(run("t16.png", &["--background", "transparent", "--bit-depth", "16"]).color(), image::ColorType::Rgba16);
+    assert_eq!(run("t.exr", &["--background", "transparent"]).color(), image::ColorType::Rgba32F);
+    // A colour from the command line: opaque, the colour where nothing is met.
+    let blue = run("b.png", &["--background", "0,0,1", "--encoding", "linear"]).to_rgb8();
+    assert_eq!(blue.get_pixel(0, 0).0, [0, 0, 255]);
+    // HDR has no alpha: refused before rendering, naming the output and the setting, and an
+    // existing file is left as it was.
+    let hdr = dir.join("t.hdr");
+    std::fs::write(&hdr, b"old").unwrap();
+    let e = error_line(&render(&[p, "-o", hdr.to_str().unwrap(), "--background", "transparent"]));
+    assert!(e.contains("t.hdr") && e.contains("background = \"transparent\""), "{e}");
+    assert_eq!(std::fs::read(&hdr).unwrap(), b"old");
+    let bad = render(&[p, "-o", hdr.to_str().unwrap(), "--background", "clear"]);
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!((bad.status.code(), stderr.lines().count()), (Some(2), 1), "{stderr}");
+    assert!(stderr.contains("transparent"), "{stderr}");
 }
 
 #[test]
