@@ -163,8 +163,11 @@ impl Shape for ConeShape {
         let (along, perp, cap) = self.place(c.point);
         let (a, b) = orthonormal(self.axis);
         let angle = 0.5 + dot(perp, b).atan2(dot(perp, a)) / std::f64::consts::TAU;
+        // A cap of radius 0 (a cone's tip, met by rounding) is a point: r/R is 0 there.
+        let radius = self.radii[usize::from(along > 0.0)];
         let v = match cap {
-            true => norm(perp) / self.radii[usize::from(along > 0.0)],
+            true if radius > 0.0 => (norm(perp) / radius).min(1.0),
+            true => 0.0,
             false => 0.5 - along / (2.0 * self.half),
         };
         Some(([angle, v], Unit::Fraction))
@@ -189,6 +192,17 @@ impl Shape for ConeShape {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A point classed on the cap of radius 0 (a cone's tip) has finite `(u, v)`.
+    #[test]
+    fn the_tip_of_a_cone_has_finite_texture_coordinates() {
+        let c = ConeShape::new([0.0, 0.0, 0.0], 0.8, [0.0, 0.0, 2.0], 0.0, true).unwrap();
+        for z in [2.0, 2.0 - 1e-17, 2.0 + 1e-15] {
+            let crossing = Crossing { t: 0.0, point: [0.0, 0.0, z], alpha: None };
+            let ([u, v], _) = c.uv(&crossing).unwrap();
+            assert!(u.is_finite() && v.is_finite(), "{u} {v} at z = {z}");
+        }
+    }
 
     /// A ray across a cylinder's axis meets its side at `±r`; along the axis, its caps.
     #[test]
