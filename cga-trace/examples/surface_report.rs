@@ -123,7 +123,7 @@ fn plain_intersect<T: Real>(
     let t_max = if r.t_max.is_finite() { T::from_f64(r.t_max) } else { T::from_f64(f64::from(f32::MAX)) };
     let polish = finder.polishes();
     let (t, x, alpha) = family.nearest((o, d, &line), &alphas, T::zero(), t_max, polish)?;
-    Some(Crossing { t: t.to_f64(), point: add(x.map(T::to_f64), origin), alpha: Some(alpha.to_f64()) })
+    Some(Crossing { t: t.to_f64(), point: add(x.map(T::to_f64), origin), alpha: Some(alpha.to_f64()), part: 0 })
 }
 
 /// Errors of one setting against the reference.
@@ -311,7 +311,7 @@ fn adversarial(surface: &EvolvedSurface, per_kind: usize, seed: u64) -> Vec<Test
         let angle = rng.range(0.0, std::f64::consts::TAU);
         let alpha = rng.next();
         let Some((x, _, _, _)) = on_circle(family, alpha, angle) else { continue };
-        let normal = surface.normal(&Crossing { t: 0.0, point: world(x), alpha: Some(alpha) });
+        let normal = surface.normal(&Crossing { t: 0.0, point: world(x), alpha: Some(alpha), part: 0 });
         // Aimed at a point of the surface from outside.
         let from = add(x, scale(rng.unit(), 3.0 * size));
         push(&mut out, Ray::new(world(from), sub(x, from)), f64::INFINITY, "aimed");

@@ -176,7 +176,7 @@ impl Backend for Dense {
             }
             DenseShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
-        Some(Crossing { t: ray.t_of(point), point, alpha: None })
+        Some(Crossing { t: ray.t_of(point), point, alpha: None, part: 0 })
     }
 
     fn normal(shape: &DenseShape, ray: &Ray<Multivector>, crossing: &Crossing) -> E3 {

@@ -110,7 +110,7 @@ pub(crate) fn crossings<L: Lane>(ok: [bool; 4], t: [f64; 4], x: &E3<L>) -> Cross
     if !ok.iter().any(|&b| b) {
         return [None; 4];
     }
-    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(x, l), alpha: None }))
+    core::array::from_fn(|l| ok[l].then(|| Crossing { t: t[l], point: lane(x, l), alpha: None, part: 0 }))
 }
 
 /// Four rays in lanes.

@@ -122,7 +122,7 @@ impl Backend for Plain {
             }
             PlainShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
-        Some(Crossing { t, point: (o + t * d).into(), alpha: None })
+        Some(Crossing { t, point: (o + t * d).into(), alpha: None, part: 0 })
     }
 
     fn normal(shape: &PlainShape, ray: &Ray<()>, crossing: &Crossing) -> E3 {
@@ -211,7 +211,7 @@ fn sphere4<L: Lane>(p: &Packet<Plain, L>, centre: DVec3, radius: f64, t_min: &[f
         ok[l].then(|| {
             let t = if near_in[l] { near[l] } else { far[l] };
             let point = core::array::from_fn(|k| p.origin[k].lane(l) + t * p.dir[k].lane(l));
-            Crossing { t, point, alpha: None }
+            Crossing { t, point, alpha: None, part: 0 }
         })
     })
 }

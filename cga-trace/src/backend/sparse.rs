@@ -150,7 +150,7 @@ fn meet_sphere<L: Lane>(p: &Packet<Sparse, L>, sphere: &Sphere<L>, t_min: &[f64;
     core::array::from_fn(|l| {
         found[l].then(|| {
             let (t, x) = if second[l] { (tb[l], b) } else { (ta[l], a) };
-            Crossing { t, point: lane(x, l), alpha: None }
+            Crossing { t, point: lane(x, l), alpha: None, part: 0 }
         })
     })
 }

@@ -142,7 +142,7 @@ impl<B: Backend> Renderer<'_, B> {
         let outside = p.inside.filter(|&m| Some(m) != here).map_or(1.0, |m| objects[m].material.ior);
         let (n1, n2) = if leaving { (ior, 1.0) } else { (outside, ior) };
         // Light bends at the surface itself: a mesh's blended normal only shades.
-        let normal = match objects[k].shape.facet() {
+        let normal = match objects[k].shape.facet(&hit.crossing()) {
             Some(f) if dot(f, p.ray.dir) > 0.0 => scale(f, -1.0),
             Some(f) => f,
             None => hit.normal,

@@ -26,7 +26,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// [`Renderer::nearest`] with the object's index.
     pub(super) fn hit(&self, ray: &Ray<B::Carrier>, t_min: f64, t_max: f64) -> Option<(ShadingPoint, usize)> {
         let (c, k) = self.crossing(ray, t_min, t_max)?;
-        let hit = ShadingPoint { t: c.t, point: c.point, normal: B::normal(&self.shapes[k], ray, &c), alpha: c.alpha };
+        let hit = ShadingPoint::at(c, B::normal(&self.shapes[k], ray, &c));
         Some((hit, k))
     }
 

@@ -157,7 +157,7 @@ impl<B: Backend> Renderer<'_, B> {
     fn textured_colour(&self, hit: &ShadingPoint, k: usize) -> Option<[f64; 3]> {
         let object = &self.scene.objects[k];
         let texture = object.texture.as_ref().filter(|t| !matches!(t.pattern, Pattern::Plain))?;
-        let crossing = crate::shapes::Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
+        let crossing = hit.crossing();
         let (uv, unit) = object.shape.uv(&crossing)?;
         let uv = match unit {
             Unit::Fraction => uv,
@@ -177,7 +177,7 @@ impl<B: Backend> Renderer<'_, B> {
         let normal = |l: usize| match &hits[l] {
             Some((hit, k)) => bumps(*k).map_or(hit.normal, |texture| {
                 let object = &self.scene.objects[*k];
-                let crossing = crate::shapes::Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
+                let crossing = hit.crossing();
                 texture.shading_normal(&*object.shape, &crossing, hit.normal, self.scene.frame.scale)
             }),
             None => [0.0; 3],

@@ -7,7 +7,7 @@ use super::{Aov, RayCounts, Renderer, SampleKey, Window};
 use crate::backend::{Backend, RayLanes, lanes3};
 use crate::ray::{Ray, mirror, offset};
 use crate::settings::Reflection;
-use crate::shapes::{Crossing, ShadingPoint};
+use crate::shapes::ShadingPoint;
 use cga_core::euclid::E3;
 use cga_core::simd::Lane;
 use rayon::prelude::*;
@@ -121,7 +121,7 @@ impl<B: Backend> Renderer<'_, B> {
             for (l, hit) in hits.iter_mut().enumerate() {
                 *hit = nearest[l].map(|(c, k)| {
                     let normal = B::normal(&self.shapes[k], rays.ray(l), &c);
-                    (ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha }, k)
+                    (ShadingPoint::at(c, normal), k)
                 });
             }
             if K::COVERS && first {
@@ -225,7 +225,7 @@ impl<B: Backend> Renderer<'_, B> {
             // samples, value / weight is the mean over the samples that had one.
             _ => match self.nearest(ray, 0.0, f64::INFINITY) {
                 Some((hit, object)) => {
-                    let crossing = Crossing { t: hit.t, point: hit.point, alpha: hit.alpha };
+                    let crossing = hit.crossing();
                     let scale = self.scene.frame.scale;
                     object.shape.curvature(&crossing).map_or([0.0; 3], |k| [aov.value(&k, ray.dir, scale), 1.0, 0.0])
                 }

@@ -198,7 +198,7 @@ mod tests {
     fn the_tip_of_a_cone_has_finite_texture_coordinates() {
         let c = ConeShape::new([0.0, 0.0, 0.0], 0.8, [0.0, 0.0, 2.0], 0.0, true).unwrap();
         for z in [2.0, 2.0 - 1e-17, 2.0 + 1e-15] {
-            let crossing = Crossing { t: 0.0, point: [0.0, 0.0, z], alpha: None };
+            let crossing = Crossing { t: 0.0, point: [0.0, 0.0, z], alpha: None, part: 0 };
             let ([u, v], _) = c.uv(&crossing).unwrap();
             assert!(u.is_finite() && v.is_finite(), "{u} {v} at z = {z}");
         }

@@ -106,7 +106,7 @@ pub struct Csg {
 pub enum CsgError {
     /// A leaf that bounds no solid.
     #[error(
-        "part {0} bounds no solid (CSG takes spheres, boxes, capped cylinders and cones, tori, planes as half-spaces and CSG trees)"
+        "part {0} bounds no solid (CSG takes spheres, boxes, capped cylinders and cones, tori, planes as half-spaces, closed meshes, bodies and CSG trees)"
     )]
     Open(usize),
     /// An operation with fewer than two children, or a leaf index out of range.
@@ -177,7 +177,7 @@ impl Csg {
 
 /// The smallest sphere about the centres' mean holding every sphere; `None` if any is
 /// unbounded.
-fn enclosing(bounds: &[Option<(E3, f64)>]) -> Option<(E3, f64)> {
+pub(super) fn enclosing(bounds: &[Option<(E3, f64)>]) -> Option<(E3, f64)> {
     let spheres: Vec<(E3, f64)> = bounds.iter().copied().collect::<Option<_>>()?;
     let n = spheres.len() as f64;
     let centre = [0, 1, 2].map(|k| spheres.iter().map(|s| s.0[k]).sum::<f64>() / n);
@@ -246,23 +246,18 @@ impl CsgPart {
     }
 }
 
-/// The crossing at parameter `t`.
-fn crossing_at_t(ray: &Ray, t: f64) -> Crossing {
-    Crossing { t, point: ray.at(t), alpha: None }
-}
-
 impl Shape for CsgPart {
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let b = self.csg.nearest(ray, t_min, t_max, |leaf| leaf == self.leaf)?;
-        Some(crossing_at_t(ray, b.t))
+        Some(self.shape().crossing_on(ray, b.t))
     }
 
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
         self.shape().normal(ray, crossing)
     }
 
-    fn facet(&self) -> Option<E3> {
-        self.shape().facet()
+    fn facet(&self, crossing: &Crossing) -> Option<E3> {
+        self.shape().facet(crossing)
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {
@@ -347,8 +342,8 @@ impl Shape for Clipped {
         self.shape.normal(ray, crossing)
     }
 
-    fn facet(&self) -> Option<E3> {
-        self.shape.facet()
+    fn facet(&self, crossing: &Crossing) -> Option<E3> {
+        self.shape.facet(crossing)
     }
 
     fn bounds(&self) -> Option<(E3, f64)> {
@@ -383,14 +378,8 @@ impl Shape for Clipped {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::shapes::testing::{ray, stream};
     use crate::shapes::{BoxShape, PlaneShape, SphereShape};
-    use cga_core::Line;
-    use cga_core::euclid::unit;
-
-    fn ray(o: E3, d: E3) -> Ray {
-        let dir = unit(d).unwrap();
-        Ray { origin: o, dir, carrier: Line::from_point_unit_direction(o, dir) }
-    }
 
     /// The nearest crossing of the whole tree: the nearest over its parts, with the part.
     fn nearest(parts: &[CsgPart], r: &Ray, t_min: f64) -> Option<(f64, usize)> {
@@ -436,16 +425,6 @@ mod tests {
         assert_eq!(Csg::new(vec![ball.clone(), disk.clone()], tree).err(), Some(CsgError::Open(2)));
         assert!(Csg::new(vec![ball], Node::Op(Operation::Union, vec![Node::Leaf(0)])).is_err());
         assert!(Clipped::new(disk.clone(), vec![disk]).is_err());
-    }
-
-    /// A seeded stream of numbers in [−1, 1).
-    fn stream(mut state: u64) -> impl FnMut() -> f64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-        }
     }
 
     /// The inside of a tree by point tests, the reference the spans are checked against.

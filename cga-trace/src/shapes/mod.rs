@@ -10,6 +10,8 @@
 //! here (or, like [`crate::surface`], beside) and its entry in the scene format
 //! ([`crate::format`]); see ARCHITECTURE.md, "Adding a shape".
 
+mod body;
+mod closed_mesh;
 mod cone;
 mod csg;
 mod cuboid;
@@ -20,8 +22,10 @@ mod torus;
 mod triangle;
 
 use crate::ray::{Ray, in_range};
+pub use body::Body;
 use cga_core::Plane;
 use cga_core::euclid::{E3, dot};
+pub use closed_mesh::ClosedMesh;
 pub use cone::ConeShape;
 use core::any::Any;
 use core::fmt::Debug;
@@ -55,6 +59,9 @@ pub struct Crossing {
     pub point: E3,
     /// For an evolved surface, the α of the circle hit.
     pub alpha: Option<f64>,
+    /// Which piece of a shape made of several the crossing lies on (a body's part, a mesh
+    /// solid's triangle); 0 for a shape of one piece.
+    pub part: u32,
 }
 
 /// A crossing with its normal, ready to shade.
@@ -68,6 +75,20 @@ pub struct ShadingPoint {
     pub normal: E3,
     /// For an evolved surface, the α of the circle hit.
     pub alpha: Option<f64>,
+    /// The piece of the shape it lies on ([`Crossing::part`]).
+    pub part: u32,
+}
+
+impl ShadingPoint {
+    /// The crossing it shades.
+    pub fn crossing(&self) -> Crossing {
+        Crossing { t: self.t, point: self.point, alpha: self.alpha, part: self.part }
+    }
+
+    /// The crossing `c` with its normal.
+    pub fn at(c: Crossing, normal: E3) -> Self {
+        ShadingPoint { t: c.t, point: c.point, normal, alpha: c.alpha, part: c.part }
+    }
 }
 
 /// A scene object's geometry: how rays meet it (with the generated sparse types), its
@@ -91,7 +112,7 @@ pub trait Shape: Send + Sync + Debug + Any {
     /// light crossing a dielectric's surface bends at the surface itself, so refraction and
     /// which side of a solid a ray is on read this, never the shading normal. `None` where
     /// [`Shape::normal`] is the surface's own.
-    fn facet(&self) -> Option<E3> {
+    fn facet(&self, _crossing: &Crossing) -> Option<E3> {
         None
     }
 
@@ -143,7 +164,8 @@ pub trait Shape: Send + Sync + Debug + Any {
     }
 
     /// Whether the shape bounds a solid on its own, which CSG and clipping take: a sphere, a
-    /// box, a capped cylinder or cone, a torus, and a plane (the half-space behind its normal).
+    /// box, a capped cylinder or cone, a torus, a plane (the half-space behind its normal), a
+    /// closed mesh ([`ClosedMesh`]) and surfaces that close one together ([`Body`]).
     fn closed(&self) -> bool {
         false
     }
@@ -154,10 +176,18 @@ pub trait Shape: Send + Sync + Debug + Any {
         spans_by_crossings(self, ray)
     }
 
+    /// The crossing at parameter `t` of the ray's line, an end of one of its
+    /// [spans](Shape::spans): by default the point there; a shape of several pieces says
+    /// which piece it lies on (and a swept surface its α), so that its normal and `(u, v)`
+    /// can be read there.
+    fn crossing_on(&self, ray: &Ray, t: f64) -> Crossing {
+        Crossing { t, point: ray.at(t), alpha: None, part: 0 }
+    }
+
     /// The nearest crossing and its normal.
     fn hit(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<ShadingPoint> {
         let c = self.intersect(ray, t_min, t_max)?;
-        Some(ShadingPoint { t: c.t, point: c.point, normal: self.normal(ray, &c), alpha: c.alpha })
+        Some(ShadingPoint::at(c, self.normal(ray, &c)))
     }
 }
 
@@ -175,7 +205,7 @@ pub(crate) fn point_in_range<C>(ray: &Ray<C>, t_min: f64, t_max: f64) -> impl Fn
 
 /// The crossing at `point`.
 fn crossing_at(ray: &Ray, point: E3) -> Crossing {
-    Crossing { t: ray.t_of(point), point, alpha: None }
+    Crossing { t: ray.t_of(point), point, alpha: None, part: 0 }
 }
 
 /// The unit normal from the reflected line, facing the ray: the direction of `L' − L` for
@@ -211,4 +241,28 @@ pub(crate) fn flat_error(n: E3, p: E3) -> f64 {
 /// `n` turned to face against `dir`.
 pub(crate) fn facing(n: E3, dir: E3) -> E3 {
     if dot(n, dir) > 0.0 { n.map(|x| -x) } else { n }
+}
+
+/// What the shapes' unit tests share: rays and a seeded stream of numbers.
+#[cfg(test)]
+pub(crate) mod testing {
+    use crate::ray::Ray;
+    use cga_core::Line;
+    use cga_core::euclid::{E3, unit};
+
+    /// The ray from `o` along `d` (made unit).
+    pub(crate) fn ray(o: E3, d: E3) -> Ray {
+        let dir = unit(d).unwrap();
+        Ray { origin: o, dir, carrier: Line::from_point_unit_direction(o, dir) }
+    }
+
+    /// A seeded stream of numbers in [−1, 1) (xorshift).
+    pub(crate) fn stream(mut state: u64) -> impl FnMut() -> f64 {
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+        }
+    }
 }

@@ -97,7 +97,7 @@ impl Shape for SphereShape {
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let c = sphere_crossing(&ray.carrier, &self.sphere, (ray.origin, ray.dir), (t_min, t_max));
         let (t, point) = if c.second { (c.t[1], c.points[1]) } else { (c.t[0], c.points[0]) };
-        c.found.then_some(Crossing { t, point, alpha: None })
+        c.found.then_some(Crossing { t, point, alpha: None, part: 0 })
     }
 
     /// From the line reflected in the tangent plane at the crossing.

@@ -94,7 +94,7 @@ impl Shape for TriangleShape {
         }
     }
 
-    fn facet(&self) -> Option<E3> {
+    fn facet(&self, _: &Crossing) -> Option<E3> {
         self.shading.as_ref().and_then(|s| s.normals).map(|_| self.normal)
     }
 

@@ -257,7 +257,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         let first = self.family.nearest(ray, &placed, t_min, t_max, false);
         let t_max = first.map_or(t_max, |(t, _, _)| t);
         let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish).or(first)?;
-        Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) })
+        Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha), part: 0 })
     }
 
     /// Whether the surface crosses the ray with `t_min < t < t_max` (a shadow ray's test):

@@ -292,7 +292,7 @@ impl Shape for RuledSurface {
                 && t < t_max
                 && best.is_none_or(|b| t < b.t)
             {
-                best = Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha) });
+                best = Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha), part: 0 });
             }
         }
         best

@@ -404,3 +404,70 @@ fn csg_parts_keep_their_materials_and_glass_is_one_body() {
         lens.iter().map(|o| o.solid).collect::<Vec<_>>()
     );
 }
+
+/// The nearest crossing of a ray from `o` along `d` (in the world) with the objects named
+/// `name`: its `t` (world lengths), its normal and the colour of the part it lies on.
+fn nearest_on(scene: &Scene, name: &str, o: [f64; 3], d: [f64; 3]) -> Option<(f64, [f64; 3], [f64; 3])> {
+    // Shapes lie in the scene's frame: lengths there are the world's over its scale.
+    let r = cga_trace::ray::Ray::new(scene.frame.point(o), d).unwrap();
+    let hits = scene.objects.iter().filter(|o| &*o.name == name).filter_map(|o| {
+        let hit = o.shape.hit(&r, 0.0, f64::INFINITY)?;
+        Some((scene.frame.world_length(hit.t), hit.normal, o.material.colour))
+    });
+    hits.min_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+/// A closed mesh (a box in an .obj file, one face of it wound the other way) and an
+/// evolved surface with `caps = true` are CSG parts: the crossings are the solids', on the
+/// part whose material they show; a mesh that does not close (a face left out) and a
+/// surface without caps are refused.
+#[test]
+fn closed_meshes_and_capped_swept_surfaces_are_csg_parts() {
+    let dir = tempfile::tempdir().unwrap();
+    // The box [0, 2] × [−2, 2] × [0, 2].
+    let corners = "v 0 -2 0\nv 2 -2 0\nv 2 2 0\nv 0 2 0\nv 0 -2 2\nv 2 -2 2\nv 2 2 2\nv 0 2 2\n";
+    let faces = [
+        "f 1 3 2\nf 1 4 3\n",
+        "f 5 6 7\nf 5 7 8\n",
+        "f 1 2 6\nf 1 6 5\n",
+        "f 2 3 7\nf 2 7 6\n",
+        "f 3 4 8\nf 3 8 7\n",
+        "f 4 1 5\nf 4 8 5\n",
+    ];
+    std::fs::write(dir.path().join("box.obj"), format!("{corners}{}", faces.concat())).unwrap();
+    std::fs::write(dir.path().join("open.obj"), format!("{corners}{}", faces[1..].concat())).unwrap();
+    let scene = |objects: &str| {
+        let path = dir.path().join("s.toml");
+        std::fs::write(&path, format!("{CAMERA}{objects}")).unwrap();
+        Scene::load(&path)
+    };
+    let mesh_cut = "[[objects]]\nname = \"cut\"\ntype = \"csg\"\noperation = \"difference\"\nmaterial = { colour = [1.0, 0.0, 0.0] }\n\
+         objects = [{ type = \"sphere\", centre = [0.0, 0.0, 0.0], radius = 1.0 }, \
+         { type = \"mesh\", file = \"box.obj\", material = { colour = [0.0, 0.0, 1.0] } }]\n";
+    let swept = "[[objects]]\nname = \"tube\"\ntype = \"csg\"\noperation = \"difference\"\nmaterial = { colour = [0.0, 1.0, 0.0] }\n\
+         objects = [{ type = \"evolved\", c1 = { centre = [5.0, 0.0, 0.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }, \
+         c2 = { centre = [5.0, 0.0, 2.0], normal = [0.0, 0.0, 1.0], radius = 1.0 }, caps = true }, \
+         { type = \"sphere\", centre = [5.0, 0.0, 2.0], radius = 0.5, material = { colour = [1.0, 1.0, 0.0] } }]\n";
+    let s = scene(&format!("{mesh_cut}{swept}")).unwrap();
+    let near = |a: f64, b: f64| (a - b).abs() < 1e-9;
+    // Down onto the cut quarter: the box's floor z = 0, on the mesh's part.
+    let (t, n, colour) = nearest_on(&s, "cut", [0.5, -0.3, 5.0], [0.0, 0.0, -1.0]).unwrap();
+    assert!(near(t, 5.0) && colour == [0.0, 0.0, 1.0] && near(n[2], 1.0), "{t} {n:?} {colour:?}");
+    // Down beside it: the sphere's own top.
+    let (t, _, colour) = nearest_on(&s, "cut", [-0.5, -0.3, 5.0], [0.0, 0.0, -1.0]).unwrap();
+    assert!(near(t, 5.0 - (1.0f64 - 0.34).sqrt()) && colour == [1.0, 0.0, 0.0], "{t}");
+    // Along the box's face x = 0 and through its edge (0, ·, 0): the sphere's rim.
+    let (t, _, _) = nearest_on(&s, "cut", [-5.0, 0.0, 0.0], [1.0, 0.0, 0.0]).unwrap();
+    assert!(near(t, 4.0), "{t}");
+    // Down the tube's axis: the cap's middle is cut away, the ball's floor inside shows.
+    let (t, _, colour) = nearest_on(&s, "tube", [5.0, 0.0, 5.0], [0.0, 0.0, -1.0]).unwrap();
+    assert!(near(t, 3.5) && colour == [1.0, 1.0, 0.0], "{t} {colour:?}");
+    // Down beside the ball: the cap, on the tube's part, facing up.
+    let (t, n, colour) = nearest_on(&s, "tube", [5.8, 0.0, 5.0], [0.0, 0.0, -1.0]).unwrap();
+    assert!(near(t, 3.0) && colour == [0.0, 1.0, 0.0] && near(n[2], 1.0), "{t} {n:?} {colour:?}");
+    // A mesh that does not close, a surface without caps.
+    let open = scene(&mesh_cut.replace("box.obj", "open.obj")).unwrap_err().to_string();
+    assert!(open.contains("bounds a solid") && open.contains("s.toml:"), "{open}");
+    let uncapped = scene(&swept.replace("caps = true", "caps = false")).unwrap_err().to_string();
+    assert!(uncapped.contains("bounds a solid"), "{uncapped}");
+}

@@ -110,7 +110,7 @@ fn stripes_along_alpha_split_an_evolved_cylinder_at_its_middle() {
 #[test]
 fn disks_and_triangles_give_their_own_parameters() {
     let disk = DiskShape::new([1.0, 2.0, 3.0], [0.0, 0.0, 1.0], 2.0).unwrap();
-    let at = |point| Crossing { t: 1.0, point, alpha: None };
+    let at = |point| Crossing { t: 1.0, point, alpha: None, part: 0 };
     // Half the radius out along the first axis orthonormal to +z (x): angle ½ turn from
     // atan2's −π, r/R = ½.
     let (uv, unit) = disk.uv(&at([2.0, 2.0, 3.0])).unwrap();

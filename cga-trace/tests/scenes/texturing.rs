@@ -30,7 +30,7 @@ fn pixel(film: &Film, i: u32, j: u32) -> [f64; 3] {
 
 /// `uv` of `shape` at `point`, checked to be fractions and compared with `want` to 1e-12.
 fn assert_uv(shape: &dyn Shape, point: [f64; 3], want: [f64; 2]) {
-    let (uv, unit) = shape.uv(&Crossing { t: 1.0, point, alpha: None }).expect("(u, v)");
+    let (uv, unit) = shape.uv(&Crossing { t: 1.0, point, alpha: None, part: 0 }).expect("(u, v)");
     assert_eq!(unit, Unit::Fraction);
     assert!((uv[0] - want[0]).abs() < 1e-12 && (uv[1] - want[1]).abs() < 1e-12, "at {point:?}: {uv:?}, not {want:?}");
 }

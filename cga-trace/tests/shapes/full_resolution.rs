@@ -175,7 +175,7 @@ fn surface_distance(surface: &Swept, alpha: f64, x: cga_core::euclid::E3) -> f64
 /// Whether the ray is tangent to the surface at its crossing `(t, α)`.
 fn tangent(surface: &Swept, ray: &Ray, t: f64, alpha: f64) -> bool {
     let point = cga_core::euclid::add(ray.origin, cga_core::euclid::scale(ray.dir, t));
-    let crossing = cga_trace::shapes::Crossing { t, point, alpha: Some(alpha) };
+    let crossing = cga_trace::shapes::Crossing { t, point, alpha: Some(alpha), part: 0 };
     dot(surface.shape().normal(ray, &crossing), ray.dir).abs() < 1e-6
 }
 

@@ -138,7 +138,7 @@ fn normals_match_finite_differences() {
             let (Some(d1), Some(d2)) = (d(1e-4), d(5e-5)) else { continue };
             let along = add(scale(d1, -1.0 / 3.0), scale(d2, 4.0 / 3.0));
             let Some(fd) = unit(cross(along, u)) else { continue };
-            let n = surface.normal(&Crossing { t: 0.0, point: add(x, o), alpha: Some(alpha) });
+            let n = surface.normal(&Crossing { t: 0.0, point: add(x, o), alpha: Some(alpha), part: 0 });
             let angle = norm(cross(n, fd)).atan2(dot(n, fd).abs());
             worst = worst.max(angle);
             assert!(angle < 1e-7, "{name}: α = {alpha}: {angle:e} rad");

@@ -441,3 +441,59 @@ fn csg() {
                intersection { torus { 1.6, 0.5 Reorient_Trans(y, z) translate <0,0,3> } plane { x, 0.3 } }\n";
     check("csg", &toml, pov);
 }
+
+/// A closed torus mesh about z (radii 1.8 and 0.6, `48 × 24` quads) at `centre`, as an .obj
+/// file in `dir` and as POV-Ray's `mesh` (with the `inside_vector` CSG needs).
+fn torus_mesh(dir: &std::path::Path, name: &str, centre: [f64; 3]) -> (String, String) {
+    let (m, n) = (48, 24);
+    let corner = |i: usize, j: usize| {
+        let (u, v) = (std::f64::consts::TAU * i as f64 / m as f64, std::f64::consts::TAU * j as f64 / n as f64);
+        let r = 1.8 + 0.6 * v.cos();
+        [centre[0] + r * u.cos(), centre[1] + r * u.sin(), centre[2] + 0.6 * v.sin()]
+    };
+    let at = |i: usize, j: usize| (i % m) * n + j % n;
+    let faces: Vec<[usize; 3]> = (0..m)
+        .flat_map(|i| {
+            (0..n).flat_map(move |j| {
+                [[at(i, j), at(i + 1, j), at(i + 1, j + 1)], [at(i, j), at(i + 1, j + 1), at(i, j + 1)]]
+            })
+        })
+        .collect();
+    let corners: Vec<[f64; 3]> = (0..m).flat_map(|i| (0..n).map(move |j| (i, j))).map(|(i, j)| corner(i, j)).collect();
+    let mut obj: String = corners.iter().map(|[x, y, z]| format!("v {x:?} {y:?} {z:?}\n")).collect();
+    obj += &faces.iter().map(|[a, b, c]| format!("f {} {} {}\n", a + 1, b + 1, c + 1)).collect::<String>();
+    let path = dir.join(name);
+    std::fs::write(&path, obj).unwrap();
+    let v = |k: usize| format!("<{:?},{:?},{:?}>", corners[k][0], corners[k][1], corners[k][2]);
+    let triangles: String =
+        faces.iter().map(|[a, b, c]| format!("triangle {{ {}, {}, {} }}\n", v(*a), v(*b), v(*c))).collect();
+    (path.display().to_string(), format!("mesh {{ {triangles} inside_vector <0.3,0.2,1> }}"))
+}
+
+/// CSG of closed meshes against POV-Ray's: a sphere with a torus mesh taken away (notches
+/// in its outline), a box cut to a torus mesh, and a torus mesh cut by a plane and capped.
+#[test]
+#[ignore = "needs povray: apt-get install -y povray; cargo test --release -p cga-trace --test shapes silhouettes:: -- --ignored --nocapture"]
+fn csg_meshes() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, pov_a) = torus_mesh(dir.path(), "a.obj", [-3.0, 0.0, 0.0]);
+    let (b, pov_b) = torus_mesh(dir.path(), "b.obj", [3.0, 0.0, 0.0]);
+    let (c, pov_c) = torus_mesh(dir.path(), "c.obj", [0.0, 0.0, 3.2]);
+    let toml = tables(&[
+        &format!(
+            "type = \"csg\"\noperation = \"difference\"\nobjects = [{{ type = \"sphere\", centre = [-3.0, 0.0, 0.0], radius = 2.0 }}, {{ type = \"mesh\", file = {a:?} }}]"
+        ),
+        &format!(
+            "type = \"csg\"\noperation = \"intersection\"\nobjects = [{{ type = \"box\", min = [1.0, -3.0, -0.3], max = [4.6, 3.0, 1.0] }}, {{ type = \"mesh\", file = {b:?} }}]"
+        ),
+        &format!(
+            "type = \"mesh\"\nfile = {c:?}\nclip = {{ plane = {{ point = [0.5, 0.0, 3.2], normal = [1.0, 0.0, 0.0] }}, capped = true }}"
+        ),
+    ]);
+    let pov = format!(
+        "difference {{ sphere {{ <-3,0,0>, 2 }} {pov_a} }}\n\
+         intersection {{ box {{ <1,-3,-0.3>, <4.6,3,1> }} {pov_b} }}\n\
+         intersection {{ {pov_c} plane {{ x, 0.5 }} }}\n"
+    );
+    check("csg of meshes", &toml, &pov);
+}

@@ -13,7 +13,7 @@ use serde::Deserialize;
 use std::sync::Arc;
 
 /// Said of a capped clip on an object that bounds no solid.
-pub(crate) const CAPPED_OPEN: &str = "a capped clip needs a closed object (a sphere, box, capped cylinder or cone, torus or csg): `capped = false` cuts any";
+pub(crate) const CAPPED_OPEN: &str = "a capped clip needs a closed object (a sphere, box, capped cylinder or cone, torus, closed mesh, evolved or spline surface with `caps = true`, or csg): `capped = false` cuts any";
 
 /// An object's `clip` table.
 #[derive(Deserialize)]

@@ -16,7 +16,7 @@ pub(crate) const TAKES: &str =
     "a csg takes `operation` (\"union\", \"intersection\" or \"difference\") and `objects`, two or more closed objects";
 
 /// Said of a part that bounds no solid.
-pub(crate) const OPEN: &str = "a CSG part bounds a solid: a sphere, box, capped cylinder or cone, torus, plane (the half-space behind its normal) or csg";
+pub(crate) const OPEN: &str = "a CSG part bounds a solid: a sphere, box, capped cylinder or cone, torus, plane (the half-space behind its normal), closed mesh, evolved or spline surface with `caps = true`, or csg";
 
 pub(crate) const KIND: Kind = Kind { name: "csg", fields: Csg::FIELDS, takes: TAKES, read: super::kind::read::<Csg> };
 

@@ -33,6 +33,11 @@ impl Geometry for Evolved {
     fn build(&self, _: &At) -> Result<Parts, Invalid> {
         Err(Invalid::NoEvolved)
     }
+
+    /// With `caps`, its surface and end disks close a solid.
+    fn closed(&self, _: &Assets) -> Result<bool, Invalid> {
+        Ok(super::kind::flag(&self.caps, false))
+    }
 }
 
 /// The surface, its circles built in the frame of [`EvolvedSurface::frame_origin`] (inside

@@ -335,11 +335,7 @@ impl ObjectSpec {
                     return part.tree((placed, time), &own, at, leaves);
                 }
                 let (shapes, _) = part.shapes_at(placed, at)?;
-                let [shape] = <[Arc<dyn Shape>; 1]>::try_from(shapes)
-                    .map_err(|_| Invalid::Form("a CSG part is one closed shape (not a mesh or a drawing)"))?;
-                if !shape.closed() {
-                    return Err(Invalid::Form(csg::OPEN));
-                }
+                let shape = one_solid(shapes, part.geometry.closed(at.assets)?).ok_or(Invalid::Form(csg::OPEN))?;
                 leaves.push((shape, own));
                 Ok(Node::Leaf(leaves.len() - 1))
             })();
@@ -383,12 +379,17 @@ impl ObjectSpec {
             return Ok((parts.into_iter().map(cut).collect::<Result<_, _>>().map_err(csg_error(at_clip))?, anchor));
         }
         // Capped: the solid intersected with the region, whose surface takes the object's look.
-        let root = match tree {
-            Some(root) => root,
-            None if parts.len() == 1 && parts[0].0.closed() => Node::Leaf(0),
-            None => return Err(Invalid::at("clip", clip.span(), Invalid::Form(clip::CAPPED_OPEN))),
+        let (root, mut parts) = match tree {
+            Some(root) => (root, parts),
+            None => {
+                let shapes = parts.into_iter().map(|(s, _)| s).collect();
+                let closed = self.geometry.closed(at.assets)?;
+                let Some(solid) = one_solid(shapes, closed) else {
+                    return Err(Invalid::at("clip", clip.span(), Invalid::Form(clip::CAPPED_OPEN)));
+                };
+                (Node::Leaf(0), vec![(solid, look.clone())])
+            }
         };
-        let mut parts = parts;
         let first = parts.len();
         parts.extend(region.into_iter().map(|r| (r, look.clone())));
         let root = Node::Op(
@@ -488,6 +489,26 @@ fn solid(
 }
 
 /// A CSG error as a value error at `field` (its span where given).
+/// One closed shape from an object's shapes: its one shape if that bounds a solid; if the
+/// object says its shapes close one (`closed`), a closed mesh's triangles as one
+/// [`ClosedMesh`], a capped swept surface's surface and disks as one [`Body`]. `None` if
+/// they bound none.
+fn one_solid(shapes: Vec<Arc<dyn Shape>>, closed: bool) -> Option<Arc<dyn Shape>> {
+    use crate::shapes::{Body, ClosedMesh, TriangleShape};
+    if let [shape] = &shapes[..] {
+        return shape.closed().then(|| shape.clone());
+    }
+    if !closed {
+        return None;
+    }
+    let triangles: Option<Vec<TriangleShape>> =
+        shapes.iter().map(|s| s.downcast_ref::<TriangleShape>().cloned()).collect();
+    match triangles {
+        Some(triangles) => Some(Arc::new(ClosedMesh::new(triangles)?)),
+        None => Some(Arc::new(Body::new(shapes)?)),
+    }
+}
+
 fn csg_error((span, field): (Option<Range<usize>>, &'static str)) -> impl Fn(crate::shapes::CsgError) -> Invalid {
     move |e| {
         let e = Invalid::Range(e.to_string());

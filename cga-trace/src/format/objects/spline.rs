@@ -60,6 +60,11 @@ impl Geometry for Spline {
     fn build(&self, _: &At) -> Result<Parts, Invalid> {
         Err(Invalid::NoEvolved)
     }
+
+    /// With `caps`, its surface and end disks close a solid.
+    fn closed(&self, _: &Assets) -> Result<bool, Invalid> {
+        Ok(super::kind::flag(&self.caps, false))
+    }
 }
 
 #[cfg(feature = "evolved")]
