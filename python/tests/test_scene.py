@@ -91,3 +91,25 @@ def test_csg_and_clips_are_built_in_code():
     assert whole.render(spp=1).linear[16, 16].max() > 0.0
     with pytest.raises(cga.SceneError, match="bounds a solid"):
         scene.csg(operation="union", objects=[sphere, {"type": "disk", "centre": [0, 0, 0], "normal": [0, 0, 1], "radius": 1.0}], material={"colour": [1.0, 1.0, 1.0]}).build()
+
+
+def test_a_capped_swept_surface_is_a_csg_part():
+    """An evolved surface with ``caps=True`` bounds a solid: a ball taken from its top shows
+    the ball's inside where the cap was; without caps it is refused."""
+    def tube(caps):
+        return {
+            "type": "evolved", "caps": caps,
+            "c1": {"centre": [0.0, 0.0, -1.0], "normal": [0.0, 0.0, 1.0], "radius": 1.0},
+            "c2": {"centre": [0.0, 0.0, 1.0], "normal": [0.0, 0.0, 1.0], "radius": 1.0},
+        }
+    ball = {"type": "sphere", "centre": [0.0, 0.0, 1.0], "radius": 0.5, "material": {"colour": [0.0, 0.0, 1.0], "ks": 0.0}}
+    scene = cga.Scene().camera(position=[0.0, 0.0, 8.0], look_at=[0, 0, 0], up=[0, 1, 0], fov=30.0, width=33, height=33)
+    scene.light(position=[0.0, 0.0, 8.0]).settings(background=[0.0, 0.0, 0.0])
+    scene.csg(operation="difference", objects=[tube(True), ball], material={"colour": [1.0, 0.0, 0.0], "ks": 0.0})
+    picture = scene.render(spp=1).linear
+    centre, rim = picture[16, 16], picture[16, 10]
+    assert centre[2] > 0.0 and centre[0] == 0.0, centre
+    assert rim[0] > 0.0 and rim[2] == 0.0, rim
+    with pytest.raises(cga.SceneError, match="bounds a solid"):
+        bare = cga.Scene().camera(position=[0.0, 0.0, 8.0], look_at=[0, 0, 0], up=[0, 1, 0], width=8, height=8)
+        bare.csg(operation="difference", objects=[tube(False), ball], material={"colour": [1.0, 0.0, 0.0]}).build()

@@ -260,8 +260,13 @@ impl Shape for CsgPart {
         self.shape().facet(crossing)
     }
 
+    /// The smaller of its leaf's and the whole tree's: its crossings lie on its leaf's
+    /// surface and on the tree's, so a ray that misses either meets no part of the tree here.
     fn bounds(&self) -> Option<(E3, f64)> {
-        self.csg.bounds
+        match (self.shape().bounds(), self.csg.bounds) {
+            (Some(leaf), Some(tree)) => Some(if leaf.1 < tree.1 { leaf } else { tree }),
+            (leaf, tree) => leaf.or(tree),
+        }
     }
 
     /// The largest of its leaves': a crossing is one leaf's own.

@@ -1,7 +1,8 @@
 //! Each shape and swept surface against its own reference: boxes, cones, tori, ruled and
-//! spline surfaces (every crossing at full resolution), meshes exported from them, curvature
-//! pictures, and silhouettes against POV-Ray (ignored: they need `povray`). One module a
-//! subject; `cargo test -p cga-trace --test shapes -- MODULE::` runs one.
+//! spline surfaces (every crossing at full resolution), meshes exported from them, capped
+//! swept surfaces as solids, curvature pictures, and silhouettes against POV-Ray (ignored:
+//! they need `povray`). One module a subject; `cargo test -p cga-trace --test shapes --
+//! MODULE::` runs one.
 
 mod boxes;
 #[path = "../common/mod.rs"]
@@ -12,5 +13,6 @@ mod full_resolution;
 mod mesh;
 mod ruled_surface;
 mod silhouettes;
+mod solids;
 mod spline_surface;
 mod torus;
