@@ -249,7 +249,9 @@ impl CsgPart {
 impl Shape for CsgPart {
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
         let b = self.csg.nearest(ray, t_min, t_max, |leaf| leaf == self.leaf)?;
-        Some(self.shape().crossing_on(ray, b.t))
+        // The boundary's own parameter (in range); the leaf says which piece it lies on.
+        let on = self.shape().crossing_on(ray, b.t);
+        Some(Crossing { t: b.t, point: ray.at(b.t), ..on })
     }
 
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
@@ -284,6 +286,10 @@ impl Shape for CsgPart {
 
     fn uv(&self, crossing: &Crossing) -> Option<([f64; 2], super::Unit)> {
         self.shape().uv(crossing)
+    }
+
+    fn curvature(&self, crossing: &Crossing) -> Option<cga_core::Curvature> {
+        self.shape().curvature(crossing)
     }
 
     fn v_up(&self) -> bool {

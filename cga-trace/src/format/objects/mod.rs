@@ -488,11 +488,10 @@ fn solid(
     Ok(CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect())
 }
 
-/// A CSG error as a value error at `field` (its span where given).
 /// One closed shape from an object's shapes: its one shape if that bounds a solid; if the
 /// object says its shapes close one (`closed`), a closed mesh's triangles as one
-/// [`ClosedMesh`], a capped swept surface's surface and disks as one [`Body`]. `None` if
-/// they bound none.
+/// [`ClosedMesh`](crate::shapes::ClosedMesh), a capped swept surface's surface and disks as
+/// one [`Body`](crate::shapes::Body). `None` if they bound none.
 fn one_solid(shapes: Vec<Arc<dyn Shape>>, closed: bool) -> Option<Arc<dyn Shape>> {
     use crate::shapes::{Body, ClosedMesh, TriangleShape};
     if let [shape] = &shapes[..] {
@@ -509,6 +508,7 @@ fn one_solid(shapes: Vec<Arc<dyn Shape>>, closed: bool) -> Option<Arc<dyn Shape>
     }
 }
 
+/// A CSG error as a value error at `field` (its span where given).
 fn csg_error((span, field): (Option<Range<usize>>, &'static str)) -> impl Fn(crate::shapes::CsgError) -> Invalid {
     move |e| {
         let e = Invalid::Range(e.to_string());
