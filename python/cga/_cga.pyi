@@ -86,7 +86,8 @@ class cga2:
 
 class pga_toolkit:
     """cga-algebras' PGA toolkit on rows of coefficients (``(k,)`` or ``(n, k)``), which
-    :mod:`cga.pga` wraps: motors, screws, closed-form exp/log/sqrt, interpolation, distances."""
+    :mod:`cga.pga` wraps: motors, screws, closed-form exp/log/sqrt/pow, interpolation,
+    distances, angles."""
     @staticmethod
     def rotor(axis: ArrayLike, angle: ArrayLike) -> NDArray[np.float64]: ...
     @staticmethod
@@ -109,6 +110,14 @@ class pga_toolkit:
     def plane_from_normal_distance(n: ArrayLike, d: ArrayLike) -> NDArray[np.float64]: ...
     @staticmethod
     def distance(kind: str, a: ArrayLike, b: ArrayLike) -> Floats: ...
+    @staticmethod
+    def pow(motor: ArrayLike, t: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def from_line_pitch(line: ArrayLike, angle: ArrayLike, pitch: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def rotor_translation(motor: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def angle(kind: str, a: ArrayLike, b: ArrayLike) -> Floats: ...
 
 class cga2_toolkit:
     """cga-algebras' 2D CGA constructors and read-backs on rows, which :mod:`cga.cga2` wraps."""

@@ -44,9 +44,10 @@ Motor = _pga.Motor
 #: Any value: the results of mixed grades (a plane times a line), the 16 blades in storage order.
 Multivector = _pga.Multivector
 
-__all__ = ["Line", "Motor", "Multivector", "Plane", "Point", "Pseudoscalar", "Scalar", "direction", "distance", "exp",
-           "interpolate", "line_through", "log", "moment", "normalise", "plane", "plane_from_normal_distance", "point",
-           "position", "project", "rotor", "screw", "sqrt", "translator"]
+__all__ = ["Line", "Motor", "Multivector", "Plane", "Point", "Pseudoscalar", "Scalar", "angle", "direction", "distance",
+           "exp", "from_line_pitch", "from_rotor_translator", "interpolate", "line_through", "log", "moment", "normalise",
+           "plane", "plane_from_normal_distance", "point", "position", "pow", "project", "rotor", "rotor_translation",
+           "screw", "sqrt", "translator"]
 
 
 def _rows(x, width, name):
@@ -141,6 +142,51 @@ def interpolate(a, b, t):
     kln::log(b * ~a)) * a``; kingdon: ``(B * ~A).sqrt() * A`` at ``t = ½``. Rust:
     ``Motor::interpolate``."""
     return Motor(_tk.interpolate(a.array, b.array, t))
+
+
+def pow(motor, t):
+    """``Mᵗ = exp(t log M)``: the motors a fraction ``t`` (a number or an array of n) of the way
+    along their screws, ``pow(M, 0.5)`` the square root and ``pow(M, 2)`` ``M M``. klein:
+    ``kln::exp(t * kln::log(m))``. Rust: ``Motor::pow``. A full turn (``−1``) is refused."""
+    return Motor(_tk.pow(motor.array, t))
+
+
+def from_line_pitch(line, angle, pitch):
+    """The screws of ``pitch`` (distance slid per radian turned) turning by ``angle`` about
+    ``line``: ``screw(line, angle, pitch · angle)``. klein: ``kln::motor(θ, pitch · θ, l)``.
+    Rust: ``Motor::from_line_pitch``."""
+    return Motor(_tk.from_line_pitch(line.array, angle, pitch))
+
+
+def from_rotor_translator(rotor, translator):
+    """The motors that apply ``rotor`` first, then ``translator``: the product ``T R``.
+    klein: ``kln::motor`` of ``t * r``; kingdon: ``T * R``. Rust: ``Motor::from_rotor_translator``."""
+    return translator * rotor
+
+
+def rotor_translation(motor):
+    """Motors split into their rotors and translations ``(R, t)``, ``t`` of shape (3,) or
+    (n, 3): ``M = T(t) R`` for the motor made unit, what :func:`from_rotor_translator` would
+    be given. A motor without rotation part is refused. Rust: ``Motor::rotor_translation``."""
+    both = _tk.rotor_translation(motor.array)
+    return Motor(both[..., :8]), both[..., 8:]
+
+
+_ANGLES = {("Line", "Line"): "line_line", ("Line", "Plane"): "line_plane", ("Plane", "Plane"): "plane_plane"}
+
+
+def angle(a, b):
+    """Angles between lines (``[0, π]`` between their directions, ``atan2(|d₁ × d₂|, d₁ · d₂)``),
+    planes (``[0, π]`` between their normals) and a line and a plane (``[0, π/2]``, zero for a
+    line parallel to the plane; either order). klein and kingdon: ``acos`` of the unit values'
+    inner product, up to its sign. Rust: ``Line::angle_to_line``, ``Line::angle_to_plane``,
+    ``Plane::angle_to_plane``. An ideal line or plane is refused."""
+    key = (type(a).__name__, type(b).__name__)
+    if key not in _ANGLES and key[::-1] in _ANGLES:
+        a, b, key = b, a, key[::-1]
+    if key not in _ANGLES:
+        raise TypeError(f"angle: no angle between {key[0]} and {key[1]}")
+    return _tk.angle(_ANGLES[key], a.array, b.array)
 
 
 def line_through(p, q):

@@ -1,5 +1,5 @@
 //! `_cga.pga_toolkit`: cga-algebras' PGA toolkit (`pga/*.rs`: motors, screws, closed-form
-//! `exp`/`log`/`sqrt`, interpolation, normalisation, constructors, distances) on rows of
+//! `exp`/`log`/`sqrt`/`pow`, interpolation, normalisation, constructors, distances, angles) on rows of
 //! coefficients, for `cga.pga`'s wrappers. Each function takes one row (shape `(k,)`) or `n`
 //! rows (`(n, k)`) per argument, broadcast one against many, runs the Rust function on every
 //! row (so an array gives the bits of one value at a time) and refuses a row that has no
@@ -140,6 +140,62 @@ fn interpolate(
 }
 
 #[pyfunction]
+fn pow(py: Python<'_>, motor: &Bound<'_, PyAny>, t: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    let (m, t) = (rows::<8>("motor", motor)?, rows::<1>("t", t)?);
+    let shape = broadcast(&[(m.rows.len(), m.single), (t.rows.len(), t.single)])?;
+    output(py, "pow", shape, |i| Motor::from_array(m.at(i)).pow(t.at(i)[0]).map(Motor::to_array))
+}
+
+#[pyfunction]
+fn from_line_pitch(
+    py: Python<'_>,
+    line: &Bound<'_, PyAny>,
+    angle: &Bound<'_, PyAny>,
+    pitch: &Bound<'_, PyAny>,
+) -> PyResult<Py<PyAny>> {
+    let (l, a, p) = (rows::<6>("line", line)?, rows::<1>("angle", angle)?, rows::<1>("pitch", pitch)?);
+    let shape = broadcast(&[(l.rows.len(), l.single), (a.rows.len(), a.single), (p.rows.len(), p.single)])?;
+    output(py, "from_line_pitch", shape, |i| {
+        Motor::from_line_pitch(Line::from_array(l.at(i)), a.at(i)[0], p.at(i)[0]).map(Motor::to_array)
+    })
+}
+
+/// A motor's rotor (8 coefficients) and translation (3) side by side in one row of 11.
+#[pyfunction]
+fn rotor_translation(py: Python<'_>, motor: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    let m = rows::<8>("motor", motor)?;
+    let shape = broadcast(&[(m.rows.len(), m.single)])?;
+    output(py, "rotor_translation", shape, |i| {
+        let (r, t) = Motor::from_array(m.at(i)).rotor_translation()?;
+        let r = r.to_array();
+        Ok::<[f64; 11], PgaError>(core::array::from_fn(|k| if k < 8 { r[k] } else { t[k - 8] }))
+    })
+}
+
+/// `angle(kind, a, b)`: `kind` one of `line_line`, `line_plane`, `plane_plane`.
+#[pyfunction]
+fn angle(py: Python<'_>, kind: &str, a: &Bound<'_, PyAny>, b: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+    match kind {
+        "line_line" => {
+            let (a, b) = (rows::<6>("a", a)?, rows::<6>("b", b)?);
+            let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
+            numbers(py, "angle", shape, |i| Line::from_array(a.at(i)).angle_to_line(Line::from_array(b.at(i))))
+        }
+        "line_plane" => {
+            let (a, b) = (rows::<6>("a", a)?, rows::<4>("b", b)?);
+            let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
+            numbers(py, "angle", shape, |i| Line::from_array(a.at(i)).angle_to_plane(Plane::from_array(b.at(i))))
+        }
+        "plane_plane" => {
+            let (a, b) = (rows::<4>("a", a)?, rows::<4>("b", b)?);
+            let shape = broadcast(&[(a.rows.len(), a.single), (b.rows.len(), b.single)])?;
+            numbers(py, "angle", shape, |i| Plane::from_array(a.at(i)).angle_to_plane(Plane::from_array(b.at(i))))
+        }
+        _ => Err(ValueError::new_err(format!("angle: no angle of kind {kind:?}"))),
+    }
+}
+
+#[pyfunction]
 fn line_through(py: Python<'_>, p: &Bound<'_, PyAny>, q: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
     let (p, q) = (rows::<3>("p", p)?, rows::<3>("q", q)?);
     let shape = broadcast(&[(p.rows.len(), p.single), (q.rows.len(), q.single)])?;
@@ -198,5 +254,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     sub.add_function(wrap_pyfunction!(line_through, &sub)?)?;
     sub.add_function(wrap_pyfunction!(plane_from_normal_distance, &sub)?)?;
     sub.add_function(wrap_pyfunction!(distance, &sub)?)?;
+    sub.add_function(wrap_pyfunction!(pow, &sub)?)?;
+    sub.add_function(wrap_pyfunction!(from_line_pitch, &sub)?)?;
+    sub.add_function(wrap_pyfunction!(rotor_translation, &sub)?)?;
+    sub.add_function(wrap_pyfunction!(angle, &sub)?)?;
     m.add_submodule(&sub)
 }

@@ -1,7 +1,8 @@
-"""cga.pga's toolkit (rotor, translator, screw, exp, log, sqrt, interpolate, normalise,
-line_through, plane_from_normal_distance, distance, project) against kingdon 3.0.0's own
-results (``Algebra(3, 0, 1)``: its products, simple ``exp``, ``sqrt``, ``normalized``, ``proj``)
-and against Euclid, on single values and on arrays row for row; the signs docs/PGA.md states."""
+"""cga.pga's toolkit (rotor, translator, screw, exp, log, sqrt, pow, interpolate, normalise,
+line_through, plane_from_normal_distance, from_line_pitch, rotor_translation, distance, angle,
+project) against kingdon 3.0.0's own results (``Algebra(3, 0, 1)``: its products, simple
+``exp``, ``sqrt``, ``normalized``, ``proj``, inner products) and against Euclid, on single
+values and on arrays row for row; the signs docs/PGA.md states."""
 
 import numpy as np
 import pytest
@@ -136,3 +137,53 @@ def test_the_signs_docs_state(alg):
     kp, kP = to_kingdon(p, alg), to_kingdon(P, alg)
     assert np.isclose(float((kp & kP).e), dist) and np.isclose(float((kP & kp).e), -dist)
     assert np.isclose(float((p ^ P).array[0]), dist) and np.isclose(float((kp ^ kP).e0123), dist)
+
+
+def test_pow_pitch_and_rotor_translation(alg):
+    lines, theta, delta = random_screws(6)
+    motors = pga.screw(lines, theta, delta)
+    t = RNG.uniform(-1.5, 1.5, 6)
+    powered = pga.pow(motors, t)
+    I = alg.pseudoscalar(e0123=1.0)
+    for i in range(6):
+        # kingdon's closed form of the screw a fraction t of the way: angle tθ, slide tδ.
+        unit = to_kingdon(lines[i], alg).normalized()
+        a, s = t[i] * theta[i], t[i] * delta[i]
+        want = (1 + s / 2 * (I * unit)) * (np.cos(a / 2) - np.sin(a / 2) * unit)
+        assert close_motor(powered[i], from_kingdon(want, pga.Motor), 1e-12)
+        assert close_motor(pga.pow(motors[i], 2.0), motors[i] * motors[i], 1e-12)
+        assert close_motor(pga.pow(motors[i], 0.5), pga.sqrt(motors[i]), 1e-13)
+    assert np.array_equal(powered.array[2], pga.pow(motors[2], t[2]).array)
+    pitch = RNG.uniform(-2, 2, 6)
+    assert np.allclose(pga.from_line_pitch(lines, theta, pitch).array, pga.screw(lines, theta, pitch * theta).array)
+    r, moved = pga.rotor_translation(motors)
+    assert moved.shape == (6, 3)
+    for i in range(6):
+        assert close_motor(pga.from_rotor_translator(r[i], pga.translator(moved[i])), pga.normalise(motors[i]), 1e-12)
+        assert np.allclose(pga.position(r[i].sandwich(pga.point([0, 0, 0]))), 0.0, atol=1e-12)
+    with pytest.raises(cga.GeometryError):
+        pga.rotor_translation(pga.Motor([0.0, 1.0, 0, 0, 0, 0, 0, 0]))
+
+
+def test_angles_against_euclid_and_kingdon(alg):
+    p, d1, d2 = RNG.uniform(-5, 5, (8, 3)), RNG.normal(size=(8, 3)), RNG.normal(size=(8, 3))
+    a, b = pga.line_through(p, p + d1), pga.line_through(p + 1, p + 1 + d2)
+    unit = lambda v: v / np.linalg.norm(v, axis=-1, keepdims=True)
+    between = np.arccos(np.clip(np.sum(unit(d1) * unit(d2), axis=-1), -1, 1))
+    assert np.allclose(pga.angle(a, b), between, atol=1e-13)
+    n1, n2 = RNG.normal(size=(8, 3)), RNG.normal(size=(8, 3))
+    p1, p2 = pga.plane(*n1.T, 1.0), pga.plane(*n2.T, -2.0)
+    planes = np.arccos(np.clip(np.sum(unit(n1) * unit(n2), axis=-1), -1, 1))
+    assert np.allclose(pga.angle(p1, p2), planes, atol=1e-13)
+    tilt = np.arcsin(np.abs(np.sum(unit(d1) * unit(n1), axis=-1)))
+    assert np.allclose(pga.angle(a, p1), tilt, atol=1e-13)
+    assert np.allclose(pga.angle(p1, a), tilt, atol=1e-13)
+    for i in range(8):
+        # kingdon: the unit values' inner product is the cosine, up to its sign.
+        ka, kb = to_kingdon(a[i], alg).normalized(), to_kingdon(b[i], alg).normalized()
+        assert np.isclose(abs((ka | kb).e), abs(np.cos(between[i])), atol=1e-12)
+        kp, kq = to_kingdon(p1[i], alg).normalized(), to_kingdon(p2[i], alg).normalized()
+        assert np.isclose((kp | kq).e, np.cos(planes[i]), atol=1e-12)
+    assert isinstance(pga.angle(a[0], b[0]), float)
+    with pytest.raises(TypeError, match="no angle"):
+        pga.angle(pga.point([0, 0, 0]), p1)
