@@ -3,16 +3,19 @@
 //! 1e6 points (`motor_points`, by the prepared matrix `motor.prepare()`), and over batches
 //! of 256 operands the motor product (`motor_motor`), the join of two points (`join`), the
 //! meet of two planes (`meet`) and of three (`meet3`), each in f32 and f64, the median over
-//! interleaved rounds in ns per operation. Prints `operation form ns` lines (`form` is `f32`
+//! rounds in ns per operation (interleaved rounds for the batches; for the points, each form's
+//! rounds in turn, as klein.cpp times them). Prints `operation form ns` lines (`form` is `f32`
 //! or `f64` one at a time, `f32-lanes` or `f64-lanes` on SIMD lanes by `simd::run`: sixteen
-//! f32 or eight f64 to an AVX-512 register, eight or four with AVX2).
+//! f32 or eight f64 to an AVX-512 register, eight or four with AVX2, transposed from and to
+//! the arrays of values; `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
+//! stored packed, eight f32 or four f64 to a 256-bit packet, packed once before timing).
 //!
 //! `cargo run --release -p cga-benches --example pga_timing`
 
 use cga_algebras::pga::{Line, Motor, Plane, Point, Prepare, Sandwich};
 use cga_benches::medians_ns;
 use cga_core::Real;
-use cga_core::simd::{Kernel, Lane, run};
+use cga_core::simd::{Element, Kernel, Lane, Lanes, Packed, run, run_packed};
 use std::hint::black_box;
 
 const BATCH: usize = 256;
@@ -55,11 +58,13 @@ fn batch<K32: Kernel, K64: Kernel>(
     (k32, k64): (K32, K64),
     (op32, op64): (impl Fn(K32::Input) -> K32::Output, impl Fn(K64::Input) -> K64::Output),
 ) where
-    K32::Output: Default + core::fmt::Debug + PartialEq,
-    K64::Output: Default + core::fmt::Debug + PartialEq,
+    K32::Output: Default + core::fmt::Debug + PartialEq + Lanes<Element = <K32::Input as Lanes>::Element>,
+    K64::Output: Default + core::fmt::Debug + PartialEq + Lanes<Element = <K64::Input as Lanes>::Element>,
 {
     let (mut out32, mut out64) = (vec![K32::Output::default(); BATCH], vec![K64::Output::default(); BATCH]);
     let (mut lanes32, mut lanes64) = (out32.clone(), out64.clone());
+    let (packed32, packed64) = (packed(input.0), packed(input.1));
+    let (mut packed_out32, mut packed_out64) = (packets(&out32), packets(&out64));
     let medians = medians_ns(
         BATCH,
         4000,
@@ -85,14 +90,50 @@ fn batch<K32: Kernel, K64: Kernel>(
                 run(&k64, black_box(input.1), &mut lanes64).unwrap();
                 black_box(&lanes64);
             },
+            &mut || {
+                run_packed(&k32, black_box(&packed32), &mut packed_out32).unwrap();
+                black_box(&packed_out32);
+            },
+            &mut || {
+                run_packed(&k64, black_box(&packed64), &mut packed_out64).unwrap();
+                black_box(&packed_out64);
+            },
         ],
     );
-    // Lanes give the bits of one at a time.
+    // Lanes, and packets, give the bits of one at a time.
     assert_eq!(lanes32, out32, "{name} f32");
     assert_eq!(lanes64, out64, "{name} f64");
-    for (form, ns) in ["f32", "f64", "f32-lanes", "f64-lanes"].iter().zip(medians) {
+    assert_eq!(unpacked::<K32::Output>(&packed_out32, BATCH), out32, "{name} f32 packed");
+    assert_eq!(unpacked::<K64::Output>(&packed_out64, BATCH), out64, "{name} f64 packed");
+    for (form, ns) in ["f32", "f64", "f32-lanes", "f64-lanes", "f32-packed", "f64-packed"].iter().zip(medians) {
         println!("{name} {form} {ns:.3}");
     }
+}
+
+/// Packets per value: eight f32 or four f64 values to a packet.
+fn per_packet<X: Lanes>() -> usize {
+    <<X::Element as Element>::Narrow as Lane>::LANES
+}
+
+/// `xs` stored packed ([`Packed`]: structure of arrays in blocks of a packet, a last packet
+/// padded with zeros), as a user who keeps them so holds them: done once, outside the timing.
+fn packed<X: Lanes>(xs: &[X]) -> Vec<Packed<X>> {
+    xs.chunks(per_packet::<X>()).map(X::pack_lanes).collect()
+}
+
+/// Room for as many packets as `xs` takes.
+fn packets<X: Lanes>(xs: &[X]) -> Vec<Packed<X>> {
+    vec![X::pack_lanes(&[X::pack_filler()]); xs.len().div_ceil(per_packet::<X>())]
+}
+
+/// The first `n` values of `packets`, one at a time (to check them).
+fn unpacked<X: Lanes>(packets: &[Packed<X>], n: usize) -> Vec<X> {
+    let mut out = vec![X::pack_filler(); packets.len() * per_packet::<X>()];
+    for (p, o) in packets.iter().zip(out.chunks_mut(per_packet::<X>())) {
+        X::unpack_lanes(*p, o);
+    }
+    out.truncate(n);
+    out
 }
 
 /// The motor product, the join of two points, and the meets of two and of three planes, as
@@ -151,29 +192,39 @@ fn main() {
         vec![Point::zero(); POINTS],
         vec![Point::zero(); POINTS],
     );
-    let medians = medians_ns(
-        POINTS,
-        3,
-        ROUNDS,
-        &mut [
-            &mut || {
-                m32.prepare().apply_into(black_box(&p32), &mut o32);
-                black_box(&o32);
-            },
-            &mut || {
-                m64.prepare().apply_into(black_box(&p64), &mut o64);
-                black_box(&o64);
-            },
-            &mut || {
-                run(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&p64), &mut lanes).unwrap();
-                black_box(&lanes);
-            },
-            &mut || {
-                run(&MovePoints(Prepare::<Point<f32>>::matrix(m32)), black_box(&p32), &mut lanes32).unwrap();
-                black_box(&lanes32);
-            },
-        ],
-    );
+    let (packed32, packed64) = (packed(&p32), packed(&p64));
+    let (mut packed_out32, mut packed_out64) = (packets(&p32), packets(&p64));
+    // Each form timed in rounds of its own, one after another (as klein.cpp times klein's):
+    // 16 or 32 MB of points in and as many out fill the L3, and a form timed between the
+    // others would find its data evicted by theirs, where klein's finds its own.
+    let forms: &mut [&mut dyn FnMut()] = &mut [
+        &mut || {
+            m32.prepare().apply_into(black_box(&p32), &mut o32);
+            black_box(&o32);
+        },
+        &mut || {
+            m64.prepare().apply_into(black_box(&p64), &mut o64);
+            black_box(&o64);
+        },
+        &mut || {
+            run(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&p64), &mut lanes).unwrap();
+            black_box(&lanes);
+        },
+        &mut || {
+            run(&MovePoints(Prepare::<Point<f32>>::matrix(m32)), black_box(&p32), &mut lanes32).unwrap();
+            black_box(&lanes32);
+        },
+        &mut || {
+            run_packed(&MovePoints(Prepare::<Point<f32>>::matrix(m32)), black_box(&packed32), &mut packed_out32)
+                .unwrap();
+            black_box(&packed_out32);
+        },
+        &mut || {
+            run_packed(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&packed64), &mut packed_out64).unwrap();
+            black_box(&packed_out64);
+        },
+    ];
+    let medians: Vec<f64> = forms.iter_mut().map(|f| medians_ns(POINTS, 3, ROUNDS, &mut [&mut **f])[0]).collect();
     // Each form moves the points as the sandwich does.
     for k in [0, POINTS / 2, POINTS - 1] {
         let want = m64.sandwich(p64[k]).to_array();
@@ -182,7 +233,9 @@ fn main() {
         }
     }
     assert_eq!(lanes32, o32, "f32 lanes give the bits of one at a time");
-    for (form, ns) in ["f32", "f64", "f64-lanes", "f32-lanes"].iter().zip(medians) {
+    assert_eq!(unpacked::<Point<f32>>(&packed_out32, POINTS), o32, "f32 packets give the bits of one at a time");
+    assert_eq!(unpacked::<Point<f64>>(&packed_out64, POINTS), lanes, "f64 packets give the bits of lanes");
+    for (form, ns) in ["f32", "f64", "f64-lanes", "f32-lanes", "f32-packed", "f64-packed"].iter().zip(medians) {
         println!("motor_points {form} {ns:.3}");
     }
 

@@ -2,8 +2,9 @@
 # Ours (benches/pga_timing.rs, cga-algebras' PGA) against klein (github.com/jeremyong/klein,
 # header-only C++ with SSE, f32) on five operations, interleaved: klein.cpp built with
 # -O3 -march=native, and our example in release, each run ROUNDS times in turn; prints the
-# table of medians for benches/README.md with ours (the faster of one at a time and SIMD
-# lanes) over klein's time (f32 and f64; klein has no f64).
+# table of medians for benches/README.md with ours over klein's time (f32 and f64; klein has
+# no f64): on values in arrays (the faster of one at a time and SIMD lanes), and on values
+# stored packed (`simd::run_packed`).
 #
 #   KLEIN_DIR=/path/to/klein benches/peers/klein.sh
 #
@@ -32,13 +33,16 @@ import sys
 sys.path.insert(0, sys.argv[2])
 from medians import read
 ops, m = read(sys.argv[1])
-print("| operation | klein f32 | ours f32 | ours f32 lanes | ours f64 | ours f64 lanes | f32 / klein | f64 / klein |")
-print("|---|---|---|---|---|---|---|---|")
+print("| operation | klein f32 | ours f32 | ours f32 lanes | ours f32 packed | ours f64 | ours f64 lanes | ours f64 packed "
+      "| f32 / klein | f32 packed / klein | f64 / klein | f64 packed / klein |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
 fmt = lambda v: f"{v:.3f}" if v is not None else "–"
+ratio = lambda v, k: f"{v / k:.2f}×" if v is not None else "–"
 for op in ops:
     k = m[(op, "klein")]
-    a, al, b, bl = (m.get((op, f)) for f in ("f32", "f32-lanes", "f64", "f64-lanes"))
+    a, al, ap, b, bl, bp = (m.get((op, f)) for f in ("f32", "f32-lanes", "f32-packed", "f64", "f64-lanes", "f64-packed"))
     best32 = min(v for v in (a, al) if v is not None)
     best64 = min(v for v in (b, bl) if v is not None)
-    print(f"| {op} | {k:.3f} | {fmt(a)} | {fmt(al)} | {fmt(b)} | {fmt(bl)} | {best32 / k:.2f}× | {best64 / k:.2f}× |")
+    print(f"| {op} | {k:.3f} | {fmt(a)} | {fmt(al)} | {fmt(ap)} | {fmt(b)} | {fmt(bl)} | {fmt(bp)} "
+          f"| {ratio(best32, k)} | {ratio(ap, k)} | {ratio(best64, k)} | {ratio(bp, k)} |")
 PY

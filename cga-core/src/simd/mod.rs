@@ -6,8 +6,8 @@
 //!
 //! Three ways to run an operation over many operands:
 //!
-//! - [`run_packed`]: over packets (`&[Line<F64x4>]`…), the form a ray tracer keeps its
-//!   packets in;
+//! - [`run_packed`]: over packets ([`Packed`]: `&[Line<F64x4>]`, `&[Line<F32x8>]`…), the
+//!   form a ray tracer keeps its packets in, with no transpose;
 //! - [`run`]: over slices of ordinary values, transposed into lanes and back in place:
 //!   f64 values eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on
 //!   [`F64x4`] with AVX2 (benches/README.md times both against Versor), f32 values sixteen
@@ -48,8 +48,12 @@ pub use columns::Columns;
 pub use pack::{Lanes, splat};
 pub use wide::{F32x8, F32x16, F64x4, F64x8, Lane, Mask4, Mask8, Mask32x8, Mask32x16};
 
-/// The packed form of a [`Lanes`] type on four lanes (`Packed<Line>` is `Line<F64x4>`).
-pub type Packed<X> = <X as Lanes>::Over<F64x4>;
+/// The packed form of a [`Lanes`] type: one 256-bit packet per coefficient, four f64 lanes
+/// ([`F64x4`]) or eight f32 ones ([`F32x8`]) — the lanes [`Element::Narrow`] of its scalar
+/// (`Packed<Line>` is `Line<F64x4>`, `Packed<Line<f32>>` is `Line<F32x8>`). Values stored
+/// this way (structure of arrays in blocks of a packet) run through [`run_packed`] with no
+/// transpose.
+pub type Packed<X> = <X as Lanes>::Over<<<X as Lanes>::Element as Element>::Narrow>;
 
 /// `X` over the lanes `L` (`Over<Line, F64x8>` is `Line<F64x8>`).
 pub type Over<X, L> = <X as Lanes>::Over<L>;
@@ -499,23 +503,69 @@ unsafe fn transposed<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(f: &F
     by_value::<L, _, _>(f, input.part(whole..out.len()), &mut out[whole..])
 }
 
-/// [`run`] on f64 operands already in lanes (packets of four, as a ray tracer keeps them:
-/// no packing), `out[k] = K(input[k])`; dispatched to AVX2 and FMA the same way. `None`,
-/// and nothing written, where the lengths differ.
+/// [`run`] on operands already in lanes, `out[k] = K(input[k])` for each packet: f64
+/// values four to a packet ([`F64x4`]), f32 values eight ([`F32x8`]) — [`Packed`], the form
+/// a ray tracer keeps its packets in, or any data stored as structure of arrays in blocks
+/// of a packet. Nothing is packed or unpacked: each packet's coefficients are loaded, the
+/// kernel applied, and the result's stored. Dispatched at run time to a loop compiled for
+/// AVX-512 (the same lanes, with 32 registers instead of 16: fewer spills in the larger
+/// products) or AVX2 and FMA, baseline code otherwise; every level gives the bits of one at
+/// a time (no multiply–add is contracted). An output of 8 MiB or more is written by
+/// non-temporal stores, past the caches (it would not stay in them, and the input would be
+/// evicted for it). `None`, and nothing written, where the lengths differ.
+///
+/// ```
+/// use cga_core::simd::{F32x8, Kernel, Lane, Lanes, Packed, run_packed};
+/// use cga_core::{Bivector, Vector, up};
+/// struct Wedge;
+/// impl Kernel for Wedge {
+///     type Input = (Vector<f32>, Vector<f32>);
+///     type Output = Bivector<f32>;
+///     #[inline(always)]
+///     fn apply<L: Lane>(&self, (a, b): (Vector<L>, Vector<L>)) -> Bivector<L> {
+///         a ^ b
+///     }
+/// }
+/// let point = |k: usize| Vector::<f32>::from_array(up([k as f64, 1.0, 2.0]).to_array().map(|c| c as f32));
+/// let pairs: Vec<(Vector<f32>, Vector<f32>)> = (0..16).map(|k| (point(k), point(k + 1))).collect();
+/// // Stored packed: eight pairs a packet.
+/// let packets: Vec<Packed<(Vector<f32>, Vector<f32>)>> = pairs.chunks(8).map(Lanes::pack_lanes::<F32x8>).collect();
+/// let mut out = vec![Bivector::<F32x8>::zero(); 2];
+/// run_packed(&Wedge, &packets, &mut out).unwrap();
+/// let mut back = [Bivector::<f32>::zero(); 8];
+/// Bivector::unpack_lanes(out[1], &mut back);
+/// assert_eq!(back[3], pairs[11].0 ^ pairs[11].1); // the same bits as one at a time
+/// ```
 pub fn run_packed<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) -> Option<()>
 where
-    K::Input: Lanes<Element = f64>,
+    K::Output: Lanes<Element = <K::Input as Lanes>::Element>,
+{
+    run_packed_at(Level::detect(), STREAM_BYTES, kernel, input, out)
+}
+
+/// [`run_packed`] at a given level, streaming outputs of `stream_bytes` or more (the tests
+/// run each level the CPU has, with stores of either kind).
+fn run_packed_at<K: Kernel>(
+    level: Level,
+    stream_bytes: usize,
+    kernel: &K,
+    input: &[Packed<K::Input>],
+    out: &mut [Packed<K::Output>],
+) -> Option<()>
+where
+    K::Output: Lanes<Element = <K::Input as Lanes>::Element>,
 {
     if input.len() != out.len() {
         return None;
     }
-    #[cfg(target_arch = "x86_64")]
-    if avx2() {
-        // SAFETY: the CPU has the features `run_packed_avx2` is compiled for.
-        unsafe { run_packed_avx2(kernel, input, out) };
-        return Some(());
+    match level {
+        // SAFETY: `detect` found the features each loop is compiled for.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { run_packed_avx512(kernel, input, out, stream_bytes) },
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { run_packed_avx2(kernel, input, out, stream_bytes) },
+        Level::Baseline => packed_loop(kernel, input, out),
     }
-    packed_loop(kernel, input, out);
     Some(())
 }
 
@@ -541,14 +591,94 @@ pub fn avx512() -> bool {
 /// [`run_packed`]'s loop compiled with AVX2 and FMA enabled.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-unsafe fn run_packed_avx2<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
-    packed_loop(kernel, input, out)
+unsafe fn run_packed_avx2<K: Kernel>(
+    kernel: &K,
+    input: &[Packed<K::Input>],
+    out: &mut [Packed<K::Output>],
+    stream_bytes: usize,
+) where
+    K::Output: Lanes<Element = <K::Input as Lanes>::Element>,
+{
+    // SAFETY: the CPU has AVX.
+    unsafe { packed_loop_avx(kernel, input, out, stream_bytes) }
 }
 
+/// [`run_packed`]'s loop compiled with AVX-512 enabled: the same lanes, 32 registers.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
+unsafe fn run_packed_avx512<K: Kernel>(
+    kernel: &K,
+    input: &[Packed<K::Input>],
+    out: &mut [Packed<K::Output>],
+    stream_bytes: usize,
+) where
+    K::Output: Lanes<Element = <K::Input as Lanes>::Element>,
+{
+    // SAFETY: the CPU has AVX.
+    unsafe { packed_loop_avx(kernel, input, out, stream_bytes) }
+}
+
+/// Outputs of this many bytes or more are written by non-temporal stores in [`run_packed`]:
+/// past the L2 of any x86-64 core and a quarter or more of most L3s, where a store that
+/// first reads its line into the cache (and evicts the input to make room) costs more than
+/// the cache gives back; below it the result stays in cache for whatever reads it next.
+const STREAM_BYTES: usize = 8 << 20;
+
+/// [`packed_loop`] with each result written as 32-byte AVX stores, one a packet: with
+/// AVX-512 enabled LLVM otherwise merges pairs of 256-bit packets into 512-bit registers
+/// by shuffles (2–3× the time of the join of two points); non-temporal stores for an
+/// output of `stream_bytes` or more ([`STREAM_BYTES`]).
+///
+/// # Safety
+/// The CPU must have AVX.
+#[cfg(target_arch = "x86_64")]
 #[inline(always)]
-fn packed_loop<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>]) {
+unsafe fn packed_loop_avx<K: Kernel>(
+    kernel: &K,
+    input: &[Packed<K::Input>],
+    out: &mut [Packed<K::Output>],
+    stream_bytes: usize,
+) where
+    K::Output: Lanes<Element = <K::Input as Lanes>::Element>,
+{
+    use core::arch::x86_64::{__m256i, _mm_sfence, _mm256_load_si256, _mm256_store_si256, _mm256_stream_si256};
+    type Narrow<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Narrow;
+    let (size, align) = (size_of::<Packed<K::Output>>(), align_of::<Packed<K::Output>>());
+    // Every packet is 32 bytes, aligned to 32, and a generated type (or a tuple of them) is
+    // nothing else: checked all the same, with the plain loop for anything that is not.
+    if size % 32 != 0 || align < 32 {
+        return packed_loop(kernel, input, out);
+    }
+    let stream = size_of_val(out) >= stream_bytes;
     for (o, &x) in out.iter_mut().zip(input) {
-        *o = kernel.apply::<F64x4>(x);
+        let y = kernel.apply::<Narrow<K>>(x);
+        let (from, to) = ((&raw const y).cast::<__m256i>(), (o as *mut Packed<K::Output>).cast::<__m256i>());
+        for k in 0..size / 32 {
+            // SAFETY: `y` and `*o` are `size` bytes each, aligned to 32 (checked above):
+            // every packet of 32 bytes is in both and aligned; the caller's CPU has AVX.
+            unsafe {
+                let v = _mm256_load_si256(from.add(k));
+                if stream { _mm256_stream_si256(to.add(k), v) } else { _mm256_store_si256(to.add(k), v) }
+            }
+        }
+        not_across_iterations();
+    }
+    if stream {
+        // Non-temporal stores are weakly ordered: fenced before anything reads `out`.
+        // SAFETY: SSE, which every x86-64 has.
+        unsafe { _mm_sfence() };
+    }
+}
+
+/// [`run_packed`]'s baseline loop.
+#[inline(always)]
+fn packed_loop<K: Kernel>(kernel: &K, input: &[Packed<K::Input>], out: &mut [Packed<K::Output>])
+where
+    K::Output: Lanes<Element = <K::Input as Lanes>::Element>,
+{
+    type Narrow<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Narrow;
+    for (o, &x) in out.iter_mut().zip(input) {
+        *o = kernel.apply::<Narrow<K>>(x);
         not_across_iterations();
     }
 }
@@ -698,7 +828,7 @@ mod tests {
     fn transposes_in_place_agree_with_packing() {
         fn check<X: Lanes + PartialEq + core::fmt::Debug>(values: [X; 8], blank: X)
         where
-            Packed<X>: PartialEq + core::fmt::Debug,
+            Over<X, F64x4>: PartialEq + core::fmt::Debug,
             Over<X, F64x8>: PartialEq + core::fmt::Debug,
         {
             // SAFETY: run only where the CPU has AVX (AVX-512 for the second part); the
@@ -849,10 +979,15 @@ mod tests {
                 .collect();
             let packets: Vec<_> =
                 circles.chunks_exact(4).map(|c| <(Circle, Circle)>::pack([c[0], c[1], c[2], c[3]])).collect();
-            let mut out = vec![Even::<F64x4>::zero(); packets.len()];
-            run_packed(&Product, &packets, &mut out).unwrap();
-            for (k, &(a, b)) in circles.iter().enumerate().take(packets.len() * 4) {
-                assert_eq!(Even::unpack(out[k / 4])[k % 4], a * b, "packets, n = {n}");
+            for level in levels() {
+                for stream_bytes in [STREAM_BYTES, 0] {
+                    let mut out = vec![Even::<F64x4>::zero(); packets.len()];
+                    run_packed_at(level, stream_bytes, &Product, &packets, &mut out).unwrap();
+                    for (k, &(a, b)) in circles.iter().enumerate().take(packets.len() * 4) {
+                        let got = Even::unpack(out[k / 4])[k % 4];
+                        assert_eq!(got, a * b, "packets at {level:?} streaming from {stream_bytes} B, n = {n}");
+                    }
+                }
             }
         }
     }
@@ -890,6 +1025,21 @@ mod tests {
                 got.fill(Vector::zero());
                 map_at(level, &moved, &mut got, |(m, x): (Motor<F32x16>, Vector<F32x16>)| m.sandwich(x)).unwrap();
                 assert_eq!(got, want, "map on sixteen lanes at {level:?}, n = {n}");
+            }
+            // Stored packed, eight to a packet (a last one part zeros): no transposes.
+            let packets: Vec<Packed<(Motor<f32>, Vector<f32>)>> =
+                moved.chunks(8).map(Lanes::pack_lanes::<F32x8>).collect();
+            for level in levels() {
+                let mut out = vec![Vector::<F32x8>::zero(); packets.len()];
+                for stream_bytes in [STREAM_BYTES, 0] {
+                    out.fill(Vector::zero());
+                    run_packed_at(level, stream_bytes, &Sandwiched32, &packets, &mut out).unwrap();
+                    let mut back = vec![Vector::<f32>::zero(); 8 * packets.len()];
+                    for (p, b) in out.iter().zip(back.chunks_mut(8)) {
+                        Vector::unpack_lanes(*p, b);
+                    }
+                    assert_eq!(back[..n], want[..], "packed at {level:?} streaming from {stream_bytes} B, n = {n}");
+                }
             }
         }
     }

@@ -148,3 +148,78 @@ fn a_users_algebra_batches_by_run_packed_with_the_bits_of_one_at_a_time() {
         assert!(same_bits(one, batched), "row {k}");
     }
 }
+
+/// PGA in f32 stored packed (eight to a packet, [`Packed`]): `run_packed` gives the bits of
+/// one at a time for the join of points, the meets of planes, the motor product and a
+/// motor's prepared matrix on points, at lengths about the packet's eight (a last packet
+/// padded with zeros).
+#[test]
+fn pga_f32_batches_by_run_packed_with_the_bits_of_one_at_a_time() {
+    use cga_algebras::pga::Prepare;
+    use cga_core::simd::{F32x8, Packed};
+    let to32 = |a: &[f64]| a.iter().map(|&c| c as f32).collect::<Vec<_>>();
+    let point = |k: usize| PPoint::<f32>::from_array(to32(&pga_points(k + 1)[k].to_array()).try_into().unwrap());
+    let plane =
+        |k: usize| PPlane::<f32>::new(value(k) as f32, value(k + 4) as f32, value(k + 8) as f32, value(k + 12) as f32);
+    let motor = |k: usize| Motor::<f32>::from_array(to32(&pga_motor(k).to_array()).try_into().unwrap());
+
+    /// The kernel `$body` of `$input` to `$output`, on f32.
+    macro_rules! kernel {
+        ($name:ident: ($($input:ident),*) -> $output:ident, |$x:pat_param| $body:expr) => {
+            struct $name;
+            impl Kernel for $name {
+                type Input = ($($input<f32>,)*);
+                type Output = $output<f32>;
+                #[inline(always)]
+                fn apply<L: Lane>(&self, $x: ($($input<L>,)*)) -> $output<L> {
+                    $body
+                }
+            }
+        };
+    }
+    kernel!(Join: (PPoint, PPoint) -> PLine, |(p, q)| p & q);
+    kernel!(Meet: (PPlane, PPlane) -> PLine, |(p, q)| p ^ q);
+    kernel!(Meet3: (PPlane, PPlane, PPlane) -> PPoint, |(p, q, r)| p ^ q ^ r);
+    kernel!(Compose: (Motor, Motor) -> Motor, |(a, b)| a * b);
+    struct Prepared([f32; 13]);
+    impl Kernel for Prepared {
+        type Input = PPoint<f32>;
+        type Output = PPoint<f32>;
+        #[inline(always)]
+        fn apply<L: Lane>(&self, x: PPoint<L>) -> PPoint<L> {
+            let m = self.0.map(|c| L::from_fn(|_| c.into()));
+            <Motor<L> as Prepare<PPoint<L>>>::apply_matrix(&m, x)
+        }
+    }
+
+    /// `K` on `input` stored packed against one at a time, bit for bit.
+    fn check<K: Kernel>(k: &K, input: &[K::Input], one: impl Fn(K::Input) -> K::Output)
+    where
+        K::Output: Lanes<Element = f32> + PartialEq + core::fmt::Debug,
+        K::Input: Lanes<Element = f32>,
+    {
+        let packets: Vec<Packed<K::Input>> = input.chunks(8).map(K::Input::pack_lanes::<F32x8>).collect();
+        let mut out: Vec<Packed<K::Output>> =
+            packets.iter().map(|_| K::Output::pack_lanes::<F32x8>(&[K::Output::pack_filler()])).collect();
+        run_packed(k, &packets, &mut out).unwrap();
+        let mut back = vec![K::Output::pack_filler(); 8 * out.len()];
+        for (p, b) in out.iter().zip(back.chunks_mut(8)) {
+            K::Output::unpack_lanes::<F32x8>(*p, b);
+        }
+        let want: Vec<K::Output> = input.iter().map(|&x| one(x)).collect();
+        assert_eq!(back[..input.len()], want[..], "{} rows", input.len());
+    }
+    let m = motor(3);
+    for n in [1, 7, 8, 9, 16, 17, 33] {
+        let pairs: Vec<_> = (0..n).map(|k| (point(k), point(k + 50))).collect();
+        check(&Join, &pairs, |(p, q)| p & q);
+        let planes: Vec<_> = (0..n).map(|k| (plane(k), plane(k + 20), plane(k + 40))).collect();
+        check(&Meet, &planes.iter().map(|&(p, q, _)| (p, q)).collect::<Vec<_>>(), |(p, q)| p ^ q);
+        check(&Meet3, &planes, |(p, q, r)| p ^ q ^ r);
+        let motors: Vec<_> = (0..n).map(|k| (motor(k), motor(k + 40))).collect();
+        check(&Compose, &motors, |(a, b)| a * b);
+        let points: Vec<_> = (0..n).map(point).collect();
+        let prepared = m.prepare::<PPoint<f32>>();
+        check(&Prepared(Prepare::<PPoint<f32>>::matrix(m)), &points, |x| prepared.apply(x));
+    }
+}
