@@ -172,6 +172,17 @@ def rotor_translation(motor):
     return Motor(both[..., :8]), both[..., 8:]
 
 
+def _pair(what, kinds, a, b):
+    """The kind ``kinds`` names for the classes of ``a`` and ``b`` (in either order), and their
+    arrays in that kind's order."""
+    key = (type(a).__name__, type(b).__name__)
+    if key not in kinds and key[::-1] in kinds:
+        a, b, key = b, a, key[::-1]
+    if key not in kinds:
+        raise TypeError(f"{what}: no {what} between {key[0]} and {key[1]}")
+    return kinds[key], a.array, b.array
+
+
 _ANGLES = {("Line", "Line"): "line_line", ("Line", "Plane"): "line_plane", ("Plane", "Plane"): "plane_plane"}
 
 
@@ -181,12 +192,7 @@ def angle(a, b):
     line parallel to the plane; either order). klein and kingdon: ``acos`` of the unit values'
     inner product, up to its sign. Rust: ``Line::angle_to_line``, ``Line::angle_to_plane``,
     ``Plane::angle_to_plane``. An ideal line or plane is refused."""
-    key = (type(a).__name__, type(b).__name__)
-    if key not in _ANGLES and key[::-1] in _ANGLES:
-        a, b, key = b, a, key[::-1]
-    if key not in _ANGLES:
-        raise TypeError(f"angle: no angle between {key[0]} and {key[1]}")
-    return _tk.angle(_ANGLES[key], a.array, b.array)
+    return _tk.angle(*_pair("angle", _ANGLES, a, b))
 
 
 def line_through(p, q):
@@ -224,12 +230,7 @@ def distance(a, b):
     point–line, line–line (also with the arguments the other way round). Rust:
     ``Point::distance_to_point``, ``distance_to_plane``, ``distance_to_line``,
     ``Line::distance_to_line``."""
-    key = (type(a).__name__, type(b).__name__)
-    if key not in _DISTANCES and key[::-1] in _DISTANCES:
-        a, b, key = b, a, key[::-1]
-    if key not in _DISTANCES:
-        raise TypeError(f"distance: no distance between {key[0]} and {key[1]}")
-    return _tk.distance(_DISTANCES[key], a.array, b.array)
+    return _tk.distance(*_pair("distance", _DISTANCES, a, b))
 
 
 def project(x, onto):
