@@ -1044,6 +1044,24 @@ mod tests {
         }
     }
 
+    /// A value in every lane is the packing of that many copies, for every lane width, for a
+    /// value of f64 and of f32 and for a tuple.
+    #[test]
+    fn splat_is_copies_packed() {
+        use crate::{Motor, Vector};
+        let m = Motor::<f64>::from_array([0.5, -0.25, 1.5, 2.0, -3.0, 0.125, 7.0, -0.75]);
+        let v = Vector::<f32>::from_array([1.5, -2.0, 0.25, 3.0, -0.5]);
+        fn same<X: Lanes, L: Lane>(x: X) -> bool
+        where
+            X::Over<L>: PartialEq,
+        {
+            splat::<X, L>(x) == X::pack_lanes::<L>(&[x; 16][..L::LANES])
+        }
+        assert!(same::<_, F64x4>(m) && same::<_, F64x8>(m) && same::<_, f64>(m));
+        assert!(same::<_, F32x8>(v) && same::<_, F32x16>(v) && same::<_, f32>(v));
+        assert!(same::<_, F64x8>((m, Vector::<f64>::from_array([1.0, 2.0, 3.0, 4.0, 5.0]))));
+    }
+
     #[test]
     fn lengths_must_agree() {
         let input = vec![(motor(1), point(1, 0.0)); 3];

@@ -16,6 +16,12 @@ pub trait Lanes: Copy {
     fn pack_lanes<L: Lane>(x: &[Self]) -> Self::Over<L>;
     /// The inverse of [`Lanes::pack_lanes`]: lane `k` into `out[k]`.
     fn unpack_lanes<L: Lane>(p: Self::Over<L>, out: &mut [Self]);
+    /// `x` in every lane ([`splat`]): [`Lanes::pack_lanes`] of `L::LANES` copies, which a
+    /// type of coefficients does coefficient by coefficient instead (no copies to pack).
+    #[inline(always)]
+    fn splat_lanes<L: Lane>(x: Self) -> Self::Over<L> {
+        Self::pack_lanes(&[x; 16][..L::LANES])
+    }
     /// `[x₀, x₁, x₂, x₃]` as one value whose lane `k` is `x_k`.
     #[inline(always)]
     fn pack(x: [Self; 4]) -> Self::Over<F64x4> {
@@ -144,7 +150,7 @@ unsafe fn write_rows<X: Lanes, L: Lane, const N: usize>(p: X::Over<L>, rows: [*m
 /// kernel's run-time state, such as the motor every point is moved by).
 #[inline(always)]
 pub fn splat<X: Lanes, L: Lane>(x: X) -> X::Over<L> {
-    X::pack_lanes(&[x; 16][..L::LANES])
+    X::splat_lanes(x)
 }
 
 /// `Lanes` for the named generated types over `f64` and `f32`: what `algebra!` emits for an algebra that
@@ -195,6 +201,11 @@ macro_rules! __simd_lanes {
                 $t::from_array(core::array::from_fn(|k| L::from_fn(|l| $crate::Real::to_f64(a[l][k]))))
             }
             #[inline(always)]
+            fn splat_lanes<L: $crate::simd::Lane>(x: Self) -> $t<L> {
+                let a = x.to_array();
+                $t::from_array(core::array::from_fn(|k| L::from_fn(|_| $crate::Real::to_f64(a[k]))))
+            }
+            #[inline(always)]
             fn unpack_lanes<L: $crate::simd::Lane>(p: $t<L>, out: &mut [Self]) {
                 let a = p.to_array();
                 for (l, o) in out.iter_mut().enumerate().take(L::LANES) {
@@ -233,6 +244,10 @@ macro_rules! tuple_lanes {
                         o.$k = v;
                     }
                 })*
+            }
+            #[inline(always)]
+            fn splat_lanes<L: Lane>(x: Self) -> Self::Over<L> {
+                ($($x::splat_lanes::<L>(x.$k),)*)
             }
             #[inline(always)]
             fn pack_filler() -> Self {
