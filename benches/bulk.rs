@@ -141,14 +141,19 @@ enum Same {
     Glam,
 }
 
+/// A form's timed call, on the arrays of conformal points in and out.
+type Timed = Box<dyn Fn(&[Vector], &mut [Vector])>;
+/// A form's last result, given the output array of its last call.
+type Outcome = Box<dyn Fn(&[Vector]) -> Vec<Vector>>;
+
 /// A form: its name, what it must equal, the timed call on the arrays of conformal points,
 /// and its last result as such an array (unpacked after timing, for the forms that keep
 /// their own).
 struct Conformal {
     name: &'static str,
     same: Same,
-    time: Box<dyn Fn(&[Vector], &mut [Vector])>,
-    result: Box<dyn Fn(&[Vector]) -> Vec<Vector>>,
+    time: Timed,
+    result: Outcome,
 }
 
 impl Conformal {
