@@ -23,8 +23,13 @@ from files or built in code (:mod:`cga.scene`), to numpy arrays.
 ``cga.cga2`` the plane's conformal algebra G(3,1) and ``cga.vga`` the 3D vector algebra G(3),
 with the same classes and operators (:mod:`cga.pga`, :mod:`cga.sta`, :mod:`cga.cga2`,
 :mod:`cga.vga`). ``cga.random`` draws random objects of every class (:mod:`cga.random`); ``cga.fit_sphere``,
-``fit_circle``, ``fit_plane`` and ``fit_line`` fit objects to points by least squares, and
-``cga.average_objects`` averages objects of one class.
+``fit_circle``, ``fit_plane`` and ``fit_line`` fit objects to points by least squares
+(``fit_sphere_with_error`` … give a ``Fit`` with the points' distances from it), and
+``cga.average_objects`` averages objects of one class. ``Rotor.between_frames``,
+``Motor.between_frames``, ``Motor.between_circles``, ``Motor.between_spheres`` and
+``X.versor_to(Y)`` give the versors between frames and between objects
+(``cga.rotor_between_objects`` and ``cga.motor_between_rounds`` as clifford.tools.g3c names
+them).
 
 ``cga.to_clifford``, ``cga.from_clifford``, ``cga.to_kingdon`` and ``cga.from_kingdon``
 convert values and arrays to and from those libraries' multivectors (:mod:`cga.interop`).
@@ -38,6 +43,7 @@ from ._cga import (
     Circle,
     Dilator,
     Even,
+    Fit,
     FlatPoint,
     Generator,
     GeometryError,
@@ -78,6 +84,29 @@ fit_circle = Circle.fit
 fit_plane = Plane.fit
 fit_line = Line.fit
 
+#: The same fits with their stated error: a ``Fit`` (``object, rms, max, sigma``).
+fit_sphere_with_error = Sphere.fit_with_error
+fit_circle_with_error = Circle.fit_with_error
+fit_plane_with_error = Plane.fit_with_error
+fit_line_with_error = Line.fit_with_error
+
+
+def rotor_between_objects(x1, x2):
+    """The even versor taking object ``x1`` to ``x2`` (clifford.tools.g3c's name for
+    ``x1.versor_to(x2)``; circles, spheres, point pairs, lines or planes, or arrays of them)."""
+    return x1.versor_to(x2)
+
+
+def motor_between_rounds(x1, x2):
+    """The rigid motion lining up two circles (centre and normal) or two spheres (centre),
+    clifford.tools.g3c's name for ``Motor.between_circles`` / ``Motor.between_spheres``."""
+    if isinstance(x1, Circle) and isinstance(x2, Circle):
+        return Motor.between_circles(x1, x2)
+    if isinstance(x1, Sphere) and isinstance(x2, Sphere):
+        return Motor.between_spheres(x1, x2)
+    raise TypeError(f"motor_between_rounds: two Circles or two Spheres, not {type(x1).__name__} "
+                    f"and {type(x2).__name__}")
+
 
 def average_objects(objects):
     """The average of an array of circles, spheres, planes, lines or point pairs, as one object
@@ -86,11 +115,12 @@ def average_objects(objects):
     return objects.average()
 
 __all__ = [
-    "Bivector", "Circle", "Dilator", "Even", "FlatPoint", "Generator", "GeometryError", "Infinity",
+    "Bivector", "Circle", "Dilator", "Even", "Fit", "FlatPoint", "Generator", "GeometryError", "Infinity",
     "Line", "Motor", "Odd", "Picture", "Plane", "Point", "PointPair", "Pseudoscalar", "Rotor",
     "Scalar", "ScalarQuadvector", "Scene", "SceneError", "ShapeError", "Sphere", "Translator",
-    "Transversor", "ValueError", "Vector", "__version__", "average_objects", "down", "draw", "fit_circle", "fit_line",
-    "fit_plane", "fit_sphere", "from_clifford", "from_kingdon",
+    "Transversor", "ValueError", "Vector", "__version__", "average_objects", "down", "draw", "fit_circle",
+    "fit_circle_with_error", "fit_line", "fit_line_with_error", "fit_plane", "fit_plane_with_error", "fit_sphere",
+    "fit_sphere_with_error", "from_clifford", "from_kingdon", "motor_between_rounds", "rotor_between_objects",
     "cga2", "interop", "pga", "random", "sta", "to_clifford", "to_kingdon", "up", "vga", "wedge",
 ]
 

@@ -6,7 +6,7 @@
 
 use crate::classes::{Circle, Line, Motor, Plane, Rotor, Sphere, Translator, Vector, floats, values_of};
 use crate::errors::{GeometryError, ShapeError, ValueError};
-use crate::values::{Type, Values, length};
+use crate::values::{Type, Values, at, length};
 use cga_core::euclid::E3;
 use numpy::{AllowTypeChange, PyArrayLikeDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::IntoPyObjectExt;
@@ -301,7 +301,7 @@ impl Motor {
         let r = &rotor.0;
         let n = length(&[r.n, v.rows.len()])?;
         Ok(Motor(build(Self::ty(), n, r.single && v.single, |i| {
-            let rot = Rotor::typed(r, if r.n == 1 { 0 } else { i });
+            let rot = Rotor::typed(r, at(r, i));
             Ok::<_, String>(cga_core::Motor::from_rotor_translation(rot, v.at(i)).to_storage())
         })?))
     }
@@ -311,7 +311,7 @@ impl Motor {
         let p = points("x", x)?;
         let m = &self.0;
         let n = length(&[m.n, p.rows.len()])?;
-        let out: Vec<E3> = (0..n).map(|i| Self::typed(m, if m.n == 1 { 0 } else { i }).move_point(p.at(i))).collect();
+        let out: Vec<E3> = (0..n).map(|i| Self::typed(m, at(m, i)).move_point(p.at(i))).collect();
         e3s(py, m.single && p.single, out)
     }
 }

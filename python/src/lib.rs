@@ -4,6 +4,7 @@
 //! pipeline. Errors are Python
 //! exceptions (`cga.ValueError` and its kinds), never a crash.
 
+mod between;
 mod cga2_sta;
 mod classes;
 mod draw;
@@ -48,6 +49,7 @@ fn _cga(m: &Bound<'_, PyModule>) -> PyResult<()> {
     cga2_sta::register(m)?;
     m.add_class::<render::Scene>()?;
     m.add_class::<render::Picture>()?;
+    m.add_class::<fit::Fit>()?;
     m.add_function(wrap_pyfunction!(geometry::up, m)?)?;
     m.add_function(wrap_pyfunction!(draw::draw, m)?)?;
     m.add_function(wrap_pyfunction!(geometry::down, m)?)?;

@@ -9,8 +9,8 @@ use crate::classes::{
 };
 use crate::errors::GeometryError;
 use crate::geometry::{Rows, build, numbers as params, points};
-use crate::values::length;
 use crate::values::{Type, Values};
+use crate::values::{at, length, row};
 use cga_core::classify::{Kind, Reality};
 use cga_core::euclid::E3;
 use cga_core::{Reflect, classify_storage};
@@ -22,16 +22,6 @@ use pyo3::types::PyDict;
 /// The common number of rows of two values (one broadcasts), and whether the answer is one.
 fn rows(a: &Values, b: &Values) -> PyResult<(usize, bool)> {
     Ok((crate::values::broadcast(a, b)?, a.single && b.single))
-}
-
-/// Row `i` of `v`, broadcasting a single value.
-fn at(v: &Values, i: usize) -> usize {
-    row(v.n, i)
-}
-
-/// Row `i` of `n` rows, broadcasting one.
-fn row(n: usize, i: usize) -> usize {
-    if n == 1 { 0 } else { i }
 }
 
 /// The values of `obj` if it is of class `ty`.

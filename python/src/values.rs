@@ -115,6 +115,16 @@ impl Values {
     }
 }
 
+/// Row `i` of `v`, broadcasting a single value.
+pub(crate) fn at(v: &Values, i: usize) -> usize {
+    row(v.n, i)
+}
+
+/// Row `i` of `n` rows, broadcasting one.
+pub(crate) fn row(n: usize, i: usize) -> usize {
+    if n == 1 { 0 } else { i }
+}
+
 /// The number of results of a map over `a` and `b`: their common length, or the other's where
 /// one is a single value (or an array of one).
 pub fn broadcast(a: &Values, b: &Values) -> PyResult<usize> {

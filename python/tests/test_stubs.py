@@ -2,6 +2,7 @@
 
 import ast
 import os
+import sys
 
 import cga._cga as ext
 
@@ -31,3 +32,13 @@ def test_the_stub_names_everything_the_module_has():
                 if not attr.startswith("_") and attr not in stub[name]:
                     missing.append(f"{name}.{attr}")
     assert not missing, f"not in cga/_cga.pyi: {missing}"
+
+
+def test_the_stub_is_what_its_generator_writes():
+    """_cga.pyi is written by python/tools/stubs.py; an edit by hand would be lost."""
+    sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tools"))
+    try:
+        import stubs
+    finally:
+        sys.path.pop(0)
+    assert open(STUB).read() == stubs.stub(), "run python3 python/tools/stubs.py"

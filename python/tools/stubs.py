@@ -80,6 +80,10 @@ OWN = {
 ''',
     "Rotor": '''    @staticmethod
     def from_axis_angle(axis: ArrayLike, angle: ArrayLike) -> "Rotor": ...
+    @staticmethod
+    def between_frames(frm: ArrayLike, to: ArrayLike) -> "Rotor": ...
+    @staticmethod
+    def from_frame(axes: ArrayLike) -> "Rotor": ...
 ''',
     "Translator": '''    @staticmethod
     def from_vector(t: ArrayLike) -> "Translator": ...
@@ -87,6 +91,14 @@ OWN = {
     "Motor": '''    @staticmethod
     def from_rotor_translation(rotor: "Rotor", t: ArrayLike) -> "Motor": ...
     def move_point(self, x: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def between_frames(
+        frm_origin: ArrayLike, frm_axes: ArrayLike, to_origin: ArrayLike, to_axes: ArrayLike
+    ) -> "Motor": ...
+    @staticmethod
+    def between_circles(a: "Circle", b: "Circle") -> "Motor": ...
+    @staticmethod
+    def between_spheres(a: "Sphere", b: "Sphere") -> "Motor": ...
 ''',
 }
 
@@ -133,6 +145,14 @@ VERSOR = '''    def log(self) -> "Generator": ...
 FITTED = ["Sphere", "Circle", "Plane", "Line"]
 FIT = '''    @staticmethod
     def fit(points: Union[ArrayLike, "Vector"]) -> "{name}": ...
+    @staticmethod
+    def fit_with_error(points: Union[ArrayLike, "Vector"]) -> "Fit": ...
+'''
+
+# Classes with a versor to another of their kind (cga-core's `VersorBetween`).
+BETWEEN = ["Bivector", "Line", "Circle", "Plane", "Sphere"]
+VERSOR_TO = '''    def versor_to(self, other: "{name}") -> "Even": ...
+    def moved_by(self, v: "Even") -> "{name}": ...
 '''
 
 # Classes averaged as clifford.tools' `average_objects` (cga-core's `average_objects`).
@@ -235,7 +255,8 @@ class cga2:
 
 class pga_toolkit:
     """cga-algebras' PGA toolkit on rows of coefficients (``(k,)`` or ``(n, k)``), which
-    :mod:`cga.pga` wraps: motors, screws, closed-form exp/log/sqrt, interpolation, distances."""
+    :mod:`cga.pga` wraps: motors, screws, closed-form exp/log/sqrt/pow, interpolation,
+    distances, angles."""
     @staticmethod
     def rotor(axis: ArrayLike, angle: ArrayLike) -> NDArray[np.float64]: ...
     @staticmethod
@@ -258,6 +279,14 @@ class pga_toolkit:
     def plane_from_normal_distance(n: ArrayLike, d: ArrayLike) -> NDArray[np.float64]: ...
     @staticmethod
     def distance(kind: str, a: ArrayLike, b: ArrayLike) -> Floats: ...
+    @staticmethod
+    def pow(motor: ArrayLike, t: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def from_line_pitch(line: ArrayLike, angle: ArrayLike, pitch: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def rotor_translation(motor: ArrayLike) -> NDArray[np.float64]: ...
+    @staticmethod
+    def angle(kind: str, a: ArrayLike, b: ArrayLike) -> Floats: ...
 
 class cga2_toolkit:
     """cga-algebras' 2D CGA constructors and read-backs on rows, which :mod:`cga.cga2` wraps."""
@@ -309,10 +338,24 @@ class Picture:
     def rays(self) -> tuple[int, int, int]: ...
     def save(self, path: str, bit_depth: Optional[int] = None) -> None: ...
     def _repr_png_(self) -> bytes: ...
+
+class Fit:
+    """An object fitted to points and the points' distances from it (``fit_with_error``)."""
+    @property
+    def object(self) -> Any: ...
+    @property
+    def rms(self) -> Floats: ...
+    @property
+    def max(self) -> Floats: ...
+    @property
+    def sigma(self) -> Floats: ...
+    def __iter__(self) -> Any: ...
+    def __len__(self) -> int: ...
 '''
 
 
-def main() -> None:
+def stub() -> str:
+    """The stub's text."""
     out = HEAD.replace("{values}", ", ".join(f'"{c}"' for c in CLASSES))
     out = out.replace("from typing import", "from builtins import ValueError as builtins_ValueError\nfrom typing import")
     for name in CLASSES:
@@ -327,9 +370,14 @@ def main() -> None:
         out += FIT.replace("{name}", name) if name in FITTED else ""
         out += CIRCLE_CLOSEST if name == "Circle" else ""
         out += AVERAGE.replace("{name}", name) if name in AVERAGED else ""
+        out += VERSOR_TO.replace("{name}", name) if name in BETWEEN else ""
+    return out
+
+
+def main() -> None:
     path = os.path.join(os.path.dirname(__file__), "..", "cga", "_cga.pyi")
     with open(path, "w") as f:
-        f.write(out)
+        f.write(stub())
 
 
 if __name__ == "__main__":
