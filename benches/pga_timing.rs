@@ -6,8 +6,8 @@
 //! rounds in ns per operation (interleaved rounds for the batches; for the points, each form's
 //! rounds in turn, as klein.cpp times them). Prints `operation form ns` lines (`form` is `f32`
 //! or `f64` one at a time, `f32-lanes` or `f64-lanes` on SIMD lanes by `simd::run`: sixteen
-//! f32 or eight f64 to an AVX-512 register, eight or four with AVX2, transposed from and to
-//! the arrays of values; `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
+//! f32 to an AVX-512 register (eight with AVX2) or four f64 to an AVX one, transposed from and
+//! to the arrays of values; `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
 //! stored packed, eight f32 or four f64 to a 256-bit packet, packed once before timing).
 //!
 //! `cargo run --release -p cga-benches --example pga_timing`

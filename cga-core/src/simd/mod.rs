@@ -1,17 +1,17 @@
 //! Many lanes as a scalar: every generated type, product and sandwich runs on four or eight
 //! independent f64 operands at once, or eight or sixteen f32 ones, `Line<F64x4>` being a
 //! packet of four lines in structure-of-arrays form. [`run`] picks the lanes from the
-//! values' scalar ([`Lanes::Element`]): f64 on [`F64x8`] or [`F64x4`], f32 on [`F32x16`] or
-//! [`F32x8`].
+//! values' scalar ([`Lanes::Element`]) and the CPU ([`Element::Avx512Lanes`]): f64 on
+//! [`F64x4`], f32 on [`F32x16`] or [`F32x8`].
 //!
 //! Three ways to run an operation over many operands:
 //!
 //! - [`run_packed`]: over packets ([`Packed`]: `&[Line<F64x4>]`, `&[Line<F32x8>]`…), the
 //!   form a ray tracer keeps its packets in, with no transpose;
 //! - [`run`]: over slices of ordinary values, transposed into lanes and back in place:
-//!   f64 values eight at a time on [`F64x8`] where the CPU has AVX-512, four at a time on
-//!   [`F64x4`] with AVX2 (benches/README.md times both against Versor), f32 values sixteen
-//!   or eight at a time on [`F32x16`] or [`F32x8`];
+//!   f64 values four at a time on [`F64x4`] (in a loop compiled for AVX-512 where the CPU
+//!   has it, for AVX2 otherwise), f32 values sixteen at a time on [`F32x16`] with AVX-512,
+//!   eight on [`F32x8`] with AVX2;
 //! - [`run_columns`]: the same over operands kept in separate arrays (a tuple of slices),
 //!   read in place;
 //! - [`map`]: the same with an `#[inline(always)]` closure on lanes of the values' scalar.
@@ -59,7 +59,7 @@ pub type Packed<X> = <X as Lanes>::Over<<<X as Lanes>::Element as Element>::Narr
 pub type Over<X, L> = <X as Lanes>::Over<L>;
 
 /// One operation on lanes, named so that [`run`] can compile it for the CPU it finds and
-/// for the widest lanes it has: `apply` is generic over the lane type, and marked
+/// for the lanes it takes there: `apply` is generic over the lane type, and marked
 /// `#[inline(always)]` it is inlined into each compiled loop (a closure handed to a function
 /// compiled for AVX2 is a call LLVM may decline to inline, as it did for every product
 /// bigger than a rotor's, and a call out of that function runs baseline code). A kernel
@@ -167,23 +167,33 @@ impl Width for F32x16 {
 }
 
 /// The scalar of the values [`run`] takes, and the lanes it runs them on: f64 on [`F64x4`]
-/// (one AVX2 register, and the baseline loop) or [`F64x8`] (one AVX-512 register), f32 on
-/// [`F32x8`] or [`F32x16`], twice as many a register. Sealed: f64 and f32.
+/// (one AVX2 register) at every level, f32 on [`F32x8`] or, with AVX-512, [`F32x16`].
+/// Sealed: f64 and f32.
 pub trait Element: crate::Real + rows::Sealed {
     /// The lanes of one AVX2 register, and of the baseline loop.
     type Narrow: Width;
     /// The lanes of one AVX-512 register.
     type Broad: Width;
+    /// The lanes [`run`] takes where the CPU has AVX-512 (its loop compiled for AVX-512
+    /// either way, with 32 registers): [`F64x4`] for f64, whose 4 × 4 AVX transposes
+    /// (128-bit loads, in-lane shuffles, 256-bit stores) cost less than the 8-row AVX-512
+    /// ones, where AMD's Zen 4 takes twice a 256-bit shuffle's time for a 512-bit one and
+    /// more for a masked store (benches/README.md: every row of the klein table, the join
+    /// of two points 1.26 ns against 1.72 on eight lanes); [`F32x16`] for f32, whose
+    /// sixteen lanes there stay ahead of eight on the same join (1.11 ns against 1.23).
+    type Avx512Lanes: Width;
 }
 
 impl Element for f64 {
     type Narrow = F64x4;
     type Broad = F64x8;
+    type Avx512Lanes = F64x4;
 }
 
 impl Element for f32 {
     type Narrow = F32x8;
     type Broad = F32x16;
+    type Avx512Lanes = F32x16;
 }
 
 mod rows {
@@ -296,8 +306,9 @@ mod rows {
 /// loop, with its instruction set. Without the mark LLVM declines to inline a body of
 /// several hundred instructions (a motor's sandwich), and the call runs baseline SSE2 code
 /// (2.4–2.7× `run`'s time moving a million points; `cargo bench --bench bulk` times both). [`run`] picks the lane width
-/// for the CPU; a closure has one: four lanes match `run` on AVX2 CPUs, eight on AVX-512
-/// ones (benches/README.md gives both against `run`).
+/// for the CPU; a closure has one: on f64 values four lanes match `run` on every CPU, on f32
+/// values eight match it on AVX2 CPUs and sixteen on AVX-512 ones (benches/README.md gives
+/// four and eight f64 lanes against `run`).
 ///
 /// ```
 /// use cga_core::simd::{F64x4, F64x8, map, splat};
@@ -364,10 +375,12 @@ fn by_value<L: Lane, F: Op<L>, S: Columns<Item = F::Input>>(f: &F, input: S, out
     }
 }
 
-/// `out[k] = K(input[k])` for every `k`: f64 values eight at a time on [`F64x8`] where the
-/// CPU has AVX-512 (F, DQ and VL), four at a time on [`F64x4`] with AVX2 and FMA, four at a
-/// time in baseline code otherwise (detected once, at run time: the build stays baseline
-/// x86-64); f32 values likewise sixteen at a time on [`F32x16`], eight on [`F32x8`]. The values go into and out of lanes by transposes in place. The results are
+/// `out[k] = K(input[k])` for every `k`: f64 values four at a time on [`F64x4`], in a loop
+/// compiled for AVX-512 (F, DQ and VL) where the CPU has it, for AVX2 and FMA otherwise, in
+/// baseline code without them (detected once, at run time: the build stays baseline
+/// x86-64); f32 values sixteen at a time on [`F32x16`] with AVX-512, eight on [`F32x8`]
+/// otherwise ([`Element::Avx512Lanes`] says why). The values go into and out of lanes by
+/// transposes in place. The results are
 /// the same bits at every level (no multiply–add is contracted). `None`, and nothing
 /// written, where the lengths differ.
 pub fn run<K: Kernel>(kernel: &K, input: &[K::Input], out: &mut [K::Output]) -> Option<()> {
@@ -437,12 +450,12 @@ fn run_at<K: Kernel, S: Columns<Item = K::Input>>(
         return None;
     }
     type Narrow<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Narrow;
-    type Broad<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Broad;
+    type Avx512Lanes<K> = <<<K as Kernel>::Input as Lanes>::Element as Element>::Avx512Lanes;
     let kernel = AtLanes(kernel);
     match level {
         // SAFETY: `detect` found the features each loop is compiled for.
         #[cfg(target_arch = "x86_64")]
-        Level::Avx512 => unsafe { Broad::<K>::rows_avx512(&kernel, input, out) },
+        Level::Avx512 => unsafe { Avx512Lanes::<K>::rows_avx512(&kernel, input, out) },
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { Narrow::<K>::rows_avx2(&kernel, input, out) },
         Level::Baseline => by_value::<Narrow<K>, _, _>(&kernel, input, out),
@@ -469,8 +482,9 @@ unsafe fn transposed_avx2<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(
     unsafe { transposed(f, input, out) }
 }
 
-/// The transposing loop compiled with AVX-512 enabled: [`run`]'s widest lanes, or a closure
-/// on narrower ones with the 32 vector registers AVX-512 gives (fewer spills than AVX2's 16).
+/// The transposing loop compiled with AVX-512 enabled: [`run`]'s lanes there
+/// ([`Element::Avx512Lanes`]) or a closure's, with the 32 vector registers AVX-512 gives
+/// (fewer spills than AVX2's 16).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512dq,avx512vl,avx2,fma")]
 unsafe fn transposed_avx512<L: Transposed, F: Op<L>, S: Columns<Item = F::Input>>(
@@ -577,8 +591,8 @@ pub fn avx2() -> bool {
     std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
 }
 
-/// Whether this CPU has AVX-512 F, DQ and VL (and AVX2 and FMA), which [`run`]'s eight-lane
-/// loop and [`map`]'s four-lane one are compiled for.
+/// Whether this CPU has AVX-512 F, DQ and VL (and AVX2 and FMA), which [`run`]'s loop and
+/// [`map`]'s are compiled for where it has.
 #[cfg(target_arch = "x86_64")]
 #[inline]
 pub fn avx512() -> bool {
