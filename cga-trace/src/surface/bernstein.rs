@@ -206,12 +206,16 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
         &self.c[..=self.degree]
     }
 
-    /// `p(t)` ([`Bernstein::eval_with_slope`]).
+    /// `p(t)`: [`Bernstein::eval_with_slope`]'s value, the same operations, without the
+    /// slope's chain (Newton on a spline segment's `F` evaluates `N` and `D` so at every step).
+    #[inline]
     pub fn eval(&self, t: T) -> T {
+        let (n, c) = (self.degree, self.coefficients());
         match t {
-            t if t == T::zero() => self.c[0],
-            t if t == T::one() => self.c[self.degree],
-            t => self.eval_with_slope(t).0,
+            t if t == T::zero() => c[0],
+            t if t == T::one() => c[n],
+            t if t > T::from_f64(0.5) => horner_value(n, |j| c[n - j], (T::one() - t) / t, t),
+            t => horner_value(n, |j| c[j], t / (T::one() - t), T::one() - t),
         }
     }
 
