@@ -6,7 +6,7 @@ use cga_trace::integrator::RayCounts;
 use cga_trace::limits::{MAX_FRAMES, MAX_THREADS};
 use cga_trace::output::OutputFile;
 use cga_trace::pipeline::{Options, Pipeline, RenderError, View, ViewError, check_output, scale_path, window};
-use cga_trace::settings::{Background, ToneMap};
+use cga_trace::settings::{AdaptiveMethod, Background, ToneMap};
 use cga_trace::{Aov, BackendKind, Encoding, Scene};
 use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
@@ -90,6 +90,13 @@ struct Render {
     /// Given alone, it turns adaptive sampling on at the scene's threshold or 0.3.
     #[arg(long, value_name = "N")]
     adaptive_min: Option<u32>,
+    /// Where adaptive sampling puts the samples: `samples` (the default: each pixel's first
+    /// --adaptive-min samples, the rest where they or the neighbours differ) or `corners`
+    /// (POV-Ray's method 2, +AM2: a ray at each pixel corner, shared by four pixels, and squares
+    /// whose corners differ cut in four, down to log4(--spp) levels). Given alone, it turns
+    /// adaptive sampling on at the scene's threshold or 0.3.
+    #[arg(long, value_name = "METHOD")]
+    adaptive_method: Option<AdaptiveMethod>,
     /// Render only the window x0,x1,y0,y1 (fractions of the image, y from the top, as
     /// pbrt's --cropwindow); windows of one frame assemble into it byte for byte.
     #[arg(long, value_name = "X0,X1,Y0,Y1", value_parser = parse_crop, allow_hyphen_values = true)]
@@ -422,6 +429,7 @@ fn view(args: &Render) -> View {
         spp: args.spp,
         adaptive: args.adaptive,
         adaptive_min: args.adaptive_min,
+        adaptive_method: args.adaptive_method,
         max_depth: args.max_depth,
         exposure: args.exposure,
         tone_map: args.tone_map,
@@ -435,7 +443,7 @@ fn flagged(e: RenderError) -> anyhow::Error {
         RenderError::View(ViewError::Fov(e)) => ("--fov", e.into()),
         RenderError::View(ViewError::Size(e)) => ("--width/--height", e.into()),
         RenderError::View(ViewError::Settings(e)) => {
-            ("--max-depth/--spp/--adaptive/--adaptive-min/--exposure/--background", e.into())
+            ("--max-depth/--spp/--adaptive/--adaptive-min/--adaptive-method/--exposure/--background", e.into())
         }
         RenderError::Crop(e) => ("--crop", anyhow::Error::msg(e)),
         RenderError::Backend(e) => ("--backend", anyhow::Error::msg(e)),

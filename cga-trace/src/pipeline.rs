@@ -25,7 +25,7 @@ use crate::invalid::Invalid;
 use crate::label::{Label, draw_labels};
 use crate::output::{OutputFile, OutputFileError};
 use crate::scene::Scene;
-use crate::settings::{Adaptive, Background};
+use crate::settings::{Adaptive, AdaptiveMethod, Background};
 use crate::shutter::Sample;
 use std::borrow::Cow;
 use std::io::Write;
@@ -49,6 +49,8 @@ pub struct View {
     /// Adaptive sampling's first samples a pixel (with the scene's threshold, or 0.3 where it
     /// gives none).
     pub adaptive_min: Option<u32>,
+    /// Adaptive sampling's method (with the scene's threshold, or 0.3 where it gives none).
+    pub adaptive_method: Option<AdaptiveMethod>,
     /// Reflection depth.
     pub max_depth: Option<u32>,
     /// Exposure of PNG output in stops.
@@ -70,10 +72,13 @@ impl View {
         let s = &mut scene.settings;
         s.max_depth = self.max_depth.unwrap_or(s.max_depth);
         s.spp = self.spp.unwrap_or(s.spp);
-        if self.adaptive.is_some() || self.adaptive_min.is_some() {
+        if self.adaptive.is_some() || self.adaptive_min.is_some() || self.adaptive_method.is_some() {
             let given = s.adaptive.unwrap_or(Adaptive::threshold(Adaptive::THRESHOLD));
-            let threshold = self.adaptive.unwrap_or(given.threshold);
-            s.adaptive = Some(Adaptive { threshold, min_spp: self.adaptive_min.unwrap_or(given.min_spp) });
+            s.adaptive = Some(Adaptive {
+                threshold: self.adaptive.unwrap_or(given.threshold),
+                min_spp: self.adaptive_min.unwrap_or(given.min_spp),
+                method: self.adaptive_method.unwrap_or(given.method),
+            });
         }
         s.exposure = self.exposure.unwrap_or(s.exposure);
         s.tone_map = self.tone_map.unwrap_or(s.tone_map);

@@ -9,7 +9,7 @@ use crate::input::Input;
 use crate::label::Label;
 use crate::light::Light;
 pub use crate::object::Object;
-use crate::settings::Settings;
+use crate::settings::{AdaptiveMethod, Settings};
 use crate::shutter::Shutter;
 
 /// A scene ready to render, in its [`Frame`]: camera, objects and lights are given
@@ -89,13 +89,17 @@ impl Scene {
         let (a, spp) = (self.settings.adaptive?, self.settings.spp);
         if self.shutter.is_some() {
             Some("adaptive sampling does not apply under a shutter: every pixel takes all its samples".into())
-        } else if spp <= a.min_spp {
+        } else if a.adapts(spp) {
+            None
+        } else if a.method == AdaptiveMethod::Corners {
+            Some(format!(
+                "adaptive corners cut a pixel into at most spp squares: spp ({spp}) below 4 cuts none, so every pixel takes all its samples; raise spp (--spp)"
+            ))
+        } else {
             Some(format!(
                 "adaptive sampling takes every sample: spp ({spp}) is not above the first samples each pixel takes (min_spp {}); raise spp (--spp)",
                 a.min_spp
             ))
-        } else {
-            None
         }
     }
 

@@ -18,23 +18,44 @@ pub enum Reflection {
     Conserving,
 }
 
-/// Adaptive anti-aliasing: `spp` becomes a maximum. Each pixel first takes `min_spp` of its
-/// samples (a prefix of its stratified sequence, so spread over the pixel); it takes the rest
-/// only where their contrast, or the distance between its mean and a neighbour's (left,
-/// right, below, above), exceeds `threshold`. Both are POV-Ray's colour distance (`+A0.3`):
-/// `Σ_c (max_s d_c − min_s d_c)` over R, G, B of the samples, `Σ_c |d_c(a) − d_c(b)|` between
-/// two means, of the values as a PNG of the picture shows them, `d = clamp(T(2^exposure ·
-/// colour), 0, 1)` with `T` its tone map. A pixel's result depends on its own samples and its
-/// neighbours' first ones alone: any thread count or crop gives the same bytes. The shaded
-/// picture only; AOVs, and a picture through a shutter, take every sample.
+/// Adaptive anti-aliasing: `spp` becomes a maximum, spent where the picture changes. Two
+/// methods ([`AdaptiveMethod`]): POV-Ray's method 1 and pbrt-v2's test together
+/// ([`AdaptiveMethod::Samples`], the default), or POV-Ray's method 2 ([`AdaptiveMethod::Corners`]).
+/// Both decide by POV-Ray's colour distance (`+A0.3`): `Σ_c (max_s d_c − min_s d_c)` over R, G,
+/// B of the samples, `Σ_c |d_c(a) − d_c(b)|` between two values, of the values as a PNG of the
+/// picture shows them, `d = clamp(T(2^exposure · colour), 0, 1)` with `T` its tone map.
+/// Every sample is placed by its position alone: any thread count or crop gives the same
+/// bytes. The shaded picture only; AOVs, and a picture through a shutter, take every sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Adaptive {
-    /// The contrast above which a pixel takes all its samples, in [0, 3] (POV-Ray's default
-    /// is 0.3; 0: every pixel whose first samples differ at all).
+    /// The contrast above which a pixel (or a square of one) takes more samples, in [0, 3]
+    /// (POV-Ray's default is 0.3; 0: wherever its samples differ at all).
     pub threshold: f64,
-    /// The samples every pixel takes first, 1 to [`MAX_SPP`] (at least `spp`: nothing adapts;
-    /// 1: POV-Ray's method 1, the neighbours alone decide).
+    /// The samples every pixel takes first under [`AdaptiveMethod::Samples`], 1 to
+    /// [`MAX_SPP`] (at least `spp`: nothing adapts; 1: POV-Ray's method 1, the neighbours
+    /// alone decide). [`AdaptiveMethod::Corners`] does not use it.
     pub min_spp: u32,
+    /// Where the samples go.
+    pub method: AdaptiveMethod,
+}
+
+/// Where adaptive sampling puts a pixel's samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
+pub enum AdaptiveMethod {
+    /// Each pixel first takes `min_spp` of its stratified samples (a prefix of its sequence,
+    /// spread over the pixel); it takes the rest only where their contrast, or the distance
+    /// between its mean and a neighbour's (left, right, below, above), exceeds the threshold.
+    /// A pixel's result depends on its own samples and its neighbours' first ones.
+    #[default]
+    Samples,
+    /// POV-Ray's method 2 (`+AM2`): one ray at each pixel corner, shared by the four pixels
+    /// that meet there (one ray a pixel where the picture is flat). A square whose four
+    /// corners differ pairwise by more than the threshold is cut into four, tracing its edges'
+    /// midpoints and centre, down to `⌊log₄ spp⌋` levels (`spp` 16: 4 × 4 squares a pixel,
+    /// as POV-Ray's `+R3`); a square's value is the mean of its quarters' values, a square
+    /// not cut the mean of its corners.
+    Corners,
 }
 
 impl Adaptive {
@@ -47,7 +68,23 @@ impl Adaptive {
 
     /// The threshold with the default first samples.
     pub fn threshold(threshold: f64) -> Self {
-        Adaptive { threshold, min_spp: Self::MIN_SPP }
+        Adaptive { threshold, min_spp: Self::MIN_SPP, method: AdaptiveMethod::Samples }
+    }
+
+    /// Whether it takes fewer samples than every pixel's `spp`: `spp` above the first
+    /// samples ([`AdaptiveMethod::Samples`]), or at least one cut of a pixel, `spp ≥ 4`
+    /// ([`AdaptiveMethod::Corners`]).
+    pub fn adapts(&self, spp: u32) -> bool {
+        match self.method {
+            AdaptiveMethod::Samples => spp > self.min_spp,
+            AdaptiveMethod::Corners => spp >= 4,
+        }
+    }
+
+    /// How many times [`AdaptiveMethod::Corners`] may cut a pixel's squares in four:
+    /// `⌊log₄ spp⌋` (6 at [`MAX_SPP`]).
+    pub fn levels(spp: u32) -> u32 {
+        spp.max(1).ilog2() / 2
     }
 
     /// `threshold` finite in [0, 3], `min_spp` in 1 ..= [`MAX_SPP`].

@@ -7,7 +7,7 @@
 use crate::errors::SceneError;
 use cga_trace::film::Output;
 use cga_trace::pipeline::{Options, Pipeline, RenderError, Rendered, View};
-use cga_trace::settings::{Background, ToneMap};
+use cga_trace::settings::{AdaptiveMethod, Background, ToneMap};
 use cga_trace::{Aov, BackendKind};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::IntoPyObjectExt;
@@ -81,10 +81,12 @@ impl Scene {
     /// time in [0, 1]; `adaptive` a contrast threshold (POV-Ray's `+A`, 0 to 3) that makes
     /// `spp` a maximum, taken only where a pixel's first samples (`adaptive_min`, default 4;
     /// given alone, it turns adaptive sampling on at the scene's threshold or 0.3) or its
-    /// neighbours' differ by more; `background` `"transparent"` (the picture is RGBA, alpha
+    /// neighbours' differ by more; `adaptive_method` `"samples"` (that) or `"corners"`
+    /// (POV-Ray's method 2: a ray at each pixel corner, shared by four pixels, and squares
+    /// whose corners differ cut in four, down to log₄ `spp` levels); `background` `"transparent"` (the picture is RGBA, alpha
     /// each pixel's coverage), a colour name or `"#rrggbb"`, or linear `[r, g, b]`, in place of
     /// the scene's.
-    #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, adaptive_min = None, max_depth = None,
+    #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, adaptive_min = None, adaptive_method = None, max_depth = None,
         exposure = None, tone_map = None, time = 0.0, aov = "shaded", backend = "sparse", crop = None, labels = true, background = None))]
     #[allow(clippy::too_many_arguments)]
     fn render(
@@ -96,6 +98,7 @@ impl Scene {
         spp: Option<u32>,
         adaptive: Option<f64>,
         adaptive_min: Option<u32>,
+        adaptive_method: Option<&str>,
         max_depth: Option<u32>,
         exposure: Option<f64>,
         tone_map: Option<&str>,
@@ -110,7 +113,25 @@ impl Scene {
             .map(|t| choose("tone_map", t, &[("none", ToneMap::None), ("filmic", ToneMap::Filmic)]))
             .transpose()?;
         let background = background.as_ref().map(background_of).transpose()?;
-        let view = View { width, height, fov, spp, adaptive, adaptive_min, max_depth, exposure, tone_map, background };
+        let adaptive_method = adaptive_method
+            .map(|m| {
+                let methods = [("samples", AdaptiveMethod::Samples), ("corners", AdaptiveMethod::Corners)];
+                choose("adaptive_method", m, &methods)
+            })
+            .transpose()?;
+        let view = View {
+            width,
+            height,
+            fov,
+            spp,
+            adaptive,
+            adaptive_min,
+            adaptive_method,
+            max_depth,
+            exposure,
+            tone_map,
+            background,
+        };
         let aov = choose(
             "aov",
             aov,

@@ -120,6 +120,21 @@ def test_adaptive_sampling_takes_the_first_samples_or_all():
     assert np.array_equal(scene.render(spp=16, adaptive=0.3, adaptive_min=16).linear, every)
 
 
+def test_adaptive_sampling_by_corners_is_povray_method_2():
+    scene = cga.Scene.parse(FIRST)
+    # Nothing differs by more than 3: every pixel is the mean of its four corners, the same
+    # at any spp (this scene has no lens or area light), the picture as smooth as that.
+    flat = scene.render(spp=16, adaptive=3.0, adaptive_method="corners")
+    assert np.array_equal(flat.linear, scene.render(spp=64, adaptive=3.0, adaptive_method="corners").linear)
+    assert flat.rays[0] == (flat.size[0] + 1) * (flat.size[1] + 1)
+    cut = scene.render(spp=16, adaptive=0.1, adaptive_method="corners")
+    every = scene.render(spp=64).linear
+    assert flat.rays[0] < cut.rays[0] < every.shape[0] * every.shape[1] * 16
+    assert np.abs(cut.linear - every).mean() < np.abs(flat.linear - every).mean()
+    with pytest.raises(cga.ValueError, match="adaptive_method"):
+        scene.render(spp=16, adaptive_method="edges")
+
+
 def test_a_transparent_background_gives_rgba(tmp_path):
     # The first scene with a ball in the sky, whose edge is against nothing.
     scene = cga.Scene.parse(FIRST + SKY_BALL)

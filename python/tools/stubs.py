@@ -210,6 +210,7 @@ class Scene:
         spp: Optional[int] = None,
         adaptive: Optional[float] = None,
         adaptive_min: Optional[int] = None,
+        adaptive_method: Optional[str] = None,
         max_depth: Optional[int] = None,
         exposure: Optional[float] = None,
         tone_map: Optional[str] = None,

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""cga-trace's adaptive anti-aliasing (--spp N --adaptive T --adaptive-min M) against POV-Ray 3.7's (+A0.3), at
-equal measured error, in CPU time (user + sys, one thread each, medians of interleaved rounds).
+"""cga-trace's adaptive anti-aliasing (--spp N --adaptive T, by samples with --adaptive-min M or by corners with
+--adaptive-method corners) against POV-Ray 3.7's (+A0.3), at equal measured error, in CPU time (user + sys, one
+thread each, medians of interleaved rounds).
 
 Needs numpy and pillow:
     python3 -m venv /tmp/aa && /tmp/aa/bin/pip install numpy pillow
@@ -45,8 +46,10 @@ POV_AA = {  # POV-Ray's adaptive anti-aliasing as a user runs it
 SPPS = [4, 8, 16, 32, 64]
 THRESHOLDS = [0.3, 0.2, 0.1, 0.05]
 MINS = [1, 2, 4]  # --adaptive-min: the first samples every pixel takes
-# (threshold, first samples); (None, None): plain --spp
-SETTINGS = [(None, None)] + [(t, m) for t in THRESHOLDS for m in MINS]
+# (threshold, first samples or "corners"); (None, None): plain --spp. Corners cut a pixel
+# log4(spp) times, so only spp 4, 16 and 64 are distinct.
+SETTINGS = [(None, None)] + [(t, m) for t in THRESHOLDS for m in MINS] + [(t, "corners") for t in THRESHOLDS]
+CORNER_SPPS = [4, 16, 64]
 
 Image.MAX_IMAGE_PIXELS = None  # the POV-Ray reference is K^2 times the picture
 
@@ -76,9 +79,18 @@ def ours_cmd(binary, scene, out, w, h, spp, setting):
 
 
 def adaptive_flags(setting):
-    """Our adaptive flags for (threshold, first samples)."""
+    """Our adaptive flags for (threshold, first samples or "corners")."""
     t, m = setting
-    return [] if t is None else ["--adaptive", str(t), "--adaptive-min", str(m)]
+    if t is None:
+        return []
+    if m == "corners":
+        return ["--adaptive", str(t), "--adaptive-method", "corners"]
+    return ["--adaptive", str(t), "--adaptive-min", str(m)]
+
+
+def runs(spp, setting):
+    """Whether the sweep renders this setting at this spp (corners only where log4 differs)."""
+    return setting[1] != "corners" or spp in CORNER_SPPS
 
 
 def load(path):
@@ -131,7 +143,7 @@ def references(binary, scene, w, h, out, k):
     print(f"  {scene:10} POV-Ray: {w * k}x{h * k} -A, {k}x{k} boxes in linear light ({note}{why})")
     note = "cached"
     if not fresh(our_ref, f"{HERE}/{scene}.toml", binary):
-        note = f"{cpu_run(ours_cmd(binary, scene, our_ref, w, h, REF_SPP, None)):.1f} s CPU"
+        note = f"{cpu_run(ours_cmd(binary, scene, our_ref, w, h, REF_SPP, (None, None))):.1f} s CPU"
     print(f"  {scene:10} ours: --spp {REF_SPP} ({note})")
     return load(pov_ref), load(our_ref)
 
@@ -166,13 +178,16 @@ def main():
     settings = SETTINGS if "--adaptive-min" in help_text else [(None, None)]
     if len(settings) == 1:
         print("warning: this cga-trace has no --adaptive-min: sweeping plain --spp only")
+    elif "--adaptive-method" not in help_text:
+        print("warning: this cga-trace has no --adaptive-method: sweeping adaptive samples only")
+        settings = [s for s in settings if s[1] != "corners"]
 
     print(f"machine: {machine()}; one thread each, CPU time = user + sys of the child, "
           f"median of {args.rounds} interleaved rounds; {w}x{h}; images in {out}"
           + ("" if args.out else " (removed at the end)"))
     print("POV-Ray: " + " ".join(pov_cmd("SCENE", "OUT.png", w, h, ["FLAGS"])).replace(HERE, "$HERE"))
     print("ours:    " + " ".join(ours_cmd(binary, "SCENE", "OUT.png", w, h, "N", (None, None))).replace(HERE, "$HERE")
-          + " [--adaptive T --adaptive-min M]")
+          + " [--adaptive T --adaptive-min M | --adaptive T --adaptive-method corners]")
     print(f"error: RMSE in 8-bit levels against the renderer's own reference ($HERE = {HERE})")
     print("references:")
 
@@ -187,7 +202,7 @@ def main():
             png = f"{out}/{scene}-pov{''.join(pov_flags).replace('+', '_')}.png"
             jobs[("pov", name)] = (pov_cmd(scene, png, w, h, pov_flags), png, pov_ref)
         for spp in SPPS:
-            for setting in settings:
+            for setting in filter(lambda st: runs(spp, st), settings):
                 png = f"{out}/{scene}-ours-spp{spp}-t{setting[0]}-m{setting[1]}.png"
                 jobs[("ours", spp, setting)] = (ours_cmd(binary, scene, png, w, h, spp, setting), png, our_ref)
         times = {key: [] for key in jobs}
@@ -202,6 +217,7 @@ def main():
             if ok:
                 otime, key = min(ok, key=lambda tk: tk[0])
                 setting = " ".join([f"--spp {key[1]}", *adaptive_flags(key[2])]).replace("--adaptive-min", "-min")
+                setting = setting.replace("--adaptive-method corners", "corners")
                 summary.append((scene, name, perr, ptime, setting, res[key][0], otime, ptime / otime))
             else:
                 summary.append((scene, name, perr, ptime, "none reaches it", float("nan"), float("nan"), float("nan")))
@@ -211,13 +227,14 @@ def main():
     for s, name, pe, pt, setting, oe, ot, ratio in summary:
         print(f"{s:10} {name:19} {pe:6.2f} {pt:7.3f}   {setting:36} {oe:6.2f} {ot:7.3f} {ratio:9.2f}")
 
-    print("\nour sweep: error (8-bit RMSE) / CPU s; columns: --adaptive threshold/--adaptive-min "
-          "(none = plain --spp)")
+    print("\nour sweep: error (8-bit RMSE) / CPU s; columns: --adaptive threshold/--adaptive-min, or "
+          "threshold/corners (none = plain --spp; - = not run)")
     for scene, res in sweeps.items():
         print(f"{scene:10}" + "".join(f"{'none' if t is None else f'{t}/{m}':>15}" for t, m in settings))
         for spp in SPPS:
-            print(f"  spp {spp:<4}" + "".join(f"{res[('ours', spp, st)][0]:7.2f}/{res[('ours', spp, st)][1]:<7.3f}"
-                                          for st in settings))
+            cells = (f"{res[('ours', spp, st)][0]:7.2f}/{res[('ours', spp, st)][1]:<7.3f}"
+                     if ('ours', spp, st) in res else f"{'-':>15}" for st in settings)
+            print(f"  spp {spp:<4}" + "".join(cells))
     if not args.out:
         shutil.rmtree(out)
 

@@ -5,7 +5,7 @@
 
 use super::numbers::{numbers, some_number, some_numbers};
 use crate::material::Material;
-use crate::settings::{Adaptive, Background, Encoding, Reflection, Settings, ToneMap};
+use crate::settings::{Adaptive, AdaptiveMethod, Background, Encoding, Reflection, Settings, ToneMap};
 use crate::surface::Method;
 use serde::Deserialize;
 use serde::de::{Deserializer, Error, MapAccess, Visitor};
@@ -35,7 +35,8 @@ pub(crate) struct SettingsSpec {
 }
 
 /// `adaptive = 0.3` (the threshold, the first samples [`Adaptive::MIN_SPP`]) or
-/// `adaptive = { threshold = 0.3, min_spp = 8 }`, checked as read.
+/// `adaptive = { threshold = 0.3, min_spp = 8, method = "samples" }` (`method = "corners"`:
+/// POV-Ray's method 2, [`AdaptiveMethod`]), checked as read.
 #[derive(Clone, Copy, Debug)]
 struct AdaptiveSpec(Adaptive);
 
@@ -45,7 +46,9 @@ impl<'de> Deserialize<'de> for AdaptiveSpec {
         impl<'de> Visitor<'de> for Spec {
             type Value = Adaptive;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a contrast threshold (a number such as 0.3) or { threshold = 0.3, min_spp = 4 }")
+                f.write_str(
+                    "a contrast threshold (a number such as 0.3) or { threshold = 0.3, min_spp = 4, method = \"samples\" or \"corners\" }",
+                )
             }
             fn visit_f64<E: Error>(self, threshold: f64) -> Result<Adaptive, E> {
                 Ok(Adaptive::threshold(threshold))
@@ -54,21 +57,38 @@ impl<'de> Deserialize<'de> for AdaptiveSpec {
                 Ok(Adaptive::threshold(threshold as f64))
             }
             fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Adaptive, A::Error> {
-                let (mut threshold, mut min_spp) = (None, None);
+                let (mut threshold, mut min_spp, mut method) = (None, None, AdaptiveMethod::Samples);
                 while let Some(key) = map.next_key::<String>()? {
                     match key.as_str() {
                         "threshold" => threshold = Some(map.next_value::<f64>()?),
                         "min_spp" => min_spp = Some(map.next_value::<u32>()?),
-                        other => return Err(A::Error::unknown_field(other, &["threshold", "min_spp"])),
+                        "method" => method = map.next_value::<MethodSpec>()?.0,
+                        other => return Err(A::Error::unknown_field(other, &["threshold", "min_spp", "method"])),
                     }
                 }
                 let threshold = threshold.ok_or_else(|| A::Error::missing_field("threshold"))?;
-                Ok(Adaptive { threshold, min_spp: min_spp.unwrap_or(Adaptive::MIN_SPP) })
+                Ok(Adaptive { threshold, min_spp: min_spp.unwrap_or(Adaptive::MIN_SPP), method })
             }
         }
         let a = d.deserialize_any(Spec)?;
         a.check().map_err(D::Error::custom)?;
         Ok(AdaptiveSpec(a))
+    }
+}
+
+/// `method = "samples"` or `"corners"` of `adaptive`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(try_from = "String")]
+struct MethodSpec(AdaptiveMethod);
+
+impl TryFrom<String> for MethodSpec {
+    type Error = String;
+    fn try_from(name: String) -> Result<Self, String> {
+        match name.as_str() {
+            "samples" => Ok(MethodSpec(AdaptiveMethod::Samples)),
+            "corners" => Ok(MethodSpec(AdaptiveMethod::Corners)),
+            other => Err(format!("adaptive method `{other}`: give \"samples\" or \"corners\" (POV-Ray's method 2)")),
+        }
     }
 }
 

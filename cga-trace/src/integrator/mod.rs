@@ -20,6 +20,7 @@ mod adaptive;
 mod aov;
 #[cfg(target_arch = "x86_64")]
 mod avx;
+mod corners;
 mod counts;
 mod glass;
 mod keep;
@@ -43,6 +44,7 @@ use crate::bvh::Layers;
 use crate::film::{Channels, Film};
 use crate::ray::Ray;
 use crate::scene::Scene;
+use crate::settings::AdaptiveMethod;
 use cga_core::euclid::E3;
 use rayon::prelude::*;
 use std::borrow::Cow;
@@ -237,8 +239,11 @@ impl<'a, B: Backend> Renderer<'a, B> {
     /// [`Renderer::render_window`] with each pixel's samples kept by `K`.
     fn render_kept<K: Keep>(&self, aov: Aov, window: Window, on_row: &(dyn Fn() + Sync)) -> Film {
         let settings = &self.scene.settings;
-        if let Some(a) = settings.adaptive.filter(|a| aov == Aov::Shaded && settings.spp > a.min_spp) {
-            return self.render_adaptive::<K>(a, window, on_row);
+        if let Some(a) = settings.adaptive.filter(|a| aov == Aov::Shaded && a.adapts(settings.spp)) {
+            return match a.method {
+                AdaptiveMethod::Samples => self.render_adaptive::<K>(a, window, on_row),
+                AdaptiveMethod::Corners => self.render_corners::<K>(a, window, on_row),
+            };
         }
         let (width, height) = (window.columns.len(), window.rows.len());
         // One allocation, each row written in place by whichever thread renders it.

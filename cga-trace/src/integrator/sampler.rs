@@ -122,10 +122,53 @@ impl<B: Backend> Renderer<'_, B> {
             (u[k], v[k]) = (f64::from(i) + du, f64::from(j) + dv);
         }
         let keys = samples.map(|[i, j, s]| SampleKey::new(i, j, s, spp));
+        self.points::<R, W, K>(u, v, keys, aov, cast)
+    }
+
+    /// The values of `W` samples seen at continuous pixel coordinates `(u_k, v_k)`, each
+    /// drawing its lens and light points by `keys[k]`, as `K` gives one sample's; `None`
+    /// where the camera forms no ray (nothing is counted then).
+    #[inline(always)]
+    pub(super) fn points<R: RayLanes<B, W>, const W: usize, K: Keep>(
+        &self,
+        u: [f64; W],
+        v: [f64; W],
+        keys: [SampleKey; W],
+        aov: Aov,
+        cast: &mut RayCounts,
+    ) -> Option<[K::Pixel; W]> {
         let mut counted = RayCounts::default();
         let (colours, met) = self.samples::<R, W, K>(u, v, keys, aov, &mut counted)?;
         cast.add(&counted);
         Some(K::samples(colours, met))
+    }
+
+    /// [`Renderer::points`] of the shaded picture four at a time through packets.
+    pub(super) fn points4<K: Keep>(
+        &self,
+        u: [f64; 4],
+        v: [f64; 4],
+        keys: [SampleKey; 4],
+        cast: &mut RayCounts,
+    ) -> Option<[K::Pixel; 4]> {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 && avx2() {
+            // SAFETY: the CPU has the features the function is compiled for.
+            return unsafe { self.points4_avx2::<K>(u, v, keys, cast) };
+        }
+        self.points::<Packet<B>, 4, K>(u, v, keys, Aov::Shaded, cast)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn points4_avx2<K: Keep>(
+        &self,
+        u: [f64; 4],
+        v: [f64; 4],
+        keys: [SampleKey; 4],
+        cast: &mut RayCounts,
+    ) -> Option<[K::Pixel; 4]> {
+        self.points::<Packet<B, Ymm>, 4, K>(u, v, keys, Aov::Shaded, cast)
     }
 
     /// [`Renderer::listed`] four at a time through packets ([`Renderer::pixels4`]).

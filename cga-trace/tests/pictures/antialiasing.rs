@@ -1,10 +1,12 @@
 //! Anti-aliasing and crop windows: the error against a many-sample reference falls as the
 //! samples per pixel grow; adaptive sampling takes a pixel's first samples or all of them, as
 //! their contrast decides, at nearly the error of all of them; the bytes do not depend on the
-//! thread count; windows of a frame assemble into it byte for byte, adaptive or not.
+//! thread count; windows of a frame assemble into it byte for byte, adaptive or not; adaptive
+//! sampling by corners (POV-Ray's method 2) traces each corner once and cuts only where
+//! corners differ, at nearly the error of all the samples.
 
 use cga_trace::integrator::Window;
-use cga_trace::settings::Adaptive;
+use cga_trace::settings::{Adaptive, AdaptiveMethod};
 use cga_trace::{Aov, Film, Renderer, Scene};
 use std::path::Path;
 
@@ -18,6 +20,12 @@ fn scene(name: &str, w: u32, h: u32, spp: u32) -> Scene {
 fn adaptive(name: &str, w: u32, h: u32, spp: u32, threshold: f64) -> Scene {
     let mut s = scene(name, w, h, spp);
     s.settings.adaptive = Some(Adaptive::threshold(threshold));
+    s
+}
+
+fn corners(name: &str, w: u32, h: u32, spp: u32, threshold: f64) -> Scene {
+    let mut s = scene(name, w, h, spp);
+    s.settings.adaptive = Some(Adaptive { method: AdaptiveMethod::Corners, ..Adaptive::threshold(threshold) });
     s
 }
 
@@ -115,17 +123,59 @@ fn adaptive_sampling_keeps_the_error_of_all_the_samples_for_fewer_rays() {
 #[test]
 fn adaptive_packets_give_the_bits_of_one_ray_at_a_time() {
     // Packets where all four pixels go on, single rays for the lanes that do where not all do.
-    let s = adaptive("combined.toml", 40, 30, 16, 0.2);
-    let full = Window::full(40, 30);
-    let packets = Renderer::new(&s).render_window(Aov::Shaded, full.clone(), &|| {});
-    for other in [Renderer::new(&s).without_packets(), Renderer::new(&s).without_avx2()] {
-        assert!(other.render_window(Aov::Shaded, full.clone(), &|| {}).pixels == packets.pixels);
+    for s in [adaptive("combined.toml", 40, 30, 16, 0.2), corners("combined.toml", 40, 30, 16, 0.2)] {
+        let full = Window::full(40, 30);
+        let packets = Renderer::new(&s).render_window(Aov::Shaded, full.clone(), &|| {});
+        for other in [Renderer::new(&s).without_packets(), Renderer::new(&s).without_avx2()] {
+            assert!(other.render_window(Aov::Shaded, full.clone(), &|| {}).pixels == packets.pixels);
+        }
     }
 }
 
 #[test]
+fn corners_trace_each_corner_once_and_cut_only_where_corners_differ() {
+    let (w, h) = (48, 36);
+    let full = Window::full(w, h);
+    // Nothing exceeds the greatest contrast, 3: one ray a corner, each pixel its corners'
+    // mean; with no lens or area light a point's value does not depend on the grid, so any
+    // spp gives the same bits.
+    let (flat, rays) = rendered(&corners("combined.toml", w, h, 16, 3.0), full.clone(), 2);
+    assert_eq!(rays, u64::from((w + 1) * (h + 1)));
+    assert!(flat.pixels == rendered(&corners("combined.toml", w, h, 64, 3.0), full.clone(), 2).0.pixels);
+    // A lower threshold cuts more squares; spp 16 cuts twice, so at most 5 × 5 points a pixel.
+    let counts: Vec<u64> =
+        [0.3, 0.1, 0.0].iter().map(|&t| rendered(&corners("combined.toml", w, h, 16, t), full.clone(), 2).1).collect();
+    println!("primary rays at thresholds 0.3, 0.1, 0: {counts:?}");
+    assert!(rays < counts[0] && counts[0] < counts[1] && counts[1] <= counts[2], "{counts:?}");
+    assert!(counts[2] <= u64::from(w * h * 25), "{counts:?}");
+}
+
+#[test]
+fn corners_keep_the_error_of_all_the_samples_for_fewer_rays() {
+    let (w, h) = (64, 48);
+    let full = Window::full(w, h);
+    let reference = render(&scene("combined.toml", w, h, 256), full.clone(), 2);
+    let error = |s: &Scene| {
+        let (film, rays) = rendered(s, full.clone(), 2);
+        (rms(&film, &reference), rays)
+    };
+    let ((e1, rays1), (e16, rays16)) =
+        (error(&scene("combined.toml", w, h, 1)), error(&scene("combined.toml", w, h, 16)));
+    let (e, rays) = error(&corners("combined.toml", w, h, 16, 0.1));
+    println!(
+        "rms against 256 spp, primary rays: 1 spp {e1:.2e} {rays1}, 16 spp {e16:.2e} {rays16}, corners 0.1 {e:.2e} {rays}"
+    );
+    assert!(e < 1.5 * e16 && 4 * rays < rays16, "nearly the error of 16 samples for under a quarter of the rays");
+    assert!(e < 0.5 * e1, "under half the error of one sample a pixel");
+}
+
+#[test]
 fn the_same_bytes_on_any_thread_count() {
-    for s in [scene("combined.toml", 40, 30, 4), adaptive("combined.toml", 40, 30, 16, 0.2)] {
+    for s in [
+        scene("combined.toml", 40, 30, 4),
+        adaptive("combined.toml", 40, 30, 16, 0.2),
+        corners("combined.toml", 40, 30, 16, 0.2),
+    ] {
         let one = render(&s, Window::full(40, 30), 1);
         let two = render(&s, Window::full(40, 30), 2);
         assert_eq!(one.to_rgb8(s.settings.encoding).into_raw(), two.to_rgb8(s.settings.encoding).into_raw());
@@ -138,6 +188,7 @@ fn crop_windows_assemble_into_the_frame_byte_for_byte() {
     let (w, h) = (41, 29);
     crop_windows_assemble(&scene("combined.toml", w, h, 4));
     crop_windows_assemble(&adaptive("combined.toml", w, h, 16, 0.2));
+    crop_windows_assemble(&corners("combined.toml", w, h, 16, 0.2));
 }
 
 fn crop_windows_assemble(s: &Scene) {

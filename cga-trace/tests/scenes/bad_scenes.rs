@@ -179,6 +179,11 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:7:", "adaptive", "min_spp must be 1 to 4096"],
         ),
         (
+            "adaptive by an unknown method",
+            format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, method = \"edges\" }}\n"),
+            vec!["bad.toml:7:", "adaptive method `edges`", "corners"],
+        ),
+        (
             "adaptive with an unknown field",
             format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, first = 4 }}\n"),
             vec!["bad.toml:7:", "adaptive", "`first`", "min_spp"],
