@@ -3,9 +3,10 @@
 //! flat picture costs one ray a pixel; a square whose corners differ is cut into four.
 //!
 //! Every point lies on a grid of `n = 2^L` steps a pixel side (`L = ⌊log₄ spp⌋` cuts), and is
-//! traced, lens and light points included, by its place on that grid alone: a point on an
-//! edge that two pixels both cut is traced by each, with the same bits. Any thread count or
-//! crop window gives the same bytes.
+//! traced, lens and light points included, by its place on that grid alone, so any thread
+//! count or crop window gives the same bytes. A pixel takes the points its left-hand
+//! neighbour traced on their shared edge; one on an edge shared with the row above or below
+//! (rows run in parallel) is traced by each pixel that needs it, with the same bits.
 //!
 //! [`AdaptiveMethod::Corners`]: crate::settings::AdaptiveMethod::Corners
 
@@ -42,7 +43,7 @@ impl<B: Backend> Renderer<'_, B> {
                 let mut cast = RayCounts::default();
                 let mut cut = Cut::new(levels);
                 for (p, i) in row.iter_mut().zip(window.columns.clone()) {
-                    cut.start([at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)]);
+                    cut.start([at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)], i > window.columns.start);
                     *p = self.square::<K>(a, &mut cut, (i, j), (0, 0), 1 << levels, levels, &mut cast);
                 }
                 self.count(&cast);
@@ -137,7 +138,8 @@ fn mean<P: Channels>(values: [P; 4]) -> P {
 }
 
 /// One pixel's points on the fine grid of `n = 2^levels` steps a side, as traced so far: a
-/// value and the pixel it was traced for, so that starting the next pixel clears nothing.
+/// value and the pixel it was traced for (numbered from 2; 1 is no pixel, 0 nothing
+/// traced), so that starting the next pixel clears nothing.
 struct Cut<P> {
     levels: u32,
     n: u32,
@@ -148,13 +150,23 @@ struct Cut<P> {
 impl<P: Copy + Default> Cut<P> {
     fn new(levels: u32) -> Self {
         let n = 1 << levels;
-        Cut { levels, n, values: vec![(0, P::default()); ((n + 1) * (n + 1)) as usize], pixel: 0 }
+        Cut { levels, n, values: vec![(0, P::default()); ((n + 1) * (n + 1)) as usize], pixel: 1 }
     }
 
-    /// A new pixel, with its corners' values (at `(0, 0)`, `(n, 0)`, `(0, n)`, `(n, n)`).
-    fn start(&mut self, corners: [P; 4]) {
+    /// A new pixel, with its corners' values (at `(0, 0)`, `(n, 0)`, `(0, n)`, `(n, n)`);
+    /// where it is the last one's right-hand neighbour (`beside`), the points the last one
+    /// traced on their shared edge carry over (the same places: the same bits).
+    fn start(&mut self, corners: [P; 4], beside: bool) {
+        let (last, n) = (self.pixel, self.n);
         self.pixel += 1;
-        let n = self.n;
+        if beside {
+            for y in 1..n {
+                let (stamp, v) = self.values[self.index((n, y))];
+                if stamp == last {
+                    self.set((0, y), v);
+                }
+            }
+        }
         for (p, v) in [(0, 0), (n, 0), (0, n), (n, n)].into_iter().zip(corners) {
             self.set(p, v);
         }
@@ -185,12 +197,19 @@ mod tests {
     #[test]
     fn a_new_pixel_forgets_the_last_ones_points_without_clearing() {
         let mut cut = Cut::<[f64; 3]>::new(2);
-        cut.start([[1.0; 3], [2.0; 3], [3.0; 3], [4.0; 3]]);
-        assert!(cut.has((0, 0)) && cut.has((4, 4)) && !cut.has((2, 2)));
+        cut.start([[1.0; 3], [2.0; 3], [3.0; 3], [4.0; 3]], true);
+        assert!(cut.has((0, 0)) && cut.has((4, 4)) && !cut.has((2, 2)) && !cut.has((0, 2)));
         cut.set((2, 2), [5.0; 3]);
+        cut.set((4, 1), [6.0; 3]);
         assert_eq!((cut.get((4, 0)), cut.get((2, 2))), ([2.0; 3], [5.0; 3]));
-        cut.start([[0.0; 3]; 4]);
-        assert!(!cut.has((2, 2)) && cut.has((0, 4)));
+        // The right-hand neighbour keeps the shared edge's points, and only those.
+        cut.start([[0.0; 3]; 4], true);
+        assert!(!cut.has((2, 2)) && cut.has((0, 4)) && !cut.has((4, 1)));
+        assert!(cut.has((0, 1)) && cut.get((0, 1)) == [6.0; 3] && !cut.has((0, 2)));
+        // A pixel that is not beside the last keeps nothing of it.
+        cut.set((4, 3), [7.0; 3]);
+        cut.start([[0.0; 3]; 4], false);
+        assert!(!cut.has((0, 3)) && !cut.has((0, 1)));
     }
 
     #[test]
