@@ -85,13 +85,18 @@ impl<B: Backend> Renderer<'_, B> {
             return mean(c);
         }
         let h = size / 2;
-        let new = [(x + h, y), (x, y + h), (x + h, y + h), (x + size, y + h), (x + h, y + size)];
-        let missing: Vec<Point> = new.into_iter().filter(|&p| !cut.has(p)).collect();
-        let base = (pixel.0 * cut.n, pixel.1 * cut.n);
-        let absolute: Vec<Point> = missing.iter().map(|&(px, py)| (base.0 + px, base.1 + py)).collect();
+        // The edges' midpoints and the centre not yet traced, on the stack: this runs for
+        // every cut square.
+        let (mut missing, mut absolute, mut count) = ([(0, 0); 5], [(0, 0); 5], 0);
+        for p in [(x + h, y), (x, y + h), (x + h, y + h), (x + size, y + h), (x + h, y + size)] {
+            if !cut.has(p) {
+                (missing[count], absolute[count]) = (p, (pixel.0 * cut.n + p.0, pixel.1 * cut.n + p.1));
+                count += 1;
+            }
+        }
         let mut values = [K::Pixel::default(); 5];
-        self.trace_points::<K>(cut.levels, &absolute, &mut values[..missing.len()], cast);
-        for (&p, &v) in missing.iter().zip(&values) {
+        self.trace_points::<K>(cut.levels, &absolute[..count], &mut values[..count], cast);
+        for (&p, &v) in missing[..count].iter().zip(&values) {
             cut.set(p, v);
         }
         let quarters = [(x, y), (x + h, y), (x, y + h), (x + h, y + h)];

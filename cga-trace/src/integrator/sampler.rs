@@ -115,14 +115,19 @@ impl<B: Backend> Renderer<'_, B> {
         aov: Aov,
         cast: &mut RayCounts,
     ) -> Option<[K::Pixel; W]> {
+        let (u, v, keys) = self.placed(samples);
+        self.points::<R, W, K>(u, v, keys, aov, cast)
+    }
+
+    /// Where the samples `[i, j, s]` fall, and their keys.
+    fn placed<const W: usize>(&self, samples: [[u32; 3]; W]) -> ([f64; W], [f64; W], [SampleKey; W]) {
         let spp = self.scene.settings.spp.max(1);
         let (mut u, mut v) = ([0.0; W], [0.0; W]);
         for (k, &[i, j, s]) in samples.iter().enumerate() {
             let (du, dv) = if spp == 1 { (0.5, 0.5) } else { sample_offset(i, j, s) };
             (u[k], v[k]) = (f64::from(i) + du, f64::from(j) + dv);
         }
-        let keys = samples.map(|[i, j, s]| SampleKey::new(i, j, s, spp));
-        self.points::<R, W, K>(u, v, keys, aov, cast)
+        (u, v, samples.map(|[i, j, s]| SampleKey::new(i, j, s, spp)))
     }
 
     /// The values of `W` samples seen at continuous pixel coordinates `(u_k, v_k)`, each
@@ -171,20 +176,10 @@ impl<B: Backend> Renderer<'_, B> {
         self.points::<Packet<B, Ymm>, 4, K>(u, v, keys, Aov::Shaded, cast)
     }
 
-    /// [`Renderer::listed`] four at a time through packets ([`Renderer::pixels4`]).
+    /// [`Renderer::listed`] four at a time through packets ([`Renderer::points4`]).
     pub(super) fn listed4<K: Keep>(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[K::Pixel; 4]> {
-        #[cfg(target_arch = "x86_64")]
-        if self.avx2 && avx2() {
-            // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.listed4_avx2::<K>(samples, cast) };
-        }
-        self.listed::<Packet<B>, 4, K>(samples, Aov::Shaded, cast)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn listed4_avx2<K: Keep>(&self, samples: [[u32; 3]; 4], cast: &mut RayCounts) -> Option<[K::Pixel; 4]> {
-        self.listed::<Packet<B, Ymm>, 4, K>(samples, Aov::Shaded, cast)
+        let (u, v, keys) = self.placed(samples);
+        self.points4::<K>(u, v, keys, cast)
     }
 
     /// Sample `s` of the `W` pixels `(i₀ + k, j)`, seen at `(u_k, v_k)`, added to `taken`.
