@@ -22,6 +22,10 @@ pub const MAX_DEPTH: u32 = 1024;
 /// Samples per pixel (`--spp`, `spp`).
 pub const MAX_SPP: u32 = 4096;
 
+/// Lens rays a sample takes (`--blur-samples`, `blur_samples`): with [`MAX_SPP`], at most
+/// 2²⁰ camera rays a pixel.
+pub const MAX_BLUR_SAMPLES: u32 = 256;
+
 /// Objects in a scene.
 pub const MAX_OBJECTS: usize = 1 << 20;
 

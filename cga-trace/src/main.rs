@@ -79,6 +79,12 @@ struct Render {
     /// Samples per pixel, stratified (overrides the scene; 1 = the pixel centre).
     #[arg(long)]
     spp: Option<u32>,
+    /// Camera rays each sample averages through a thin lens, POV-Ray's blur_samples, 1 to 256
+    /// (overrides the scene; default 1): the lens is sampled that many times as finely, and
+    /// adaptive sampling (--adaptive-method corners above all) compares the samples' means, so
+    /// a blur's noise is not taken for an edge. A pinhole camera takes one ray.
+    #[arg(long, value_name = "M")]
+    blur_samples: Option<u32>,
     /// Adaptive anti-aliasing, POV-Ray's +A: --spp becomes a maximum, taken only by pixels
     /// whose first 4 samples (--adaptive-min), or whose mean against a neighbour's, differ by
     /// more than this contrast (Σ over R, G, B of the differences of what a PNG shows, 0 to 3;
@@ -427,6 +433,7 @@ fn view(args: &Render) -> View {
         height: args.height,
         fov: args.fov,
         spp: args.spp,
+        blur_samples: args.blur_samples,
         adaptive: args.adaptive,
         adaptive_min: args.adaptive_min,
         adaptive_method: args.adaptive_method,
@@ -442,9 +449,10 @@ fn flagged(e: RenderError) -> anyhow::Error {
     let (flag, inner): (&str, anyhow::Error) = match e {
         RenderError::View(ViewError::Fov(e)) => ("--fov", e.into()),
         RenderError::View(ViewError::Size(e)) => ("--width/--height", e.into()),
-        RenderError::View(ViewError::Settings(e)) => {
-            ("--max-depth/--spp/--adaptive/--adaptive-min/--adaptive-method/--exposure/--background", e.into())
-        }
+        RenderError::View(ViewError::Settings(e)) => (
+            "--max-depth/--spp/--blur-samples/--adaptive/--adaptive-min/--adaptive-method/--exposure/--background",
+            e.into(),
+        ),
         RenderError::Crop(e) => ("--crop", anyhow::Error::msg(e)),
         RenderError::Backend(e) => ("--backend", anyhow::Error::msg(e)),
         e => return e.into(),

@@ -51,6 +51,8 @@ pub struct View {
     pub adaptive_min: Option<u32>,
     /// Adaptive sampling's method (with the scene's threshold, or 0.3 where it gives none).
     pub adaptive_method: Option<AdaptiveMethod>,
+    /// Camera rays a sample averages through a thin lens ([`crate::settings::Settings::blur_samples`]).
+    pub blur_samples: Option<u32>,
     /// Reflection depth.
     pub max_depth: Option<u32>,
     /// Exposure of PNG output in stops.
@@ -72,6 +74,7 @@ impl View {
         let s = &mut scene.settings;
         s.max_depth = self.max_depth.unwrap_or(s.max_depth);
         s.spp = self.spp.unwrap_or(s.spp);
+        s.blur_samples = self.blur_samples.unwrap_or(s.blur_samples);
         if self.adaptive.is_some() || self.adaptive_min.is_some() || self.adaptive_method.is_some() {
             let given = s.adaptive.unwrap_or(Adaptive::threshold(Adaptive::THRESHOLD));
             s.adaptive = Some(Adaptive {

@@ -80,7 +80,18 @@ impl Scene {
             .into_iter()
             .chain(dark)
             .chain(self.adaptive_note())
+            .chain(self.blur_note())
             .collect()
+    }
+
+    /// Why `blur_samples` above 1 changes nothing: the camera has no lens.
+    fn blur_note(&self) -> Option<String> {
+        let m = self.settings.blur_samples;
+        (m > 1 && !matches!(self.camera.lens, Lens::Thin { .. })).then(|| {
+            format!(
+                "blur_samples ({m}) averages rays through a lens, and this camera has none: each sample takes one ray; give the camera an aperture"
+            )
+        })
     }
 
     /// Why adaptive sampling, where set, takes every sample: a shutter, or `spp` not above

@@ -3,7 +3,7 @@
 
 pub use crate::film::{Encoding, ToneMap};
 use crate::invalid::Invalid;
-use crate::limits::{MAX_DEPTH, MAX_SPP};
+use crate::limits::{MAX_BLUR_SAMPLES, MAX_DEPTH, MAX_SPP};
 use crate::surface::Method;
 
 /// How a hit's mirror reflection adds to its own colour.
@@ -123,6 +123,13 @@ pub struct Settings {
     pub spp: u32,
     /// Adaptive anti-aliasing (`None`: every pixel takes `spp` samples).
     pub adaptive: Option<Adaptive>,
+    /// Camera rays each sample averages through a thin lens, POV-Ray's `blur_samples`: ray
+    /// `r` of `m` of sample `s` of `spp` takes lens point number `s m + r` of the pixel's
+    /// `spp · m` stratified ones, so the lens is sampled `m` times as finely while adaptive
+    /// sampling compares the samples' means (a blur's noise then no longer looks like an
+    /// edge). 1 to [`MAX_BLUR_SAMPLES`]; a pinhole or orthographic camera, and an AOV, take
+    /// one ray a sample.
+    pub blur_samples: u32,
     /// Colour of rays that hit nothing (black where `transparent`).
     pub background: [f64; 3],
     /// Camera rays that meet nothing are transparent (`background = "transparent"`): the
@@ -160,6 +167,7 @@ impl Default for Settings {
             max_depth: 5,
             spp: 1,
             adaptive: None,
+            blur_samples: 1,
             background: [0.0; 3],
             transparent: false,
             ambient: 0.3,
@@ -212,6 +220,9 @@ impl Settings {
         }
         if !(1..=MAX_SPP).contains(&s.spp) {
             return Err(Invalid::Value("spp (samples per pixel) must be 1 to 4096"));
+        }
+        if !(1..=MAX_BLUR_SAMPLES).contains(&s.blur_samples) {
+            return Err(Invalid::Value("blur_samples (lens rays a sample) must be 1 to 256"));
         }
         if let Some(a) = &s.adaptive {
             a.check()?;

@@ -78,7 +78,8 @@ impl Scene {
     /// The scene's picture: the scene's own size and settings unless given. `aov` is one of
     /// shaded, normal, alpha, gaussian, mean, k1, k2, postulate, coverage; `backend` sparse, dense or
     /// plain; `crop` four fractions `[x0, x1, y0, y1]` (y from the top); `time` the motion's
-    /// time in [0, 1]; `adaptive` a contrast threshold (POV-Ray's `+A`, 0 to 3) that makes
+    /// time in [0, 1]; `blur_samples` the camera rays each sample averages through a thin lens
+    /// (POV-Ray's `blur_samples`, 1 to 256); `adaptive` a contrast threshold (POV-Ray's `+A`, 0 to 3) that makes
     /// `spp` a maximum, taken only where a pixel's first samples (`adaptive_min`, default 4;
     /// given alone, it turns adaptive sampling on at the scene's threshold or 0.3) or its
     /// neighbours' differ by more; `adaptive_method` `"samples"` (that) or `"corners"`
@@ -86,7 +87,7 @@ impl Scene {
     /// whose corners differ cut in four, down to log₄ `spp` levels); `background` `"transparent"` (the picture is RGBA, alpha
     /// each pixel's coverage), a colour name or `"#rrggbb"`, or linear `[r, g, b]`, in place of
     /// the scene's.
-    #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, adaptive = None, adaptive_min = None, adaptive_method = None, max_depth = None,
+    #[pyo3(signature = (*, width = None, height = None, fov = None, spp = None, blur_samples = None, adaptive = None, adaptive_min = None, adaptive_method = None, max_depth = None,
         exposure = None, tone_map = None, time = 0.0, aov = "shaded", backend = "sparse", crop = None, labels = true, background = None))]
     #[allow(clippy::too_many_arguments)]
     fn render(
@@ -96,6 +97,7 @@ impl Scene {
         height: Option<u32>,
         fov: Option<f64>,
         spp: Option<u32>,
+        blur_samples: Option<u32>,
         adaptive: Option<f64>,
         adaptive_min: Option<u32>,
         adaptive_method: Option<&str>,
@@ -124,6 +126,7 @@ impl Scene {
             height,
             fov,
             spp,
+            blur_samples,
             adaptive,
             adaptive_min,
             adaptive_method,

@@ -185,3 +185,18 @@ def test_scenes_and_figures_take_a_transparent_background():
     # The label is opaque where drawn: pixels outside the sphere's coverage with alpha 255.
     assert np.count_nonzero((drawn.coverage == 0) & (srgb[..., 3] == 255)) > 10
     assert cga.draw([sphere], width=16, height=12).srgb.shape == (12, 16, 3)
+
+
+@pytest.mark.skipif(not os.path.isdir(SCENES), reason="the repository's shipped scenes")
+def test_blur_samples_average_lens_rays_per_sample():
+    scene = cga.Scene.load(os.path.join(SCENES, "lens.toml"))
+    reference = scene.render(width=48, spp=256).linear
+    one = scene.render(width=48, spp=4, adaptive=0.3, adaptive_method="corners")
+    blurred = scene.render(width=48, spp=4, adaptive=0.3, adaptive_method="corners", blur_samples=16)
+    # Each corner the mean of 16 lens rays: a blur is no longer noise that cuts every square.
+    assert np.sqrt(np.mean((blurred.linear - reference) ** 2)) < 0.5 * np.sqrt(np.mean((one.linear - reference) ** 2))
+    # Plain samples: 4 samples of 4 lens rays cast the camera rays of 16 samples.
+    assert scene.render(width=48, spp=4, blur_samples=4).rays[0] == scene.render(width=48, spp=16).rays[0]
+    for bad in (0, 257):
+        with pytest.raises(cga.ValueError, match="blur_samples"):
+            scene.render(width=48, blur_samples=bad)

@@ -208,6 +208,7 @@ class Scene:
         height: Optional[int] = None,
         fov: Optional[float] = None,
         spp: Optional[int] = None,
+        blur_samples: Optional[int] = None,
         adaptive: Optional[float] = None,
         adaptive_min: Optional[int] = None,
         adaptive_method: Optional[str] = None,

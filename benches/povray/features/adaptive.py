@@ -50,6 +50,9 @@ MINS = [1, 2, 4]  # --adaptive-min: the first samples every pixel takes
 # log4(spp) times, so only spp 4, 16 and 64 are distinct.
 SETTINGS = [(None, None)] + [(t, m) for t in THRESHOLDS for m in MINS] + [(t, "corners") for t in THRESHOLDS]
 CORNER_SPPS = [4, 16, 64]
+# Scenes with a lens also sweep corners whose every point is the mean of B lens rays
+# (--blur-samples B, POV-Ray's blur_samples): (threshold, "corners/bB").
+BLUR = {"lens": [8, 16]}
 
 Image.MAX_IMAGE_PIXELS = None  # the POV-Ray reference is K^2 times the picture
 
@@ -85,12 +88,14 @@ def adaptive_flags(setting):
         return []
     if m == "corners":
         return ["--adaptive", str(t), "--adaptive-method", "corners"]
+    if str(m).startswith("corners/b"):
+        return ["--adaptive", str(t), "--adaptive-method", "corners", "--blur-samples", m[len("corners/b"):]]
     return ["--adaptive", str(t), "--adaptive-min", str(m)]
 
 
 def runs(spp, setting):
     """Whether the sweep renders this setting at this spp (corners only where log4 differs)."""
-    return setting[1] != "corners" or spp in CORNER_SPPS
+    return not str(setting[1]).startswith("corners") or spp in CORNER_SPPS
 
 
 def load(path):
@@ -181,13 +186,14 @@ def main():
     elif "--adaptive-method" not in help_text:
         print("warning: this cga-trace has no --adaptive-method: sweeping adaptive samples only")
         settings = [s for s in settings if s[1] != "corners"]
+    blur = "--blur-samples" in help_text
 
     print(f"machine: {machine()}; one thread each, CPU time = user + sys of the child, "
           f"median of {args.rounds} interleaved rounds; {w}x{h}; images in {out}"
           + ("" if args.out else " (removed at the end)"))
     print("POV-Ray: " + " ".join(pov_cmd("SCENE", "OUT.png", w, h, ["FLAGS"])).replace(HERE, "$HERE"))
     print("ours:    " + " ".join(ours_cmd(binary, "SCENE", "OUT.png", w, h, "N", (None, None))).replace(HERE, "$HERE")
-          + " [--adaptive T --adaptive-min M | --adaptive T --adaptive-method corners]")
+          + " [--adaptive T --adaptive-min M | --adaptive T --adaptive-method corners [--blur-samples B]]")
     print(f"error: RMSE in 8-bit levels against the renderer's own reference ($HERE = {HERE})")
     print("references:")
 
@@ -198,11 +204,13 @@ def main():
         # jobs: key -> (command, its picture, its renderer's reference); each round runs POV-Ray's
         # settings and then ours, so that a slow spell of the machine falls on both
         jobs = {}
+        scene_settings = settings + [(t, f"corners/b{b}") for b in (BLUR.get(scene, []) if blur else [])
+                                     for t in THRESHOLDS]
         for name, pov_flags in POV_AA.items():
             png = f"{out}/{scene}-pov{''.join(pov_flags).replace('+', '_')}.png"
             jobs[("pov", name)] = (pov_cmd(scene, png, w, h, pov_flags), png, pov_ref)
         for spp in SPPS:
-            for setting in filter(lambda st: runs(spp, st), settings):
+            for setting in filter(lambda st: runs(spp, st), scene_settings):
                 png = f"{out}/{scene}-ours-spp{spp}-t{setting[0]}-m{setting[1]}.png"
                 jobs[("ours", spp, setting)] = (ours_cmd(binary, scene, png, w, h, spp, setting), png, our_ref)
         times = {key: [] for key in jobs}
@@ -217,7 +225,7 @@ def main():
             if ok:
                 otime, key = min(ok, key=lambda tk: tk[0])
                 setting = " ".join([f"--spp {key[1]}", *adaptive_flags(key[2])]).replace("--adaptive-min", "-min")
-                setting = setting.replace("--adaptive-method corners", "corners")
+                setting = setting.replace("--adaptive-method corners", "corners").replace("--blur-samples", "blur")
                 summary.append((scene, name, perr, ptime, setting, res[key][0], otime, ptime / otime))
             else:
                 summary.append((scene, name, perr, ptime, "none reaches it", float("nan"), float("nan"), float("nan")))
@@ -230,10 +238,11 @@ def main():
     print("\nour sweep: error (8-bit RMSE) / CPU s; columns: --adaptive threshold/--adaptive-min, or "
           "threshold/corners (none = plain --spp; - = not run)")
     for scene, res in sweeps.items():
-        print(f"{scene:10}" + "".join(f"{'none' if t is None else f'{t}/{m}':>15}" for t, m in settings))
+        columns = list(dict.fromkeys(key[2] for key in res if key[0] == "ours"))
+        print(f"{scene:10}" + "".join(f"{'none' if t is None else f'{t}/{m}':>15}" for t, m in columns))
         for spp in SPPS:
             cells = (f"{res[('ours', spp, st)][0]:7.2f}/{res[('ours', spp, st)][1]:<7.3f}"
-                     if ('ours', spp, st) in res else f"{'-':>15}" for st in settings)
+                     if ('ours', spp, st) in res else f"{'-':>15}" for st in columns)
             print(f"  spp {spp:<4}" + "".join(cells))
     if not args.out:
         shutil.rmtree(out)

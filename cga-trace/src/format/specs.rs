@@ -4,6 +4,7 @@
 //! [`Material::new`]), so that no default is written twice.
 
 use super::numbers::{numbers, some_number, some_numbers};
+use crate::limits::MAX_BLUR_SAMPLES;
 use crate::material::Material;
 use crate::settings::{Adaptive, AdaptiveMethod, Background, Encoding, Reflection, Settings, ToneMap};
 use crate::surface::Method;
@@ -18,6 +19,7 @@ pub(crate) struct SettingsSpec {
     max_depth: Option<u32>,
     spp: Option<u32>,
     adaptive: Option<AdaptiveSpec>,
+    blur_samples: Option<BlurSpec>,
     background: Option<BackgroundSpec>,
     #[serde(default, deserialize_with = "some_number")]
     ambient: Option<f64>,
@@ -73,6 +75,21 @@ impl<'de> Deserialize<'de> for AdaptiveSpec {
         let a = d.deserialize_any(Spec)?;
         a.check().map_err(D::Error::custom)?;
         Ok(AdaptiveSpec(a))
+    }
+}
+
+/// `blur_samples = M`, checked as read (so that an error names its line).
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(try_from = "u32")]
+struct BlurSpec(u32);
+
+impl TryFrom<u32> for BlurSpec {
+    type Error = &'static str;
+    fn try_from(m: u32) -> Result<Self, Self::Error> {
+        match m {
+            1..=MAX_BLUR_SAMPLES => Ok(BlurSpec(m)),
+            _ => Err("blur_samples (lens rays a sample) must be 1 to 256"),
+        }
     }
 }
 
@@ -150,6 +167,7 @@ impl From<SettingsSpec> for Settings {
             max_depth: s.max_depth.unwrap_or(d.max_depth),
             spp: s.spp.unwrap_or(d.spp),
             adaptive: s.adaptive.map(|a| a.0).or(d.adaptive),
+            blur_samples: s.blur_samples.map_or(d.blur_samples, |b| b.0),
             background: d.background,
             transparent: d.transparent,
             ambient: s.ambient.unwrap_or(d.ambient),

@@ -17,14 +17,15 @@ pub(crate) trait Keep: Copy + Default + Send + Sync {
     /// Whether it keeps the coverage: only then is it found (`Renderer::trace_met`).
     const COVERS: bool;
 
-    /// Adds a sample: its colour, and whether its camera ray met anything.
-    fn add(&mut self, colour: [f64; 3], met: bool);
+    /// Adds a sample: its colour (premultiplied by its coverage where `K` keeps that), and the
+    /// fraction of its camera rays that met anything (0 or 1 for one ray).
+    fn add(&mut self, colour: [f64; 3], coverage: f64);
 
     /// The mean of the samples taken.
     fn pixel(&self) -> Self::Pixel;
 
     /// Each of `W` samples' value, as [`Keep::pixel`] of it alone.
-    fn samples<const W: usize>(colours: [[f64; 3]; W], met: [bool; W]) -> [Self::Pixel; W];
+    fn samples<const W: usize>(colours: [[f64; 3]; W], coverage: [f64; W]) -> [Self::Pixel; W];
 
     /// A pixel where the camera forms no ray: the background (nothing, where transparent).
     fn empty(background: [f64; 3]) -> Self::Pixel;
@@ -90,7 +91,7 @@ impl Keep for Taken {
     const COVERS: bool = false;
 
     #[inline(always)]
-    fn add(&mut self, colour: [f64; 3], _: bool) {
+    fn add(&mut self, colour: [f64; 3], _: f64) {
         self.add_colour(colour);
     }
 
@@ -100,7 +101,7 @@ impl Keep for Taken {
     }
 
     #[inline(always)]
-    fn samples<const W: usize>(colours: [[f64; 3]; W], _: [bool; W]) -> [[f64; 3]; W] {
+    fn samples<const W: usize>(colours: [[f64; 3]; W], _: [f64; W]) -> [[f64; 3]; W] {
         colours
     }
 
@@ -118,11 +119,12 @@ impl Keep for Taken {
 }
 
 /// A pixel's samples over a transparent background: their colours, a miss's as nothing (so the
-/// mean is premultiplied by the coverage), and how many of them met something.
+/// mean is premultiplied by the coverage), and the sum of their coverages (how many of them
+/// met something, for one camera ray a sample).
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Covered {
     taken: Taken,
-    met: u32,
+    coverage: f64,
 }
 
 impl Keep for Covered {
@@ -130,24 +132,22 @@ impl Keep for Covered {
     const COVERS: bool = true;
 
     #[inline(always)]
-    fn add(&mut self, colour: [f64; 3], met: bool) {
-        // A camera ray that meets nothing sees through the picture: the environment it would
-        // show is not there.
-        self.taken.add_colour(if met { colour } else { [0.0; 3] });
-        self.met += u32::from(met);
+    fn add(&mut self, colour: [f64; 3], coverage: f64) {
+        self.taken.add_colour(colour);
+        self.coverage += coverage;
     }
 
     #[inline(always)]
     fn pixel(&self) -> [f64; 4] {
         let [r, g, b] = self.taken.mean();
-        [r, g, b, f64::from(self.met) / f64::from(self.taken.n.max(1))]
+        [r, g, b, self.coverage / f64::from(self.taken.n.max(1))]
     }
 
     #[inline(always)]
-    fn samples<const W: usize>(colours: [[f64; 3]; W], met: [bool; W]) -> [[f64; 4]; W] {
+    fn samples<const W: usize>(colours: [[f64; 3]; W], coverage: [f64; W]) -> [[f64; 4]; W] {
         core::array::from_fn(|k| {
             let mut one = Covered::default();
-            one.add(colours[k], met[k]);
+            one.add(colours[k], coverage[k]);
             one.pixel()
         })
     }
@@ -160,7 +160,7 @@ impl Keep for Covered {
     /// samples both met something and missed (an edge against nothing is an edge, whatever
     /// the colour).
     fn contrast(&self, shown: Shown) -> f64 {
-        let mixed = self.met > 0 && self.met < self.taken.n;
+        let mixed = self.coverage > 0.0 && self.coverage < f64::from(self.taken.n);
         self.taken.contrast(shown) + if mixed { 1.0 } else { 0.0 }
     }
 

@@ -143,9 +143,9 @@ impl<B: Backend> Renderer<'_, B> {
         cast: &mut RayCounts,
     ) -> Option<[K::Pixel; W]> {
         let mut counted = RayCounts::default();
-        let (colours, met) = self.samples::<R, W, K>(u, v, keys, aov, &mut counted)?;
+        let (colours, coverage) = self.samples::<R, W, K>(u, v, keys, aov, &mut counted)?;
         cast.add(&counted);
-        Some(K::samples(colours, met))
+        Some(K::samples(colours, coverage))
     }
 
     /// [`Renderer::points`] of the shaded picture four at a time through packets.
@@ -195,16 +195,19 @@ impl<B: Backend> Renderer<'_, B> {
     ) -> Option<()> {
         let spp = self.scene.settings.spp.max(1);
         let keys = core::array::from_fn(|k| SampleKey::new(i0 + k as u32, j, s, spp));
-        let (colours, met) = self.samples::<R, W, K>(u, v, keys, aov, counted)?;
-        for ((taken, c), met) in taken.iter_mut().zip(colours).zip(met) {
-            taken.add(c, met);
+        let (colours, coverage) = self.samples::<R, W, K>(u, v, keys, aov, counted)?;
+        for ((taken, c), coverage) in taken.iter_mut().zip(colours).zip(coverage) {
+            taken.add(c, coverage);
         }
         Some(())
     }
 
     /// The colours (or AOVs, lane by lane) seen at continuous pixel coordinates
-    /// `(u_k, v_k)` by the samples `keys`, and whether each camera ray met anything where `K`
-    /// keeps it (an AOV's rays count as met: AOV pictures are opaque).
+    /// `(u_k, v_k)` by the samples `keys`, and the fraction of each one's camera rays that met
+    /// anything where `K` keeps it (an AOV's rays count as met: AOV pictures are opaque); a
+    /// miss adds nothing to a colour `K` keeps the coverage of, as the environment it would
+    /// show is not there. Through a thin lens, each sample is the mean of the scene's
+    /// `blur_samples` rays ([`SampleKey::lens_ray`]).
     #[inline(always)]
     fn samples<R: RayLanes<B, W>, const W: usize, K: Keep>(
         &self,
@@ -213,7 +216,7 @@ impl<B: Backend> Renderer<'_, B> {
         keys: [SampleKey; W],
         aov: Aov,
         cast: &mut RayCounts,
-    ) -> Option<([[f64; 3]; W], [bool; W])> {
+    ) -> Option<([[f64; 3]; W], [f64; W])> {
         if aov != Aov::Shaded {
             let mut out = [[0.0; 3]; W];
             for l in 0..W {
@@ -221,11 +224,31 @@ impl<B: Backend> Renderer<'_, B> {
                 cast.primary += 1;
                 out[l] = self.aov(&ray, aov);
             }
-            return Some((out, [true; W]));
+            return Some((out, [1.0; W]));
         }
-        let rays = self.camera_rays::<R, W>(u, v, &keys)?;
-        cast.primary += W as u64;
-        Some(self.trace_met::<R, W, K>(rays, 0, &keys, cast))
+        let m = match self.scene.camera.lens {
+            Lens::Thin { .. } => self.scene.settings.blur_samples.max(1),
+            _ => 1,
+        };
+        let (mut sum, mut coverage) = ([[0.0; 3]; W], [0.0; W]);
+        for r in 0..m {
+            let keys = if m == 1 { keys } else { keys.map(|k| k.lens_ray(r, m)) };
+            let rays = self.camera_rays::<R, W>(u, v, &keys)?;
+            cast.primary += W as u64;
+            let (colours, met) = self.trace_met::<R, W, K>(rays, 0, &keys, cast);
+            for l in 0..W {
+                if met[l] || !K::COVERS {
+                    sum[l] = [sum[l][0] + colours[l][0], sum[l][1] + colours[l][1], sum[l][2] + colours[l][2]];
+                }
+                coverage[l] += f64::from(u8::from(met[l]));
+            }
+        }
+        if m > 1 {
+            let scale = 1.0 / f64::from(m);
+            sum = sum.map(|c| c.map(|x| x * scale));
+            coverage = coverage.map(|c| c * scale);
+        }
+        Some((sum, coverage))
     }
 
     /// The camera rays through `(u_k, v_k)`: eq. 2's pinhole rays as the back end forms them,
@@ -355,6 +378,14 @@ impl SampleKey {
     #[inline(always)]
     pub(crate) fn new(i: u32, j: u32, s: u32, count: u32) -> Self {
         SampleKey { i, j, index: s, count }
+    }
+
+    /// Camera ray `r` of the `m` that this sample averages through a thin lens: sample
+    /// `s m + r` of the pixel's `count · m`, so that the lens (and light) points of all the
+    /// pixel's rays are stratified together.
+    #[inline(always)]
+    pub(crate) fn lens_ray(self, r: u32, m: u32) -> Self {
+        SampleKey { index: self.index * m + r, count: self.count * m, ..self }
     }
 
     /// Point `k` of `n` in `[0, 1)²` that this sample takes for `dimension`: of the pixel's

@@ -29,6 +29,12 @@ fn corners(name: &str, w: u32, h: u32, spp: u32, threshold: f64) -> Scene {
     s
 }
 
+/// `s` with each sample averaging `m` rays through the lens.
+fn blurred(mut s: Scene, m: u32) -> Scene {
+    s.settings.blur_samples = m;
+    s
+}
+
 fn render(scene: &Scene, window: Window, threads: usize) -> Film {
     rendered(scene, window, threads).0
 }
@@ -39,6 +45,17 @@ fn rendered(scene: &Scene, window: Window, threads: usize) -> (Film, u64) {
     let renderer = Renderer::new(scene);
     let film = pool.install(|| renderer.render_window(Aov::Shaded, window, &|| {}));
     (film, renderer.counts().primary)
+}
+
+/// The error of a picture of `name` at `w × h` against 256 samples a pixel
+/// ([`rms`]), with the primary rays it cast.
+fn errors(name: &str, w: u32, h: u32) -> impl Fn(&Scene) -> (f64, u64) {
+    let full = Window::full(w, h);
+    let reference = render(&scene(name, w, h, 256), full.clone(), 2);
+    move |s| {
+        let (film, rays) = rendered(s, full.clone(), 2);
+        (rms(&film, &reference), rays)
+    }
 }
 
 /// Root-mean-square difference of the clipped linear values.
@@ -103,12 +120,7 @@ fn adaptive_pixels_take_their_first_samples_or_all_of_them() {
 #[test]
 fn adaptive_sampling_keeps_the_error_of_all_the_samples_for_fewer_rays() {
     let (w, h) = (64, 48);
-    let full = Window::full(w, h);
-    let reference = render(&scene("combined.toml", w, h, 256), full.clone(), 2);
-    let error = |s: &Scene| {
-        let (film, rays) = rendered(s, full.clone(), 2);
-        (rms(&film, &reference), rays)
-    };
+    let error = errors("combined.toml", w, h);
     let ((e16, rays16), (e64, rays64)) =
         (error(&scene("combined.toml", w, h, 16)), error(&scene("combined.toml", w, h, 64)));
     let (e, rays) = error(&adaptive("combined.toml", w, h, 64, 0.1));
@@ -123,7 +135,12 @@ fn adaptive_sampling_keeps_the_error_of_all_the_samples_for_fewer_rays() {
 #[test]
 fn adaptive_packets_give_the_bits_of_one_ray_at_a_time() {
     // Packets where all four pixels go on, single rays for the lanes that do where not all do.
-    for s in [adaptive("combined.toml", 40, 30, 16, 0.2), corners("combined.toml", 40, 30, 16, 0.2)] {
+    for s in [
+        adaptive("combined.toml", 40, 30, 16, 0.2),
+        corners("combined.toml", 40, 30, 16, 0.2),
+        blurred(adaptive("lens.toml", 40, 30, 16, 0.2), 3),
+        blurred(corners("lens.toml", 40, 30, 16, 0.2), 4),
+    ] {
         let full = Window::full(40, 30);
         let packets = Renderer::new(&s).render_window(Aov::Shaded, full.clone(), &|| {});
         for other in [Renderer::new(&s).without_packets(), Renderer::new(&s).without_avx2()] {
@@ -153,12 +170,7 @@ fn corners_trace_each_corner_once_and_cut_only_where_corners_differ() {
 #[test]
 fn corners_keep_the_error_of_all_the_samples_for_fewer_rays() {
     let (w, h) = (64, 48);
-    let full = Window::full(w, h);
-    let reference = render(&scene("combined.toml", w, h, 256), full.clone(), 2);
-    let error = |s: &Scene| {
-        let (film, rays) = rendered(s, full.clone(), 2);
-        (rms(&film, &reference), rays)
-    };
+    let error = errors("combined.toml", w, h);
     let ((e1, rays1), (e16, rays16)) =
         (error(&scene("combined.toml", w, h, 1)), error(&scene("combined.toml", w, h, 16)));
     let (e, rays) = error(&corners("combined.toml", w, h, 16, 0.1));
@@ -175,6 +187,7 @@ fn the_same_bytes_on_any_thread_count() {
         scene("combined.toml", 40, 30, 4),
         adaptive("combined.toml", 40, 30, 16, 0.2),
         corners("combined.toml", 40, 30, 16, 0.2),
+        blurred(corners("lens.toml", 40, 30, 16, 0.2), 4),
     ] {
         let one = render(&s, Window::full(40, 30), 1);
         let two = render(&s, Window::full(40, 30), 2);
@@ -189,6 +202,41 @@ fn crop_windows_assemble_into_the_frame_byte_for_byte() {
     crop_windows_assemble(&scene("combined.toml", w, h, 4));
     crop_windows_assemble(&adaptive("combined.toml", w, h, 16, 0.2));
     crop_windows_assemble(&corners("combined.toml", w, h, 16, 0.2));
+    crop_windows_assemble(&blurred(corners("lens.toml", w, h, 16, 0.2), 4));
+}
+
+#[test]
+fn blur_samples_let_corners_take_a_lens_blur_for_what_it_is() {
+    // POV-Ray's focal blur with +AM2: each corner the mean of 16 lens rays, so the corners of a
+    // blurred region agree and are not cut; one lens ray a corner looks like noise everywhere.
+    let (w, h) = (64, 48);
+    let error = errors("lens.toml", w, h);
+    let (e16, rays16) = error(&scene("lens.toml", w, h, 16));
+    let (e32, rays32) = error(&scene("lens.toml", w, h, 32));
+    let (e1, rays1) = error(&corners("lens.toml", w, h, 4, 0.3));
+    let (e, rays) = error(&blurred(corners("lens.toml", w, h, 4, 0.3), 16));
+    println!(
+        "rms against 256 spp, primary rays: 16 spp {e16:.2e} {rays16}, 32 spp {e32:.2e} {rays32}, corners 0.3 {e1:.2e} {rays1}, with blur_samples 16 {e:.2e} {rays}"
+    );
+    assert!(e < e32 && rays < rays32, "{e} against {e32}, {rays} rays against {rays32}");
+    assert!(e < 0.5 * e1, "{e} against one lens ray a corner's {e1}");
+    // Plain samples: spp 4 with 4 lens rays each cast the rays of 16 samples.
+    let (e4, rays4) = error(&blurred(scene("lens.toml", w, h, 4), 4));
+    assert_eq!(rays4, rays16);
+    assert!(e4 < 1.5 * e16, "{e4} against {e16}");
+    // Without a lens there is one ray a sample: the same bits as without blur_samples.
+    let pinhole = scene("combined.toml", 24, 18, 4);
+    assert!(
+        render(&blurred(pinhole.clone(), 8), Window::full(24, 18), 2).pixels
+            == render(&pinhole, Window::full(24, 18), 2).pixels
+    );
+    // Over a transparent background a sample's coverage is the fraction of its rays that met
+    // something: strictly between 0 and 1 where the lens blurs an edge against nothing.
+    let mut clear = blurred(scene("lens.toml", 32, 24, 1), 8);
+    clear.settings.set_background(cga_trace::settings::Background::Transparent);
+    let coverage = render(&clear, Window::full(32, 24), 2).coverage.unwrap();
+    assert!(coverage.iter().any(|&c| c > 0.0 && c < 1.0), "a blurred edge is partly covered");
+    assert!(coverage.iter().all(|&c| (0.0..=1.0).contains(&c)));
 }
 
 fn crop_windows_assemble(s: &Scene) {

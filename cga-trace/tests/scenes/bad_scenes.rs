@@ -184,6 +184,16 @@ fn cases() -> Vec<(&'static str, String, Vec<&'static str>)> {
             vec!["bad.toml:7:", "adaptive method `edges`", "corners"],
         ),
         (
+            "no lens rays a sample",
+            format!("{CAMERA}[render]\nblur_samples = 0\n"),
+            vec!["bad.toml:7:", "blur_samples", "must be 1 to 256"],
+        ),
+        (
+            "more lens rays a sample than the limit",
+            format!("{CAMERA}[render]\nblur_samples = 257\n"),
+            vec!["bad.toml:7:", "blur_samples", "must be 1 to 256"],
+        ),
+        (
             "adaptive with an unknown field",
             format!("{CAMERA}[render]\nadaptive = {{ threshold = 0.3, first = 4 }}\n"),
             vec!["bad.toml:7:", "adaptive", "`first`", "min_spp"],
