@@ -5,7 +5,7 @@
 
 use crate::euclid::{E3, norm};
 use crate::{
-    Bivector, Circle, Dilator, Even, FlatPoint, Generator, Infinity, Line, Motor, Multivector, Odd, Plane,
+    Bivector, Blades, Circle, Dilator, Even, FlatPoint, Generator, Infinity, Line, Motor, Multivector, Odd, Plane,
     Pseudoscalar, Real, Rotor, Scalar, ScalarQuadvector, Sphere, Translator, Transversor, Vector, down,
 };
 use core::fmt::{Display, Formatter, Result};
@@ -32,9 +32,9 @@ fn triple<T: Real>(f: &mut Formatter<'_>, v: E3<T>) -> Result {
 }
 
 /// `a e1 + b e23 − …`: the nonzero coefficients by blade name (`0` when there are none).
-fn terms(f: &mut Formatter<'_>, names: &[&str], values: &[f64]) -> Result {
+fn terms(f: &mut Formatter<'_>, names: &[&str], values: impl Iterator<Item = f64>) -> Result {
     let mut first = true;
-    for (name, &v) in names.iter().zip(values) {
+    for (name, v) in names.iter().zip(values) {
         if v == 0.0 {
             continue;
         }
@@ -59,35 +59,11 @@ trait Terms {
     fn terms(&self, f: &mut Formatter<'_>) -> Result;
 }
 
-macro_rules! terms_of {
-    ($($ty:ident),*) => {$(
-        impl<T: Real> Terms for $ty<T> {
-            fn terms(&self, f: &mut Formatter<'_>) -> Result {
-                terms(f, &Self::BLADES, &self.to_array().map(|x| x.to_f64()))
-            }
-        }
-    )*};
+impl<X: Blades<Coefficient: Real>> Terms for X {
+    fn terms(&self, f: &mut Formatter<'_>) -> Result {
+        terms(f, X::NAMES, self.coefficients().map(|x| x.to_f64()))
+    }
 }
-
-terms_of!(
-    Scalar,
-    Infinity,
-    Pseudoscalar,
-    ScalarQuadvector,
-    Even,
-    Odd,
-    Vector,
-    FlatPoint,
-    Bivector,
-    Line,
-    Plane,
-    Circle,
-    Sphere,
-    Motor,
-    Generator,
-    Dilator,
-    Transversor
-);
 
 macro_rules! by_terms {
     ($($ty:ident),*) => {$(
@@ -105,7 +81,7 @@ by_terms!(Scalar, Infinity, Pseudoscalar, ScalarQuadvector, Even, Odd, Transvers
 impl<T: Real> Display for Multivector<T> {
     /// The nonzero coefficients by orthonormal blade name.
     fn fmt(&self, f: &mut Formatter<'_>) -> Result {
-        terms(f, &Self::BLADES, &self.coeffs.map(|x| x.to_f64()))
+        terms(f, &Self::BLADES, self.coeffs.iter().map(|x| x.to_f64()))
     }
 }
 

@@ -19,10 +19,9 @@ impl Gen<'_> {
                 pub type #name = super::#target<#path>;
             }
         });
-        let traits = Product::ALL
-            .iter()
-            .map(|&k| format_ident!("{}", names(k).trait_name))
-            .chain(["Sandwich", "Prepare", "ScalarProduct", "Exp", "Log", "Inverse"].map(|n| format_ident!("{n}")));
+        let traits = Product::ALL.iter().map(|&k| format_ident!("{}", names(k).trait_name)).chain(
+            ["Sandwich", "Prepare", "ScalarProduct", "Exp", "Log", "Inverse", "Blades"].map(|n| format_ident!("{n}")),
+        );
         let doc = format!(
             " Every type of the algebra at `{}` and every generated trait: `use …::prelude::*`.",
             quote!(#path)

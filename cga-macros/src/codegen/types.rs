@@ -34,6 +34,19 @@ impl Gen<'_> {
                 }
             });
         }
+        out.extend(quote! {
+            /// Every type's blades and coefficients through one trait, for code generic over
+            /// the algebra's types (a display, a table of columns): `X::BLADES` and
+            /// `X::to_array`. Generated for every type.
+            pub trait Blades: Copy {
+                /// The scalar of the coefficients.
+                type Coefficient;
+                /// Blade of every coefficient, in field order (`X::BLADES`).
+                const NAMES: &'static [&'static str];
+                /// The coefficients in field order (`X::to_array`).
+                fn coefficients(self) -> impl Iterator<Item = Self::Coefficient>;
+            }
+        });
         let versors: Vec<String> =
             self.spec.types.iter().filter(|t| t.model.versor).map(|t| format!("`{}`", t.ident)).collect();
         let versors = match versors.len() {
@@ -307,6 +320,15 @@ impl Gen<'_> {
                     let mut out = f.debug_struct(stringify!(#ident));
                     #( if all_zero || self.#fields != zero { out.field(stringify!(#fields), &self.#fields); } )*
                     out.finish()
+                }
+            }
+
+            impl<T: #real> Blades for #ident<T> {
+                type Coefficient = T;
+                const NAMES: &'static [&'static str] = &Self::BLADES;
+                #[inline]
+                fn coefficients(self) -> impl Iterator<Item = T> {
+                    self.to_array().into_iter()
                 }
             }
 

@@ -341,3 +341,21 @@ mod plane_pga {
         }
     }
 }
+
+/// Generic code over an algebra's types through the generated `Blades` trait: each type's
+/// blades and coefficients, as its own `BLADES` and `to_array` give them.
+fn named<X: g3::Blades<Coefficient = f64>>(x: X) -> Vec<(&'static str, f64)> {
+    X::NAMES.iter().copied().zip(x.coefficients()).collect()
+}
+
+#[test]
+fn every_type_names_its_blades_through_one_trait() {
+    let r = turn_xy(0.5);
+    assert_eq!(named(r), Rotor::BLADES.iter().copied().zip(r.to_array()).collect::<Vec<_>>());
+    assert_eq!(named(vector(1.0, 2.0, 3.0)), [("e1", 1.0), ("e2", 2.0), ("e3", 3.0)]);
+    assert_eq!(named(Trivector::from_array([4.0])), [("e123", 4.0)]);
+    // The CGA types too: `Display` of any type falls back on them.
+    let c = cga_core::Circle::<f64>::zero();
+    assert_eq!(<cga_core::Circle as cga_core::Blades>::NAMES, &cga_core::Circle::<f64>::BLADES[..]);
+    assert_eq!(cga_core::Blades::coefficients(c).count(), cga_core::Circle::<f64>::BLADES.len());
+}
