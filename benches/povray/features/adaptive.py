@@ -51,7 +51,7 @@ MINS = [1, 2, 4]  # --adaptive-min: the first samples every pixel takes
 SETTINGS = [(None, None)] + [(t, m) for t in THRESHOLDS for m in MINS] + [(t, "corners") for t in THRESHOLDS]
 CORNER_SPPS = [4, 16, 64]
 # Scenes with a lens also sweep corners whose every point is the mean of B lens rays
-# (--blur-samples B, POV-Ray's blur_samples): (threshold, "corners/bB").
+# (--blur-samples B, POV-Ray's blur_samples): (threshold, "corners+bB").
 BLUR = {"lens": [8, 16]}
 
 Image.MAX_IMAGE_PIXELS = None  # the POV-Ray reference is K^2 times the picture
@@ -88,8 +88,8 @@ def adaptive_flags(setting):
         return []
     if m == "corners":
         return ["--adaptive", str(t), "--adaptive-method", "corners"]
-    if str(m).startswith("corners/b"):
-        return ["--adaptive", str(t), "--adaptive-method", "corners", "--blur-samples", m[len("corners/b"):]]
+    if str(m).startswith("corners+b"):
+        return ["--adaptive", str(t), "--adaptive-method", "corners", "--blur-samples", m[len("corners+b"):]]
     return ["--adaptive", str(t), "--adaptive-min", str(m)]
 
 
@@ -204,7 +204,7 @@ def main():
         # jobs: key -> (command, its picture, its renderer's reference); each round runs POV-Ray's
         # settings and then ours, so that a slow spell of the machine falls on both
         jobs = {}
-        scene_settings = settings + [(t, f"corners/b{b}") for b in (BLUR.get(scene, []) if blur else [])
+        scene_settings = settings + [(t, f"corners+b{b}") for b in (BLUR.get(scene, []) if blur else [])
                                      for t in THRESHOLDS]
         for name, pov_flags in POV_AA.items():
             png = f"{out}/{scene}-pov{''.join(pov_flags).replace('+', '_')}.png"
