@@ -37,7 +37,7 @@ pub use glass::{CUTOFF, fresnel};
 use keep::{Covered, Keep, Taken};
 pub use prepared::Kept;
 pub use sampler::sample_offset;
-pub(crate) use sampler::{Dimension, SampleKey, disk};
+pub(crate) use sampler::{Dimension, Points, SampleKey, disk};
 
 use crate::backend::{Backend, Sparse};
 use crate::bvh::Layers;

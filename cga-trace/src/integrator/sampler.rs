@@ -395,13 +395,39 @@ impl SampleKey {
     /// points of every dimension are stratified over the pixel's samples and uncorrelated with
     /// where in the pixel each sample falls (pbrt's padded Sobol' sampler).
     pub(crate) fn point(&self, dimension: Dimension, k: u32, n: u32) -> (f64, f64) {
+        self.points(dimension, n).at(k)
+    }
+
+    /// The `n` points this sample takes for `dimension` ([`SampleKey::point`]), their
+    /// hashes and permutation found once: an area light asks for all of them at each hit.
+    #[inline(always)]
+    pub(crate) fn points(&self, dimension: Dimension, n: u32) -> Points {
         let pixel = hash::pixel(self.i, self.j, 0x85eb_ca6b);
         let seed = hash(pixel ^ (dimension as u32).wrapping_mul(0x9e37_79b9));
-        let s = permute(self.index, self.count.max(1), seed).wrapping_mul(n).wrapping_add(k);
-        let x = s.reverse_bits() ^ hash(seed ^ 0x68bc_21eb);
-        let y = sobol_second(s) ^ hash(seed ^ 0x02e5_be93);
+        Points {
+            first: permute(self.index, self.count.max(1), seed).wrapping_mul(n),
+            x: hash(seed ^ 0x68bc_21eb),
+            y: hash(seed ^ 0x02e5_be93),
+        }
+    }
+}
+
+/// A sample's points of one dimension ([`SampleKey::points`]): the number of its first in
+/// the pixel's sequence, and the scrambles of the two coordinates.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Points {
+    first: u32,
+    x: u32,
+    y: u32,
+}
+
+impl Points {
+    /// Point `k` ([`SampleKey::point`]).
+    #[inline(always)]
+    pub(crate) fn at(&self, k: u32) -> (f64, f64) {
+        let s = self.first.wrapping_add(k);
         let unit = |bits: u32| f64::from(bits) / 4_294_967_296.0;
-        (unit(x), unit(y))
+        (unit(s.reverse_bits() ^ self.x), unit(sobol_second(s) ^ self.y))
     }
 }
 

@@ -3,7 +3,7 @@
 //! (eq. 12 without the reflected term), over lanes ([`RayLanes`]). One ray and four take
 //! the same steps, so `--no-packets` gives the same bits.
 
-use super::{Dimension, RayCounts, Renderer, SampleKey, disk};
+use super::{Dimension, Points, RayCounts, Renderer, SampleKey, disk};
 use crate::backend::{Backend, RayLanes, lanes3};
 use crate::light::{Light, Source, attenuation, blinn_phong, lights};
 use crate::material::{Material, Reflectance, shine};
@@ -88,10 +88,11 @@ impl<B: Backend> Renderer<'_, B> {
                 Some(samples) => {
                     // Each lane's own points on the light, stratified over the pixel's samples.
                     let weight = Some(1.0 / f64::from(samples));
+                    let points: [Points; W] = core::array::from_fn(|l| keys[l].points(Dimension::Light, samples));
                     for k in 0..samples {
                         let p: [E3; W] = core::array::from_fn(|l| {
                             let at = x.map(|c| c.lane(l));
-                            light.area_point(at, disk(keys[l].point(Dimension::Light, k, samples)))
+                            light.area_point(at, disk(points[l].at(k)))
                         });
                         let towards = toward(lanes3(p), x);
                         self.add_light::<R, W>(&mut colours, light, towards, weight, &hits_at, cast);
