@@ -96,8 +96,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
 
     /// Which rays are blocked before their `t_max`, less the blocker's own crossing error (a
     /// light standing on a surface is lit, not decided by rounding), by an object other than the lane's
-    /// `skip` and the dielectrics (a lane with `t_max ≤ 0` or NaN is inactive and never blocked): stops at the
-    /// first blocker (once every active lane is blocked), and computes no normals.
+    /// `skip` and the dielectrics, which are not tested (a lane with `t_max ≤ 0` or NaN is inactive and never
+    /// blocked): stops at the first blocker (once every active lane is blocked), and computes no normals.
     #[inline(always)]
     pub(crate) fn blocked<R: RayLanes<B, W>, const W: usize>(
         &self,
@@ -113,8 +113,8 @@ impl<'a, B: Backend> Renderer<'a, B> {
                 let ray = rays.ray(l);
                 bvh.traverse(ray.origin, ray.dir, 0.0, t_max[l], |k, t| {
                     blocked[l] = Some(k) != skip[l]
-                        && B::occludes(&self.shapes[k], ray, self.t_min(k, 0.0), t - self.errors[k])
-                        && !self.clear[k];
+                        && !self.clear[k]
+                        && B::occludes(&self.shapes[k], ray, self.t_min(k, 0.0), t - self.errors[k]);
                     (!blocked[l]).then_some(t)
                 });
             }
@@ -123,6 +123,10 @@ impl<'a, B: Backend> Renderer<'a, B> {
         for k in 0..self.shapes.len() {
             if blocked.iter().all(|&b| b) {
                 break;
+            }
+            // Dielectrics are never asked: they block nothing.
+            if self.clear[k] {
+                continue;
             }
             let tests: [bool; W] = core::array::from_fn(|l| !blocked[l] && skip[l] != Some(k));
             if !tests.iter().any(|&b| b) {
@@ -136,8 +140,7 @@ impl<'a, B: Backend> Renderer<'a, B> {
             }
             for (l, hit) in rays.occluded_by(&self.shapes[k], &[self.t_min(k, 0.0); W], &range).into_iter().enumerate()
             {
-                // A dielectric asked only once it is met: the test costs nothing elsewhere.
-                blocked[l] |= hit && !self.clear[k];
+                blocked[l] |= hit;
             }
         }
         core::array::from_fn(|l| active[l] && blocked[l])

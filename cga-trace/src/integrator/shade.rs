@@ -90,11 +90,9 @@ impl<B: Backend> Renderer<'_, B> {
                     let weight = Some(1.0 / f64::from(samples));
                     let points: [Points; W] = core::array::from_fn(|l| keys[l].points(Dimension::Light, samples));
                     for k in 0..samples {
-                        let p: [E3; W] = core::array::from_fn(|l| {
-                            let at = x.map(|c| c.lane(l));
-                            light.area_point(at, disk(points[l].at(k)))
-                        });
-                        let towards = toward(lanes3(p), x);
+                        let square: [(f64, f64); W] = core::array::from_fn(|l| points[l].at(k));
+                        let on_disk = disk((R::T::from_fn(|l| square[l].0), R::T::from_fn(|l| square[l].1)));
+                        let towards = toward(light.area_points::<R::T, W>(x, on_disk), x);
                         self.add_light::<R, W>(&mut colours, light, towards, weight, &hits_at, cast);
                     }
                 }
