@@ -18,15 +18,15 @@ AM2, AM1 = ["+A0.3", "+AM2", "+R3"], ["+A0.3", "+AM1", "+R3", "+J"]
 # (scene, POV-Ray flags, our --spp, our (threshold, method)): the sweep's winners.
 PAIRS = [
     ("lens", AM2, 4, (0.3, "corners+b16")),
-    ("lens", AM1, 16, (0.3, "corners+b8")),
+    ("lens", AM1, 4, (0.3, "corners+b8")),
     ("textures", AM2, 16, (0.2, "corners")),
-    ("textures", AM1, 16, (0.2, "corners")),
+    ("textures", AM1, 16, (0.3, "corners")),
     ("area", AM2, 64, (0.3, "corners")),
-    ("area", AM1, 16, (0.3, "corners")),
-    ("glass", AM2, 16, (0.3, "corners")),
-    ("glass", AM1, 16, (0.3, "corners")),
-    ("glassarea", AM2, 16, (0.3, "corners")),
-    ("glassarea", AM1, 4, (0.3, "corners")),
+    ("area", AM1, 4, (0.5, "corners")),
+    ("glass", AM2, 16, (0.4, "corners")),
+    ("glass", AM1, 16, (0.5, "corners")),
+    ("glassarea", AM2, 16, (0.4, "corners")),
+    ("glassarea", AM1, 4, (0.5, "corners")),
 ]
 
 

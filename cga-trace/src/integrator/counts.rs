@@ -8,7 +8,8 @@ pub struct RayCounts {
     pub primary: u64,
     /// Towards lights.
     pub shadow: u64,
-    /// Mirror bounces.
+    /// Mirror bounces, and the rays a dielectric reflects and refracts (those cast: a branch
+    /// whose weight falls below the cut-off is not).
     pub reflection: u64,
 }
 

@@ -116,9 +116,9 @@ impl<B: Backend> Renderer<'_, B> {
                 if kr > 0.0 {
                     let error = self.errors[j];
                     let (origin, r) = mirror(p.ray.dir, p.ray.origin, hit.point, hit.normal, error);
-                    cast.reflection += 1;
                     let weight = p.weight.map(|w| w * kr);
-                    push(&mut stack, Pending { ray: B::ray(origin, r), weight, depth: p.depth + 1, inside: p.inside });
+                    let next = Pending { ray: B::ray(origin, r), weight, depth: p.depth + 1, inside: p.inside };
+                    cast.reflection += u64::from(push(&mut stack, next));
                 }
             }
         }
@@ -150,9 +150,9 @@ impl<B: Backend> Renderer<'_, B> {
         let (f, refracted) = fresnel(p.ray.dir, normal, n1, n2);
         let error = self.errors[k];
         let (origin, r) = mirror(p.ray.dir, p.ray.origin, hit.point, normal, error);
-        cast.reflection += 1;
         let depth = p.depth + 1;
-        push(stack, Pending { ray: B::ray(origin, r), weight: p.weight.map(|w| w * f), depth, inside: p.inside });
+        let reflected = Pending { ray: B::ray(origin, r), weight: p.weight.map(|w| w * f), depth, inside: p.inside };
+        cast.reflection += u64::from(push(stack, reflected));
         let Some(t) = refracted else { return };
         let (t, inside) = match (here, leaving) {
             (None, _) => (p.ray.dir, p.inside),
@@ -160,8 +160,8 @@ impl<B: Backend> Renderer<'_, B> {
             (Some(m), false) => (t, Some(m)),
         };
         let start = leaving_origin(hit.point, normal, dot(normal, t), offset(hit.point, p.ray.origin, error));
-        cast.reflection += 1;
-        push(stack, Pending { ray: B::ray(start, t), weight: p.weight.map(|w| w * (1.0 - f)), depth, inside });
+        let refracted = Pending { ray: B::ray(start, t), weight: p.weight.map(|w| w * (1.0 - f)), depth, inside };
+        cast.reflection += u64::from(push(stack, refracted));
     }
 }
 
@@ -172,11 +172,14 @@ fn add_to(total: &mut [f64; 3], w: [f64; 3], c: [f64; 3]) {
     }
 }
 
-/// `p` onto the stack unless its weight is below [`CUTOFF`] in every channel.
-fn push<C>(stack: &mut SmallVec<[Pending<C>; 16]>, p: Pending<C>) {
-    if p.weight.iter().any(|&w| w >= CUTOFF) {
+/// `p` onto the stack unless its weight is below [`CUTOFF`] in every channel; whether it
+/// went (a ray dropped is not cast, nor counted).
+fn push<C>(stack: &mut SmallVec<[Pending<C>; 16]>, p: Pending<C>) -> bool {
+    let kept = p.weight.iter().any(|&w| w >= CUTOFF);
+    if kept {
         stack.push(p);
     }
+    kept
 }
 
 #[cfg(test)]
