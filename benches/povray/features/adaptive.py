@@ -35,7 +35,7 @@ except ImportError:
              "then run this with /tmp/aa/bin/python")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SCENES = ["area", "glass", "glassarea", "lens", "textures"]
+SCENES = ["area", "glass", "glassarea", "lens", "mesh", "textures"]
 REF_K = {"lens": 16}  # POV-Ray reference supersampling per axis; 32 elsewhere
 REF_K_WHY = {"lens": "each ray takes 16 focal-blur rays, 4,096 a pixel (K = 32 costs 4 times as much)"}
 REF_SPP = 1024
@@ -72,10 +72,41 @@ def cpu_run(cmd):
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
+# POV-Ray's library paths: this folder (textures.pov finds its image map relative to it), and
+# where mesh_include wrote mesh.pov's mesh.
+LIBS = [HERE]
+MESH_OBJ = os.path.normpath(os.path.join(HERE, "../../../cga-trace/scenes/meshes/vase.obj"))
+
+
 def pov_cmd(scene, out, w, h, flags):
-    # +L: textures.pov finds its image map relative to this folder.
-    return ["povray", f"+I{HERE}/{scene}.pov", f"+L{HERE}", f"+O{out}", f"+W{w}", f"+H{h}",
-            "-D", "+WT1", *flags]
+    return ["povray", f"+I{HERE}/{scene}.pov", *(f"+L{d}" for d in LIBS), f"+O{out}", f"+W{w}",
+            f"+H{h}", "-D", "+WT1", *flags]
+
+
+def mesh_include(folder):
+    """Writes folder/vase_mesh.inc, mesh.pov's `Vase`: MESH_OBJ's vertices, vertex normals and
+    triangles (polygons cut into fans, as cga-trace reads them) as a POV-Ray mesh2, and adds
+    folder to POV-Ray's library paths."""
+    v, n, faces = [], [], []
+    with open(MESH_OBJ) as f:
+        for line in f:
+            p = line.split()
+            if p and p[0] == "v":
+                v.append(p[1:4])
+            elif p and p[0] == "vn":
+                n.append(p[1:4])
+            elif p and p[0] == "f":
+                corners = [[int(x) - 1 for x in q.split("/")[::2]] for q in p[1:]]
+                faces += [(corners[0], corners[k], corners[k + 1]) for k in range(1, len(corners) - 1)]
+    vec = ",\n".join
+    with open(os.path.join(folder, "vase_mesh.inc"), "w") as out:
+        out.write(f"// {MESH_OBJ} by adaptive.py\n#declare Vase = mesh2 {{\n")
+        out.write(f" vertex_vectors {{ {len(v)},\n" + vec(f"<{x},{y},{z}>" for x, y, z in v) + " }\n")
+        out.write(f" normal_vectors {{ {len(n)},\n" + vec(f"<{x},{y},{z}>" for x, y, z in n) + " }\n")
+        out.write(f" face_indices {{ {len(faces)},\n" + vec(f"<{a[0]},{b[0]},{c[0]}>" for a, b, c in faces) + " }\n")
+        out.write(f" normal_indices {{ {len(faces)},\n" + vec(f"<{a[1]},{b[1]},{c[1]}>" for a, b, c in faces) + " }\n}\n")
+    if folder not in LIBS:
+        LIBS.append(folder)
 
 
 def ours_cmd(binary, scene, out, w, h, spp, setting):
@@ -181,6 +212,7 @@ def main():
     scenes = args.scenes.split(",")
     out = args.out or tempfile.mkdtemp(prefix="adaptive-")
     os.makedirs(out, exist_ok=True)
+    mesh_include(out)
 
     help_text = subprocess.run([binary, "render", "--help"], capture_output=True, text=True).stdout
     settings = SETTINGS if "--adaptive-min" in help_text else [(None, None)]

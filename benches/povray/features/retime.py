@@ -27,6 +27,8 @@ PAIRS = [
     ("glass", AM1, 16, (0.5, "corners")),
     ("glassarea", AM2, 16, (0.4, "corners")),
     ("glassarea", AM1, 4, (0.5, "corners")),
+    ("mesh", AM2, 16, (0.1, "corners")),
+    ("mesh", AM1, 16, (0.5, "corners")),
 ]
 
 
@@ -38,6 +40,7 @@ def main():
     binary = os.path.realpath(args.binary)
     times = [([], []) for _ in PAIRS]
     with tempfile.TemporaryDirectory() as out:
+        A.mesh_include(out)
         for _ in range(args.rounds):
             for (scene, flags, spp, setting), (pov, ours) in zip(PAIRS, times):
                 pov.append(A.cpu_run(A.pov_cmd(scene, f"{out}/p.png", 320, 240, flags)))
