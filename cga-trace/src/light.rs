@@ -103,20 +103,15 @@ impl Light {
             }
             _ => return self.position().unwrap_or(x),
         };
-        let (u, w) = orthonormal(normal);
-        [0, 1, 2].map(|k| centre[k] + radius * (a * u[k] + b * w[k]))
+        on_disk(centre, normal, radius, (a, b))
     }
 
     /// [`Light::area_point`] in `W` lanes (`W` of the lane type `T`'s): a disk's frame found
-    /// once and its points lane by lane, the same steps as one at a time.
+    /// once for all of them, the same steps as one at a time.
     #[inline(always)]
     pub fn area_points<T: Select + Lane, const W: usize>(&self, x: E3<T>, (a, b): (T, T)) -> E3<T> {
         if let Source::Disk { centre, normal, radius, .. } = self.source {
-            let (u, w) = orthonormal(normal);
-            let r = T::from_f64(radius);
-            return core::array::from_fn(|k| {
-                T::from_f64(centre[k]) + r * (a * T::from_f64(u[k]) + b * T::from_f64(w[k]))
-            });
+            return on_disk(centre, normal, radius, (a, b));
         }
         let p: [E3; W] = core::array::from_fn(|l| self.area_point(x.map(|c| c.lane(l)), (a.lane(l), b.lane(l))));
         lanes3(p)
@@ -157,6 +152,15 @@ pub fn orthonormal(n: E3) -> (E3, E3) {
     let a = -1.0 / (sign + n[2]);
     let b = n[0] * n[1] * a;
     ([1.0 + sign * n[0] * n[0] * a, sign * b, -sign * n[0]], [b, sign + n[1] * n[1] * a, -n[1]])
+}
+
+/// `c + r (a u + b w)`: the point `(a, b)` of the unit disk on the disk of centre `c`, radius
+/// `r` and unit normal `n`, `u` and `w` a right-handed pair orthogonal to `n`; lane by lane.
+#[inline(always)]
+fn on_disk<T: Real>(centre: E3, normal: E3, radius: f64, (a, b): (T, T)) -> E3<T> {
+    let (u, w) = orthonormal(normal);
+    let r = T::from_f64(radius);
+    core::array::from_fn(|k| T::from_f64(centre[k]) + r * (a * T::from_f64(u[k]) + b * T::from_f64(w[k])))
 }
 
 /// `min(1, 1/(c₀ + c₁ d + c₂ d²))` for the attenuation coefficients `c` at distance `d` (world
