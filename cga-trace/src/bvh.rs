@@ -1,23 +1,30 @@
-//! A bounding-volume hierarchy over a scene's bounded objects, built once at load:
-//! axis-aligned boxes around each object's bounding sphere, split at the median centre along
-//! the widest axis, four objects or fewer per leaf. A ray visits only the boxes it crosses
-//! within `(t_min, t_max)`, nearer child first, and `t_max` shrinks as hits are found.
+//! A bounding-volume hierarchy, built once at load: over a scene's bounded objects (axis-aligned
+//! boxes around each one's bounding sphere) and over a mesh's triangles (each one's own box).
+//! Each box is split along the axis its items' centres spread widest, where the surface area
+//! heuristic puts the split (16 bins: the one of least `A_left n_left + A_right n_right`, each
+//! side's count weighed by its area, the chance that a ray crossing the parent crosses it),
+//! four items or fewer to a leaf. A ray visits only the boxes it crosses within
+//! `(t_min, t_max)`, nearer child first, and `t_max` shrinks as hits are found.
 
 use cga_core::euclid::E3;
+use cga_core::simd::Lane;
+use std::ops::Range;
 use std::sync::Arc;
 
 /// A box and what it holds: `count > 0` for a leaf (`items[first .. first + count]`),
-/// otherwise children at `index + 1` and `second`.
+/// otherwise children at `index + 1` and `second`, split along `axis` (the first holds the
+/// lower centres).
 #[derive(Clone, Copy, Debug)]
 struct Node {
-    min: E3,
-    max: E3,
+    /// The box's lower and upper corners.
+    corners: [E3; 2],
     first: u32,
     count: u32,
     second: u32,
+    axis: u32,
 }
 
-/// The hierarchy: object indices in leaf order, and the objects without bounds (planes),
+/// The hierarchy: item indices in leaf order, and the objects without bounds (planes),
 /// which every ray tests.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
@@ -28,15 +35,35 @@ pub struct Bvh {
 
 const LEAF: usize = 4;
 
+/// Bins the surface area heuristic weighs splits at.
+const BINS: usize = 16;
+
+/// From this depth on, splits are at the median centre whatever the heuristic says, so that
+/// the tree stays within the traversal's stack (64 deep) for any input: at most
+/// `40 + log₂(2²⁰ / 4) = 58` levels for the most objects a scene may hold.
+const SAH_DEPTH: usize = 40;
+
+/// An item being placed: its index and box.
+type Item = (u32, E3, E3);
+
+/// The empty box.
+const EMPTY: (E3, E3) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+
 impl Bvh {
     /// The hierarchy over objects with these bounding spheres (`None`: unbounded).
     pub fn new(bounds: &[Option<(E3, f64)>]) -> Self {
         Bvh::over(bounds.iter().copied().enumerate())
     }
 
+    /// The hierarchy over items with these boxes `(min, max)`.
+    pub fn over_boxes(boxes: &[(E3, E3)]) -> Self {
+        let items = boxes.iter().enumerate().map(|(k, &(lo, hi))| (k as u32, lo, hi)).collect();
+        Bvh::build(items, Vec::new())
+    }
+
     /// The hierarchy over the objects `(k, bounds)` given (a part of a scene's).
     fn over(bounds: impl Iterator<Item = (usize, Option<(E3, f64)>)>) -> Self {
-        let mut items: Vec<(u32, E3, E3)> = Vec::new();
+        let mut items: Vec<Item> = Vec::new();
         let mut unbounded = Vec::new();
         for (k, b) in bounds {
             match b {
@@ -44,42 +71,43 @@ impl Bvh {
                 None => unbounded.push(k as u32),
             }
         }
+        Bvh::build(items, unbounded)
+    }
+
+    fn build(mut items: Vec<Item>, unbounded: Vec<u32>) -> Self {
         let mut bvh = Bvh { nodes: Vec::with_capacity(2 * items.len() / LEAF + 1), items: Vec::new(), unbounded };
         if !items.is_empty() {
-            bvh.build(&mut items);
+            bvh.build_at(&mut items, 0, 0);
         }
         bvh.items = items.iter().map(|i| i.0).collect();
         bvh
     }
 
-    /// Builds the subtree over `items` (a slice of the whole, at offset `first`), returning its
-    /// node index.
-    fn build(&mut self, items: &mut [(u32, E3, E3)]) -> usize {
-        self.build_at(items, 0)
+    /// The items in leaf order: what the ranges [`Bvh::traverse_leaves`] gives index.
+    pub fn order(&self) -> &[u32] {
+        &self.items
     }
 
-    fn build_at(&mut self, items: &mut [(u32, E3, E3)], first: usize) -> usize {
-        let (mut min, mut max) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for (_, lo, hi) in items.iter() {
-            for k in 0..3 {
-                min[k] = min[k].min(lo[k]);
-                max[k] = max[k].max(hi[k]);
-            }
-        }
+    /// Builds the subtree over `items` (a slice of the whole, at offset `first`, `depth`
+    /// below the root), returning its node index.
+    fn build_at(&mut self, items: &mut [Item], first: usize, depth: usize) -> usize {
+        let (min, max) = enclosing(items.iter().map(|i| (i.1, i.2)));
         let index = self.nodes.len();
-        self.nodes.push(Node { min, max, first: first as u32, count: items.len() as u32, second: 0 });
+        self.nodes.push(Node {
+            corners: [min, max],
+            first: first as u32,
+            count: items.len() as u32,
+            second: 0,
+            axis: 0,
+        });
         if items.len() <= LEAF {
             return index;
         }
-        let axis = (0..3).max_by(|&a, &b| (max[a] - min[a]).total_cmp(&(max[b] - min[b]))).unwrap_or(0);
-        let centre = |i: &(u32, E3, E3)| i.1[axis] + i.2[axis];
-        let mid = items.len() / 2;
-        items.select_nth_unstable_by(mid, |a, b| centre(a).total_cmp(&centre(b)));
+        let (mid, axis) = split(items, depth);
         let (left, right) = items.split_at_mut(mid);
-        self.build_at(left, first);
-        let second = self.build_at(right, first + mid);
-        self.nodes[index].count = 0;
-        self.nodes[index].second = second as u32;
+        self.build_at(left, first, depth + 1);
+        let second = self.build_at(right, first + mid, depth + 1);
+        self.nodes[index] = Node { count: 0, second: second as u32, axis: axis as u32, ..self.nodes[index] };
         index
     }
 
@@ -97,11 +125,31 @@ impl Bvh {
         for &k in &self.unbounded {
             t_max = visit(k as usize, t_max)?;
         }
+        self.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut t_max| {
+            for &k in &self.items[leaf] {
+                t_max = visit(k as usize, t_max)?;
+            }
+            Some(t_max)
+        })
+    }
+
+    /// Calls `visit(leaf, t_max)` for every leaf whose box the ray crosses within
+    /// `(t_min, t_max)`, `leaf` the range of its items in [leaf order](Bvh::order), nearer boxes
+    /// first; `visit` returns the new `t_max` or `None` to stop at once. Unbounded objects are
+    /// not visited.
+    pub fn traverse_leaves(
+        &self,
+        origin: E3,
+        dir: E3,
+        t_min: f64,
+        mut t_max: f64,
+        mut visit: impl FnMut(Range<usize>, f64) -> Option<f64>,
+    ) -> Option<f64> {
         if self.nodes.is_empty() {
             return Some(t_max);
         }
-        let inv = dir.map(|d| 1.0 / d);
-        if slab(&self.nodes[0], origin, inv, t_min, t_max).is_none() {
+        let inv = Inverse::new(dir);
+        if slab(&self.nodes[0], origin, &inv, t_min, t_max).is_none() {
             return Some(t_max);
         }
         let mut stack = [0u32; 64];
@@ -110,15 +158,13 @@ impl Bvh {
             top -= 1;
             let node = &self.nodes[stack[top] as usize];
             if node.count > 0 {
-                for &k in &self.items[node.first as usize..(node.first + node.count) as usize] {
-                    t_max = visit(k as usize, t_max)?;
-                }
+                t_max = visit(node.first as usize..(node.first + node.count) as usize, t_max)?;
                 continue;
             }
             // Children the ray enters before t_max, the nearer on top. A child was entered
             // when its parent was pushed; t_max may have shrunk since, so test again.
             let (a, b) = (stack[top] + 1, node.second);
-            let enter = |n: u32| slab(&self.nodes[n as usize], origin, inv, t_min, t_max);
+            let enter = |n: u32| slab(&self.nodes[n as usize], origin, &inv, t_min, t_max);
             let (near, far) = match (enter(a), enter(b)) {
                 (Some(ta), Some(tb)) if tb < ta => (Some(b), Some(a)),
                 (Some(_), Some(_)) => (Some(a), Some(b)),
@@ -135,6 +181,135 @@ impl Bvh {
         }
         Some(t_max)
     }
+}
+
+impl Bvh {
+    /// [`Bvh::traverse_leaves`] for four rays at once, their origins and directions in lanes
+    /// `L` (four of them): each box is tested against the four in lanes, and a leaf is visited
+    /// with the lanes whose rays cross its box, `visit(leaf, lanes, t_max)` lowering their
+    /// `t_max` (a lane with `t_max = −∞` is done) or returning `None` to stop. Nearer boxes
+    /// first by the first ray's direction. A box is tested as [`Bvh::traverse_leaves`] tests
+    /// it (the same numbers): only the order differs, so a `visit` that keeps the same
+    /// crossing whatever the order finds what each ray alone would.
+    #[inline(always)]
+    pub fn traverse_leaves4<L: Lane>(
+        &self,
+        origin: &E3<L>,
+        dir: &E3<L>,
+        t_min: [f64; 4],
+        t_max: &mut [f64; 4],
+        mut visit: impl FnMut(Range<usize>, [bool; 4], &mut [f64; 4]) -> Option<()>,
+    ) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let inv: E3<L> = core::array::from_fn(|k| L::from_fn(|l| inverse(dir[k].lane(l))));
+        let lower = core::array::from_fn::<bool, 3, _>(|k| dir[k].lane(0) < 0.0);
+        let lo = L::from_fn(|l| t_min[l]);
+        let mut hi = L::from_fn(|l| t_max[l]);
+        let mut stack = [0u32; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let index = stack[top];
+            let node = &self.nodes[index as usize];
+            let enters = slab_lanes(node, origin, &inv, lo, hi);
+            if !L::any(enters) {
+                continue;
+            }
+            if node.count > 0 {
+                let lanes = core::array::from_fn(|l| L::mask_lane(enters, l));
+                if visit(node.first as usize..(node.first + node.count) as usize, lanes, t_max).is_none() {
+                    return;
+                }
+                hi = L::from_fn(|l| t_max[l]);
+                continue;
+            }
+            let (a, b) = (index + 1, node.second);
+            for n in if lower[node.axis as usize] { [a, b] } else { [b, a] } {
+                if top < stack.len() {
+                    stack[top] = n;
+                    top += 1;
+                }
+            }
+        }
+    }
+}
+
+/// The box holding these boxes.
+fn enclosing(boxes: impl Iterator<Item = (E3, E3)>) -> (E3, E3) {
+    let (mut min, mut max) = EMPTY;
+    for (lo, hi) in boxes {
+        for k in 0..3 {
+            min[k] = min[k].min(lo[k]);
+            max[k] = max[k].max(hi[k]);
+        }
+    }
+    (min, max)
+}
+
+/// Half a box's surface area (`0` for the empty box).
+fn area((lo, hi): (E3, E3)) -> f64 {
+    let [x, y, z] = [0, 1, 2].map(|k| (hi[k] - lo[k]).max(0.0));
+    x * y + y * z + z * x
+}
+
+/// Reorders `items` into two sides and returns where the second starts, and the axis: the one
+/// their centres spread widest along, at the bin boundary of least `A_left n_left + A_right n_right`
+/// while `depth` is below [`SAH_DEPTH`]; deeper, or where every centre falls in one bin, at
+/// the median centre.
+fn split(items: &mut [Item], depth: usize) -> (usize, usize) {
+    let centre = |i: &Item, k: usize| 0.5 * (i.1[k] + i.2[k]);
+    let (lo, hi) = enclosing(items.iter().map(|i| {
+        let c = [0, 1, 2].map(|k| centre(i, k));
+        (c, c)
+    }));
+    let axis = (0..3).max_by(|&a, &b| (hi[a] - lo[a]).total_cmp(&(hi[b] - lo[b]))).unwrap_or(0);
+    let (base, width) = (lo[axis], hi[axis] - lo[axis]);
+    let bin = |i: &Item| (((centre(i, axis) - base) / width * BINS as f64) as usize).min(BINS - 1);
+    let best = if depth < SAH_DEPTH && width > 0.0 { cheapest(items, bin) } else { None };
+    let Some(first_right) = best else {
+        let mid = items.len() / 2;
+        items.select_nth_unstable_by(mid, |a, b| centre(a, axis).total_cmp(&centre(b, axis)));
+        return (mid, axis);
+    };
+    let mut mid = 0;
+    for k in 0..items.len() {
+        if bin(&items[k]) < first_right {
+            items.swap(k, mid);
+            mid += 1;
+        }
+    }
+    (mid, axis)
+}
+
+/// The first bin of the right side of the cheapest split between bins (`None` where all
+/// items fall in one).
+fn cheapest(items: &[Item], bin: impl Fn(&Item) -> usize) -> Option<usize> {
+    let mut bins = [(0usize, EMPTY); BINS];
+    for i in items {
+        let b = &mut bins[bin(i)];
+        b.0 += 1;
+        b.1 = enclosing([b.1, (i.1, i.2)].into_iter());
+    }
+    // Swept from the right: the count and area of bins b.. for every b.
+    let mut right = [(0usize, 0.0f64); BINS];
+    let mut acc = (0, EMPTY);
+    for b in (1..BINS).rev() {
+        acc = (acc.0 + bins[b].0, enclosing([acc.1, bins[b].1].into_iter()));
+        right[b] = (acc.0, area(acc.1));
+    }
+    let mut left = (0, EMPTY);
+    let mut best: Option<(f64, usize)> = None;
+    for b in 1..BINS {
+        left = (left.0 + bins[b - 1].0, enclosing([left.1, bins[b - 1].1].into_iter()));
+        let (n_right, a_right) = right[b];
+        let cost = area(left.1) * left.0 as f64 + a_right * n_right as f64;
+        if left.0 > 0 && n_right > 0 && best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, b));
+        }
+    }
+    best.map(|(_, b)| b)
 }
 
 /// A scene's hierarchy in two layers visited as one: over the objects that stay in place
@@ -203,17 +378,53 @@ impl Kept {
     }
 }
 
-/// Where the ray enters the node's box within `(t_min, t_max)`, if it does (the slab test).
-fn slab(node: &Node, origin: E3, inv: E3, t_min: f64, t_max: f64) -> Option<f64> {
+/// `1/d`, finite: `±f64::MAX` for `d = ±0`, so that no slab bound is `0 · ∞ = NaN` (a ray in
+/// a face's plane): the bound is then `0` on that face, and the ray enters the box there.
+#[inline(always)]
+fn inverse(d: f64) -> f64 {
+    if d == 0.0 { f64::MAX.copysign(d) } else { 1.0 / d }
+}
+
+/// A ray's direction inverted ([`inverse`]), and which corner of a box it enters by along
+/// each axis (the upper where `d_k < 0`).
+struct Inverse {
+    inv: E3,
+    near: [usize; 3],
+}
+
+impl Inverse {
+    fn new(dir: E3) -> Self {
+        let inv = dir.map(inverse);
+        Inverse { inv, near: inv.map(|i| usize::from(i < 0.0)) }
+    }
+}
+
+/// Where the ray enters the node's box within `(t_min, t_max)`, if it does (the slab test):
+/// along each axis it enters at the nearer of the box's two faces and leaves at the other.
+#[inline(always)]
+fn slab(node: &Node, origin: E3, ray: &Inverse, t_min: f64, t_max: f64) -> Option<f64> {
     let (mut lo, mut hi) = (t_min, t_max);
-    for k in 0..3 {
-        let (a, b) = ((node.min[k] - origin[k]) * inv[k], (node.max[k] - origin[k]) * inv[k]);
-        let (a, b) = if a <= b { (a, b) } else { (b, a) };
-        // NaN (0 · ∞ on a face) leaves the bound as it was.
-        lo = if a > lo { a } else { lo };
-        hi = if b < hi { b } else { hi };
+    for (k, (o, (i, n))) in origin.into_iter().zip(ray.inv.into_iter().zip(ray.near)).enumerate() {
+        let near = (node.corners[n][k] - o) * i;
+        let far = (node.corners[1 - n][k] - o) * i;
+        lo = if near > lo { near } else { lo };
+        hi = if far < hi { far } else { hi };
     }
     (lo <= hi).then_some(lo)
+}
+
+/// [`slab`] for rays in lanes: which of them enter the node's box within their ranges (the
+/// same numbers, so the same answer, as each ray's own test).
+#[inline(always)]
+fn slab_lanes<L: Lane>(node: &Node, origin: &E3<L>, inv: &E3<L>, mut lo: L, mut hi: L) -> L::Mask {
+    for k in 0..3 {
+        let a = (L::from_f64(node.corners[0][k]) - origin[k]) * inv[k];
+        let b = (L::from_f64(node.corners[1][k]) - origin[k]) * inv[k];
+        let (near, far) = (a.min_lanes(b), a.max_lanes(b));
+        lo = L::select(lo.lt(near), near, lo);
+        hi = L::select(far.lt(hi), far, hi);
+    }
+    lo.le(hi)
 }
 
 #[cfg(test)]
@@ -246,6 +457,46 @@ mod tests {
                 assert!(!must || seen.contains(&k), "object {k} not visited");
             }
             assert!(seen.len() < 200, "{} visited: the hierarchy culls nothing", seen.len());
+        }
+    }
+
+    /// Boxes whose centres crowd towards one end (`2⁻ᵏ`), where the surface area heuristic
+    /// would peel one off at a time: the depth guard keeps the tree within the stack, so a ray
+    /// through each box visits it, one ray at a time and four together in lanes (each lane
+    /// visiting at least what its ray alone visits).
+    #[test]
+    fn crowded_boxes_are_all_reached_alone_and_in_lanes() {
+        use cga_core::simd::F64x4;
+        let boxes: Vec<(E3, E3)> =
+            (0..600).map(|k| 0.5f64.powi(k)).map(|x| ([x, -0.1, -0.1], [x + x * 1e-3, 0.1, 0.1])).collect();
+        let bvh = Bvh::over_boxes(&boxes);
+        let leaves = |o: E3, d: E3| {
+            let mut seen = Vec::new();
+            bvh.traverse_leaves(o, d, 0.0, f64::INFINITY, |leaf, t| {
+                seen.extend(leaf.map(|i| bvh.order()[i]));
+                Some(t)
+            });
+            seen
+        };
+        for (k, (lo, hi)) in boxes.iter().enumerate().step_by(5) {
+            let rays: [(E3, E3); 4] = core::array::from_fn(|l| {
+                let x = 0.5 * (lo[0] + hi[0]);
+                ([x, -1.0, 0.01 * l as f64], [0.0, 1.0, 0.0])
+            });
+            let origin: E3<F64x4> = core::array::from_fn(|c| F64x4(rays.map(|r| r.0[c])));
+            let dir: E3<F64x4> = core::array::from_fn(|c| F64x4(rays.map(|r| r.1[c])));
+            let mut four: [Vec<u32>; 4] = Default::default();
+            bvh.traverse_leaves4(&origin, &dir, [0.0; 4], &mut [f64::INFINITY; 4], |leaf, lanes, _| {
+                for l in (0..4).filter(|&l| lanes[l]) {
+                    four[l].extend(leaf.clone().map(|i| bvh.order()[i]));
+                }
+                Some(())
+            });
+            for (l, (o, d)) in rays.iter().enumerate() {
+                let alone = leaves(*o, *d);
+                assert!(alone.contains(&(k as u32)), "box {k} not reached");
+                assert!(alone.iter().all(|i| four[l].contains(i)), "lane {l} misses what its ray alone visits");
+            }
         }
     }
 

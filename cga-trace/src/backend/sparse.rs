@@ -6,10 +6,11 @@
 use super::{Backend, Crossings, Packet, array, crossings, inside_rim, lane, mask_array};
 use crate::camera::Camera;
 use crate::ray::Ray;
-use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, sphere_crossing};
+use crate::shapes::{Crossing, DiskShape, MeshShape, PlaneShape, Shape, SphereShape, TriangleShape, sphere_crossing};
 use cga_core::euclid::{E3, dot, sub, tolerance};
 use cga_core::simd::{Lane, Lanes};
 use cga_core::{Line, Plane, Sphere};
+use core::any::Any;
 use std::sync::Arc;
 
 /// The generated grade-sparse types (the default back end).
@@ -29,6 +30,8 @@ pub enum SparseShape {
     Disk(DiskShape),
     /// A triangle.
     Triangle(TriangleShape),
+    /// A mesh (packets go through its hierarchy together).
+    Mesh(Arc<MeshShape>),
     /// Any other shape (evolved, spline and ruled surfaces, kinds added later).
     Other(Arc<dyn Shape>),
 }
@@ -41,6 +44,7 @@ macro_rules! each_kind {
             SparseShape::Plane($s) => $body,
             SparseShape::Disk($s) => $body,
             SparseShape::Triangle($s) => $body,
+            SparseShape::Mesh($s) => $body,
             SparseShape::Other($s) => $body,
         }
     };
@@ -71,6 +75,8 @@ impl Backend for Sparse {
             SparseShape::Disk(d.clone())
         } else if let Some(t) = any.downcast_ref::<TriangleShape>() {
             SparseShape::Triangle(t.clone())
+        } else if let Ok(mesh) = (shape.clone() as Arc<dyn Any + Send + Sync>).downcast::<MeshShape>() {
+            SparseShape::Mesh(mesh)
         } else {
             SparseShape::Other(shape.clone())
         }
@@ -117,6 +123,7 @@ impl Backend for Sparse {
                 let rim = Some((d.disk.centre, d.disk.radius));
                 meet_plane(p, &d.disk.plane.cast(), rim, t_min, t_max)
             }
+            SparseShape::Mesh(m) => m.intersect4::<L>(rays_of(p), t_min, t_max),
             _ => core::array::from_fn(|l| Sparse::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
         }
     }
@@ -124,10 +131,17 @@ impl Backend for Sparse {
     #[inline(always)]
     fn occludes4<L: Lane>(shape: &SparseShape, p: &Packet<Sparse, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
         match shape {
+            SparseShape::Mesh(m) => m.occludes4::<L>(rays_of(p), t_min, t_max),
             SparseShape::Other(s) => core::array::from_fn(|l| s.occludes(&p.rays[l], t_min[l], t_max[l])),
             _ => Sparse::cross4(shape, p, t_min, t_max).map(|c| c.is_some()),
         }
     }
+}
+
+/// Each ray's origin and direction.
+#[inline(always)]
+fn rays_of<L: Lane>(p: &Packet<Sparse, L>) -> [(E3, E3); 4] {
+    p.rays.each_ref().map(|r| (r.origin, r.dir))
 }
 
 /// `(x − o) · d` per lane, as [`Ray::t_of`] computes it.

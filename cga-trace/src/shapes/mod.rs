@@ -11,11 +11,11 @@
 //! ([`crate::format`]); see ARCHITECTURE.md, "Adding a shape".
 
 mod body;
-mod closed_mesh;
 mod cone;
 mod csg;
 mod cuboid;
 mod disk;
+mod mesh;
 mod plane;
 mod sphere;
 mod torus;
@@ -25,13 +25,13 @@ use crate::ray::{Ray, in_range};
 pub use body::Body;
 use cga_core::Plane;
 use cga_core::euclid::{E3, dot};
-pub use closed_mesh::ClosedMesh;
 pub use cone::ConeShape;
 use core::any::Any;
 use core::fmt::Debug;
 pub use csg::{Clipped, Csg, CsgError, CsgPart, MAX_CROSSINGS, Node, Operation, Spans, spans_by_crossings};
 pub use cuboid::BoxShape;
 pub use disk::DiskShape;
+pub use mesh::MeshShape;
 pub use plane::PlaneShape;
 pub use sphere::SphereShape;
 pub(crate) use sphere::sphere_crossing;
@@ -165,7 +165,7 @@ pub trait Shape: Send + Sync + Debug + Any {
 
     /// Whether the shape bounds a solid on its own, which CSG and clipping take: a sphere, a
     /// box, a capped cylinder or cone, a torus, a plane (the half-space behind its normal), a
-    /// closed mesh ([`ClosedMesh`]) and surfaces that close one together ([`Body`]).
+    /// closed mesh ([`MeshShape`]) and surfaces that close one together ([`Body`]).
     fn closed(&self) -> bool {
         false
     }

@@ -5,6 +5,7 @@
 
 use cga_trace::integrator::Window;
 use cga_trace::mesh::MeshFormat;
+use cga_trace::shapes::{MeshShape, Shape};
 use cga_trace::{Aov, Film, Renderer, Scene};
 use std::path::Path;
 
@@ -42,7 +43,10 @@ fn a_box_of_triangles_renders_as_the_box() {
         &format!("{CAMERA}[[objects]]\ntype = \"box\"\nmin = [-1.0, -1.0, -1.0]\nmax = [1.0, 1.0, 1.0]\n{material}\n"),
         dir.path(),
     );
-    assert_eq!(mesh.objects.len(), 12, "four-sided faces cut in two");
+    assert_eq!(mesh.objects.len(), 1, "a mesh is one object");
+    let shape = mesh.objects[0].shape.downcast_ref::<MeshShape>().expect("a mesh");
+    assert_eq!(shape.triangles().len(), 12, "four-sided faces cut in two");
+    assert!(shape.closed(), "every edge shared by two triangles");
     let (mean, off) = difference(&render(&mesh), &render(&cube));
     // Only pixels on the triangles' shared diagonals and the silhouette may differ.
     assert!(mean < 2e-3 && off < 0.01, "mean {mean}, {off} of pixels off");

@@ -7,7 +7,7 @@ use crate::format::marks::Parts;
 use crate::format::numbers::Num;
 use crate::invalid::Invalid;
 use crate::limits::MAX_OBJECTS;
-use crate::shapes::{Shading, Shape, TriangleShape};
+use crate::shapes::{MeshShape, Shading, TriangleShape};
 use cga_core::euclid::E3;
 use std::sync::Arc;
 
@@ -52,7 +52,7 @@ impl Geometry for Mesh {
         }
         let smooth = flag(&self.smooth, true);
         let place = &at.place;
-        let mut shapes: Vec<Arc<dyn Shape>> = Vec::with_capacity(mesh.triangles.len());
+        let mut triangles = Vec::with_capacity(mesh.triangles.len());
         let mut flat_in_file = 0;
         for t in &mesh.triangles {
             let [a, b, c] = t.map(|i| mesh.positions[i as usize].map(|x| x * s));
@@ -69,19 +69,18 @@ impl Geometry for Mesh {
             let Ok(triangle) = TriangleShape::new([place.point(a)?, place.point(b)?, place.point(c)?]) else {
                 continue;
             };
-            shapes.push(Arc::new(
-                triangle.with_shading(shading).map_err(|e| Invalid::at("file", file.span(), e.into()))?,
-            ));
+            triangles.push(triangle.with_shading(shading).map_err(|e| Invalid::at("file", file.span(), e.into()))?);
         }
-        if shapes.is_empty() {
+        let closed = at.assets.mesh_is_closed(file)?;
+        let Some(shape) = MeshShape::new(triangles, closed) else {
             let why = if flat_in_file == mesh.triangles.len() {
                 "no triangle of the mesh has an area: nothing to see"
             } else {
                 "no triangle of the mesh has an area f64 can hold at this scale and place"
             };
             return Err(Invalid::at("file", file.span(), Invalid::Value(why)));
-        }
-        Ok((shapes, None))
+        };
+        Ok((vec![Arc::new(shape)], None))
     }
 
     fn triangles(&self, assets: &Assets) -> Option<usize> {

@@ -488,24 +488,17 @@ fn solid(
     Ok(CsgPart::parts(csg).into_iter().map(|p| Arc::new(p) as Arc<dyn Shape>).zip(looks).collect())
 }
 
-/// One closed shape from an object's shapes: its one shape if that bounds a solid; if the
-/// object says its shapes close one (`closed`), a closed mesh's triangles as one
-/// [`ClosedMesh`](crate::shapes::ClosedMesh), a capped swept surface's surface and disks as
-/// one [`Body`](crate::shapes::Body). `None` if they bound none.
+/// One closed shape from an object's shapes: its one shape if that bounds a solid (a sphere,
+/// a closed mesh, …); if the object says its shapes close one (`closed`), a capped swept
+/// surface's surface and disks as one [`Body`](crate::shapes::Body). `None` if they bound none.
 fn one_solid(shapes: Vec<Arc<dyn Shape>>, closed: bool) -> Option<Arc<dyn Shape>> {
-    use crate::shapes::{Body, ClosedMesh, TriangleShape};
     if let [shape] = &shapes[..] {
         return shape.closed().then(|| shape.clone());
     }
     if !closed {
         return None;
     }
-    let triangles: Option<Vec<TriangleShape>> =
-        shapes.iter().map(|s| s.downcast_ref::<TriangleShape>().cloned()).collect();
-    match triangles {
-        Some(triangles) => Some(Arc::new(ClosedMesh::new(triangles)?)),
-        None => Some(Arc::new(Body::new(shapes)?)),
-    }
+    Some(Arc::new(crate::shapes::Body::new(shapes)?))
 }
 
 /// A CSG error as a value error at `field` (its span where given).
