@@ -28,7 +28,7 @@ PAIRS = [
     ("glassarea", AM2, 16, (0.4, "corners")),
     ("glassarea", AM1, 4, (0.5, "corners")),
     ("mesh", AM2, 16, (0.1, "corners")),
-    ("mesh", AM1, 16, (0.5, "corners")),
+    ("mesh", AM1, 16, (0.4, "corners")),
 ]
 
 
