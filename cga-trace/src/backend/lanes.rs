@@ -89,6 +89,12 @@ impl<B: Backend, L: Lane> Packet<B, L> {
         let rays = core::array::from_fn(|l| B::ray(lane(&origin, l), lane(&dir, l)));
         Packet { rays, origin, dir, carrier }
     }
+
+    /// Each ray's origin and unit direction.
+    #[inline(always)]
+    pub fn origins_dirs(&self) -> [(E3, E3); 4] {
+        self.rays.each_ref().map(|r| (r.origin, r.dir))
+    }
 }
 
 /// Which lanes' points lie on a disk of rim `(c, r)`, `|x − c|² ≤ r²`; all lanes where

@@ -7,9 +7,12 @@
 use super::{Backend, Crossings, Packet, array, crossings, inside_rim, lanes3, mask_array};
 use crate::camera::Camera;
 use crate::ray::{Ray, in_range};
-use crate::shapes::{Crossing, DiskShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle};
+use crate::shapes::{
+    Crossing, DiskShape, MeshShape, PlaneShape, Shape, SphereShape, TriangleShape, facing, inside_triangle,
+};
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use cga_core::simd::Lane;
+use core::any::Any;
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -54,6 +57,8 @@ pub enum PlainShape {
         /// Corners.
         corners: [E3; 3],
     },
+    /// A mesh: its own hierarchy and triangle test (packets through it together).
+    Mesh(Arc<MeshShape>),
     /// Any other shape (an evolved surface, a kind added later): its own sparse geometry.
     Other(Arc<dyn Shape>),
 }
@@ -89,6 +94,8 @@ impl Backend for Plain {
             let [a, b, c] = t.corners.map(DVec3::from);
             let normal = unit(cross((b - a).into(), (c - a).into())).map_or(DVec3::Z, DVec3::from);
             PlainShape::Triangle { normal, offset: normal.dot(a), corners: t.corners }
+        } else if let Ok(mesh) = (shape.clone() as Arc<dyn Any + Send + Sync>).downcast::<MeshShape>() {
+            PlainShape::Mesh(mesh)
         } else {
             PlainShape::Other(shape.clone())
         }
@@ -120,9 +127,17 @@ impl Backend for Plain {
             PlainShape::Triangle { normal, offset, corners } => {
                 on_plane(*normal, *offset).filter(|&t| inside_triangle((o + t * d).into(), corners))?
             }
+            PlainShape::Mesh(mesh) => return mesh.nearest(ray.origin, ray.dir, t_min, t_max),
             PlainShape::Other(shape) => return shape.intersect(&Ray::new(ray.origin, ray.dir)?, t_min, t_max),
         };
         Some(Crossing { t, point: (o + t * d).into(), alpha: None, part: 0 })
+    }
+
+    fn occludes(shape: &PlainShape, ray: &Ray<()>, t_min: f64, t_max: f64) -> bool {
+        match shape {
+            PlainShape::Mesh(mesh) => mesh.blocks(ray.origin, ray.dir, t_min, t_max),
+            _ => Plain::intersect(shape, ray, t_min, t_max).is_some(),
+        }
     }
 
     fn normal(shape: &PlainShape, ray: &Ray<()>, crossing: &Crossing) -> E3 {
@@ -131,6 +146,9 @@ impl Backend for Plain {
             PlainShape::Plane { normal, .. }
             | PlainShape::Disk { normal, .. }
             | PlainShape::Triangle { normal, .. } => *normal,
+            PlainShape::Mesh(mesh) => {
+                return Ray::new(ray.origin, ray.dir).map_or([0.0, 0.0, 1.0], |r| mesh.normal(&r, crossing));
+            }
             PlainShape::Other(shape) => {
                 return Ray::new(ray.origin, ray.dir).map_or([0.0, 0.0, 1.0], |r| shape.normal(&r, crossing));
             }
@@ -174,7 +192,16 @@ impl Backend for Plain {
             PlainShape::Disk { normal, offset, centre, radius } => {
                 plane4(p, *normal, *offset, Some((*centre, *radius)), t_min, t_max)
             }
+            PlainShape::Mesh(mesh) => mesh.intersect4::<L>(p.origins_dirs(), t_min, t_max),
             _ => core::array::from_fn(|l| Plain::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
+        }
+    }
+
+    #[inline(always)]
+    fn occludes4<L: Lane>(shape: &PlainShape, p: &Packet<Plain, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
+        match shape {
+            PlainShape::Mesh(mesh) => mesh.occludes4::<L>(p.origins_dirs(), t_min, t_max),
+            _ => Plain::cross4(shape, p, t_min, t_max).map(|c| c.is_some()),
         }
     }
 }

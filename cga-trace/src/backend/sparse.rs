@@ -123,7 +123,7 @@ impl Backend for Sparse {
                 let rim = Some((d.disk.centre, d.disk.radius));
                 meet_plane(p, &d.disk.plane.cast(), rim, t_min, t_max)
             }
-            SparseShape::Mesh(m) => m.intersect4::<L>(rays_of(p), t_min, t_max),
+            SparseShape::Mesh(m) => m.intersect4::<L>(p.origins_dirs(), t_min, t_max),
             _ => core::array::from_fn(|l| Sparse::intersect(shape, &p.rays[l], t_min[l], t_max[l])),
         }
     }
@@ -131,17 +131,11 @@ impl Backend for Sparse {
     #[inline(always)]
     fn occludes4<L: Lane>(shape: &SparseShape, p: &Packet<Sparse, L>, t_min: &[f64; 4], t_max: &[f64; 4]) -> [bool; 4] {
         match shape {
-            SparseShape::Mesh(m) => m.occludes4::<L>(rays_of(p), t_min, t_max),
+            SparseShape::Mesh(m) => m.occludes4::<L>(p.origins_dirs(), t_min, t_max),
             SparseShape::Other(s) => core::array::from_fn(|l| s.occludes(&p.rays[l], t_min[l], t_max[l])),
             _ => Sparse::cross4(shape, p, t_min, t_max).map(|c| c.is_some()),
         }
     }
-}
-
-/// Each ray's origin and direction.
-#[inline(always)]
-fn rays_of<L: Lane>(p: &Packet<Sparse, L>) -> [(E3, E3); 4] {
-    p.rays.each_ref().map(|r| (r.origin, r.dir))
 }
 
 /// `(x − o) · d` per lane, as [`Ray::t_of`] computes it.

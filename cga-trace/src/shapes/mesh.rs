@@ -159,6 +159,32 @@ impl MeshShape {
         crossing_at(ray.origin, ray.dir, c)
     }
 
+    /// The nearest crossing with `t_min < t < t_max` of the ray from `origin` along unit
+    /// `dir` ([`Shape::intersect`], without the ray's line): leaves in the order the ray
+    /// enters their boxes, each triangle's crossing kept where it is nearer than the nearest
+    /// yet.
+    pub fn nearest(&self, origin: E3, dir: E3, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let sheared = Sheared::new(origin, dir);
+        let mut best = None;
+        self.bvh.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut limit| {
+            for k in leaf {
+                limit = sheared.keep(&self.corners[k], k, t_min, limit, &mut best);
+            }
+            Some(limit)
+        });
+        best.map(|c| crossing_at(origin, dir, c))
+    }
+
+    /// Whether the ray from `origin` along unit `dir` crosses the mesh with
+    /// `t_min < t < t_max` ([`Shape::occludes`]): stops at the first crossing found.
+    pub fn blocks(&self, origin: E3, dir: E3, t_min: f64, t_max: f64) -> bool {
+        let sheared = Sheared::new(origin, dir);
+        let crossed = |k: usize| sheared.cross(&self.corners[k]).is_some_and(|t| t_min < t && t < t_max);
+        self.bvh
+            .traverse_leaves(origin, dir, t_min, t_max, |mut leaf, limit| (!leaf.any(crossed)).then_some(limit))
+            .is_none()
+    }
+
     /// Each of four rays' nearest crossing with `t_min < t < t_max` (a lane with
     /// `t_max = −∞` finds none), the four through the hierarchy together in lanes `L`: the
     /// crossings [`Shape::intersect`] finds for each.
@@ -226,27 +252,12 @@ fn crossing_at(origin: E3, dir: E3, (t, k): (f64, u32)) -> Crossing {
 }
 
 impl Shape for MeshShape {
-    /// The nearest crossing: leaves in the order the ray enters their boxes, each
-    /// triangle's crossing kept where it is nearer than the nearest yet.
     fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let sheared = Sheared::new(ray.origin, ray.dir);
-        let mut best = None;
-        self.bvh.traverse_leaves(ray.origin, ray.dir, t_min, t_max, |leaf, mut limit| {
-            for k in leaf {
-                limit = sheared.keep(&self.corners[k], k, t_min, limit, &mut best);
-            }
-            Some(limit)
-        });
-        best.map(|(t, k)| crossing_at(ray.origin, ray.dir, (t, k)))
+        self.nearest(ray.origin, ray.dir, t_min, t_max)
     }
 
-    /// Stops at the first crossing found.
     fn occludes(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        let sheared = Sheared::new(ray.origin, ray.dir);
-        let crossed = |k: usize| sheared.cross(&self.corners[k]).is_some_and(|t| t_min < t && t < t_max);
-        self.bvh
-            .traverse_leaves(ray.origin, ray.dir, t_min, t_max, |mut leaf, limit| (!leaf.any(crossed)).then_some(limit))
-            .is_none()
+        self.blocks(ray.origin, ray.dir, t_min, t_max)
     }
 
     fn normal(&self, ray: &Ray, crossing: &Crossing) -> E3 {
