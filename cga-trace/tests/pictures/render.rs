@@ -353,7 +353,7 @@ fn back_ends_render_the_same_image() {
     fn image<B: Backend>(scene: &Scene) -> image::RgbImage {
         Renderer::<B>::with_backend(scene).render(Aov::Shaded, &|| {}).to_rgb8(scene.settings.encoding)
     }
-    for (name, w, h) in [("primitives.toml", 64, 48), ("combined.toml", 40, 30)] {
+    for (name, w, h) in [("primitives.toml", 64, 48), ("combined.toml", 40, 30), ("assembly.toml", 40, 30)] {
         let scene = load_sized(name, w, h);
         let sparse = image::<Sparse>(&scene);
         for (backend, other) in [("dense", image::<Dense>(&scene)), ("plain", image::<Plain>(&scene))] {
@@ -436,9 +436,10 @@ fn a_hall_of_mirrors_at_the_depth_limit_renders() {
 
 #[test]
 fn packets_render_the_bits_of_one_ray_at_a_time() {
-    // Every shipped scene whose objects the packets meet in lanes or per lane, at a width
-    // that is not a multiple of four (the last pixels of each row go one at a time).
-    for name in ["primitives.toml", "combined.toml", "transforms.toml"] {
+    // Every shipped scene whose objects the packets meet in lanes or per lane (assembly's
+    // meshes: four rays through a mesh's hierarchy together), at a width that is not a
+    // multiple of four (the last pixels of each row go one at a time).
+    for name in ["primitives.toml", "combined.toml", "transforms.toml", "assembly.toml"] {
         let scene = load_sized(name, 61, 23);
         let packets = Renderer::new(&scene).render(Aov::Shaded, &|| {});
         let scalar = Renderer::new(&scene).without_packets().render(Aov::Shaded, &|| {});
