@@ -154,11 +154,6 @@ impl MeshShape {
         found
     }
 
-    /// The triangle's crossing at `t`.
-    fn crossing(&self, ray: &Ray, c: (f64, u32)) -> Crossing {
-        crossing_at(ray.origin, ray.dir, c)
-    }
-
     /// The nearest crossing with `t_min < t < t_max` of the ray from `origin` along unit
     /// `dir` ([`Shape::intersect`], without the ray's line): leaves in the order the ray
     /// enters their boxes, each triangle's crossing kept where it is nearer than the nearest
@@ -308,7 +303,7 @@ impl Shape for MeshShape {
         let reach = 4.0 * self.error + 4.0 * f64::EPSILON * t.abs();
         let found = self.crossings(ray, t - reach, t + reach);
         let nearest = found.iter().min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs()));
-        nearest.map_or(Crossing { t, point: ray.at(t), alpha: None, part: 0 }, |&c| self.crossing(ray, c))
+        nearest.map_or(Crossing { t, point: ray.at(t), alpha: None, part: 0 }, |&c| crossing_at(ray.origin, ray.dir, c))
     }
 }
 

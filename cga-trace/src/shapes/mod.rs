@@ -59,8 +59,8 @@ pub struct Crossing {
     pub point: E3,
     /// For an evolved surface, the α of the circle hit.
     pub alpha: Option<f64>,
-    /// Which piece of a shape made of several the crossing lies on (a body's part, a mesh
-    /// solid's triangle); 0 for a shape of one piece.
+    /// Which piece of a shape made of several the crossing lies on (a body's part, a mesh's
+    /// triangle); 0 for a shape of one piece.
     pub part: u32,
 }
 
