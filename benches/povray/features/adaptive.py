@@ -27,6 +27,8 @@ import subprocess
 import sys
 import tempfile
 
+import vase_mesh
+
 try:
     import numpy as np
     from PIL import Image
@@ -75,7 +77,6 @@ def cpu_run(cmd):
 # POV-Ray's library paths: this folder (textures.pov finds its image map relative to it), and
 # where mesh_include wrote mesh.pov's mesh.
 LIBS = [HERE]
-MESH_OBJ = os.path.normpath(os.path.join(HERE, "../../../cga-trace/scenes/meshes/vase.obj"))
 
 
 def pov_cmd(scene, out, w, h, flags):
@@ -84,27 +85,9 @@ def pov_cmd(scene, out, w, h, flags):
 
 
 def mesh_include(folder):
-    """Writes folder/vase_mesh.inc, mesh.pov's `Vase`: MESH_OBJ's vertices, vertex normals and
-    triangles (polygons cut into fans, as cga-trace reads them) as a POV-Ray mesh2, and adds
-    folder to POV-Ray's library paths."""
-    v, n, faces = [], [], []
-    with open(MESH_OBJ) as f:
-        for line in f:
-            p = line.split()
-            if p and p[0] == "v":
-                v.append(p[1:4])
-            elif p and p[0] == "vn":
-                n.append(p[1:4])
-            elif p and p[0] == "f":
-                corners = [[int(x) - 1 for x in q.split("/")[::2]] for q in p[1:]]
-                faces += [(corners[0], corners[k], corners[k + 1]) for k in range(1, len(corners) - 1)]
-    vec = ",\n".join
-    with open(os.path.join(folder, "vase_mesh.inc"), "w") as out:
-        out.write(f"// {MESH_OBJ} by adaptive.py\n#declare Vase = mesh2 {{\n")
-        out.write(f" vertex_vectors {{ {len(v)},\n" + vec(f"<{x},{y},{z}>" for x, y, z in v) + " }\n")
-        out.write(f" normal_vectors {{ {len(n)},\n" + vec(f"<{x},{y},{z}>" for x, y, z in n) + " }\n")
-        out.write(f" face_indices {{ {len(faces)},\n" + vec(f"<{a[0]},{b[0]},{c[0]}>" for a, b, c in faces) + " }\n")
-        out.write(f" normal_indices {{ {len(faces)},\n" + vec(f"<{a[1]},{b[1]},{c[1]}>" for a, b, c in faces) + " }\n}\n")
+    """Writes folder/vase_mesh.inc, mesh.pov's `Vase` (vase_mesh.py), and adds folder to
+    POV-Ray's library paths."""
+    vase_mesh.write(folder)
     if folder not in LIBS:
         LIBS.append(folder)
 

@@ -1,8 +1,8 @@
 // mesh.toml in POV-Ray 3.7: the same camera, point light, floor, ball and two vases. Each vase
 // is cga-trace/scenes/meshes/vase.obj as a mesh2 with its vertex normals (smooth, as ours),
-// which adaptive.py writes as vase_mesh.inc into its output folder and passes with +L; the
-// mesh2 has no texture of its own, so each copy wears its own. ka·ambient, kd, ks, q as in
-// area.pov.
+// which vase_mesh.py writes as vase_mesh.inc (time.sh, adaptive.py: into their work folder,
+// passed with +L); the mesh2 has no texture of its own, so each copy wears its own.
+// ka·ambient, kd, ks, q as in area.pov.
 #version 3.7;
 global_settings { max_trace_level 6 ambient_light rgb <1,1,1> assumed_gamma 1.0 }
 camera { perspective location <0,-10,4> sky <0,0,1> up <0,0,1> right <-1.3333333,0,0>
