@@ -188,9 +188,11 @@ impl Bvh {
     /// `L` (four of them): each box is tested against the four in lanes, and a leaf is visited
     /// with the lanes whose rays cross its box, `visit(leaf, lanes, t_max)` lowering their
     /// `t_max` (a lane with `t_max = −∞` is done) or returning `None` to stop. Nearer boxes
-    /// first by the first ray's direction. A box is tested as [`Bvh::traverse_leaves`] tests
-    /// it (the same numbers): only the order differs, so a `visit` that keeps the same
-    /// crossing whatever the order finds what each ray alone would.
+    /// first by the first ray's direction. A box is tested against a lane's present `t_max`
+    /// with the numbers [`Bvh::traverse_leaves`] uses for that ray alone, but the order, and
+    /// so which boxes a shrinking `t_max` cuts off, may differ: a `visit` that keeps the
+    /// nearest crossing by a rule that does not depend on the order, and boxes a rounding
+    /// past it (as a mesh's does), finds what each ray alone would.
     #[inline(always)]
     pub fn traverse_leaves4<L: Lane>(
         &self,
@@ -203,7 +205,7 @@ impl Bvh {
         if self.nodes.is_empty() {
             return;
         }
-        let inv: E3<L> = core::array::from_fn(|k| L::from_fn(|l| inverse(dir[k].lane(l))));
+        let inv: E3<L> = core::array::from_fn(|k| L::from_fn(|l| 1.0 / dir[k].lane(l)));
         let lower = core::array::from_fn::<bool, 3, _>(|k| dir[k].lane(0) < 0.0);
         let lo = L::from_fn(|l| t_min[l]);
         let mut hi = L::from_fn(|l| t_max[l]);
@@ -378,15 +380,8 @@ impl Kept {
     }
 }
 
-/// `1/d`, finite: `±f64::MAX` for `d = ±0`, so that no slab bound is `0 · ∞ = NaN` (a ray in
-/// a face's plane): the bound is then `0` on that face, and the ray enters the box there.
-#[inline(always)]
-fn inverse(d: f64) -> f64 {
-    if d == 0.0 { f64::MAX.copysign(d) } else { 1.0 / d }
-}
-
-/// A ray's direction inverted ([`inverse`]), and which corner of a box it enters by along
-/// each axis (the upper where `d_k < 0`).
+/// A ray's direction inverted, `1/d_k` (`±∞` for `d_k = ±0`), and which corner of a box it
+/// enters by along each axis (the upper where `1/d_k < 0`).
 struct Inverse {
     inv: E3,
     near: [usize; 3],
@@ -394,7 +389,7 @@ struct Inverse {
 
 impl Inverse {
     fn new(dir: E3) -> Self {
-        let inv = dir.map(inverse);
+        let inv = dir.map(|d| 1.0 / d);
         Inverse { inv, near: inv.map(|i| usize::from(i < 0.0)) }
     }
 }
@@ -407,6 +402,7 @@ fn slab(node: &Node, origin: E3, ray: &Inverse, t_min: f64, t_max: f64) -> Optio
     for (k, (o, (i, n))) in origin.into_iter().zip(ray.inv.into_iter().zip(ray.near)).enumerate() {
         let near = (node.corners[n][k] - o) * i;
         let far = (node.corners[1 - n][k] - o) * i;
+        // NaN (0 · ∞: a ray in a face's plane, parallel to it) leaves the bound as it was.
         lo = if near > lo { near } else { lo };
         hi = if far < hi { far } else { hi };
     }
@@ -420,7 +416,10 @@ fn slab_lanes<L: Lane>(node: &Node, origin: &E3<L>, inv: &E3<L>, mut lo: L, mut 
     for k in 0..3 {
         let a = (L::from_f64(node.corners[0][k]) - origin[k]) * inv[k];
         let b = (L::from_f64(node.corners[1][k]) - origin[k]) * inv[k];
-        let (near, far) = (a.min_lanes(b), a.max_lanes(b));
+        // The faces by the sign of `1/d`, as `slab` picks them (a NaN bound is then ignored
+        // in both).
+        let upper = inv[k].lt(L::zero());
+        let (near, far) = (L::select(upper, b, a), L::select(upper, a, b));
         lo = L::select(lo.lt(near), near, lo);
         hi = L::select(far.lt(hi), far, hi);
     }

@@ -52,18 +52,17 @@ impl Sheared {
 
     /// Keeps triangle `k`'s crossing in `best` if it has one in `(t_min, t_max)` nearer than
     /// `best`'s, or as near and `k` is lower: the nearest crossing then does not depend on
-    /// the order the triangles are tried in. Returns the new bound on `t`.
+    /// the order the triangles are tried in. Returns how far boxes are still worth entering
+    /// ([`reach`]).
     #[inline(always)]
     fn keep(&self, corners: &[E3; 3], k: usize, t_min: f64, t_max: f64, best: &mut Option<(f64, u32)>) -> f64 {
-        let Some(t) = self.cross(corners).filter(|&t| t_min < t && t <= t_max) else { return t_max };
-        match *best {
-            Some((b, j)) if t > b || (t == b && k as u32 > j) => b,
-            None if t == t_max => t_max,
-            _ => {
-                *best = Some((t, k as u32));
-                t
-            }
+        let k = k as u32;
+        if let Some(t) = self.cross(corners).filter(|&t| t_min < t && t < t_max)
+            && best.is_none_or(|(b, j)| t < b || (t == b && k < j))
+        {
+            *best = Some((t, k));
         }
+        reach(*best, t_max)
     }
 
     /// A corner in the sheared frame: `(p_x − S_x p_z, p_y − S_y p_z, S_z p_z)` for
@@ -163,7 +162,7 @@ impl MeshShape {
         let mut best = None;
         self.bvh.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut limit| {
             for k in leaf {
-                limit = sheared.keep(&self.corners[k], k, t_min, limit, &mut best);
+                limit = sheared.keep(&self.corners[k], k, t_min, t_max, &mut best);
             }
             Some(limit)
         });
@@ -197,7 +196,7 @@ impl MeshShape {
         self.bvh.traverse_leaves4(&origin, &dir, *t_min, &mut limit, |leaf, lanes, limit| {
             for l in (0..4).filter(|&l| lanes[l]) {
                 for k in leaf.clone() {
-                    limit[l] = sheared[l].keep(&self.corners[k], k, t_min[l], limit[l], &mut best[l]);
+                    limit[l] = sheared[l].keep(&self.corners[k], k, t_min[l], t_max[l], &mut best[l]);
                 }
             }
             Some(())
@@ -231,6 +230,15 @@ impl MeshShape {
     fn triangle(&self, c: &Crossing) -> &TriangleShape {
         &self.triangles[(c.part as usize).min(self.triangles.len() - 1)]
     }
+}
+
+/// How far past the nearest crossing yet, `b`, boxes are still entered (within `t_max`):
+/// `b (1 + 64 ε)`, since a box's entry computed by the slab test may round a few ulps past a
+/// crossing inside it that the triangle test puts at `b`, and a tie there (coincident faces)
+/// goes to the lower index, whichever box is reached first.
+#[inline(always)]
+fn reach(best: Option<(f64, u32)>, t_max: f64) -> f64 {
+    best.map_or(t_max, |(b, _)| (b + 64.0 * f64::EPSILON * b.abs()).min(t_max))
 }
 
 /// The rays' origins and directions in lanes.
@@ -481,6 +489,54 @@ mod tests {
             assert_eq!(mesh.occludes4::<F64x4>(rays4, &t_min, &t_max), blocked, "round {round}");
         }
         assert!(hits > 600, "{hits} hits");
+    }
+
+    /// A ray along an axis, through the edges of a grid-cut cube, with the other components
+    /// `+0` or `−0` (`1/d = ±∞`; its origin in the plane of a box's faces, `0 · ∞`): the
+    /// same crossing either way, one ray or four, and the spans of a line from inside.
+    #[test]
+    fn signed_zero_directions_meet_what_positive_zeros_do() {
+        let cube = cube(4, 0);
+        for x in [-0.5, 0.0, 0.5] {
+            for y in [0.3, -0.3] {
+                let o = [x, y, -3.0];
+                let want = cube.nearest(o, [0.0, 0.0, 1.0], 1e-9, f64::INFINITY).map(|c| (c.t, c.part));
+                assert_eq!(want.map(|c| c.0), Some(2.0), "{o:?}");
+                for d in [[-0.0, 0.0, 1.0], [0.0, -0.0, 1.0], [-0.0, -0.0, 1.0]] {
+                    let one = cube.nearest(o, d, 1e-9, f64::INFINITY).map(|c| (c.t, c.part));
+                    assert_eq!(one, want, "{o:?} {d:?}");
+                    assert!(cube.blocks(o, d, 1e-9, f64::INFINITY), "{o:?} {d:?}");
+                    let four = cube.intersect4::<F64x4>([(o, d); 4], &[1e-9; 4], &[f64::INFINITY; 4]);
+                    assert_eq!(four[3].map(|c| (c.t, c.part)), want, "{o:?} {d:?}");
+                }
+                // From inside, through the grid's lines.
+                let spans = cube.spans(&ray([x, y, 0.0], [0.0, 0.0, 1.0]));
+                assert_eq!(&spans[..], &[(-1.0, 1.0)], "{x} {y}");
+            }
+        }
+    }
+
+    /// Eight copies of one triangle (coincident faces, two leaves): of 20,000 rays, those that
+    /// cross all eight at one `t` keep the same one alone and four together.
+    #[test]
+    fn coincident_faces_go_to_the_same_triangle_one_ray_or_four() {
+        let copies = (0..8).map(|_| TriangleShape::new([[-1.0, -1.0, 0.3], [1.1, -0.9, 0.3], [0.1, 1.3, 0.3]]));
+        let mesh = MeshShape::new(copies.collect::<Result<_, _>>().unwrap(), false).unwrap();
+        let mut random = stream(0x1234_5678);
+        let mut hits = 0;
+        for _ in 0..5_000 {
+            let rays: [(E3, E3); 4] = core::array::from_fn(|_| {
+                let o = [0.2 * random(), 0.2 * random(), 2.0 + random()];
+                (o, cga_core::euclid::unit([0.3 * random(), 0.3 * random(), -1.0]).unwrap())
+            });
+            let four = mesh.intersect4::<F64x4>(rays, &[1e-9; 4], &[f64::INFINITY; 4]);
+            for (l, (o, d)) in rays.into_iter().enumerate() {
+                let one = mesh.nearest(o, d, 1e-9, f64::INFINITY);
+                assert_eq!(four[l], one, "{o:?} {d:?}");
+                hits += usize::from(one.is_some());
+            }
+        }
+        assert!(hits > 15_000, "{hits} hits");
     }
 
     /// The crossing at a span's end names the triangle it lies on, whose normal it takes.
