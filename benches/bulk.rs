@@ -133,12 +133,15 @@ impl Kernel for MoveByMatrix {
 }
 
 /// What a form's result must equal, bit for bit: the sandwich one at a time, the prepared
-/// matrix one at a time, or nothing (glam's, on other points).
+/// matrix one at a time, the points given (a copy), or nothing (glam's, and the copy of its
+/// points: on other points).
 #[derive(Clone, Copy, PartialEq)]
 enum Same {
     Sandwich,
     Matrix,
+    Input,
     Glam,
+    Euclidean,
 }
 
 /// A form's timed call, on the arrays of conformal points in and out.
@@ -193,11 +196,12 @@ impl Conformal {
 /// `simd::run` with a kernel, through `simd::run_packed` on points stored packed, and
 /// through `simd::map` with a closure on eight lanes and on four, marked `#[inline(always)]`
 /// and not: the marked closure is meant to cost nothing over the kernel at the lane width
-/// `run` takes on this CPU.
+/// `run` takes on this CPU. Last, a plain copy of the conformal points and of glam's
+/// Euclidean ones: the floors of the memory path, which say what the bytes alone allow.
 fn conformal_methods(m: Motor, points: &[[f64; 3]], xs: &[Vector]) -> Vec<Conformal> {
     let (lanes, eight) = (simd::splat::<Motor, F64x4>(m), simd::splat::<Motor, F64x8>(m));
-    let (affine, euclidean) = (DAffine3::from(m), points.to_vec());
-    let moved = RefCell::new(vec![[0.0; 3]; points.len()]);
+    let (affine, euclidean, euclidean_copy) = (DAffine3::from(m), points.to_vec(), points.to_vec());
+    let (moved, copied) = (RefCell::new(vec![[0.0; 3]; points.len()]), RefCell::new(vec![[0.0; 3]; points.len()]));
     let prepared = m.prepare::<Vector>();
     let matrix = Prepare::<Vector>::matrix(m);
     vec![
@@ -248,6 +252,14 @@ fn conformal_methods(m: Motor, points: &[[f64; 3]], xs: &[Vector]) -> Vec<Confor
         Conformal::on_arrays("simd::map(|x| m.sandwich(x))", Same::Sandwich, move |x, out| {
             simd::map(x, out, |p: Vector<F64x4>| lanes.sandwich(p)).unwrap()
         }),
+        // The floors of the memory path: the same bytes read and written with no arithmetic.
+        Conformal::on_arrays("copy of the conformal points", Same::Input, |x, out| out.copy_from_slice(x)),
+        Conformal {
+            name: "copy of glam's Euclidean points",
+            same: Same::Euclidean,
+            time: Box::new(move |_: &[Vector], _: &mut [Vector]| copied.borrow_mut().copy_from_slice(&euclidean_copy)),
+            result: Box::new(|out: &[Vector]| out.to_vec()),
+        },
     ]
 }
 
@@ -306,7 +318,8 @@ fn interleaved_conformal(m: Motor, points: &[[f64; 3]]) {
         let want = match f.same {
             Same::Sandwich => &sandwich,
             Same::Matrix => &matrix,
-            Same::Glam => continue,
+            Same::Input => &xs,
+            Same::Glam | Same::Euclidean => continue,
         };
         (f.time)(&xs, &mut out);
         assert!((f.result)(&out) == *want, "{} differs from one at a time", f.name);

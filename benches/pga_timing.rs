@@ -8,7 +8,9 @@
 //! or `f64` one at a time, `f32-lanes` or `f64-lanes` on SIMD lanes by `simd::run`: sixteen
 //! f32 to an AVX-512 register (eight with AVX2) or four f64 to an AVX one, transposed from and
 //! to the arrays of values; `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
-//! stored packed, eight f32 or four f64 to a 256-bit packet, packed once before timing).
+//! stored packed, eight f32 or four f64 to a 256-bit packet, packed once before timing); and
+//! for the points `f32-copy` and `f64-copy`, a plain copy of the same points, the floor of the
+//! memory path that moving them takes.
 //!
 //! `cargo run --release -p cga-benches --example pga_timing`
 
@@ -192,6 +194,7 @@ fn main() {
         vec![Point::zero(); POINTS],
         vec![Point::zero(); POINTS],
     );
+    let (mut copied32, mut copied64) = (o32.clone(), o64.clone());
     let (packed32, packed64) = (packed(&p32), packed(&p64));
     let (mut packed_out32, mut packed_out64) = (packets(&p32), packets(&p64));
     // Each form timed in rounds of its own, one after another (as klein.cpp times klein's):
@@ -223,6 +226,15 @@ fn main() {
             run_packed(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&packed64), &mut packed_out64).unwrap();
             black_box(&packed_out64);
         },
+        // The floor of the memory path: the same bytes read and written with no arithmetic.
+        &mut || {
+            copied32.copy_from_slice(black_box(&p32));
+            black_box(&copied32);
+        },
+        &mut || {
+            copied64.copy_from_slice(black_box(&p64));
+            black_box(&copied64);
+        },
     ];
     let medians: Vec<f64> = forms.iter_mut().map(|f| medians_ns(POINTS, 3, ROUNDS, &mut [&mut **f])[0]).collect();
     // Each form moves the points as the sandwich does.
@@ -235,7 +247,9 @@ fn main() {
     assert_eq!(lanes32, o32, "f32 lanes give the bits of one at a time");
     assert_eq!(unpacked::<Point<f32>>(&packed_out32, POINTS), o32, "f32 packets give the bits of one at a time");
     assert_eq!(unpacked::<Point<f64>>(&packed_out64, POINTS), lanes, "f64 packets give the bits of lanes");
-    for (form, ns) in ["f32", "f64", "f64-lanes", "f32-lanes", "f32-packed", "f64-packed"].iter().zip(medians) {
+    assert!(copied32 == p32 && copied64 == p64);
+    let forms = ["f32", "f64", "f64-lanes", "f32-lanes", "f32-packed", "f64-packed", "f32-copy", "f64-copy"];
+    for (form, ns) in forms.iter().zip(medians) {
         println!("motor_points {form} {ns:.3}");
     }
 

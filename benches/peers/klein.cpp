@@ -2,8 +2,9 @@
 // benches/peers/klein.sh, the same way benches/pga_timing.rs times ours: a motor moving 1e6
 // points through klein's array form `m(in, out, count)` (which precomputes the motor once),
 // and over batches of 256 operands the motor product, the join of two points and the meets of
-// two and three planes; the median over rounds, in ns per operation. Prints `operation klein
-// ns` lines. Only this harness is ours; klein's headers come from the checkout in $KLEIN_DIR.
+// two and three planes; the median over rounds, in ns per operation; and, as the floor of the
+// memory path, a plain copy of the 1e6 points (`klein-copy`). Prints `operation klein ns`
+// lines. Only this harness is ours; klein's headers come from the checkout in $KLEIN_DIR.
 // Build: g++ -O3 -march=native -std=c++17 -I$KLEIN_DIR/public klein.cpp
 #include <klein/klein.hpp>
 #include <algorithm>
@@ -52,6 +53,12 @@ int main() {
     std::printf("motor_points klein %.3f\n", median_ns(POINTS, 3, [&] {
         escape(in.data());
         m(in.data(), out.data(), POINTS);
+        escape(out.data());
+    }));
+    // The floor of the memory path: the same 16 MB read and written with no arithmetic.
+    std::printf("motor_points klein-copy %.3f\n", median_ns(POINTS, 3, [&] {
+        escape(in.data());
+        std::copy(in.begin(), in.end(), out.begin());
         escape(out.data());
     }));
 

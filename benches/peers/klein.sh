@@ -4,7 +4,8 @@
 # -O3 -march=native, and our example in release, each run ROUNDS times in turn; prints the
 # table of medians for benches/README.md with ours over klein's time (f32 and f64; klein has
 # no f64): on values in arrays (the faster of one at a time and SIMD lanes), and on values
-# stored packed (`simd::run_packed`).
+# stored packed (`simd::run_packed`); then the 1e6 points against a plain copy of them, the
+# floor of the memory path.
 #
 #   KLEIN_DIR=/path/to/klein benches/peers/klein.sh
 #
@@ -45,4 +46,16 @@ for op in ops:
     best64 = min(v for v in (b, bl) if v is not None)
     print(f"| {op} | {k:.3f} | {fmt(a)} | {fmt(al)} | {fmt(ap)} | {fmt(b)} | {fmt(bl)} | {fmt(bp)} "
           f"| {ratio(best32, k)} | {ratio(ap, k)} | {ratio(best64, k)} | {ratio(bp, k)} |")
+# The 1e6 points against the floor of the memory path: a plain copy of the same points.
+kc, c32, c64 = (m.get(("motor_points", f)) for f in ("klein-copy", "f32-copy", "f64-copy"))
+if None not in (kc, c32, c64):
+    k, best32, best64 = m[("motor_points", "klein")], *(
+        min(m[("motor_points", f)] for f in fs) for fs in (("f32", "f32-lanes"), ("f64", "f64-lanes")))
+    print()
+    print("| 1e6 points | klein | ours f32 | ours f64 |")
+    print("|---|---|---|---|")
+    print(f"| moved, ns a point | {k:.3f} | {best32:.3f} | {best64:.3f} |")
+    print(f"| copied, ns a point | {kc:.3f} | {c32:.3f} | {c64:.3f} |")
+    print(f"| moved / copied | {k / kc:.2f}× | {best32 / c32:.2f}× | {best64 / c64:.2f}× |")
+    print(f"| copied / klein copied | 1.00× | {c32 / kc:.2f}× | {c64 / kc:.2f}× |")
 PY
