@@ -5,7 +5,7 @@
 //! noisy machine only ratios measured side by side mean anything.
 
 use cga_core::simd::{self, F64x4, F64x8, Kernel, Lane, Lanes, Packed};
-use cga_core::{Motor, Prepare, Rotor, Sandwich, Vector, down, up};
+use cga_core::{Motor, Prepare, Rotor, RunInto, Sandwich, Vector, down, up};
 use criterion::{Criterion, Throughput};
 use glam::{DAffine3, DQuat, DVec3};
 use std::cell::RefCell;
@@ -215,6 +215,7 @@ fn conformal_methods(m: Motor, points: &[[f64; 3]], xs: &[Vector]) -> Vec<Confor
             simd::run(&MoveByMatrix(matrix), x, out).unwrap()
         }),
         Conformal::on_arrays("m.prepare().apply_into", Same::Matrix, move |x, out| prepared.apply_into(x, out)),
+        Conformal::on_arrays("m.prepare().run_into", Same::Matrix, move |x, out| prepared.run_into(x, out).unwrap()),
         Conformal::packed("stored packed: run_packed(MoveBy)", Same::Sandwich, xs, move |x, out| {
             simd::run_packed(&MoveBy(m), x, out).unwrap()
         }),

@@ -7,14 +7,15 @@
 //! rounds in turn, as klein.cpp times them). Prints `operation form ns` lines (`form` is `f32`
 //! or `f64` one at a time, `f32-lanes` or `f64-lanes` on SIMD lanes by `simd::run`: sixteen
 //! f32 to an AVX-512 register (eight with AVX2) or four f64 to an AVX one, transposed from and
-//! to the arrays of values; `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
+//! to the arrays of values (for the points the prepared motor's generated `run_into`, the same
+//! transposes through `simd::map`); `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
 //! stored packed, eight f32 or four f64 to a 256-bit packet, packed once before timing); and
 //! for the points `f32-copy` and `f64-copy`, a plain copy of the same points, the floor of the
 //! memory path that moving them takes.
 //!
 //! `cargo run --release -p cga-benches --example pga_timing`
 
-use cga_algebras::pga::{Line, Motor, Plane, Point, Prepare, Sandwich};
+use cga_algebras::pga::{Line, Motor, Plane, Point, Prepare, RunInto, Sandwich};
 use cga_benches::medians_ns;
 use cga_core::Real;
 use cga_core::simd::{Element, Kernel, Lane, Lanes, Packed, run, run_packed};
@@ -166,7 +167,7 @@ kernel!(Join, (Point, Point) -> Line, |(p, q)| p & q);
 kernel!(Meet, (Plane, Plane) -> Line, |(p, q)| p ^ q);
 kernel!(Meet3, (Plane, Plane, Plane) -> Point, |(p, q, r)| p ^ q ^ r);
 
-/// The prepared matrix of a motor on points, in every lane: `run`'s kernel.
+/// The prepared matrix of a motor on points, in every lane: `run_packed`'s kernel.
 struct MovePoints<T>([T; 13]);
 
 macro_rules! move_points {
@@ -210,11 +211,11 @@ fn main() {
             black_box(&o64);
         },
         &mut || {
-            run(&MovePoints(Prepare::<Point>::matrix(m64)), black_box(&p64), &mut lanes).unwrap();
+            m64.prepare().run_into(black_box(&p64), &mut lanes).unwrap();
             black_box(&lanes);
         },
         &mut || {
-            run(&MovePoints(Prepare::<Point<f32>>::matrix(m32)), black_box(&p32), &mut lanes32).unwrap();
+            m32.prepare().run_into(black_box(&p32), &mut lanes32).unwrap();
             black_box(&lanes32);
         },
         &mut || {

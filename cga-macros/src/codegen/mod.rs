@@ -56,6 +56,7 @@ fn emit(g: &Gen) -> TokenStream {
     out.extend(g.scalar_products());
     out.extend(g.sandwiches());
     out.extend(g.prepared());
+    out.extend(g.run_into_trait());
     out.extend(g.dense());
     out.extend(g.registry());
     out.extend(g.aliases());

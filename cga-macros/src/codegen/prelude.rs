@@ -22,6 +22,8 @@ impl Gen<'_> {
         let traits = Product::ALL.iter().map(|&k| format_ident!("{}", names(k).trait_name)).chain(
             ["Sandwich", "Prepare", "ScalarProduct", "Exp", "Log", "Inverse", "Blades"].map(|n| format_ident!("{n}")),
         );
+        // With lanes, a prepared versor's `run_into` too.
+        let traits = traits.chain(self.spec.lanes.as_ref().map(|_| format_ident!("RunInto")));
         let doc = format!(
             " Every type of the algebra at `{}` and every generated trait: `use …::prelude::*`.",
             quote!(#path)

@@ -223,3 +223,57 @@ fn pga_f32_batches_by_run_packed_with_the_bits_of_one_at_a_time() {
         check(&Prepared(Prepare::<PPoint<f32>>::matrix(m)), &points, |x| prepared.apply(x));
     }
 }
+
+/// A prepared versor's `run_into` (generated for every versor and type it acts on, in
+/// algebras with lanes) gives the bits of `apply_into`, in f64 and f32, at lengths about the
+/// lanes' four, eight and sixteen, for PGA and for the algebra declared here; unequal lengths
+/// give `None` and write nothing.
+#[test]
+fn prepared_versors_run_into_with_the_bits_of_apply_into() {
+    use cga_algebras::pga::RunInto;
+    use pga2::{Line as Line2, Motor as Motor2, Point as Point2, RunInto as _};
+    let to32 = |a: &[f64]| a.iter().map(|&c| c as f32).collect::<Vec<_>>();
+    for n in [0, 1, 3, 4, 7, 8, 15, 16, 17, 33, 41] {
+        let (motor, points) = (pga_motor(n), pga_points(n));
+        let prepared = motor.prepare();
+        let (mut one, mut lanes) = (vec![PPoint::zero(); n], vec![PPoint::zero(); n]);
+        prepared.apply_into(&points, &mut one);
+        prepared.run_into(&points, &mut lanes).unwrap();
+        assert!(one.iter().zip(&lanes).all(|(a, b)| same_bits(a.to_array(), b.to_array())), "{n} f64 points");
+
+        let planes = filled(n, |k| PPlane::new(value(k), value(k + 4), value(k + 8), value(k + 12)));
+        let prepared = motor.prepare::<PPlane>();
+        let (mut one, mut lanes) = (vec![PPlane::zero(); n], vec![PPlane::zero(); n]);
+        prepared.apply_into(&planes, &mut one);
+        prepared.run_into(&planes, &mut lanes).unwrap();
+        assert!(one.iter().zip(&lanes).all(|(a, b)| same_bits(a.to_array(), b.to_array())), "{n} f64 planes");
+
+        let motor32 = Motor::<f32>::from_array(to32(&motor.to_array()).try_into().unwrap());
+        let lines32: Vec<PLine<f32>> =
+            (0..n).map(|k| PLine::from_array(core::array::from_fn(|i| value(6 * k + i + 500) as f32))).collect();
+        let prepared = motor32.prepare::<PLine<f32>>();
+        let (mut one, mut lanes) = (vec![PLine::<f32>::zero(); n], vec![PLine::<f32>::zero(); n]);
+        prepared.apply_into(&lines32, &mut one);
+        prepared.run_into(&lines32, &mut lanes).unwrap();
+        let bits = |l: &PLine<f32>| l.to_array().map(f32::to_bits);
+        assert!(one.iter().zip(&lanes).all(|(a, b)| bits(a) == bits(b)), "{n} f32 lines");
+
+        let motor2 = Motor2::from_array([value(90 + n), value(91), value(92), value(93)]);
+        let points2: Vec<Point2> =
+            filled(n, |k| Point2::from_array([value(3 * k), value(3 * k + 1), value(3 * k + 2)]));
+        let prepared = motor2.prepare::<Point2>();
+        let (mut one, mut lanes) = (vec![Point2::zero(); n], vec![Point2::zero(); n]);
+        prepared.apply_into(&points2, &mut one);
+        prepared.run_into(&points2, &mut lanes).unwrap();
+        assert!(one.iter().zip(&lanes).all(|(a, b)| same_bits(a.to_array(), b.to_array())), "{n} user points");
+        let lines2: Vec<Line2> = filled(n, |k| Line2::from_array([value(5 * k), value(5 * k + 1), value(5 * k + 2)]));
+        let (mut one, mut lanes) = (vec![Line2::zero(); n], vec![Line2::zero(); n]);
+        let prepared = motor2.prepare::<Line2>();
+        prepared.apply_into(&lines2, &mut one);
+        prepared.run_into(&lines2, &mut lanes).unwrap();
+        assert!(one.iter().zip(&lanes).all(|(a, b)| same_bits(a.to_array(), b.to_array())), "{n} user lines");
+    }
+    let (points, mut short) = (pga_points(9), vec![PPoint::zero(); 8]);
+    assert!(pga_motor(1).prepare::<PPoint>().run_into(&points, &mut short).is_none());
+    assert!(short.iter().all(|p| *p == PPoint::zero()), "nothing written");
+}
