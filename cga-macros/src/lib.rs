@@ -47,7 +47,8 @@
 //! transposes, `splat`), so `simd::run`, `run_packed`, `run_columns` and `map` batch the
 //! algebra's products four or eight f64 values at a time, eight or sixteen f32 ones, with
 //! the bits of one at a time, as they do cga-core's own types; and each prepared versor
-//! (`v.prepare::<X>()`) on f64 or f32 values gets `run_into`, `apply_into` on lanes. It
+//! (`v.prepare::<X>()`) on f64 or f32 values gets `run_into` (the generated trait `RunInto`,
+//! also in the prelude): `apply_into`'s bits on lanes, `None` where the lengths differ. It
 //! needs the `scalar` trait implemented by `f32` and by the lanes `F64x4`, `F64x8`, `F32x8`
 //! and `F32x16` (`cga_core::Real` is).
 //!

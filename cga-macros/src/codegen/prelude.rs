@@ -22,8 +22,14 @@ impl Gen<'_> {
         let traits = Product::ALL.iter().map(|&k| format_ident!("{}", names(k).trait_name)).chain(
             ["Sandwich", "Prepare", "ScalarProduct", "Exp", "Log", "Inverse", "Blades"].map(|n| format_ident!("{n}")),
         );
-        // With lanes, a prepared versor's `run_into` too.
-        let traits = traits.chain(self.spec.lanes.as_ref().map(|_| format_ident!("RunInto")));
+        // With lanes, a prepared versor's `run_into` too, under the `lanes` item's attributes
+        // (a crate may gate its lanes behind a feature).
+        let run_into = spec.lanes.as_ref().map(|crate::parse::PathItem { attrs, .. }| {
+            quote! {
+                #(#attrs)*
+                pub use super::RunInto as _;
+            }
+        });
         let doc = format!(
             " Every type of the algebra at `{}` and every generated trait: `use …::prelude::*`.",
             quote!(#path)
@@ -33,6 +39,7 @@ impl Gen<'_> {
             #[doc = #doc]
             pub mod prelude {
                 #(pub use super::#traits as _;)*
+                #run_into
                 #(#items)*
             }
         }

@@ -134,6 +134,7 @@ impl Gen<'_> {
         let (f64x4, f32x8, f32x16) = (map(quote!(F64x4)), map(quote!(F32x8)), map(quote!(F32x16)));
         quote! {
             #(#attrs)*
+            #[doc(hidden)]
             impl RunInto<#xi<f64>> for Prepared<#vi<f64>, #xi<f64>> {
                 type Output = <#vi<f64> as Sandwich<#xi<f64>>>::Output;
                 #[inline]
@@ -142,6 +143,7 @@ impl Gen<'_> {
                 }
             }
             #(#attrs)*
+            #[doc(hidden)]
             impl RunInto<#xi<f32>> for Prepared<#vi<f32>, #xi<f32>> {
                 type Output = <#vi<f32> as Sandwich<#xi<f32>>>::Output;
                 #[inline]

@@ -277,3 +277,28 @@ fn prepared_versors_run_into_with_the_bits_of_apply_into() {
     assert!(pga_motor(1).prepare::<PPoint>().run_into(&points, &mut short).is_none());
     assert!(short.iter().all(|p| *p == PPoint::zero()), "nothing written");
 }
+
+/// Lanes gated off by an attribute on the `lanes` item (as a crate gates them behind a
+/// feature): the algebra, its prelude included, builds without them.
+mod gated {
+    cga_macros::algebra! {
+        scalar = cga_core::Real;
+        #[cfg(any())]
+        lanes = cga_core::simd;
+        prelude = f64;
+        signature = (2, 0);
+        /// A vector x e1 + y e2.
+        type Vector = [grade(1)];
+        /// A rotor of the plane.
+        versor Rotor = [s, e12];
+    }
+}
+
+#[test]
+fn an_algebra_whose_lanes_are_gated_off_keeps_its_prelude() {
+    use gated::prelude::*;
+    let (r, v) = (Rotor::from_array([0.0, 1.0]), Vector::from_array([1.0, 2.0]));
+    // The half turn e12: e12 v e21 = −v.
+    assert_eq!(r.sandwich(v).to_array(), [-1.0, -2.0]);
+    assert_eq!(r.prepare().apply(v).to_array(), [-1.0, -2.0]);
+}
