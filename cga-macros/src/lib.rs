@@ -83,6 +83,11 @@
 //! the storage array holds it in the canonical blade's slot. A blade is spelled one way in the
 //! whole algebra (a `grade(k)` selector uses that spelling too); two spellings are refused.
 //!
+//! A type may not take the name of an item the macro generates in every algebra (the product
+//! traits, `Sandwich`, `Prepare`, `Prepared`, `RunInto`, `ScalarProduct`, `Exp`, `Log`,
+//! `Inverse`, `Blades`, the error and registry types, `prelude`): such a name is refused,
+//! spanned on it (`ui/fail/generated_name.rs`).
+//!
 //! # Output
 //!
 //! For every type a `struct Name<T = f64>` with one named field per blade; for every
@@ -328,9 +333,46 @@ fn resolve_scalars(scalars: Option<parse::Scalars>) -> syn::Result<Vec<syn::Type
     Ok(scalars.types)
 }
 
+/// The items every invocation generates beside the declared types (traits, the prepared
+/// sandwich, the registry's and the errors' types), whose names a declared type cannot take.
+const GENERATED: [&str; 26] = [
+    "GeometricProduct",
+    "OuterProduct",
+    "InnerProduct",
+    "RegressiveProduct",
+    "LeftContraction",
+    "RightContraction",
+    "CommutatorProduct",
+    "Sandwich",
+    "Prepare",
+    "Prepared",
+    "RunInto",
+    "ScalarProduct",
+    "Exp",
+    "Log",
+    "Inverse",
+    "Blades",
+    "TruncationError",
+    "NormaliseError",
+    "ExpError",
+    "LogError",
+    "ProductKind",
+    "UnaryKind",
+    "ProductEntry",
+    "UnaryEntry",
+    "InverseEntry",
+    "prelude",
+];
+
 fn check_new_name(names: &[Ident], name: &Ident) -> syn::Result<()> {
     if names.contains(name) {
         return Err(Error::new(name.span(), format!("duplicate type `{name}`: it is declared twice")));
+    }
+    if GENERATED.iter().any(|g| name == g) {
+        return Err(Error::new(
+            name.span(),
+            format!("`{name}` is the name of an item the macro generates in every algebra: name the type otherwise"),
+        ));
     }
     Ok(())
 }
@@ -742,7 +784,7 @@ mod tests {
             }
             checked += 1;
         }
-        assert_eq!(checked, 16, "the ui/fail inputs the macro refuses itself");
+        assert_eq!(checked, 17, "the ui/fail inputs the macro refuses itself");
     }
 
     /// Expands cga-core's own invocation and writes it, formatted, to
