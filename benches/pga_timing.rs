@@ -8,8 +8,9 @@
 //! or `f64` one at a time, `f32-lanes` or `f64-lanes` on SIMD lanes by `simd::run`: sixteen
 //! f32 to an AVX-512 register (eight with AVX2) or four f64 to an AVX one, transposed from and
 //! to the arrays of values (for the points the prepared motor's generated `run_into`, the same
-//! transposes through `simd::map`); `f32-packed` or `f64-packed` by `simd::run_packed` on the same values
-//! stored packed, eight f32 or four f64 to a 256-bit packet, packed once before timing); and
+//! transposes through `simd::map`); `f32-packed` or `f64-packed` by `simd::run_packed` on the
+//! same values stored packed, eight f32 or four f64 to a 256-bit packet, packed once before
+//! timing); and
 //! for the points `f32-copy` and `f64-copy`, a plain copy of the same points, the floor of the
 //! memory path that moving them takes.
 //!

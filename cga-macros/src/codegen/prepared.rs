@@ -132,30 +132,29 @@ impl Gen<'_> {
             }}
         };
         let (f64x4, f32x8, f32x16) = (map(quote!(F64x4)), map(quote!(F32x8)), map(quote!(F32x16)));
-        quote! {
-            #(#attrs)*
-            #[doc(hidden)]
-            impl RunInto<#xi<f64>> for Prepared<#vi<f64>, #xi<f64>> {
-                type Output = <#vi<f64> as Sandwich<#xi<f64>>>::Output;
-                #[inline]
-                fn run_into(&self, xs: &[#xi<f64>], out: &mut [Self::Output]) -> Option<()> {
-                    #f64x4
+        let run_into = |scalar: TokenStream, body: TokenStream| {
+            quote! {
+                #(#attrs)*
+                #[doc(hidden)]
+                impl RunInto<#xi<#scalar>> for Prepared<#vi<#scalar>, #xi<#scalar>> {
+                    type Output = <#vi<#scalar> as Sandwich<#xi<#scalar>>>::Output;
+                    #[inline]
+                    fn run_into(&self, xs: &[#xi<#scalar>], out: &mut [Self::Output]) -> Option<()> {
+                        #body
+                    }
                 }
             }
-            #(#attrs)*
-            #[doc(hidden)]
-            impl RunInto<#xi<f32>> for Prepared<#vi<f32>, #xi<f32>> {
-                type Output = <#vi<f32> as Sandwich<#xi<f32>>>::Output;
-                #[inline]
-                fn run_into(&self, xs: &[#xi<f32>], out: &mut [Self::Output]) -> Option<()> {
-                    #[cfg(target_arch = "x86_64")]
-                    let wide = #path::avx512();
-                    #[cfg(not(target_arch = "x86_64"))]
-                    let wide = false;
-                    if wide { #f32x16 } else { #f32x8 }
-                }
-            }
-        }
+        };
+        let f32_body = quote! {
+            #[cfg(target_arch = "x86_64")]
+            let wide = #path::avx512();
+            #[cfg(not(target_arch = "x86_64"))]
+            let wide = false;
+            if wide { #f32x16 } else { #f32x8 }
+        };
+        let mut out = run_into(quote!(f64), f64x4);
+        out.extend(run_into(quote!(f32), f32_body));
+        out
     }
 
     /// With lanes, the trait of `run_into` (one per algebra; [`Gen::prepared_lanes`] gives
