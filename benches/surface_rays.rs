@@ -10,12 +10,15 @@
 //!
 //! ```sh
 //! cargo run --release -p cga-benches --example surface_rays -- SCENE.toml --object NAME \
-//!     [--width 1280] [--height 960] [--rays OUT.bin] [--rounds 5]
+//!     [--width 1280] [--height 960] [--rays OUT.bin] [--rounds 5] [--mesh MESH.ply]
 //! ```
 //!
 //! The height follows the scene's aspect unless given; `--rounds 0` writes the rays without
-//! timing. `OUT.bin` holds, so that `benches/peers/embree.py` traces the very same rays, one
-//! record a pixel — rows `j = 0 .. height` (the bottom row first), in each the columns
+//! timing. With `--mesh` (the surface's mesh as `cga-trace mesh` exports it) the same rays
+//! are also timed against that mesh as the renderer meets a mesh object (its hierarchy and
+//! watertight triangle test), in the same three batches, split by the exact surface's hits:
+//! `ours-mesh`. `OUT.bin` holds, so that `benches/peers/embree.py` traces the very same rays,
+//! one record a pixel — rows `j = 0 .. height` (the bottom row first), in each the columns
 //! `i = 0 .. width` — of seven little-endian f64: the origin's x, y, z and the unit
 //! direction's, in world coordinates (those of the mesh `cga-trace mesh` exports), and our
 //! hit distance in world units, +∞ for a miss.
@@ -49,6 +52,9 @@ struct Args {
     /// Interleaved rounds (0: only write the rays).
     #[arg(long, default_value_t = 5)]
     rounds: usize,
+    /// A mesh of the surface to time on the same rays.
+    #[arg(long)]
+    mesh: Option<PathBuf>,
 }
 
 type Error = Box<dyn std::error::Error>;
@@ -155,5 +161,30 @@ fn main() -> Result<(), Error> {
     alone.objects.retain(|o| *o.name == *args.object);
     let renderer = Renderer::new(&alone);
     time("ours-renderer", args.rounds, batches, |rays| nearest_all(&renderer, rays));
+    if let Some(mesh) = &args.mesh {
+        let (shape, rays) = mesh_of(&args, mesh)?;
+        let split = |hits: bool| -> Vec<Ray> {
+            rays.iter().zip(&t).filter(|(_, t)| t.is_some() == hits).map(|(r, _)| *r).collect()
+        };
+        let (hit, miss) = (split(true), split(false));
+        time("ours-mesh", args.rounds, [&rays[..], &hit[..], &miss[..]], |rays| cross_all(&shape, rays));
+    }
     Ok(())
+}
+
+/// The scene with the mesh file added as an object, `mesh of surface`: that object prepared
+/// as the renderer prepares it, and the scene's camera rays (in its own frame, which the
+/// added object may move; the same pixels in the same order).
+fn mesh_of(args: &Args, mesh: &Path) -> Result<(SparseShape, Vec<Ray>), Error> {
+    const NAME: &str = "mesh of surface";
+    let file = std::path::absolute(mesh)?;
+    let text = std::fs::read_to_string(&args.scene)?
+        + &format!(
+            "\n[[objects]]\nname = \"{NAME}\"\ntype = \"mesh\"\nfile = {:?}\nmaterial = {{ colour = [0.5, 0.5, 0.5] }}\n",
+            file.display().to_string()
+        );
+    let mut scene = Scene::parse(&text, &args.scene.display().to_string())?;
+    scene.resize(Some(args.width), args.height)?;
+    let object = scene.objects.iter().find(|o| *o.name == *NAME).ok_or("the mesh object was not built")?;
+    Ok((Sparse::prepare(&object.shape), primary_rays(&scene.camera)?))
 }

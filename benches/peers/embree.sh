@@ -2,8 +2,8 @@
 # Our swept surfaces against Embree (the library the `embreex` wheel bundles) on primary
 # visibility: for fig3c, fig3b, catmull-rom and surface.toml, our example surface_rays
 # (benches/surface_rays.rs) forms the camera ray through every pixel centre, times meeting
-# them with the one surface, and writes them; embree.py traces the same rays against our
-# exported mesh of the surface (2·RINGS·SEGMENTS triangles, 1M by default). Both one thread,
+# them with the one surface and with our exported mesh of it (2·RINGS·SEGMENTS triangles, 1M
+# by default), and writes them; embree.py traces the same rays against that mesh. Both one thread,
 # median of ROUNDS interleaved rounds, ns per ray; prints the table for benches/README.md.
 #
 #   python3 -m venv /tmp/embree && /tmp/embree/bin/pip install embreex numpy
@@ -30,9 +30,12 @@ for scene in fig3c fig3b catmull-rom surface; do
     object=surface
     [ "$scene" = surface ] && object="evolved surface"
     file="$root/cga-trace/scenes/$scene.toml"
+    # The mesh first: our side times it too (`ours-mesh`), and embree.py reads it.
+    [ -e "$out/$scene.ply" ] || "$cga_trace" mesh "$file" --object "$object" -o "$out/$scene.ply" \
+        --rings "${RINGS:-512}" --segments "${SEGMENTS:-1024}" > /dev/null
     for _ in $(seq "${PASSES:-1}"); do
-        "$ours" "$file" --object "$object" --width "$width" --rounds "$rounds" --rays "$out/$scene.bin" |
-            sed "s/^/$scene /" >> "$out/raw.txt"
+        "$ours" "$file" --object "$object" --width "$width" --rounds "$rounds" --rays "$out/$scene.bin" \
+            --mesh "$out/$scene.ply" | sed "s/^/$scene /" >> "$out/raw.txt"
         "$py" "$here/embree.py" --cga-trace "$cga_trace" --scene "$file" --object "$object" \
             --rays "$out/$scene.bin" --mesh "$out/$scene.ply" --rounds "$rounds" \
             --rings "${RINGS:-512}" --segments "${SEGMENTS:-1024}" | sed "s/^/$scene /" >> "$out/raw.txt"
@@ -60,10 +63,12 @@ for scene, r in rows.items():
     cells.append(f"{int(a['embree_only']) + int(a['ours_only'])} ({a['embree_only']} Embree only)")
     print(f"| {scene} | " + " | ".join(cells) + " |")
 print()
-print("| scene | ours via Renderer::nearest: all / hit / miss | Embree BVH build | median abs(t_Embree - t_ours) | run() call overhead |")
-print("|---|---|---|---|---|")
+print("| scene | ours via Renderer::nearest: all / hit / miss | ours on the mesh: all / hit / miss | over Embree | Embree BVH build | median abs(t_Embree - t_ours) | run() call overhead |")
+print("|---|---|---|---|---|---|---|")
 for scene, r in rows.items():
     nearest = " / ".join(f"{med(r, 'ours-renderer', k):.0f}" for k in ("all", "hit", "miss"))
+    mesh = " / ".join(f"{med(r, 'ours-mesh', k):.0f}" for k in ("all", "hit", "miss"))
+    over = " / ".join(f"{med(r, 'ours-mesh', k) / med(r, 'embree', k):.2f}×" for k in ("all", "hit", "miss"))
     build, dt, call = med(r, "embree", "build_ms"), first(r, "agree", "dt_median"), med(r, "embree", "call_us")
-    print(f"| {scene} | {nearest} ns | {build:.0f} ms | {dt} | {call:.1f} µs |")
+    print(f"| {scene} | {nearest} ns | {mesh} ns | {over} | {build:.0f} ms | {dt} | {call:.1f} µs |")
 PY

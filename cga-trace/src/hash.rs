@@ -52,3 +52,14 @@ pub(crate) fn permute(mut i: u32, n: u32, seed: u32) -> u32 {
         }
     }
 }
+
+/// A seeded stream of numbers in [0, 1) (xorshift64), for the tests.
+#[cfg(test)]
+pub(crate) fn stream(mut state: u64) -> impl FnMut() -> f64 {
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}

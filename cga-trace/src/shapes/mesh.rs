@@ -19,7 +19,7 @@
 //! pseudoscalar of their outer product: its sign says on which side the one passes the other.)
 
 use super::{Crossing, Shape, Spans, TriangleShape};
-use crate::bvh::Bvh;
+use crate::bvh::{Bvh, Wide};
 use crate::ray::Ray;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::Lane;
@@ -30,7 +30,9 @@ use smallvec::SmallVec;
 pub struct MeshShape {
     triangles: Vec<TriangleShape>,
     corners: Vec<[E3; 3]>,
+    /// The hierarchy: binary for rays four at a time, four-wide for one.
     bvh: Bvh,
+    wide: Wide,
     bounds: (E3, f64),
     error: f64,
     closed: bool,
@@ -129,7 +131,8 @@ impl MeshShape {
         let radius = triangles.iter().flat_map(|t| t.corners).map(|c| norm(sub(c, centre))).fold(0.0, f64::max);
         let error = triangles.iter().map(|t| t.crossing_error()).fold(0.0, f64::max);
         let corners = triangles.iter().map(|t| t.corners).collect();
-        Some(MeshShape { bvh, corners, triangles, bounds: (centre, radius), error, closed })
+        let wide = Wide::new(&bvh);
+        Some(MeshShape { bvh, wide, corners, triangles, bounds: (centre, radius), error, closed })
     }
 
     /// Its triangles.
@@ -141,7 +144,7 @@ impl MeshShape {
     fn crossings(&self, ray: &Ray, t_min: f64, t_max: f64) -> SmallVec<[(f64, u32); 8]> {
         let sheared = Sheared::new(ray.origin, ray.dir);
         let mut found: SmallVec<[(f64, u32); 8]> = SmallVec::new();
-        self.bvh.traverse_leaves(ray.origin, ray.dir, t_min, t_max, |leaf, t_max| {
+        self.wide.traverse_leaves(ray.origin, ray.dir, t_min, t_max, |leaf, t_max| {
             for k in leaf {
                 if let Some(t) = sheared.cross(&self.corners[k]).filter(|&t| t_min < t && t < t_max) {
                     found.push((t, k as u32));
@@ -160,7 +163,7 @@ impl MeshShape {
     pub fn nearest(&self, origin: E3, dir: E3, t_min: f64, t_max: f64) -> Option<Crossing> {
         let sheared = Sheared::new(origin, dir);
         let mut best = None;
-        self.bvh.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut limit| {
+        self.wide.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut limit| {
             for k in leaf {
                 limit = sheared.keep(&self.corners[k], k, t_min, t_max, &mut best);
             }
@@ -174,7 +177,7 @@ impl MeshShape {
     pub fn blocks(&self, origin: E3, dir: E3, t_min: f64, t_max: f64) -> bool {
         let sheared = Sheared::new(origin, dir);
         let crossed = |k: usize| sheared.cross(&self.corners[k]).is_some_and(|t| t_min < t && t < t_max);
-        self.bvh
+        self.wide
             .traverse_leaves(origin, dir, t_min, t_max, |mut leaf, limit| (!leaf.any(crossed)).then_some(limit))
             .is_none()
     }

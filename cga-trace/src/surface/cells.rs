@@ -208,6 +208,7 @@ fn cell_bounds(family: &impl Circles<f64>, lo: f64, hi: f64) -> Result<((E3, f64
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::hash::stream;
     use crate::surface::TwoCircles;
     use cga_core::euclid::{cross, perpendicular, unit};
     use cga_core::{Circle, Pair};
@@ -224,16 +225,6 @@ mod tests {
         let (c, n, r) = circles.at(alpha).unwrap().centre_normal_radius().unwrap();
         let (u, v) = (perpendicular(n), cross(n, perpendicular(n)));
         (add(c, add(scale(u, r * angle.cos()), scale(v, r * angle.sin()))), n)
-    }
-
-    /// A seeded stream in [0, 1) (xorshift64).
-    fn stream(mut state: u64) -> impl FnMut() -> f64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        }
     }
 
     /// Culling never loses a hit: every ray through a point of `C_α` — from any direction,

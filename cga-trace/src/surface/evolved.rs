@@ -383,13 +383,7 @@ mod tests {
                 EvolvedSurface::of(origin, BezierSegment::new(&local), Method::default()).unwrap()
             })
             .collect();
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut random = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = crate::hash::stream(0x9e37_79b9_7f4a_7c15);
         let mut check = |at: &dyn Fn(f64) -> (E3, E3, f64), (centre, radius): (E3, f64), origin: E3| {
             for _ in 0..20_000 {
                 let (c, n, r) = at(random());

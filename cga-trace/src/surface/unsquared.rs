@@ -909,6 +909,7 @@ fn interpolate<T: Real>(nodes: &[T], values: &[T]) -> Option<SmallVec<[T; LOW]>>
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::hash::stream;
     use cga_core::{Circle, Joining, Spline};
 
     /// The Fig. 3 circles joined quadratically and cubically: each one segment.
@@ -926,15 +927,6 @@ mod tests {
             .into_iter()
             .map(|(c, joining)| BezierSegment::new(Spline::new(&c, joining).unwrap().segment(0)))
             .collect()
-    }
-
-    fn stream(mut state: u64) -> impl FnMut() -> f64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        }
     }
 
     /// A random point `x` of a random circle `C_α` of `segment`, and a random unit direction.
