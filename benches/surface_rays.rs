@@ -134,6 +134,8 @@ fn main() -> Result<(), Error> {
     })?;
     let shape = Sparse::prepare(&object.shape);
     let rays = primary_rays(&scene.camera)?;
+    // Read before any timing, so that a bad mesh fails at once.
+    let mesh = args.mesh.as_deref().map(|mesh| mesh_of(&args, mesh)).transpose()?;
     // Also the untimed first pass of every ray.
     let t: Vec<Option<f64>> =
         rays.iter().map(|r| Sparse::intersect(&shape, r, 0.0, f64::INFINITY).map(|c| c.t)).collect();
@@ -161,13 +163,12 @@ fn main() -> Result<(), Error> {
     alone.objects.retain(|o| *o.name == *args.object);
     let renderer = Renderer::new(&alone);
     time("ours-renderer", args.rounds, batches, |rays| nearest_all(&renderer, rays));
-    if let Some(mesh) = &args.mesh {
-        let (shape, rays) = mesh_of(&args, mesh)?;
+    if let Some((shape, rays)) = &mesh {
         let split = |hits: bool| -> Vec<Ray> {
             rays.iter().zip(&t).filter(|(_, t)| t.is_some() == hits).map(|(r, _)| *r).collect()
         };
         let (hit, miss) = (split(true), split(false));
-        time("ours-mesh", args.rounds, [&rays[..], &hit[..], &miss[..]], |rays| cross_all(&shape, rays));
+        time("ours-mesh", args.rounds, [&rays[..], &hit[..], &miss[..]], |rays| cross_all(shape, rays));
     }
     Ok(())
 }
@@ -178,13 +179,23 @@ fn main() -> Result<(), Error> {
 fn mesh_of(args: &Args, mesh: &Path) -> Result<(SparseShape, Vec<Ray>), Error> {
     const NAME: &str = "mesh of surface";
     let file = std::path::absolute(mesh)?;
+    let file = file.to_str().ok_or_else(|| format!("{} is not UTF-8", file.display()))?;
+    // A TOML basic string: `\` and `"` escaped, and control characters as `\uXXXX`.
+    let quoted: String = file
+        .chars()
+        .map(|c| match c {
+            '\\' | '"' => format!("\\{c}"),
+            c if c.is_control() => format!("\\u{:04X}", c as u32),
+            c => c.to_string(),
+        })
+        .collect();
     let text = std::fs::read_to_string(&args.scene)?
         + &format!(
-            "\n[[objects]]\nname = \"{NAME}\"\ntype = \"mesh\"\nfile = {:?}\nmaterial = {{ colour = [0.5, 0.5, 0.5] }}\n",
-            file.display().to_string()
+            "\n[[objects]]\nname = \"{NAME}\"\ntype = \"mesh\"\nfile = \"{quoted}\"\nmaterial = {{ colour = [0.5, 0.5, 0.5] }}\n"
         );
     let mut scene = Scene::parse(&text, &args.scene.display().to_string())?;
     scene.resize(Some(args.width), args.height)?;
-    let object = scene.objects.iter().find(|o| *o.name == *NAME).ok_or("the mesh object was not built")?;
+    // The last object of that name: the one added.
+    let object = scene.objects.iter().rfind(|o| *o.name == *NAME).ok_or("the mesh object was not built")?;
     Ok((Sparse::prepare(&object.shape), primary_rays(&scene.camera)?))
 }

@@ -38,6 +38,9 @@ pub struct MeshShape {
     closed: bool,
 }
 
+// A leaf's triangles fit [`Sheared::open`]'s four lanes.
+const _: () = assert!(crate::bvh::LEAF <= 4);
+
 /// The ray sheared onto its longest axis `z`: corners `(x, y, z)` relative to its origin.
 struct Sheared {
     origin: E3,
@@ -65,6 +68,35 @@ impl Sheared {
             *best = Some((t, k));
         }
         reach(*best, t_max)
+    }
+
+    /// Which of a leaf's triangles (at most four) the ray's line can cross: those whose
+    /// three edge functions ([`Sheared::cross`]'s `u`, `v`, `w`) are not of both signs, the
+    /// four computed side by side with `cross`'s own operations (so the same signs), for the
+    /// leaf's triangles to be tried only where they may be crossed.
+    #[inline(always)]
+    fn open(&self, leaf: &[[E3; 3]]) -> [bool; 4] {
+        let Some(last) = leaf.len().checked_sub(1) else { return [false; 4] };
+        let [x, y, z] = self.axes;
+        let [sx, sy, _] = self.shear;
+        let at = |l: usize| &leaf[l.min(last)];
+        // Corner j's sheared x and y, lane by lane.
+        let corner = |j: usize| {
+            let p = |k: usize| -> [f64; 4] { core::array::from_fn(|l| at(l)[j][k] - self.origin[k]) };
+            let (px, py, pz) = (p(x), p(y), p(z));
+            let sheared = |q: [f64; 4], s: f64| -> [f64; 4] { core::array::from_fn(|l| q[l] - s * pz[l]) };
+            (sheared(px, sx), sheared(py, sy))
+        };
+        let (a, b, c) = (corner(0), corner(1), corner(2));
+        let edge = |p: ([f64; 4], [f64; 4]), q: ([f64; 4], [f64; 4])| -> [f64; 4] {
+            core::array::from_fn(|l| p.0[l] * q.1[l] - p.1[l] * q.0[l])
+        };
+        let (u, v, w) = (edge(b, c), edge(c, a), edge(a, b));
+        core::array::from_fn(|l| {
+            let negative = u[l] < 0.0 || v[l] < 0.0 || w[l] < 0.0;
+            let positive = u[l] > 0.0 || v[l] > 0.0 || w[l] > 0.0;
+            l < leaf.len() && !(negative && positive)
+        })
     }
 
     /// A corner in the sheared frame: `(p_x − S_x p_z, p_y − S_y p_z, S_z p_z)` for
@@ -145,7 +177,8 @@ impl MeshShape {
         let sheared = Sheared::new(ray.origin, ray.dir);
         let mut found: SmallVec<[(f64, u32); 8]> = SmallVec::new();
         self.wide.traverse_leaves(ray.origin, ray.dir, t_min, t_max, |leaf, t_max| {
-            for k in leaf {
+            let open = sheared.open(&self.corners[leaf.clone()]);
+            for (k, _) in leaf.zip(open).filter(|&(_, open)| open) {
                 if let Some(t) = sheared.cross(&self.corners[k]).filter(|&t| t_min < t && t < t_max) {
                     found.push((t, k as u32));
                 }
@@ -164,7 +197,8 @@ impl MeshShape {
         let sheared = Sheared::new(origin, dir);
         let mut best = None;
         self.wide.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut limit| {
-            for k in leaf {
+            let open = sheared.open(&self.corners[leaf.clone()]);
+            for (k, _) in leaf.zip(open).filter(|&(_, open)| open) {
                 limit = sheared.keep(&self.corners[k], k, t_min, t_max, &mut best);
             }
             Some(limit)
@@ -178,7 +212,10 @@ impl MeshShape {
         let sheared = Sheared::new(origin, dir);
         let crossed = |k: usize| sheared.cross(&self.corners[k]).is_some_and(|t| t_min < t && t < t_max);
         self.wide
-            .traverse_leaves(origin, dir, t_min, t_max, |mut leaf, limit| (!leaf.any(crossed)).then_some(limit))
+            .traverse_leaves(origin, dir, t_min, t_max, |leaf, limit| {
+                let open = sheared.open(&self.corners[leaf.clone()]);
+                (!leaf.zip(open).any(|(k, open)| open && crossed(k))).then_some(limit)
+            })
             .is_none()
     }
 
