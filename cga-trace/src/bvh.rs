@@ -254,7 +254,7 @@ struct Quad {
     count: [u32; 4],
 }
 
-/// A [`Bvh`] with four children to a node ([`Quad`]), for one ray at a time: each of its
+/// A [`Bvh`] with four children to a node (`Quad`), for one ray at a time: each of its
 /// binary nodes is expanded into its two children, the larger of whose inner nodes (by
 /// surface area) is expanded in turn until four boxes stand side by side. Every box of the
 /// wide tree is a box of the binary one, and a ray that enters a box within `(t_min, t_max)`

@@ -24,6 +24,7 @@ use crate::ray::Ray;
 use cga_core::euclid::{E3, add, dot, norm, scale, sub};
 use cga_core::simd::Lane;
 use smallvec::SmallVec;
+use std::ops::Range;
 
 /// A triangle mesh: its triangles and their corners in its hierarchy's leaf order.
 #[derive(Clone, Debug)]
@@ -167,6 +168,13 @@ impl MeshShape {
         Some(MeshShape { bvh, wide, corners, triangles, bounds: (centre, radius), error, closed })
     }
 
+    /// The triangles of `leaf` that the sheared ray's line may cross ([`Sheared::open`]).
+    #[inline(always)]
+    fn open(&self, sheared: &Sheared, leaf: Range<usize>) -> impl Iterator<Item = usize> {
+        let open = sheared.open(&self.corners[leaf.clone()]);
+        leaf.zip(open).filter_map(|(k, open)| open.then_some(k))
+    }
+
     /// Its triangles.
     pub fn triangles(&self) -> &[TriangleShape] {
         &self.triangles
@@ -177,8 +185,7 @@ impl MeshShape {
         let sheared = Sheared::new(ray.origin, ray.dir);
         let mut found: SmallVec<[(f64, u32); 8]> = SmallVec::new();
         self.wide.traverse_leaves(ray.origin, ray.dir, t_min, t_max, |leaf, t_max| {
-            let open = sheared.open(&self.corners[leaf.clone()]);
-            for (k, _) in leaf.zip(open).filter(|&(_, open)| open) {
+            for k in self.open(&sheared, leaf) {
                 if let Some(t) = sheared.cross(&self.corners[k]).filter(|&t| t_min < t && t < t_max) {
                     found.push((t, k as u32));
                 }
@@ -197,8 +204,7 @@ impl MeshShape {
         let sheared = Sheared::new(origin, dir);
         let mut best = None;
         self.wide.traverse_leaves(origin, dir, t_min, t_max, |leaf, mut limit| {
-            let open = sheared.open(&self.corners[leaf.clone()]);
-            for (k, _) in leaf.zip(open).filter(|&(_, open)| open) {
+            for k in self.open(&sheared, leaf) {
                 limit = sheared.keep(&self.corners[k], k, t_min, t_max, &mut best);
             }
             Some(limit)
@@ -213,8 +219,7 @@ impl MeshShape {
         let crossed = |k: usize| sheared.cross(&self.corners[k]).is_some_and(|t| t_min < t && t < t_max);
         self.wide
             .traverse_leaves(origin, dir, t_min, t_max, |leaf, limit| {
-                let open = sheared.open(&self.corners[leaf.clone()]);
-                (!leaf.zip(open).any(|(k, open)| open && crossed(k))).then_some(limit)
+                (!self.open(&sheared, leaf).any(crossed)).then_some(limit)
             })
             .is_none()
     }
