@@ -308,7 +308,18 @@ impl<T: Real, const N: usize> Bernstein<T, N> {
     /// or split it in two);
     /// otherwise the interval is split.
     pub fn roots_in(&self, lo: T, hi: T, tolerance: T, touch: T, out: &mut Roots<T>) {
-        let floor = touch * self.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()));
+        self.roots_above(lo, hi, tolerance, touch * self.largest(), out);
+    }
+
+    /// The largest coefficient's magnitude: `|p| ≤` it on [0, 1].
+    pub fn largest(&self) -> T {
+        self.coefficients().iter().fold(T::zero(), |m, c| m.max(c.abs()))
+    }
+
+    /// [`Bernstein::roots_in`] with the touch level `floor` given in the polynomial's own units:
+    /// for a restriction, its whole polynomial's (`touch` times the whole's largest
+    /// coefficient), whose rounding the restriction carries however short the interval.
+    pub fn roots_above(&self, lo: T, hi: T, tolerance: T, floor: T, out: &mut Roots<T>) {
         if self.c[0].abs() <= floor {
             out.push(lo);
         }

@@ -147,6 +147,20 @@ impl Cells {
         self.reach_lanes(ray, t_min, t_max)
     }
 
+    /// The number of cells.
+    pub fn count(&self) -> usize {
+        self.cells
+    }
+
+    /// Whether cell `i`'s bounding sphere reaches to `t ≤ t_min` or `t ≥ t_max` along the ray
+    /// (where a crossing of the cell can lie outside the window; [`Cells::reach`]'s marks).
+    pub fn beyond(&self, ray: &Ray, i: usize, t_min: f64, t_max: f64) -> bool {
+        let (four, l) = (&self.fours[i / 4], i % 4);
+        let oc = [0, 1, 2].map(|k| ray.origin[k] - four.centre[k][l]);
+        let (tc, r) = (-dot(oc, ray.dir), four.radius[l]);
+        tc - r <= t_min || tc + r >= t_max
+    }
+
     /// The cells reached as bits, 64 cells to a word, then read off run by run (a branch
     /// per interval, not per cell).
     #[inline(always)]

@@ -2,9 +2,9 @@
 //! method that finds its crossings with a ray.
 
 use super::bernstein::Roots;
-use super::cells::{Cells, PAD};
+use super::cells::{CellBits, Cells, Intervals, PAD};
 use super::family::{Circles, TwoCircles};
-use super::unsquared::{Unsquared, Window};
+use super::unsquared::{Numerators, Unsquared, Window};
 use super::{Family, Finder, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
@@ -213,32 +213,70 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// (the unsquared condition's), and the rest (a polynomial's, or samples), which the
     /// crossing kept refines on `f`.
     fn candidates_placed(&self, local: &Ray, t_min: f64, t_max: f64) -> (Roots<f64>, Roots<f64>) {
-        let (mut placed, mut out) = (Roots::new(), Roots::new());
-        let line = &local.carrier;
         match &self.cells {
             Some(cells) => {
                 let (intervals, ends) = cells.reach(local, t_min, t_max);
-                if let (Some(unsquared), Finder::Polynomial(tolerance)) = (&self.unsquared, self.method.finder(1)) {
-                    // Most intervals are decided without the squared polynomial; it is built
-                    // (once) for the rest.
-                    let window = Window { origin: local.origin, dir: local.dir, t_min, t_max, ends: &ends, any: false };
-                    let (undecided, _) = unsquared.roots_until(line, Some(&window), &intervals, &mut placed, |_| false);
-                    if !undecided.is_empty() {
-                        self.family.roots_on(line, tolerance, undecided.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
-                    }
-                } else if let (true, Finder::Polynomial(tolerance)) = (C::HIGH_DEGREE, self.method.finder(1)) {
-                    // A high-degree polynomial (a spline segment's) is built once and
-                    // restricted to each interval: cheaper than building it on each.
-                    self.family.roots_on(line, tolerance, intervals.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
-                } else {
-                    for (lo, hi, leaves) in intervals {
-                        self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
-                    }
-                }
+                self.candidates_on(local, (t_min, t_max), &intervals, &ends, None)
             }
-            None => self.family.roots(line, self.method.finder(1), 0.0, 1.0, &mut out),
+            None => {
+                let mut out = Roots::new();
+                self.family.roots(&local.carrier, self.method.finder(1), 0.0, 1.0, &mut out);
+                (Roots::new(), out)
+            }
+        }
+    }
+
+    /// [`EvolvedSurface::candidates_placed`] on the cells' `intervals` a ray reaches, `ends`
+    /// marking those whose crossings can lie outside the window; with the ray's `N` and `D`
+    /// where they are at hand ([`EvolvedSurface::prepare`]).
+    fn candidates_on(
+        &self,
+        local: &Ray,
+        (t_min, t_max): (f64, f64),
+        intervals: &Intervals,
+        ends: &[u64],
+        numerators: Option<&Numerators<f64>>,
+    ) -> (Roots<f64>, Roots<f64>) {
+        let (mut placed, mut out) = (Roots::new(), Roots::new());
+        let line = &local.carrier;
+        if let (Some(unsquared), Finder::Polynomial(tolerance)) = (&self.unsquared, self.method.finder(1)) {
+            // Most intervals are decided without the squared polynomial; it is built (once)
+            // for the rest.
+            let window = Window { origin: local.origin, dir: local.dir, t_min, t_max, ends, any: false };
+            let (undecided, _) = match numerators {
+                Some(n) => unsquared.roots_prepared(n, line, Some(&window), intervals, &mut placed, |_| false),
+                None => unsquared.roots_until(line, Some(&window), intervals, &mut placed, |_| false),
+            };
+            if !undecided.is_empty() {
+                self.family.roots_on(line, tolerance, undecided.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
+            }
+        } else if let (true, Finder::Polynomial(tolerance)) = (C::HIGH_DEGREE, self.method.finder(1)) {
+            // A high-degree polynomial (a spline segment's) is built once and restricted to
+            // each interval: cheaper than building it on each.
+            self.family.roots_on(line, tolerance, intervals.iter().map(|&(lo, hi, _)| (lo, hi)), &mut out);
+        } else {
+            for &(lo, hi, leaves) in intervals {
+                self.family.roots(line, self.method.finder(leaves), lo, hi, &mut out);
+            }
         }
         (placed, out)
+    }
+
+    /// The nearest crossing with `t_min < t < t_max` of a local ray among candidates: those
+    /// placed are verified as they are, the others' kept crossing is refined.
+    fn nearest_of(
+        &self,
+        local: &Ray,
+        t_min: f64,
+        t_max: f64,
+        (placed, alphas): (Roots<f64>, Roots<f64>),
+    ) -> Option<Crossing> {
+        let polish = self.method.finder(1).polishes();
+        let ray = (local.origin, local.dir, &local.carrier);
+        let first = self.family.nearest(ray, &placed, t_min, t_max, false);
+        let t_max = first.map_or(t_max, |(t, _, _)| t);
+        let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish).or(first)?;
+        Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha), part: 0 })
     }
 
     /// The nearest crossing with `t_min < t < t_max`. Only the ray's origin and direction
@@ -250,14 +288,42 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// [`EvolvedSurface::intersect`] for a ray already in the local frame (surfaces sharing a
     /// frame, the segments of a spline, build it once).
     pub fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let (placed, alphas) = self.candidates_placed(local, t_min, t_max);
-        let polish = self.method.finder(1).polishes();
-        let ray = (local.origin, local.dir, &local.carrier);
-        // Placed candidates are verified as they are; the others' kept crossing is refined.
-        let first = self.family.nearest(ray, &placed, t_min, t_max, false);
-        let t_max = first.map_or(t_max, |(t, _, _)| t);
-        let (t, x, alpha) = self.family.nearest(ray, &alphas, t_min, t_max, polish).or(first)?;
-        Some(Crossing { t, point: add(x, self.origin), alpha: Some(alpha), part: 0 })
+        self.nearest_of(local, t_min, t_max, self.candidates_placed(local, t_min, t_max))
+    }
+
+    /// The ray's `N` and `D` over the segment, where its crossings are found unsquared: what
+    /// [`EvolvedSurface::intersect_cell`] and [`EvolvedSurface::occludes_cell`] share across
+    /// the cells of one ray.
+    pub(super) fn prepare(&self, local: &Ray) -> Option<Numerators<f64>> {
+        self.unsquared.as_ref().map(|u| u.prepare(&local.carrier))
+    }
+
+    /// Cell `cell` of the method's cells alone, for the cells a spline's patches lead a ray
+    /// to, with its one interval and mark.
+    fn one_cell(&self, local: &Ray, cell: usize, (t_min, t_max): (f64, f64)) -> Option<(Intervals, CellBits)> {
+        let cells = self.cells.as_ref()?;
+        let count = cells.count() as f64;
+        let mut ends = CellBits::from_elem(0, cell / 64 + 1);
+        if cells.beyond(local, cell, t_min, t_max) {
+            ends[cell / 64] |= 1 << (cell % 64);
+        }
+        let mut intervals = Intervals::new();
+        intervals.push((cell as f64 / count, (cell + 1) as f64 / count, 1));
+        Some((intervals, ends))
+    }
+
+    /// [`EvolvedSurface::intersect_local`] on one of the method's cells (`None` for a method
+    /// without cells), with the ray's `N` and `D` from [`EvolvedSurface::prepare`].
+    pub(super) fn intersect_cell(
+        &self,
+        local: &Ray,
+        cell: usize,
+        (t_min, t_max): (f64, f64),
+        numerators: Option<&Numerators<f64>>,
+    ) -> Option<Crossing> {
+        let (intervals, ends) = self.one_cell(local, cell, (t_min, t_max))?;
+        let candidates = self.candidates_on(local, (t_min, t_max), &intervals, &ends, numerators);
+        self.nearest_of(local, t_min, t_max, candidates)
     }
 
     /// Whether the surface crosses the ray with `t_min < t < t_max` (a shadow ray's test):
@@ -269,21 +335,56 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
 
     /// [`EvolvedSurface::occludes`] for a ray already in the local frame.
     pub fn occludes_local(&self, local: &Ray, t_min: f64, t_max: f64) -> bool {
-        let (Some(cells), Some(unsquared), Finder::Polynomial(tolerance)) =
-            (&self.cells, &self.unsquared, self.method.finder(1))
-        else {
-            return self.intersect_local(local, t_min, t_max).is_some();
+        match (&self.cells, &self.unsquared, self.method.finder(1)) {
+            (Some(cells), Some(_), Finder::Polynomial(_)) => {
+                let (intervals, ends) = cells.reach(local, t_min, t_max);
+                self.occludes_on(local, (t_min, t_max), &intervals, &ends, None)
+            }
+            _ => self.intersect_local(local, t_min, t_max).is_some(),
+        }
+    }
+
+    /// [`EvolvedSurface::occludes_local`] on one of the method's cells.
+    pub(super) fn occludes_cell(
+        &self,
+        local: &Ray,
+        cell: usize,
+        (t_min, t_max): (f64, f64),
+        numerators: Option<&Numerators<f64>>,
+    ) -> bool {
+        match (self.one_cell(local, cell, (t_min, t_max)), &self.unsquared, self.method.finder(1)) {
+            (Some((intervals, ends)), Some(_), Finder::Polynomial(_)) => {
+                self.occludes_on(local, (t_min, t_max), &intervals, &ends, numerators)
+            }
+            _ => self.intersect_cell(local, cell, (t_min, t_max), numerators).is_some(),
+        }
+    }
+
+    /// [`EvolvedSurface::occludes_local`] on the cells' `intervals`, unsquared, interval by
+    /// interval until a crossing is verified.
+    fn occludes_on(
+        &self,
+        local: &Ray,
+        (t_min, t_max): (f64, f64),
+        intervals: &Intervals,
+        ends: &[u64],
+        numerators: Option<&Numerators<f64>>,
+    ) -> bool {
+        let (Some(unsquared), Finder::Polynomial(tolerance)) = (&self.unsquared, self.method.finder(1)) else {
+            return false;
         };
         let ray = (local.origin, local.dir, &local.carrier);
         let mut placed = Roots::new();
         let mut found = false;
-        let (intervals, ends) = cells.reach(local, t_min, t_max);
-        let window = Window { origin: local.origin, dir: local.dir, t_min, t_max, ends: &ends, any: true };
-        let (undecided, within) =
-            unsquared.roots_until(&local.carrier, Some(&window), &intervals, &mut placed, |roots| {
-                found = self.family.nearest(ray, roots, t_min, t_max, false).is_some();
-                found
-            });
+        let window = Window { origin: local.origin, dir: local.dir, t_min, t_max, ends, any: true };
+        let stop = |roots: &[f64]| {
+            found = self.family.nearest(ray, roots, t_min, t_max, false).is_some();
+            found
+        };
+        let (undecided, within) = match numerators {
+            Some(n) => unsquared.roots_prepared(n, &local.carrier, Some(&window), intervals, &mut placed, stop),
+            None => unsquared.roots_until(&local.carrier, Some(&window), intervals, &mut placed, stop),
+        };
         if within || found || undecided.is_empty() {
             return within || found;
         }

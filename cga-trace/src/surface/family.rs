@@ -65,8 +65,8 @@ pub trait RootPolynomial<T: Real>: Copy {
     fn coefficients(&self) -> &[T];
     /// The same polynomial on `[lo, hi]`, reparametrised to [0, 1].
     fn restrict(&self, lo: T, hi: T) -> Self;
-    /// Every real root in `[lo, hi]` ([`Bernstein::roots_in`]).
-    fn roots_in(&self, lo: T, hi: T, tolerance: T, touch: T, out: &mut Roots<T>);
+    /// Every real root in `[lo, hi]`, touches where `|p| ≤ floor` ([`Bernstein::roots_above`]).
+    fn roots_above(&self, lo: T, hi: T, tolerance: T, floor: T, out: &mut Roots<T>);
 }
 
 impl<T: Real, const N: usize> RootPolynomial<T> for Bernstein<T, N> {
@@ -76,8 +76,8 @@ impl<T: Real, const N: usize> RootPolynomial<T> for Bernstein<T, N> {
     fn restrict(&self, lo: T, hi: T) -> Self {
         Bernstein::restrict(self, lo, hi)
     }
-    fn roots_in(&self, lo: T, hi: T, tolerance: T, touch: T, out: &mut Roots<T>) {
-        Bernstein::roots_in(self, lo, hi, tolerance, touch, out)
+    fn roots_above(&self, lo: T, hi: T, tolerance: T, floor: T, out: &mut Roots<T>) {
+        Bernstein::roots_above(self, lo, hi, tolerance, floor, out)
     }
 }
 
@@ -341,7 +341,8 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
             Finder::Slope(n) => self.sampled_with_slope(&line.lift(), lo, hi, n.max(2), out),
             Finder::Polynomial(tolerance) => {
                 let restricted = self.circles.polynomial_on(line, lo, hi);
-                self.polynomial_roots(line, &restricted, lo, hi, tolerance, out);
+                let scale = largest(restricted.coefficients());
+                self.polynomial_roots(line, &restricted, (lo, hi), scale, tolerance, out);
             }
         }
     }
@@ -361,23 +362,29 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
         // Built at the first interval: a ray the cells leave none costs nothing.
         let mut whole = None;
         for (lo, hi) in intervals {
-            let whole = *whole.get_or_insert_with(|| self.circles.polynomial(line));
+            let (whole, scale) = *whole.get_or_insert_with(|| {
+                let p = self.circles.polynomial(line);
+                (p, largest(p.coefficients()))
+            });
             let (lo, hi) = (T::from_f64(lo), T::from_f64(hi));
             let restricted = if lo > T::zero() || hi < T::one() { whole.restrict(lo, hi) } else { whole };
-            self.polynomial_roots(line, &restricted, lo, hi, tolerance, out);
+            self.polynomial_roots(line, &restricted, (lo, hi), scale, tolerance, out);
         }
     }
 
     /// The candidate α of `restricted`, the polynomial on `[lo, hi]` reparametrised to [0, 1]:
-    /// its roots there, and roots within rounding of α = 0 or 1 placed by `f` itself. (The
+    /// its roots there, touches where it comes within [`TOUCH`] `scale` of zero (`scale` the
+    /// largest coefficient of the polynomial it was restricted from, whose rounding it
+    /// carries: relative to its own, a touch found on a wide interval was lost on a short
+    /// one), and roots within rounding of α = 0 or 1 placed by `f` itself. (The
     /// crossing finally kept is placed on `f` itself, [`Family::nearest`]: refining every root
     /// of a spline segment's polynomial up front cost a fifth of its rays' time for nothing.)
     fn polynomial_roots(
         &self,
         line: &Line<T>,
         restricted: &C::Polynomial,
-        lo: T,
-        hi: T,
+        (lo, hi): (T, T),
+        scale: T,
         tolerance: f64,
         out: &mut Roots<T>,
     ) {
@@ -392,7 +399,7 @@ impl<T: Real, C: Circles<T>> Family<T, C> {
         let start_at_zero = lo == T::zero() && c.len() > 1 && near(first, c[1] - first);
         let start_at_one = hi == T::one() && c.len() > 1 && near(last, last - c[c.len() - 2]);
         let tolerance = if Finder::Polynomial(tolerance).polishes() { CANDIDATE } else { tolerance };
-        restricted.roots_in(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH), out);
+        restricted.roots_above(lo, hi, T::from_f64(tolerance), T::from_f64(TOUCH) * scale, out);
         for (near_end, end) in [(start_at_zero, T::zero()), (start_at_one, T::one())] {
             // Kept only if it stays by the end: a polish that wanders off converges (slowly,
             // if to a touch) on a root the polynomial reports itself.
@@ -763,6 +770,11 @@ struct Slope<T: Real> {
     circle_slope: Circle<T>,
     f: T,
     df: T,
+}
+
+/// The largest magnitude among `c`.
+fn largest<T: Real>(c: &[T]) -> T {
+    c.iter().fold(T::zero(), |m, x| m.max(x.abs()))
 }
 
 /// `x` kept in [0, 1].

@@ -26,6 +26,8 @@ pub mod family;
 #[cfg(feature = "evolved")]
 mod newton;
 #[cfg(feature = "evolved")]
+mod patches;
+#[cfg(feature = "evolved")]
 mod ruled;
 #[cfg(feature = "evolved")]
 pub mod segment;

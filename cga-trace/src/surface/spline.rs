@@ -5,8 +5,9 @@
 //! very same knot circle and leave no crack.
 
 use super::evolved::{EvolvedSurface, distinct};
+use super::patches::Patches;
 use super::segment::BezierSegment;
-use super::unsquared::Unsquared;
+use super::unsquared::{Numerators, Unsquared};
 use super::{Method, SurfaceError, TwoCircles};
 use crate::ray::{Ray, crosses};
 use crate::shapes::{Crossing, Shape, facing};
@@ -51,6 +52,44 @@ impl Segment {
         }
     }
 
+    /// The ray's `N` and `D` over the segment, where its cells solve them unsquared.
+    fn prepare(&self, local: &Ray) -> Option<Numerators<f64>> {
+        match self {
+            Segment::Linear(_) => None,
+            Segment::Curved(s) => s.prepare(local),
+        }
+    }
+
+    /// The nearest crossing on one cell, in the shared local frame.
+    fn intersect_cell(
+        &self,
+        local: &Ray,
+        cell: usize,
+        window: (f64, f64),
+        n: Option<&Numerators<f64>>,
+    ) -> Option<Crossing> {
+        match self {
+            Segment::Linear(s) => s.intersect_cell(local, cell, window, n),
+            Segment::Curved(s) => s.intersect_cell(local, cell, window, n),
+        }
+    }
+
+    /// Whether the ray crosses one cell, in the shared local frame.
+    fn occludes_cell(&self, local: &Ray, cell: usize, window: (f64, f64), n: Option<&Numerators<f64>>) -> bool {
+        match self {
+            Segment::Linear(s) => s.occludes_cell(local, cell, window, n),
+            Segment::Curved(s) => s.occludes_cell(local, cell, window, n),
+        }
+    }
+
+    fn circle(&self, alpha: f64) -> Result<(E3, E3, f64), SurfaceError> {
+        let circle = match self {
+            Segment::Linear(s) => s.circles().at(alpha),
+            Segment::Curved(s) => s.circles().at(alpha),
+        }?;
+        circle.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })
+    }
+
     fn normal(&self, crossing: &Crossing) -> E3 {
         match self {
             Segment::Linear(s) => s.normal(crossing),
@@ -82,7 +121,14 @@ pub struct SplineSurface {
     spline: Spline<Circle>,
     origin: E3,
     radius: f64,
+    /// Boxes over the segments' cells cut by angle, which lead a ray to the cells it can
+    /// cross nearest first (for the hybrid method).
+    patches: Option<Patches>,
 }
+
+/// The most cells (over all segments) a surface builds its patches over (eight boxes a cell):
+/// beyond it, rays reach the cells of each segment through its spheres.
+pub const PATCH_CELLS: usize = 4096;
 
 impl SplineSurface {
     /// The frame origin for circles of centres `cᵢ` and radii `rᵢ`: `Σ(cᵢ/rᵢ) / Σ(1/rᵢ)`, which
@@ -134,7 +180,18 @@ impl SplineSurface {
             })
             .collect::<Result<Vec<_>, SurfaceError>>()?;
         let radius = segments.iter().map(Segment::frame_radius).fold(0.0, f64::max);
-        Ok(SplineSurface { segments, spline, origin, radius })
+        let patches = Self::patches(&segments, method)?;
+        Ok(SplineSurface { segments, spline, origin, radius, patches })
+    }
+
+    /// The patches over `segments`' cells, for the hybrid method with at most [`PATCH_CELLS`]
+    /// cells.
+    fn patches(segments: &[Segment], method: Method) -> Result<Option<Patches>, SurfaceError> {
+        let cells = match (method, method.cells()) {
+            (Method::Hybrid { .. }, Some(cells)) if cells.saturating_mul(segments.len()) <= PATCH_CELLS => cells,
+            _ => return Ok(None),
+        };
+        Patches::new(segments.len(), cells, |j, alpha| segments[j].circle(alpha)).map(Some)
     }
 
     /// The same surface intersected by another method.
@@ -147,7 +204,8 @@ impl SplineSurface {
                 })
             })
             .collect::<Result<Vec<_>, SurfaceError>>()?;
-        Ok(SplineSurface { segments, ..self.clone() })
+        let patches = Self::patches(&segments, method)?;
+        Ok(SplineSurface { segments, patches, ..self.clone() })
     }
 
     /// The number of segments.
@@ -180,8 +238,56 @@ impl SplineSurface {
     }
 }
 
+impl SplineSurface {
+    /// The nearest crossing, through the patches: cells solved as the ray reaches them,
+    /// nearest first, each segment's `N` and `D` built once.
+    fn intersect_patches(&self, patches: &Patches, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let m = self.segments.len() as f64;
+        let mut best = None;
+        let mut local: Option<Ray> = None;
+        let mut prepared: Option<(usize, Option<Numerators<f64>>)> = None;
+        let origin = sub(ray.origin, self.origin);
+        patches.visit((origin, ray.dir), t_min, t_max, |j, i, t_max| {
+            let local = local.get_or_insert_with(|| self.local(ray));
+            let segment = &self.segments[j];
+            if prepared.as_ref().is_none_or(|p| p.0 != j) {
+                prepared = Some((j, segment.prepare(local)));
+            }
+            let numerators = prepared.as_ref().and_then(|p| p.1.as_ref());
+            match segment.intersect_cell(local, i, (t_min, t_max), numerators) {
+                Some(c) => {
+                    best = Some(Crossing { alpha: c.alpha.map(|t| (j as f64 + t) / m), ..c });
+                    Some(c.t)
+                }
+                None => Some(t_max),
+            }
+        });
+        best
+    }
+
+    /// Whether the ray crosses the surface, through the patches.
+    fn occludes_patches(&self, patches: &Patches, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let mut local: Option<Ray> = None;
+        let mut prepared: Option<(usize, Option<Numerators<f64>>)> = None;
+        let origin = sub(ray.origin, self.origin);
+        let walk = patches.visit((origin, ray.dir), t_min, t_max, |j, i, t_max| {
+            let local = local.get_or_insert_with(|| self.local(ray));
+            let segment = &self.segments[j];
+            if prepared.as_ref().is_none_or(|p| p.0 != j) {
+                prepared = Some((j, segment.prepare(local)));
+            }
+            let numerators = prepared.as_ref().and_then(|p| p.1.as_ref());
+            (!segment.occludes_cell(local, i, (t_min, t_max), numerators)).then_some(t_max)
+        });
+        walk.is_none()
+    }
+}
+
 impl Shape for SplineSurface {
     fn intersect(&self, ray: &Ray, t_min: f64, mut t_max: f64) -> Option<Crossing> {
+        if let Some(patches) = &self.patches {
+            return self.intersect_patches(patches, ray, t_min, t_max);
+        }
         let m = self.segments.len() as f64;
         let mut best = None;
         // Every segment shares the frame at `origin`: the ray's line there is built once.
@@ -201,6 +307,9 @@ impl Shape for SplineSurface {
     }
 
     fn occludes(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        if let Some(patches) = &self.patches {
+            return self.occludes_patches(patches, ray, t_min, t_max);
+        }
         let mut local: Option<Ray> = None;
         self.segments.iter().any(|segment| {
             let (centre, radius) = segment.bounds();

@@ -115,6 +115,13 @@ type Poly<T> = Bernstein<T, CAPACITY>;
 /// `G` reduced on a cell, in the Bernstein basis.
 type Low<T> = Bernstein<T, LOW>;
 
+/// A ray's `N` and `D` over a segment ([`Unsquared::prepare`]).
+#[derive(Clone, Debug)]
+pub struct Numerators<T: Real> {
+    n: Poly<T>,
+    d: Poly<T>,
+}
+
 /// A linear map of Bernstein coefficients, by columns.
 type Matrix<T> = [[T; CAPACITY]; CAPACITY];
 
@@ -289,32 +296,74 @@ impl<T: Real> Unsquared<T> {
         if intervals.is_empty() {
             return (Intervals::new(), false);
         }
+        self.roots_prepared(&self.prepare(line), line, window, intervals, out, stop)
+    }
+
+    /// A ray's `N` and `D` over the segment, for [`Unsquared::roots_prepared`]: built once per
+    /// ray, whichever of the segment's cells it solves.
+    pub fn prepare(&self, line: &Line<T>) -> Numerators<T> {
         #[cfg(target_arch = "x86_64")]
         if cga_core::simd::avx2() {
             // SAFETY: the CPU has the features the function is compiled for.
-            return unsafe { self.roots_avx2(line, window, intervals, out, stop) };
+            return unsafe { self.prepare_avx2(line) };
         }
-        self.roots_here(line, window, intervals, out, stop)
+        self.prepare_here(line)
     }
 
-    /// [`Unsquared::roots_until`] compiled for AVX2 (the maps' columns four lanes at a time;
-    /// the same operations, so the same bits).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
-    unsafe fn roots_avx2(
+    unsafe fn prepare_avx2(&self, line: &Line<T>) -> Numerators<T> {
+        self.prepare_here(line)
+    }
+
+    #[inline(always)]
+    fn prepare_here(&self, line: &Line<T>) -> Numerators<T> {
+        let (n, d) = match self.segment.degree() {
+            2 => self.numerators::<9, 13>(line),
+            _ => self.numerators::<13, 19>(line),
+        };
+        Numerators { n, d }
+    }
+
+    /// [`Unsquared::roots_until`] with the ray's `N` and `D` at hand (`numerators`, from
+    /// [`Unsquared::prepare`] for `line`).
+    pub fn roots_prepared(
         &self,
+        numerators: &Numerators<T>,
         line: &Line<T>,
         window: Option<&Window<'_, T>>,
         intervals: &Intervals,
         out: &mut Roots<T>,
         stop: impl FnMut(&[T]) -> bool,
     ) -> (Intervals, bool) {
-        self.roots_here(line, window, intervals, out, stop)
+        #[cfg(target_arch = "x86_64")]
+        if cga_core::simd::avx2() {
+            // SAFETY: the CPU has the features the function is compiled for.
+            return unsafe { self.roots_avx2(numerators, line, window, intervals, out, stop) };
+        }
+        self.roots_here(numerators, line, window, intervals, out, stop)
+    }
+
+    /// [`Unsquared::roots_prepared`] compiled for AVX2 (the maps' columns four lanes at a
+    /// time; the same operations, so the same bits).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn roots_avx2(
+        &self,
+        numerators: &Numerators<T>,
+        line: &Line<T>,
+        window: Option<&Window<'_, T>>,
+        intervals: &Intervals,
+        out: &mut Roots<T>,
+        stop: impl FnMut(&[T]) -> bool,
+    ) -> (Intervals, bool) {
+        self.roots_here(numerators, line, window, intervals, out, stop)
     }
 
     #[inline(always)]
     fn roots_here(
         &self,
+        numerators: &Numerators<T>,
         line: &Line<T>,
         window: Option<&Window<'_, T>>,
         intervals: &Intervals,
@@ -322,8 +371,8 @@ impl<T: Real> Unsquared<T> {
         stop: impl FnMut(&[T]) -> bool,
     ) -> (Intervals, bool) {
         match self.segment.degree() {
-            2 => self.roots_of::<3, 7, 5, 9, 13, 9>(line, window, intervals, out, stop),
-            _ => self.roots_of::<4, 10, 7, 13, 19, 12>(line, window, intervals, out, stop),
+            2 => self.roots_of::<3, 7, 5, 9, 13, 9>(numerators, line, window, intervals, out, stop),
+            _ => self.roots_of::<4, 10, 7, 13, 19, 12>(numerators, line, window, intervals, out, stop),
         }
     }
 
@@ -334,13 +383,13 @@ impl<T: Real> Unsquared<T> {
     #[inline(always)]
     fn roots_of<const VA: usize, const VB: usize, const SA: usize, const P: usize, const BB: usize, const M: usize>(
         &self,
+        Numerators { n, d }: &Numerators<T>,
         line: &Line<T>,
         window: Option<&Window<'_, T>>,
         intervals: &Intervals,
         out: &mut Roots<T>,
         mut stop: impl FnMut(&[T]) -> bool,
     ) -> (Intervals, bool) {
-        let (n, d) = self.numerators::<P, BB>(line);
         // The meets themselves only where a crossing is placed against the window.
         let meets = OnceCell::new();
         let window = window.map(|w| (w, line, &meets));
@@ -355,7 +404,7 @@ impl<T: Real> Unsquared<T> {
             let mut decided = true;
             for i in first..last {
                 let alpha = |u: T| (T::from_f64(i as f64) + u) * T::from_f64(1.0 / count as f64);
-                match self.cell_roots::<VA, VB, P, BB, M>(i, &n, &d, rounding, window, alpha, out) {
+                match self.cell_roots::<VA, VB, P, BB, M>(i, n, d, rounding, window, alpha, out) {
                     Verdict::Decided => {}
                     Verdict::Undecided => {
                         out.truncate(start);

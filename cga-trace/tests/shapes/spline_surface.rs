@@ -421,3 +421,25 @@ fn occlusion_is_whether_a_crossing_is_in_range() {
         assert!(blocked > 0 && blocked < tested, "{name}: {blocked} of {tested} blocked");
     }
 }
+
+/// A ray that touches the Catmull–Rom surface of Fig. 3 (`f` has a double root at α ≈ 0.3895,
+/// t = 15, inside one cell), found by every method; the hybrid method's cells reach it alone
+/// (the nearest cell first, before any crossing narrows the window): the squared
+/// polynomial's touch level is its whole polynomial's, whatever the interval it is restricted
+/// to. Relative to the restriction's own coefficients, a cell's touch was lost where a wider
+/// interval found it.
+#[test]
+fn a_touch_inside_one_cell_is_found() {
+    let (origin, dir) = (
+        [7.009789413861853, 5.918700683199715, 14.712621495435679],
+        [-0.32607567175461344, -0.40811200482895205, -0.8527128753597376],
+    );
+    let ray = Ray { origin, dir, carrier: cga_core::Line::from_point_unit_direction(origin, dir) };
+    let surface = SplineSurface::new(&FIG3, Joining::CATMULL_ROM, Method::default()).unwrap();
+    let polynomial = surface.with_method(Method::Polynomial { tolerance: 0.0 }).unwrap();
+    for (t_max, s) in [(f64::INFINITY, &surface), (15.5, &surface), (f64::INFINITY, &polynomial)] {
+        let hit = s.intersect(&ray, 0.0, t_max).expect("the touch");
+        assert!((hit.t - 15.0).abs() < 1e-9, "t = {}", hit.t);
+        assert!((hit.alpha.unwrap() - 0.3894660300495663).abs() < 1e-6, "α = {:?}", hit.alpha);
+    }
+}
