@@ -16,7 +16,7 @@
 //! samples, doubled as the cells' bounds are), plus rounding. The interpolant lies in the
 //! convex hull of the grid points, so in the box and the slab.
 
-use super::SurfaceError;
+use super::{Method, SurfaceError};
 use crate::bvh::{Bvh, Wide};
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use smallvec::SmallVec;
@@ -30,6 +30,10 @@ const ALPHA_STEPS: usize = 8;
 const ANGLE_STEPS: usize = 4;
 /// The least `|n(α)·n_mid|` over a cell for the middle circle's frame to serve it (60°).
 pub const TURN: f64 = 0.5;
+
+/// The most cells (over all segments) a surface builds patches over (64 patches a cell):
+/// beyond it, rays reach cells through their spheres.
+pub const PATCH_CELLS: usize = 4096;
 
 /// A circle: centre, unit normal, radius.
 type Circle3 = (E3, E3, f64);
@@ -73,6 +77,15 @@ impl Patches {
         let order = bvh.order().iter().map(|&k| owner[k as usize]).collect();
         let patches = bvh.order().iter().map(|&k| patches[k as usize]).collect();
         Ok(Patches { wide: Wide::new(&bvh), order, patches, cells, segments })
+    }
+
+    /// The cells per segment a surface of `segments` segments builds patches over with
+    /// `method`: the hybrid method's, where there are at most [`PATCH_CELLS`] in all.
+    pub fn cells_for(method: Method, segments: usize) -> Option<usize> {
+        match (method, method.cells()) {
+            (Method::Hybrid { .. }, Some(cells)) if cells.saturating_mul(segments) <= PATCH_CELLS => Some(cells),
+            _ => None,
+        }
     }
 
     /// Calls `solve(segment, cell, t_max)` once for every cell the ray can cross within

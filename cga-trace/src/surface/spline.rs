@@ -126,10 +126,6 @@ pub struct SplineSurface {
     patches: Option<Patches>,
 }
 
-/// The most cells (over all segments) a surface builds its patches over (eight boxes a cell):
-/// beyond it, rays reach the cells of each segment through its spheres.
-pub const PATCH_CELLS: usize = 4096;
-
 impl SplineSurface {
     /// The frame origin for circles of centres `cᵢ` and radii `rᵢ`: `Σ(cᵢ/rᵢ) / Σ(1/rᵢ)`, which
     /// for two circles is their centre of similitude ([`EvolvedSurface::frame_origin`]) and
@@ -184,13 +180,10 @@ impl SplineSurface {
         Ok(SplineSurface { segments, spline, origin, radius, patches })
     }
 
-    /// The patches over `segments`' cells, for the hybrid method with at most [`PATCH_CELLS`]
-    /// cells.
+    /// The patches over `segments`' cells, for the methods that use them
+    /// ([`Patches::cells_for`]).
     fn patches(segments: &[Segment], method: Method) -> Result<Option<Patches>, SurfaceError> {
-        let cells = match (method, method.cells()) {
-            (Method::Hybrid { .. }, Some(cells)) if cells.saturating_mul(segments.len()) <= PATCH_CELLS => cells,
-            _ => return Ok(None),
-        };
+        let Some(cells) = Patches::cells_for(method, segments.len()) else { return Ok(None) };
         Patches::new(segments.len(), cells, |j, alpha| segments[j].circle(alpha)).map(Some)
     }
 
