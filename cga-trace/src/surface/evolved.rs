@@ -4,7 +4,6 @@
 use super::bernstein::Roots;
 use super::cells::{CellBits, Cells, Intervals, PAD};
 use super::family::{Circles, TwoCircles};
-use super::patches::Patches;
 use super::unsquared::{Numerators, Unsquared, Window};
 use super::{Family, Finder, Method, SurfaceError};
 use crate::ray::{Ray, crosses};
@@ -33,9 +32,6 @@ pub struct EvolvedSurface<C = TwoCircles<f64>> {
     /// The crossing condition unsquared on the same cells, for the families and methods that
     /// use it (a spline segment's, with the hybrid method).
     unsquared: Option<Box<Unsquared<f64>>>,
-    /// Patches over the cells, for a surface traced on its own (a spline's segments share
-    /// theirs, [`SplineSurface`](super::SplineSurface)).
-    patches: Option<Box<Patches>>,
 }
 
 /// Circles whose centres and radii differ by less than this times the radius, and whose
@@ -116,7 +112,7 @@ impl EvolvedSurface {
                 .map_err(|reason| SurfaceError::NotACircle { which, reason })
         };
         let pair = Pair::new(blade((p1, n1, r1), 1)?, blade((p2, n2, r2), 2)?)?;
-        EvolvedSurface::of(origin, TwoCircles::new(pair), method)?.with_patches()
+        EvolvedSurface::of(origin, TwoCircles::new(pair), method)
     }
 
     /// The circles in the local frame (with per-surface constants), and the frame's origin.
@@ -147,29 +143,14 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
             method,
             cells,
             unsquared: None,
-            patches: None,
         })
-    }
-
-    /// The surface with patches over its cells ([`Patches`]), where its method uses them.
-    fn with_patches(self) -> Result<Self, SurfaceError> {
-        let Some(cells) = Patches::cells_for(self.method, 1) else { return Ok(self) };
-        let circles = &self.family.circles;
-        let at = |_, alpha| {
-            let circle = circles.at(alpha)?;
-            circle.centre_normal_radius().map_err(|_| SurfaceError::Unbounded { alpha })
-        };
-        let patches = Some(Box::new(Patches::new(1, cells, at)?));
-        Ok(EvolvedSurface { patches, ..self })
     }
 
     /// The same surface (the same circles, oriented as they are) intersected by another
     /// method.
     pub fn with_method(&self, method: Method) -> Result<Self, SurfaceError> {
         let cells = Self::cells(&self.family.circles, method)?;
-        let (family, patches) = (self.family.clone(), None);
-        let surface = EvolvedSurface { family, method, cells, unsquared: None, patches, ..*self };
-        if self.patches.is_some() { surface.with_patches() } else { Ok(surface) }
+        Ok(EvolvedSurface { family: self.family.clone(), method, cells, unsquared: None, ..*self })
     }
 
     /// The culling cells, for the methods that cull with them.
@@ -307,17 +288,12 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// [`EvolvedSurface::intersect`] for a ray already in the local frame (surfaces sharing a
     /// frame, the segments of a spline, build it once).
     pub fn intersect_local(&self, local: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        if let Some(patches) = &self.patches {
-            let mut best = None;
-            patches.visit((local.origin, local.dir), t_min, t_max, |_, cell, t_max| {
-                let crossing = self.intersect_cell(local, cell, (t_min, t_max), None);
-                let t = crossing.map_or(t_max, |c| c.t);
-                best = crossing.or(best);
-                Some(t)
-            });
-            return best;
-        }
         self.nearest_of(local, t_min, t_max, self.candidates_placed(local, t_min, t_max))
+    }
+
+    /// Whether its crossings are found unsquared on its cells ([`Unsquared`]).
+    pub(super) fn unsquared(&self) -> bool {
+        self.unsquared.is_some()
     }
 
     /// The ray's `N` and `D` over the segment, where its crossings are found unsquared: what
@@ -364,12 +340,6 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
 
     /// [`EvolvedSurface::occludes`] for a ray already in the local frame.
     pub fn occludes_local(&self, local: &Ray, t_min: f64, t_max: f64) -> bool {
-        if let Some(patches) = &self.patches {
-            let walk = patches.visit((local.origin, local.dir), t_min, t_max, |_, cell, t_max| {
-                (!self.occludes_cell(local, cell, (t_min, t_max), None)).then_some(t_max)
-            });
-            return walk.is_none();
-        }
         match (&self.cells, &self.unsquared, self.method.finder(1)) {
             (Some(cells), Some(_), Finder::Polynomial(_)) => {
                 let (intervals, ends) = cells.reach(local, t_min, t_max);

@@ -79,7 +79,7 @@ impl Patches {
         Ok(Patches { wide: Wide::new(&bvh), order, patches, cells, segments })
     }
 
-    /// The cells per segment a surface of `segments` segments builds patches over with
+    /// The cells per segment a spline of `segments` Bézier segments builds patches over with
     /// `method`: the hybrid method's, where there are at most [`PATCH_CELLS`] in all.
     pub fn cells_for(method: Method, segments: usize) -> Option<usize> {
         match (method, method.cells()) {
