@@ -292,7 +292,7 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     }
 
     /// Whether its crossings are found unsquared on its cells ([`Unsquared`]).
-    pub(super) fn unsquared(&self) -> bool {
+    pub(super) fn solves_unsquared(&self) -> bool {
         self.unsquared.is_some()
     }
 
@@ -341,9 +341,9 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
     /// [`EvolvedSurface::occludes`] for a ray already in the local frame.
     pub fn occludes_local(&self, local: &Ray, t_min: f64, t_max: f64) -> bool {
         match (&self.cells, &self.unsquared, self.method.finder(1)) {
-            (Some(cells), Some(_), Finder::Polynomial(_)) => {
+            (Some(cells), Some(unsquared), Finder::Polynomial(tolerance)) => {
                 let (intervals, ends) = cells.reach(local, t_min, t_max);
-                self.occludes_on(local, (t_min, t_max), &intervals, &ends, None)
+                self.occludes_on(unsquared, tolerance, local, (t_min, t_max), (&intervals, &ends), None)
             }
             _ => self.intersect_local(local, t_min, t_max).is_some(),
         }
@@ -358,26 +358,26 @@ impl<C: Circles<f64>> EvolvedSurface<C> {
         numerators: Option<&Numerators<f64>>,
     ) -> bool {
         match (self.one_cell(local, cell, (t_min, t_max)), &self.unsquared, self.method.finder(1)) {
-            (Some((intervals, ends)), Some(_), Finder::Polynomial(_)) => {
-                self.occludes_on(local, (t_min, t_max), &intervals, &ends, numerators)
+            (Some((intervals, ends)), Some(unsquared), Finder::Polynomial(tolerance)) => {
+                self.occludes_on(unsquared, tolerance, local, (t_min, t_max), (&intervals, &ends), numerators)
             }
             _ => self.intersect_cell(local, cell, (t_min, t_max), numerators).is_some(),
         }
     }
 
-    /// [`EvolvedSurface::occludes_local`] on the cells' `intervals`, unsquared, interval by
-    /// interval until a crossing is verified.
+    /// [`EvolvedSurface::occludes_local`] on the cells' `intervals` (`ends` marking those whose
+    /// crossings can lie outside the window), by `unsquared` interval by interval until a
+    /// crossing is verified, and by the polynomial (refined to `tolerance`) on what it leaves
+    /// undecided.
     fn occludes_on(
         &self,
+        unsquared: &Unsquared<f64>,
+        tolerance: f64,
         local: &Ray,
         (t_min, t_max): (f64, f64),
-        intervals: &Intervals,
-        ends: &[u64],
+        (intervals, ends): (&Intervals, &[u64]),
         numerators: Option<&Numerators<f64>>,
     ) -> bool {
-        let (Some(unsquared), Finder::Polynomial(tolerance)) = (&self.unsquared, self.method.finder(1)) else {
-            return false;
-        };
         let ray = (local.origin, local.dir, &local.carrier);
         let mut placed = Roots::new();
         let mut found = false;

@@ -12,8 +12,8 @@
 //! circles turn by more than [`TURN`] against the middle one is cut along α only). Its box and
 //! slab (`near ≤ n·x ≤ far`, `n` the normal at its middle) hold the points sampled on a grid,
 //! padded by what linear interpolation between grid points can miss:
-//! `Δα²/8 max|X_αα| + Δθ²/8 max|X_θθ|` (`|X_θθ| = r`, `|X_αα|` from second differences of the
-//! samples, doubled as the cells' bounds are), plus rounding. The interpolant lies in the
+//! `Δα²/8 max|X_αα| + Δθ²/8 max|X_θθ|` (`|X_θθ| = r`, `|X_αα|` from the samples' second
+//! differences, doubled: measured, not proven, as the cells' bounds are), plus rounding. The interpolant lies in the
 //! convex hull of the grid points, so in the box and the slab.
 
 use super::{Method, SurfaceError};
@@ -22,18 +22,18 @@ use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
 use smallvec::SmallVec;
 
 /// Patches around each cell's circles.
-pub const SECTORS: usize = 16;
+const SECTORS: usize = 16;
 /// Patches along each cell (2 and 8 were no faster on fig3c and catmull-rom).
-pub const PIECES: usize = 4;
+const PIECES: usize = 4;
 /// Samples of α per piece, of the angle per sector (intervals).
 const ALPHA_STEPS: usize = 8;
 const ANGLE_STEPS: usize = 4;
 /// The least `|n(α)·n_mid|` over a cell for the middle circle's frame to serve it (60°).
-pub const TURN: f64 = 0.5;
+const TURN: f64 = 0.5;
 
-/// The most cells (over all segments) a surface builds patches over (64 patches a cell):
-/// beyond it, rays reach cells through their spheres.
-pub const PATCH_CELLS: usize = 4096;
+/// The most cells (over all segments) a surface builds patches over (64 patches a cell, 88
+/// bytes each, about 6 MB at the most): beyond it, rays reach cells through their spheres.
+pub const PATCH_CELLS: usize = 1024;
 
 /// A circle: centre, unit normal, radius.
 type Circle3 = (E3, E3, f64);
@@ -98,11 +98,16 @@ impl Patches {
         t_max: f64,
         mut solve: impl FnMut(usize, usize, f64) -> Option<f64>,
     ) -> Option<f64> {
+        // A ray of NaNs would pass every box (the walk needs finite numbers to turn it away).
+        if !origin.iter().chain(&dir).all(|x| x.is_finite()) {
+            return Some(t_max);
+        }
+        let inv = dir.map(|d| 1.0 / d);
         let mut solved: SmallVec<[u64; 8]> = SmallVec::from_elem(0, (self.segments * self.cells).div_ceil(64));
         self.wide.traverse_leaves(origin, dir, t_min, t_max, |range, mut t_max| {
             for (&key, patch) in self.order[range.clone()].iter().zip(&self.patches[range]) {
                 let (word, bit) = (key as usize / 64, 1u64 << (key % 64));
-                if solved[word] & bit == 0 && patch.crossed(origin, dir, t_min, t_max) {
+                if solved[word] & bit == 0 && patch.crossed(origin, (dir, inv), t_min, t_max) {
                     solved[word] |= bit;
                     let key = key as usize;
                     t_max = solve(key / self.cells, key % self.cells, t_max)?;
@@ -125,27 +130,28 @@ struct Patch {
 }
 
 impl Patch {
-    /// Whether the ray `origin + t dir` passes through the box and the slab together within
-    /// `(t_min, t_max)`. A division by zero (a ray parallel to a face) gives infinities that
-    /// leave the interval as the comparisons decide, and NaN (`0 · ∞`, the ray in a face's
-    /// plane) leaves it as it was: conservative either way.
+    /// Whether the ray `origin + t dir` (`inv` the reciprocals of `dir`'s components) passes
+    /// through the box and the slab together within `(t_min, t_max)`. Each axis's faces are
+    /// taken in the order the sign of `1/d` gives, as [`Bvh`]'s slab test does: a NaN bound
+    /// (`0 · ∞`, the ray in a face's plane and parallel to it) then leaves the interval as it
+    /// was.
     #[inline(always)]
-    fn crossed(&self, origin: E3, dir: E3, t_min: f64, t_max: f64) -> bool {
+    fn crossed(&self, origin: E3, (dir, inv): (E3, E3), t_min: f64, t_max: f64) -> bool {
         let (mut enter, mut leave) = (t_min, t_max);
-        let mut clip = |a: f64, b: f64| {
-            let (a, b) = if a <= b { (a, b) } else { (b, a) };
-            enter = if a > enter { a } else { enter };
-            leave = if b < leave { b } else { leave };
-        };
         for k in 0..3 {
-            let inv = 1.0 / dir[k];
-            clip((self.lo[k] - origin[k]) * inv, (self.hi[k] - origin[k]) * inv);
+            let (a, b) = ((self.lo[k] - origin[k]) * inv[k], (self.hi[k] - origin[k]) * inv[k]);
+            let (near, far) = if inv[k] < 0.0 { (b, a) } else { (a, b) };
+            enter = if near > enter { near } else { enter };
+            leave = if far < leave { far } else { leave };
         }
         let (on, dn) = (dot(self.normal, origin), dot(self.normal, dir));
         if dn == 0.0 {
             return enter <= leave && self.near <= on && on <= self.far;
         }
-        clip((self.near - on) / dn, (self.far - on) / dn);
+        let (a, b) = ((self.near - on) / dn, (self.far - on) / dn);
+        let (near, far) = if dn < 0.0 { (b, a) } else { (a, b) };
+        enter = if near > enter { near } else { enter };
+        leave = if far < leave { far } else { leave };
         enter <= leave
     }
 }

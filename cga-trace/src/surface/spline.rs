@@ -121,8 +121,8 @@ pub struct SplineSurface {
     spline: Spline<Circle>,
     origin: E3,
     radius: f64,
-    /// Boxes over the segments' cells cut by angle, which lead a ray to the cells it can
-    /// cross nearest first (for the hybrid method).
+    /// Boxes and slabs over the segments' cells cut along α and by angle, which lead a ray to
+    /// the cells it can cross nearest first (for the hybrid method on Bézier segments).
     patches: Option<Patches>,
 }
 
@@ -186,7 +186,7 @@ impl SplineSurface {
     /// cell around its start, and the scene rays of fig3a (linear segments) took 1.05× their
     /// time through the spheres' merged intervals.
     fn patches(segments: &[Segment], method: Method) -> Result<Option<Patches>, SurfaceError> {
-        let curved = segments.iter().all(|s| matches!(s, Segment::Curved(s) if s.unsquared()));
+        let curved = segments.iter().all(|s| matches!(s, Segment::Curved(s) if s.solves_unsquared()));
         let Some(cells) = Patches::cells_for(method, segments.len()).filter(|_| curved) else { return Ok(None) };
         Patches::new(segments.len(), cells, |j, alpha| segments[j].circle(alpha)).map(Some)
     }
@@ -202,7 +202,8 @@ impl SplineSurface {
             })
             .collect::<Result<Vec<_>, SurfaceError>>()?;
         let patches = Self::patches(&segments, method)?;
-        Ok(SplineSurface { segments, patches, ..self.clone() })
+        let (spline, origin, radius) = (self.spline.clone(), self.origin, self.radius);
+        Ok(SplineSurface { segments, spline, origin, radius, patches })
     }
 
     /// The number of segments.
@@ -236,11 +237,17 @@ impl SplineSurface {
 }
 
 impl SplineSurface {
-    /// The nearest crossing, through the patches: cells solved as the ray reaches them,
-    /// nearest first, each segment's `N` and `D` built once.
-    fn intersect_patches(&self, patches: &Patches, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
-        let m = self.segments.len() as f64;
-        let mut best = None;
+    /// Walks the patches ([`Patches::visit`]), calling `cell(segment, its index, the local ray,
+    /// cell, its N and D, t_max)` for each cell reached: the local ray built at the first, and
+    /// a segment's `N` and `D` once for each run of its cells (a walk by a knot may go back
+    /// and forth between two segments).
+    fn walk(
+        &self,
+        patches: &Patches,
+        ray: &Ray,
+        (t_min, t_max): (f64, f64),
+        mut cell: impl FnMut(&Segment, usize, &Ray, usize, Option<&Numerators<f64>>, f64) -> Option<f64>,
+    ) -> Option<f64> {
         let mut local: Option<Ray> = None;
         let mut prepared: Option<(usize, Option<Numerators<f64>>)> = None;
         let origin = sub(ray.origin, self.origin);
@@ -250,30 +257,27 @@ impl SplineSurface {
             if prepared.as_ref().is_none_or(|p| p.0 != j) {
                 prepared = Some((j, segment.prepare(local)));
             }
-            let numerators = prepared.as_ref().and_then(|p| p.1.as_ref());
-            match segment.intersect_cell(local, i, (t_min, t_max), numerators) {
-                Some(c) => {
-                    best = Some(Crossing { alpha: c.alpha.map(|t| (j as f64 + t) / m), ..c });
-                    Some(c.t)
-                }
-                None => Some(t_max),
-            }
+            cell(segment, j, local, i, prepared.as_ref().and_then(|p| p.1.as_ref()), t_max)
+        })
+    }
+
+    /// The nearest crossing, through the patches: cells solved as the ray reaches them,
+    /// nearest first.
+    fn intersect_patches(&self, patches: &Patches, ray: &Ray, t_min: f64, t_max: f64) -> Option<Crossing> {
+        let m = self.segments.len() as f64;
+        let mut best = None;
+        self.walk(patches, ray, (t_min, t_max), |segment, j, local, i, numerators, t_max| {
+            let Some(c) = segment.intersect_cell(local, i, (t_min, t_max), numerators) else { return Some(t_max) };
+            best = Some(Crossing { alpha: c.alpha.map(|t| (j as f64 + t) / m), ..c });
+            Some(c.t)
         });
         best
     }
 
-    /// Whether the ray crosses the surface, through the patches.
+    /// Whether the ray crosses the surface, through the patches: the walk stops at the first
+    /// cell crossed.
     fn occludes_patches(&self, patches: &Patches, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        let mut local: Option<Ray> = None;
-        let mut prepared: Option<(usize, Option<Numerators<f64>>)> = None;
-        let origin = sub(ray.origin, self.origin);
-        let walk = patches.visit((origin, ray.dir), t_min, t_max, |j, i, t_max| {
-            let local = local.get_or_insert_with(|| self.local(ray));
-            let segment = &self.segments[j];
-            if prepared.as_ref().is_none_or(|p| p.0 != j) {
-                prepared = Some((j, segment.prepare(local)));
-            }
-            let numerators = prepared.as_ref().and_then(|p| p.1.as_ref());
+        let walk = self.walk(patches, ray, (t_min, t_max), |segment, _, local, i, numerators, t_max| {
             (!segment.occludes_cell(local, i, (t_min, t_max), numerators)).then_some(t_max)
         });
         walk.is_none()

@@ -310,6 +310,8 @@ impl<T: Real> Unsquared<T> {
         self.prepare_here(line)
     }
 
+    /// [`Unsquared::prepare`] compiled for AVX2 (the forms' rows four lanes at a time; the
+    /// same operations, so the same bits).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     unsafe fn prepare_avx2(&self, line: &Line<T>) -> Numerators<T> {
