@@ -19,7 +19,6 @@
 use super::{Method, SurfaceError};
 use crate::bvh::{Bvh, Wide};
 use cga_core::euclid::{E3, add, cross, dot, norm, scale, sub, unit};
-use smallvec::SmallVec;
 
 /// Patches around each cell's circles.
 const SECTORS: usize = 16;
@@ -46,8 +45,8 @@ pub struct Patches {
     order: Vec<u32>,
     /// The patches in the tree's leaf order.
     patches: Vec<Patch>,
+    /// Cells per segment.
     cells: usize,
-    segments: usize,
 }
 
 impl Patches {
@@ -76,7 +75,7 @@ impl Patches {
         let bvh = Bvh::over_boxes(&patches.iter().map(|p| (p.lo, p.hi)).collect::<Vec<_>>());
         let order = bvh.order().iter().map(|&k| owner[k as usize]).collect();
         let patches = bvh.order().iter().map(|&k| patches[k as usize]).collect();
-        Ok(Patches { wide: Wide::new(&bvh), order, patches, cells, segments })
+        Ok(Patches { wide: Wide::new(&bvh), order, patches, cells })
     }
 
     /// The cells per segment a spline of `segments` Bézier segments builds patches over with
@@ -103,12 +102,18 @@ impl Patches {
             return Some(t_max);
         }
         let inv = dir.map(|d| 1.0 / d);
-        let mut solved: SmallVec<[u64; 8]> = SmallVec::from_elem(0, (self.segments * self.cells).div_ceil(64));
+        // One bit a cell, on the stack, for the `PATCH_CELLS` a surface builds patches over
+        // (`cells_for`): no allocation a ray. A cell beyond them (a caller that built more)
+        // is solved each time a patch of it is crossed: more work, the same answer.
+        let mut solved = [0u64; PATCH_CELLS / 64];
         self.wide.traverse_leaves(origin, dir, t_min, t_max, |range, mut t_max| {
             for (&key, patch) in self.order[range.clone()].iter().zip(&self.patches[range]) {
                 let (word, bit) = (key as usize / 64, 1u64 << (key % 64));
-                if solved[word] & bit == 0 && patch.crossed(origin, (dir, inv), t_min, t_max) {
-                    solved[word] |= bit;
+                let seen = solved.get(word).is_some_and(|w| w & bit != 0);
+                if !seen && patch.crossed(origin, (dir, inv), t_min, t_max) {
+                    if let Some(w) = solved.get_mut(word) {
+                        *w |= bit;
+                    }
                     let key = key as usize;
                     t_max = solve(key / self.cells, key % self.cells, t_max)?;
                 }
